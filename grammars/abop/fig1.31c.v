@@ -1,0 +1,2 @@
+angle increment: 25.75
+initial line width: 1

@@ -1,0 +1,408 @@
+#include "cpu/derive.h"
+
+#include <algorithm>
+#include <limits>
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include "cpu/evaluator.h"
+#include "shared/random.h"
+
+namespace simeco::cpu {
+
+uint64_t defaultModuleBudget(int stride) {
+    // A quarter of physical memory, for the two strings (current and next) of the derivation.
+    long pages = sysconf(_SC_PHYS_PAGES), pageSize = sysconf(_SC_PAGE_SIZE);
+    uint64_t memory = (pages > 0 && pageSize > 0) ? uint64_t(pages) * uint64_t(pageSize) : (8ull << 30);
+    uint64_t bytesPerModule = sizeof(uint32_t) + sizeof(uint8_t) + sizeof(float) * uint64_t(std::max(stride, 1));
+    return memory / 4 / (2 * bytesPerModule);
+}
+
+namespace {
+
+constexpr int64_t kNone = -1;
+
+// A module outside the current string (one being decomposed).
+struct ModuleRef {
+    uint32_t sym;
+    const float* params;
+    size_t count;
+};
+
+class PlantDeriver {
+public:
+    PlantDeriver(const ir::Grammar& g, uint32_t plant, uint32_t seed, uint64_t budget)
+        : g_(g), evaluator_(g, state_), budget_(budget) {
+        evaluator_.key.seed = seed;
+        evaluator_.key.plant = plant;
+        stride_ = std::max(g.maxParams(), 1);
+        cur_.stride = next_.stride = stride_;
+        index(g.productions, productionsBySymbol_);
+        index(g.decomposition, decompositionBySymbol_);
+        stochastic_ = std::any_of(g.productions.productions.begin(), g.productions.productions.end(),
+                                  [](const ir::Production& p) { return p.weight >= 0; });
+        if (auto eq = g.alphabet.find("=")) equalsSym_ = int64_t(*eq);
+        percentSym_ = ir::kCut;
+    }
+
+    int run(int steps) {
+        state_.reset(g_);
+        evaluator_.key.pass = 0;
+        evaluator_.key.module = 0;
+        evaluator_.key.draw = 0;
+        evaluator_.exec(g_.startBlock, nullptr);
+        // The axiom's parameters may use globals of the Start block.
+        std::vector<float> values;
+        for (const ir::SuccessorModule& m : g_.axiom) {
+            values.clear();
+            for (const ir::Expr& e : m.args) values.push_back(static_cast<float>(evaluator_.eval(e, nullptr)));
+            cur_.push(m.sym, values.data(), values.size());
+        }
+        checkBudget(cur_.size());
+        int done = 0;
+        for (int step = 1; step <= steps; ++step) {
+            step_ = static_cast<uint32_t>(step);
+            if (!state_.globals.empty() && g_.globalNames.front() == "Q") state_.globals[0] = step;
+            evaluator_.exec(g_.startEachBlock, nullptr);
+            rewrite();
+            evaluator_.exec(g_.endEachBlock, nullptr);
+            ++done;
+            if (state_.stopRequested) break;
+        }
+        evaluator_.exec(g_.endBlock, nullptr);
+        return done;
+    }
+
+    ModuleString& result() { return cur_; }
+
+private:
+    const ir::Grammar& g_;
+    PlantState state_;
+    Evaluator evaluator_;
+    uint64_t budget_;
+    int stride_ = 1;
+    ModuleString cur_, next_;
+    std::vector<int64_t> match_; // the matching bracket of each bracket in cur_
+    std::vector<std::vector<uint32_t>> productionsBySymbol_, decompositionBySymbol_;
+    bool stochastic_ = false;
+    int64_t equalsSym_ = kNone;
+    uint32_t percentSym_ = ir::kCut;
+    uint32_t step_ = 0;
+    std::vector<uint32_t> depthCounter_;
+
+    static void index(const ir::RuleSet& rules, std::vector<std::vector<uint32_t>>& bySymbol) {
+        for (size_t i = 0; i < rules.productions.size(); ++i) {
+            uint32_t s = rules.productions[i].strict.front().sym;
+            if (bySymbol.size() <= s) bySymbol.resize(s + 1);
+            bySymbol[s].push_back(static_cast<uint32_t>(i));
+        }
+    }
+
+    void checkBudget(size_t size) const {
+        if (size > budget_)
+            throw ir::LimitError(fmt::format("the string outgrew the module budget of {} modules in step {} "
+                                             "(raise it with --max-modules, or derive fewer steps)",
+                                             budget_, step_));
+    }
+
+    void matchBrackets() {
+        size_t n = cur_.size();
+        match_.assign(n, kNone);
+        std::vector<size_t> open;
+        for (size_t i = 0; i < n; ++i) {
+            if (cur_.sym[i] == ir::kBranchOpen) {
+                open.push_back(i);
+            } else if (cur_.sym[i] == ir::kBranchClose && !open.empty()) {
+                match_[i] = int64_t(open.back());
+                match_[open.back()] = int64_t(i);
+                open.pop_back();
+            }
+        }
+    }
+
+    // The `]` that closes the branch containing position s (or the end of the string).
+    size_t endOfBranch(size_t s) const {
+        size_t n = cur_.size();
+        while (s < n) {
+            if (cur_.sym[s] == ir::kBranchClose) return s;
+            if (cur_.sym[s] == ir::kBranchOpen) s = match_[s] == kNone ? n : size_t(match_[s]) + 1;
+            else ++s;
+        }
+        return n;
+    }
+
+    bool sameModule(const ir::PatternModule& pm, size_t pos) const {
+        return cur_.sym[pos] == pm.sym && cur_.paramCount[pos] == pm.paramSlots.size();
+    }
+    void bind(const ir::PatternModule& pm, const float* params, double* frame) const {
+        for (size_t k = 0; k < pm.paramSlots.size(); ++k) frame[pm.paramSlots[k]] = params[k];
+    }
+
+    // Right context from position s: skipped symbols pass, closed branches pass unless the pattern
+    // enters one with `[`, `=` jumps to the end of the current branch; the string's `]` ends it.
+    bool matchRight(const std::vector<ir::PatternModule>& pattern, size_t s, double* frame) const {
+        size_t n = cur_.size();
+        size_t wrapped = 0;
+        for (const ir::PatternModule& pm : pattern) {
+            if (int64_t(pm.sym) == equalsSym_) {
+                s = endOfBranch(s);
+                continue;
+            }
+            for (;;) {
+                if (s >= n) {
+                    if (!g_.ring || wrapped++ > 0) return false;
+                    s = 0;
+                    continue;
+                }
+                uint32_t sym = cur_.sym[s];
+                if (g_.skippedInContext(sym)) {
+                    ++s;
+                } else if (pm.sym != ir::kBranchOpen && sym == ir::kBranchOpen) {
+                    if (match_[s] == kNone) return false;
+                    s = size_t(match_[s]) + 1;
+                } else {
+                    break;
+                }
+            }
+            if (!sameModule(pm, s)) return false;
+            bind(pm, cur_.paramsOf(s), frame);
+            ++s;
+        }
+        return true;
+    }
+
+    // Left context ending at position s: branches to the left are skipped, a `[` is passed on the way
+    // out of a branch, skipped symbols pass.
+    bool matchLeft(const std::vector<ir::PatternModule>& pattern, int64_t s, double* frame) const {
+        int64_t n = int64_t(cur_.size());
+        size_t wrapped = 0;
+        for (auto it = pattern.rbegin(); it != pattern.rend(); ++it) {
+            for (;;) {
+                if (s < 0) {
+                    if (!g_.ring || wrapped++ > 0) return false;
+                    s = n - 1;
+                    continue;
+                }
+                uint32_t sym = cur_.sym[size_t(s)];
+                if (sym == ir::kBranchClose) {
+                    if (match_[size_t(s)] == kNone) return false;
+                    s = match_[size_t(s)] - 1;
+                } else if (sym == ir::kBranchOpen || g_.skippedInContext(sym)) {
+                    --s;
+                } else {
+                    break;
+                }
+            }
+            if (!sameModule(*it, size_t(s))) return false;
+            bind(*it, cur_.paramsOf(size_t(s)), frame);
+            --s;
+        }
+        return true;
+    }
+
+    struct Candidate {
+        uint32_t production;
+        std::vector<double> frame;
+    };
+
+    // Tests production p with its strict predecessor bound by `bindStrict`; contexts around [left, right].
+    template <typename BindStrict>
+    bool applicable(const ir::Production& p, int64_t left, size_t right, std::vector<double>& frame,
+                    BindStrict bindStrict) {
+        frame.assign(size_t(p.frameSize), 0.0);
+        if (!p.right.empty() && !matchRight(p.right, right, frame.data())) return false;
+        if (!p.left.empty() && !matchLeft(p.left, left, frame.data())) return false;
+        bindStrict(frame.data());
+        evaluator_.exec(p.before, frame.data());
+        return !p.condition || evaluator_.eval(*p.condition, frame.data()) != 0.0;
+    }
+
+    // Among applicable candidates with weights, one drawn with probability proportional to its weight.
+    const Candidate* choose(const ir::RuleSet& rules, const std::vector<Candidate>& candidates) const {
+        if (candidates.empty()) return nullptr;
+        double total = 0;
+        for (const Candidate& c : candidates) total += rules.productions[c.production].weight;
+        const RandomKey& k = evaluator_.key;
+        double r = total * shared::randomUnit(k.seed, k.plant, k.pass, k.module, 0);
+        for (const Candidate& c : candidates)
+            if ((r -= rules.productions[c.production].weight) <= 0) return &c;
+        return &candidates.back();
+    }
+
+    // Runs the after-statements and writes the successor (one alternative drawn in order) to `out`.
+    void produce(const ir::Production& p, std::vector<double>& frame, ModuleString& out) {
+        evaluator_.exec(p.after, frame.data());
+        const ir::Alternative* alt = &p.alternatives.back();
+        for (size_t k = 0; k + 1 < p.alternatives.size(); ++k)
+            if (evaluator_.draw() < p.alternatives[k].probability) {
+                alt = &p.alternatives[k];
+                break;
+            }
+        float values[64];
+        for (const ir::SuccessorModule& m : alt->modules) {
+            size_t count = std::min<size_t>(m.args.size(), 64);
+            for (size_t a = 0; a < count; ++a) values[a] = static_cast<float>(evaluator_.eval(m.args[a], frame.data()));
+            out.push(m.sym, values, count);
+        }
+    }
+
+    void setKey(uint32_t pass, uint32_t module) {
+        evaluator_.key.pass = pass;
+        evaluator_.key.module = module;
+        evaluator_.key.draw = 1; // draw 0 belongs to the choice among stochastic productions
+    }
+
+    // Decomposes module m (depth-first, up to the maximum depth) into next_, with contexts taken around
+    // the predecessor in the current string. Returns false when no decomposition production applies at
+    // depth 0 (the caller then copies or cuts).
+    bool decompose(const ModuleRef& m, int depth, int64_t left, size_t right) {
+        const ir::RuleSet& rules = g_.decomposition;
+        if (rules.productions.empty() || rules.maxDepth <= 0) return false;
+        if (depthCounter_.size() <= size_t(depth)) depthCounter_.resize(size_t(depth) + 1, 0);
+        setKey(step_ * kPassesPerStep + 1 + uint32_t(std::min(depth, int(kPassesPerStep) - 2)),
+               depthCounter_[size_t(depth)]++);
+        const ir::Production* found = nullptr;
+        std::vector<double> frame;
+        std::vector<Candidate> candidates;
+        if (m.sym < decompositionBySymbol_.size()) {
+            for (uint32_t pi : decompositionBySymbol_[m.sym]) {
+                const ir::Production& p = rules.productions[pi];
+                if (p.strict.size() != 1 || p.strict[0].paramSlots.size() != m.count) continue;
+                bool ok = applicable(p, left, right, frame, [&](double* f) { bind(p.strict[0], m.params, f); });
+                if (!ok) continue;
+                if (p.weight < 0) {
+                    found = &p;
+                    break;
+                }
+                candidates.push_back({pi, frame});
+            }
+        }
+        if (!found && !candidates.empty()) {
+            const Candidate* c = choose(rules, candidates);
+            found = &rules.productions[c->production];
+            frame = c->frame;
+        }
+        if (!found) {
+            if (depth == 0) return false;
+            next_.push(m.sym, m.params, m.count);
+            checkBudget(next_.size());
+            return true;
+        }
+        if (depth >= rules.maxDepth) {
+            next_.push(m.sym, m.params, m.count);
+            checkBudget(next_.size());
+            return true;
+        }
+        ModuleString produced;
+        produced.stride = stride_;
+        produce(*found, frame, produced);
+        for (size_t k = 0; k < produced.size(); ++k)
+            decompose({produced.sym[k], produced.paramsOf(k), produced.paramCount[k]}, depth + 1, left, right);
+        return true;
+    }
+
+    // Emits module m after trying decomposition on it.
+    void emit(const ModuleRef& m, int64_t left, size_t right) {
+        if (!decompose(m, 0, left, right)) next_.push(m.sym, m.params, m.count);
+        checkBudget(next_.size());
+    }
+
+    void rewrite() {
+        matchBrackets();
+        next_.clear();
+        depthCounter_.assign(1, 0);
+        const ir::RuleSet& rules = g_.productions;
+        const bool useDecomposition = !g_.decomposition.productions.empty();
+        std::vector<double> frame;
+        std::vector<Candidate> candidates;
+        ModuleString produced;
+        produced.stride = stride_;
+        size_t n = cur_.size();
+        for (size_t i = 0; i < n;) {
+            uint32_t sym = cur_.sym[i];
+            setKey(step_ * kPassesPerStep, uint32_t(i));
+            const ir::Production* found = nullptr;
+            candidates.clear();
+            if (sym < productionsBySymbol_.size()) {
+                for (uint32_t pi : productionsBySymbol_[sym]) {
+                    const ir::Production& p = rules.productions[pi];
+                    if (i + p.strict.size() > n) continue;
+                    bool strictMatches = true;
+                    for (size_t k = 0; k < p.strict.size() && strictMatches; ++k)
+                        strictMatches = sameModule(p.strict[k], i + k);
+                    if (!strictMatches) continue;
+                    bool ok = applicable(p, int64_t(i) - 1, i + p.strict.size(), frame, [&](double* f) {
+                        for (size_t k = 0; k < p.strict.size(); ++k) bind(p.strict[k], cur_.paramsOf(i + k), f);
+                    });
+                    if (!ok) continue;
+                    if (!stochastic_) {
+                        found = &p;
+                        break;
+                    }
+                    candidates.push_back({pi, frame});
+                }
+            }
+            if (stochastic_ && !candidates.empty()) {
+                const Candidate* c = choose(rules, candidates);
+                found = &rules.productions[c->production];
+                frame = c->frame;
+            }
+            if (found) {
+                size_t len = found->strict.size();
+                if (!useDecomposition) {
+                    produce(*found, frame, next_);
+                    checkBudget(next_.size());
+                } else {
+                    produced.clear();
+                    produce(*found, frame, produced);
+                    for (size_t k = 0; k < produced.size(); ++k)
+                        emit({produced.sym[k], produced.paramsOf(k), produced.paramCount[k]}, int64_t(i) - 1, i + len);
+                }
+                i += len;
+                continue;
+            }
+            ModuleRef self{sym, cur_.paramsOf(i), cur_.paramCount[i]};
+            if (useDecomposition && decompose(self, 0, int64_t(i) - 1, i + 1)) {
+                checkBudget(next_.size());
+                ++i;
+                continue;
+            }
+            if (sym == percentSym_ && cur_.paramCount[i] == 0) {
+                i = endOfBranch(i + 1); // the cut drops the rest of the branch; its `]` stays
+                continue;
+            }
+            next_.push(sym, self.params, self.count);
+            checkBudget(next_.size());
+            ++i;
+        }
+        std::swap(cur_, next_);
+    }
+};
+
+} // namespace
+
+DeriveResult deriveCpu(const ir::Grammar& g, const DeriveOptions& options) {
+    int steps = options.steps >= 0 ? options.steps : g.derivationLength;
+    uint32_t seed = options.seed >= 0 ? uint32_t(options.seed) : g.seed;
+    int stride = std::max(g.maxParams(), 1);
+    uint64_t budget = options.maxModules ? options.maxModules : defaultModuleBudget(stride);
+    DeriveResult result;
+    result.string.stride = stride;
+    result.string.plantStart.push_back(0);
+    uint64_t used = 0;
+    for (uint32_t plant = 0; plant < std::max<uint32_t>(options.plants, 1); ++plant) {
+        PlantDeriver deriver(g, plant, seed, budget - used);
+        result.steps = deriver.run(steps);
+        const ModuleString& s = deriver.result();
+        used += s.size();
+        ModuleString& out = result.string;
+        out.sym.insert(out.sym.end(), s.sym.begin(), s.sym.end());
+        out.paramCount.insert(out.paramCount.end(), s.paramCount.begin(), s.paramCount.end());
+        out.params.insert(out.params.end(), s.params.begin(), s.params.end());
+        out.plantStart.push_back(out.sym.size());
+    }
+    return result;
+}
+
+} // namespace simeco::cpu

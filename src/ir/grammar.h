@@ -1,0 +1,147 @@
+// The grammar IR: one form for every input language.
+//
+// A grammar is an alphabet, an axiom, three rule sets (productions, decomposition, homomorphism), the
+// context filter, global variables and arrays, control blocks and function tables. Front ends build it;
+// the CPU reference engine runs it; the GPU back end compiles it.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "ir/expr.h"
+#include "ir/contour_curve.h"
+#include "ir/function_curve.h"
+
+namespace simeco::ir {
+
+using SymbolId = uint32_t;
+
+// Symbols with fixed ids, so that every engine and kernel can test for them without a lookup.
+inline constexpr SymbolId kBranchOpen = 0;  // [
+inline constexpr SymbolId kBranchClose = 1; // ]
+inline constexpr SymbolId kCut = 2;         // %
+
+class Alphabet {
+public:
+    Alphabet();
+    SymbolId intern(const std::string& name);
+    std::optional<SymbolId> find(const std::string& name) const;
+    const std::string& name(SymbolId id) const { return names_[id]; }
+    size_t size() const { return names_.size(); }
+    const std::vector<std::string>& names() const { return names_; }
+
+private:
+    std::vector<std::string> names_;
+    std::unordered_map<std::string, SymbolId> ids_;
+};
+
+// A module with actual parameter values: an axiom entry, or a module of a derived string.
+struct Module {
+    SymbolId sym = 0;
+    std::vector<float> params;
+};
+
+// A module in a predecessor or context: its formal parameters bind to frame slots.
+struct PatternModule {
+    SymbolId sym = 0;
+    std::vector<int> paramSlots;
+    SourceLoc loc;
+};
+
+// A module in a successor: its parameters are expressions over the production's frame and the globals.
+struct SuccessorModule {
+    SymbolId sym = 0;
+    std::vector<Expr> args;
+    SourceLoc loc;
+};
+
+// One successor of a production. cpfg productions have exactly one; SimEco's `prob(p) a | prob(q) b | c`
+// has several, tried in order, each taken with its probability (1 for the last, unconditional one).
+struct Alternative {
+    float probability = 1.0f;
+    std::vector<SuccessorModule> modules; // empty: the module is erased (`*`, `null`)
+};
+
+struct Production {
+    std::vector<PatternModule> left;   // left context, in text order
+    std::vector<PatternModule> strict; // strict predecessor (one or more modules)
+    std::vector<PatternModule> right;  // right context, in text order
+    std::vector<Stmt> before;          // statements run when the predecessor and contexts match
+    std::optional<Expr> condition;     // none: always true (`*` or no condition)
+    std::vector<Stmt> after;           // statements run once the condition holds
+    std::vector<Alternative> alternatives;
+    // cpfg stochastic factor (`--> succ : 40`); negative when the production has none. Among applicable
+    // productions with factors, one is drawn with probability proportional to its factor.
+    float weight = -1.0f;
+    int frameSize = 0;                  // formal parameters and local variables
+    std::vector<std::string> slotNames; // for messages and generated code
+    SourceLoc loc;
+};
+
+struct RuleSet {
+    std::vector<Production> productions;
+    int maxDepth = 1; // decomposition and homomorphism: passes until no rule applies or this depth
+    bool present = false;
+};
+
+struct GlobalArray {
+    std::string name;
+    std::vector<int> dims;
+    std::vector<float> init; // row-major, size = product of dims
+    SourceLoc loc;
+};
+
+struct FunctionCurve {
+    std::string name;
+    std::vector<float> xs, ys; // B-spline control points, repeated by their multiplicity
+    int samples = 0;           // cpfg precomputes this many samples and interpolates; <= 2: exact
+    std::vector<double> table; // the precomputed samples (see function_curve.h)
+};
+
+// Turtle settings a grammar brings with it (view file, directives); interpreted by later stages.
+struct ViewSettings {
+    float angleIncrement = 45.0f;
+    float stepSize = 1.0f;
+    float lineWidth = 1.0f;
+    float widthIncrement = 1.0f;
+    float colorIncrement = 1.0f;
+    bool present = false;
+};
+
+struct Grammar {
+    std::string sourceFile;
+    Alphabet alphabet;
+    std::vector<SuccessorModule> axiom; // parameters are expressions, evaluated after the Start block
+    SourceLoc axiomLoc;
+    int derivationLength = 0;
+    uint32_t seed = 0;
+    bool ring = false;
+
+    RuleSet productions;
+    RuleSet decomposition;
+    RuleSet homomorphism;
+
+    // Per symbol: true when context matching skips it (from `ignore:` or the complement of `consider:`).
+    std::vector<bool> contextSkip;
+    // What a symbol first seen after `consider:` gets: skipped, since consider lists what is not.
+    bool contextSkipDefault = false;
+
+    std::vector<std::string> globalNames;
+    std::vector<float> globalInit;
+    std::vector<GlobalArray> arrays;
+    std::vector<Stmt> startBlock, startEachBlock, endEachBlock, endBlock;
+    std::vector<FunctionCurve> functions;
+    std::vector<ContourCurve> curves; // curveX/Y/Z/GAL ids are 1-based in this order
+    ViewSettings view;
+
+    bool skippedInContext(SymbolId s) const { return s < contextSkip.size() && contextSkip[s]; }
+    // A symbol by name, added to the alphabet (and the context filter) when new.
+    SymbolId symbol(const std::string& name);
+    // The largest parameter count of any module that can appear (sets the stride of the module stream).
+    int maxParams() const;
+};
+
+} // namespace simeco::ir

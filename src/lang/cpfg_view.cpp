@@ -1,0 +1,172 @@
+#include "lang/cpfg_view.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "lang/cpfg_contour.h"
+#include "lang/source_text.h"
+
+namespace simeco::lang {
+
+namespace {
+
+std::vector<std::string> splitLines(const std::string& text) {
+    std::vector<std::string> lines;
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);) {
+        if (!line.empty() && line.back() == '\r') line.pop_back();
+        lines.push_back(line);
+    }
+    return lines;
+}
+
+std::string trim(const std::string& s) {
+    size_t a = s.find_first_not_of(" \t");
+    if (a == std::string::npos) return {};
+    size_t b = s.find_last_not_of(" \t");
+    return s.substr(a, b - a + 1);
+}
+
+// `key: value` with the key compared case-insensitively; returns the value.
+bool field(const std::string& line, const char* key, std::string& value) {
+    size_t colon = line.find(':');
+    if (colon == std::string::npos) return false;
+    std::string k = trim(line.substr(0, colon));
+    for (char& c : k) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (k != key) return false;
+    value = trim(line.substr(colon + 1));
+    return true;
+}
+
+float number(const std::string& text, const std::string& file, size_t line, const char* what) {
+    try {
+        size_t used = 0;
+        float v = std::stof(text, &used);
+        return v;
+    } catch (...) {
+        throw ir::InputError({file, static_cast<int>(line + 1), 1}, fmt::format("expected a number for {}", what));
+    }
+}
+
+// View settings only shape the picture: a value that is not a number keeps the default, with a warning,
+// as cpfg reads it (exercise models ship placeholders such as `angle increment: ?`).
+void viewNumber(const std::string& text, const std::string& file, size_t line, const char* what, float& value) {
+    try {
+        value = std::stof(text);
+    } catch (...) {
+        std::fprintf(stderr, "%s:%zu:1: warning: '%s' is not a number for %s; using %g\n", file.c_str(), line + 1,
+                     text.c_str(), what, static_cast<double>(value));
+    }
+}
+
+void readFunctionSet(const std::string& path, CpfgView& out) {
+    std::vector<std::string> lines = splitLines(readSourceFile(path));
+    size_t next = 0;
+    if (lines.empty() || trim(lines[0]).rfind("funcgalleryver", 0) != 0)
+        throw ir::InputError({path, 1, 1}, "expected 'funcgalleryver 1 1' at the start of a function set");
+    next = 1;
+    std::string value;
+    if (next >= lines.size() || !field(lines[next], "items", value))
+        throw ir::InputError({path, static_cast<int>(next + 1), 1}, "expected 'items: N'");
+    int items = static_cast<int>(number(value, path, next, "items"));
+    ++next;
+    for (int i = 0; i < items; ++i) {
+        ir::FunctionCurve f = parseFunctionCurve(lines, next, path, -1);
+        // cpfg defines NAME=id for each function of a set, so models can write func(NAME, x).
+        std::string name = f.name;
+        if (size_t dot = name.rfind('.'); dot != std::string::npos) name = name.substr(0, dot);
+        out.functions.push_back(std::move(f));
+        if (!name.empty()) out.macros[name] = std::to_string(out.functions.size());
+    }
+}
+
+} // namespace
+
+ir::FunctionCurve parseFunctionCurve(const std::vector<std::string>& lines, size_t& next, const std::string& file,
+                                     int defaultSamples) {
+    ir::FunctionCurve f;
+    auto fail = [&](const std::string& message) -> void {
+        throw ir::InputError({file, static_cast<int>(std::min(next, lines.size()) + 1), 1}, message);
+    };
+    while (next < lines.size() && trim(lines[next]).empty()) ++next;
+    if (next >= lines.size()) fail("expected a function");
+    std::string first = trim(lines[next]);
+    std::string value;
+    if (first.rfind("fver", 0) == 0) {
+        ++next;
+        while (next < lines.size()) {
+            std::string line = trim(lines[next]);
+            if (field(line, "name", value)) f.name = value;
+            else if (field(line, "samples", value)) f.samples = static_cast<int>(number(value, file, next, "samples"));
+            else if (field(line, "points", value)) break;
+            ++next; // flip, markers and background lines do not change the values
+        }
+    } else if (field(first, "range", value)) {
+        f.samples = defaultSamples;
+        ++next;
+    } else {
+        fail("expected 'fver 1 1' or 'range:' at the start of a function");
+    }
+    if (next >= lines.size() || !field(trim(lines[next]), "points", value)) fail("expected 'points: N'");
+    int count = static_cast<int>(number(value, file, next, "points"));
+    ++next;
+    if (count < 4) fail("a function needs at least 4 control points");
+    for (int i = 0; i < count; ++i, ++next) {
+        if (next >= lines.size()) fail("missing control points");
+        std::istringstream in(lines[next]);
+        float x = 0, y = 0, multiplicity = 1;
+        if (!(in >> x >> y)) fail("expected 'x y [multiplicity]'");
+        if (!(in >> multiplicity)) multiplicity = 1;
+        int m = static_cast<int>(multiplicity);
+        if (m < 1 || m > 16) fail("multiplicity out of range");
+        for (int k = 0; k < m; ++k) {
+            f.xs.push_back(x);
+            f.ys.push_back(y);
+        }
+    }
+    ir::precomputeCurve(f);
+    return f;
+}
+
+CpfgView readCpfgView(const std::string& path) {
+    CpfgView out;
+    std::vector<std::string> lines = splitLines(readSourceFile(path));
+    std::filesystem::path dir = std::filesystem::path(path).parent_path();
+    for (size_t i = 0; i < lines.size(); ++i) {
+        std::string line = trim(lines[i]), value;
+        if (field(line, "function", value)) {
+            std::istringstream in(value);
+            std::string name;
+            int samples = -1;
+            in >> name >> samples;
+            std::string funcPath = (dir / name).string();
+            std::vector<std::string> funcLines = splitLines(readSourceFile(funcPath));
+            size_t next = 0;
+            out.functions.push_back(parseFunctionCurve(funcLines, next, funcPath, samples));
+        } else if (field(line, "function set", value)) {
+            readFunctionSet((dir / value).string(), out);
+        } else if (field(line, "curve", value)) {
+            out.curves.push_back(parseContourFile((dir / value).string()));
+        } else if (field(line, "angle increment", value)) {
+            viewNumber(value, path, i, "angle increment", out.view.angleIncrement);
+            out.view.present = true;
+        } else if (field(line, "angle factor", value)) {
+            float factor = 0;
+            viewNumber(value, path, i, "angle factor", factor);
+            if (factor != 0) out.view.angleIncrement = 360.0f / factor;
+            out.view.present = true;
+        } else if (field(line, "initial line width", value)) {
+            viewNumber(value, path, i, "initial line width", out.view.lineWidth);
+        } else if (field(line, "line width increment", value)) {
+            viewNumber(value, path, i, "line width increment", out.view.widthIncrement);
+        } else if (field(line, "color increment", value)) {
+            viewNumber(value, path, i, "color increment", out.view.colorIncrement);
+        }
+    }
+    return out;
+}
+
+} // namespace simeco::lang

@@ -1,0 +1,158 @@
+// Lowers a plant's Grow block to the grammar IR.
+//
+// - Every segment carries one parameter, its stage. A literal stage in a predecessor or context (`S(7)`)
+//   becomes a frame slot plus the condition `slot == 7`; a variable (`L(i)`) is just the slot.
+// - `prob(p) a | prob(q) b | c` is one production whose alternatives are tried in order, each taken with
+//   its probability; an alternative without prob() has probability 1. When every alternative fails its
+//   draw the segment stays as it is.
+// - A step production `L(i) -> L(i + 1, 1 < i < 6);` advances the stage while its condition holds: the
+//   condition becomes the production's condition, so once it fails the segment falls through to later
+//   rules (or stays). When a step successor has further alternatives (`| S(0)`), those are what the thesis
+//   tries after a failed test; they become a second production, right after, without the step condition.
+// - Rotations are modules named rotr, rotu, rotx, roty, rotz with one argument in radians. They describe
+//   how a segment is attached rather than being plant parts, so context matching skips them: in
+//   `S(4) < S(10)` the S(10) of `S(4)[rotr(0.78)S(10)]` has S(4) as its left context.
+// - Symbols are interned in a fixed order (brackets, A S L F T R, then the rotations), so every SimEco
+//   plant of a scene numbers its symbols alike.
+#include <fmt/format.h>
+
+#include "lang/eco_parser.h"
+
+namespace simeco::lang {
+
+namespace {
+
+constexpr const char* kRotationNames[] = {"rotr", "rotu", "rotx", "roty", "rotz"};
+
+ir::Expr localSlot(int slot, const ir::SourceLoc& loc) {
+    ir::Expr e;
+    e.op = ir::Op::Local;
+    e.slot = slot;
+    e.loc = loc;
+    return e;
+}
+
+ir::Expr binary(ir::Op op, ir::Expr a, ir::Expr b, const ir::SourceLoc& loc) {
+    ir::Expr e;
+    e.op = op;
+    e.args.push_back(std::move(a));
+    e.args.push_back(std::move(b));
+    e.loc = loc;
+    return e;
+}
+
+std::optional<ir::Expr> conjoin(std::optional<ir::Expr> a, std::optional<ir::Expr> b, const ir::SourceLoc& loc) {
+    if (!a) return b;
+    if (!b) return a;
+    return binary(ir::Op::And, std::move(*a), std::move(*b), loc);
+}
+
+class PlantCompiler {
+public:
+    explicit PlantCompiler(const ir::EcoScene& scene) {
+        grammar_.sourceFile = scene.file;
+        // The engines keep cpfg's step counters in the first global slots, whatever the language.
+        grammar_.globalNames = {"Q", "Z"};
+        grammar_.globalInit = {0.0f, 0.0f};
+    }
+
+    ir::Grammar compile(const ir::EcoPlant& plant) {
+        for (char letter : ir::kEcoSegmentLetters) symbol(std::string(1, letter));
+        for (const char* rotation : kRotationNames) symbol(rotation);
+
+        grammar_.axiomLoc = plant.grow.axiomLoc;
+        for (const ir::EcoModule& m : plant.grow.axiom) grammar_.axiom.push_back(successorModule(m));
+        for (const ir::EcoRule& rule : plant.grow.rules) lowerRule(rule);
+        grammar_.productions.present = !plant.grow.rules.empty();
+
+        grammar_.contextSkip.resize(grammar_.alphabet.size(), false);
+        for (const char* rotation : kRotationNames) grammar_.contextSkip[symbol(rotation)] = true;
+
+        grammar_.derivationLength = plant.derivationLength.value_or(defaultDerivationLength(plant));
+        return std::move(grammar_);
+    }
+
+private:
+    // SimEco has no derivation length: it derives every DeriveTime seconds for as long as it runs. A grow
+    // grammar without cycles (the generator's initial-state grammars) reaches its final form within one step
+    // per rule; one with cycles keeps growing, and 10 steps is 30 s at the DeriveTime the seed scripts use.
+    static int defaultDerivationLength(const ir::EcoPlant& plant) {
+        return std::max(kDefaultEcoDerivationLength, static_cast<int>(plant.grow.rules.size()));
+    }
+
+    ir::SymbolId symbol(const std::string& name) { return grammar_.symbol(name); }
+
+    ir::SuccessorModule successorModule(const ir::EcoModule& m) {
+        ir::SuccessorModule module;
+        module.sym = m.name == "[" ? ir::kBranchOpen : m.name == "]" ? ir::kBranchClose : symbol(m.name);
+        module.args = m.args;
+        module.loc = m.loc;
+        return module;
+    }
+
+    ir::PatternModule pattern(const ir::EcoPatternSegment& seg) {
+        return {symbol(std::string(1, seg.letter)), {seg.slot}, seg.loc};
+    }
+
+    // `slot == stage` for every literal stage, in text order.
+    std::optional<ir::Expr> stageConditions(const ir::EcoRule& rule) {
+        std::optional<ir::Expr> condition;
+        auto add = [&](const ir::EcoPatternSegment& seg) {
+            if (!seg.stage) return;
+            ir::Expr test = binary(ir::Op::Eq, localSlot(seg.slot, seg.loc),
+                                   ir::Expr::constant(static_cast<float>(*seg.stage), seg.loc), seg.loc);
+            condition = conjoin(std::move(condition), std::move(test), seg.loc);
+        };
+        for (const ir::EcoPatternSegment& seg : rule.left) add(seg);
+        add(rule.predecessor);
+        for (const ir::EcoPatternSegment& seg : rule.right) add(seg);
+        return condition;
+    }
+
+    ir::Alternative alternative(const ir::EcoAlternative& alt) {
+        ir::Alternative out;
+        out.probability = alt.probability.value_or(1.0f);
+        for (const ir::EcoModule& m : alt.modules) out.modules.push_back(successorModule(m));
+        return out;
+    }
+
+    ir::Production skeleton(const ir::EcoRule& rule) {
+        ir::Production p;
+        for (const ir::EcoPatternSegment& seg : rule.left) p.left.push_back(pattern(seg));
+        p.strict.push_back(pattern(rule.predecessor));
+        for (const ir::EcoPatternSegment& seg : rule.right) p.right.push_back(pattern(seg));
+        p.condition = stageConditions(rule);
+        p.frameSize = static_cast<int>(rule.slotNames.size());
+        p.slotNames = rule.slotNames;
+        p.loc = rule.loc;
+        return p;
+    }
+
+    void lowerRule(const ir::EcoRule& rule) {
+        ir::Production p = skeleton(rule);
+        const ir::EcoAlternative& first = rule.alternatives.front();
+        if (first.stepCondition) p.condition = conjoin(std::move(p.condition), *first.stepCondition, first.loc);
+        for (const ir::EcoAlternative& alt : rule.alternatives) p.alternatives.push_back(alternative(alt));
+        grammar_.productions.productions.push_back(std::move(p));
+
+        if (first.stepCondition && rule.alternatives.size() > 1) {
+            ir::Production fallback = skeleton(rule);
+            for (size_t i = 1; i < rule.alternatives.size(); ++i)
+                fallback.alternatives.push_back(alternative(rule.alternatives[i]));
+            grammar_.productions.productions.push_back(std::move(fallback));
+        }
+    }
+
+    ir::Grammar grammar_;
+};
+
+} // namespace
+
+ir::Grammar compileEcoPlant(const ir::EcoScene& scene, size_t plantIndex) {
+    if (plantIndex >= scene.plants.size())
+        throw ir::InputError({scene.file, 0, 0}, fmt::format("the scene has {} plant(s); there is no plant {}",
+                                                             scene.plants.size(), plantIndex));
+    return PlantCompiler(scene).compile(scene.plants[plantIndex]);
+}
+
+} // namespace simeco::lang

@@ -1,0 +1,53 @@
+#include "lang/load_grammar.h"
+
+#include <filesystem>
+
+#include <fmt/format.h>
+
+#include "lang/cpfg_parser.h"
+#include "lang/cpfg_preprocessor.h"
+#include "lang/cpfg_view.h"
+#include "lang/eco_parser.h"
+#include "lang/quick_grammar.h"
+#include "lang/source_text.h"
+
+namespace simeco::lang {
+
+namespace fs = std::filesystem;
+
+std::string findViewFile(const std::string& lsystemPath) {
+    fs::path path(lsystemPath);
+    fs::path sameName = path.parent_path() / (path.stem().string() + ".v");
+    std::error_code ec;
+    if (fs::is_regular_file(sameName, ec)) return sameName.string();
+    std::string only;
+    fs::path dir = path.parent_path().empty() ? fs::path(".") : path.parent_path();
+    for (const fs::directory_entry& entry : fs::directory_iterator(dir, ec)) {
+        if (entry.path().extension() != ".v") continue;
+        if (!only.empty()) return {}; // several view files: none is clearly this model's
+        only = entry.path().string();
+    }
+    return only;
+}
+
+ir::Grammar loadGrammarFile(const std::string& path) {
+    std::string ext = fs::path(path).extension().string();
+    if (ext == ".eco") {
+        ir::EcoScene scene = parseEcoFile(path);
+        if (scene.plants.empty()) throw ir::InputError({path, 0, 0}, "the scene has no plant");
+        return compileEcoPlant(scene, 0);
+    }
+    if (ext == ".lsys") return parseQuickGrammar(readSourceFile(path), path);
+    if (ext != ".l")
+        throw ir::InputError({path, 0, 0},
+                             fmt::format("unknown grammar file type '{}' (expected .l, .lsys or .eco)", ext));
+    CpfgView view;
+    std::string viewPath = findViewFile(path);
+    if (!viewPath.empty()) view = readCpfgView(viewPath);
+    ir::Grammar g = parseCpfg(preprocessFile(path, view.macros), std::move(view.functions));
+    g.view = view.view;
+    g.curves = std::move(view.curves);
+    return g;
+}
+
+} // namespace simeco::lang

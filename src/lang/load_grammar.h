@@ -1,0 +1,17 @@
+// Loading a grammar file of any supported language into the IR, chosen by the file's extension.
+#pragma once
+
+#include <string>
+
+#include "ir/grammar.h"
+
+namespace simeco::lang {
+
+// `.l`: cpfg / L-studio (with the model's view file from the same folder, when there is one);
+// `.lsys`: quick (Houdini-style) grammar; `.eco`: SimEco script (the first plant's Grow block).
+ir::Grammar loadGrammarFile(const std::string& path);
+
+// The cpfg view file that belongs to an `.l` file: `<name>.v` beside it, else the only `.v` there.
+std::string findViewFile(const std::string& lsystemPath);
+
+} // namespace simeco::lang

@@ -1,0 +1,72 @@
+// Move-only buffers with their own memory, and the copies between host and device.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+#include "vk/handle.h"
+
+namespace simeco::vk {
+
+class Context;
+
+enum class MemoryUsage {
+    DeviceLocal,  // kernels' working memory; reached from the host only through staging copies
+    Upload,       // host-visible, written by the host and read once by the device
+    Readback,     // host-visible and preferably cached, written by the device and read by the host
+};
+
+class Buffer {
+public:
+    Buffer() = default;
+    // Storage and transfer usages are always included: every buffer can be bound to a kernel, filled and copied.
+    Buffer(const Context& context, VkDeviceSize size, MemoryUsage usage, VkBufferUsageFlags extraUsage = 0);
+
+    Buffer(Buffer&&) noexcept = default;
+    Buffer& operator=(Buffer&&) noexcept = default;
+
+    VkBuffer handle() const { return buffer_.get(); }
+    VkDeviceSize size() const { return size_; }
+    explicit operator bool() const { return static_cast<bool>(buffer_); }
+
+    // The persistent mapping of an Upload or Readback buffer; nullptr for DeviceLocal.
+    std::byte* mapped() const { return mapped_; }
+
+private:
+    UniqueMemory memory_;  // declared first so the buffer is destroyed before its memory
+    UniqueBuffer buffer_;
+    VkDeviceSize size_ = 0;
+    std::byte* mapped_ = nullptr;
+};
+
+// Index of a memory type allowed by `typeBits` that has all `required` flags, preferring one that also has
+// `preferred`. Throws VulkanError when none has the required flags.
+std::uint32_t chooseMemoryType(const VkPhysicalDeviceMemoryProperties& memory, std::uint32_t typeBits,
+                               VkMemoryPropertyFlags required, VkMemoryPropertyFlags preferred);
+
+// Blocking copies through a staging buffer (or the mapping, for host-visible buffers). Each waits for the
+// device, and orders itself after all earlier transfer and compute work on the queue.
+void upload(const Context& context, const Buffer& destination, std::span<const std::byte> bytes,
+            VkDeviceSize offset = 0);
+void download(const Context& context, const Buffer& source, std::span<std::byte> bytes, VkDeviceSize offset = 0);
+
+template <typename T>
+void uploadSpan(const Context& context, const Buffer& destination, std::span<const T> values) {
+    upload(context, destination, std::as_bytes(values));
+}
+
+template <typename T>
+std::vector<T> downloadVector(const Context& context, const Buffer& source, std::size_t count) {
+    std::vector<T> values(count);
+    download(context, source, std::as_writable_bytes(std::span<T>(values)));
+    return values;
+}
+
+// Records a fill of the whole buffer with a repeated 32-bit word; the caller places the barrier after it.
+void cmdFill(VkCommandBuffer cmd, const Buffer& buffer, std::uint32_t word);
+
+} // namespace simeco::vk

@@ -1,0 +1,161 @@
+#include "vk/context.h"
+
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "vk/vk_error.h"
+
+namespace simeco::vk {
+namespace {
+
+// The family that can do everything (graphics + compute) comes first: the renderer shares the queue.
+std::uint32_t chooseQueueFamily(VkPhysicalDevice device, std::uint32_t& timestampValidBits) {
+    std::uint32_t count = 0;
+    vkGetPhysicalDeviceQueueFamilyProperties(device, &count, nullptr);
+    std::vector<VkQueueFamilyProperties> families(count);
+    vkGetPhysicalDeviceQueueFamilyProperties(device, &count, families.data());
+    std::uint32_t chosen = count;
+    for (std::uint32_t i = 0; i < count; ++i) {
+        VkQueueFlags flags = families[i].queueFlags;
+        if ((flags & VK_QUEUE_COMPUTE_BIT) == 0) {
+            continue;
+        }
+        if (chosen == count || (flags & VK_QUEUE_GRAPHICS_BIT) != 0) {
+            chosen = i;
+        }
+        if ((flags & VK_QUEUE_GRAPHICS_BIT) != 0) {
+            break;
+        }
+    }
+    if (chosen == count) {
+        throw VulkanError("the selected device has no compute queue", VK_ERROR_FEATURE_NOT_PRESENT);
+    }
+    timestampValidBits = families[chosen].timestampValidBits;
+    return chosen;
+}
+
+} // namespace
+
+Context::Context(const ContextOptions& options) : instance_(options.validation, options.validationLog) {
+    std::vector<PhysicalDeviceInfo> devices = listPhysicalDevices(instance_.get());
+    info_ = devices[selectPhysicalDevice(devices, options.device)];
+    vkGetPhysicalDeviceProperties(info_.handle, &properties_);
+    vkGetPhysicalDeviceMemoryProperties(info_.handle, &memory_);
+    queueFamily_ = chooseQueueFamily(info_.handle, timestampValidBits_);
+
+    // Optional features are turned on where they exist; kernels that need one check for it themselves.
+    VkPhysicalDeviceVulkan12Features supported12{};
+    supported12.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES;
+    VkPhysicalDeviceFeatures2 supported{};
+    supported.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2;
+    supported.pNext = &supported12;
+    vkGetPhysicalDeviceFeatures2(info_.handle, &supported);
+
+    VkPhysicalDeviceVulkan12Features enabled12{};
+
+    enabled12.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES;
+    enabled12.hostQueryReset = supported12.hostQueryReset;
+    enabled12.timelineSemaphore = supported12.timelineSemaphore;
+    enabled12.scalarBlockLayout = supported12.scalarBlockLayout;
+    enabled12.vulkanMemoryModel = supported12.vulkanMemoryModel;
+    enabled12.vulkanMemoryModelDeviceScope = supported12.vulkanMemoryModelDeviceScope;
+    enabled12.storageBuffer8BitAccess = supported12.storageBuffer8BitAccess;
+    enabled12.shaderInt8 = supported12.shaderInt8;
+    VkPhysicalDeviceFeatures2 enabled{};
+    enabled.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2;
+    enabled.pNext = &enabled12;
+    enabled.features.shaderInt64 = supported.features.shaderInt64;
+    enabled.features.shaderInt16 = supported.features.shaderInt16;
+    enabled.features.shaderFloat64 = supported.features.shaderFloat64;
+
+    float priority = 1.0f;
+    VkDeviceQueueCreateInfo queueInfo{};
+    queueInfo.sType = VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO;
+    queueInfo.queueFamilyIndex = queueFamily_;
+    queueInfo.queueCount = 1;
+    queueInfo.pQueuePriorities = &priority;
+
+    const char* extensions[] = {VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME};
+    VkDeviceCreateInfo deviceInfo{};
+    deviceInfo.sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO;
+    deviceInfo.pNext = &enabled;
+    deviceInfo.queueCreateInfoCount = 1;
+    deviceInfo.pQueueCreateInfos = &queueInfo;
+    deviceInfo.enabledExtensionCount = 1;
+    deviceInfo.ppEnabledExtensionNames = extensions;
+    VK_CHECK(vkCreateDevice(info_.handle, &deviceInfo, nullptr, &device_));
+    vkGetDeviceQueue(device_, queueFamily_, 0, &queue_);
+
+    cmdPushDescriptorSet_ =
+        reinterpret_cast<PFN_vkCmdPushDescriptorSetKHR>(vkGetDeviceProcAddr(device_, "vkCmdPushDescriptorSetKHR"));
+    VkCommandPoolCreateInfo poolInfo{};
+    poolInfo.sType = VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO;
+    poolInfo.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT | VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
+    poolInfo.queueFamilyIndex = queueFamily_;
+    VkCommandPool pool = VK_NULL_HANDLE;
+    VkResult result = vkCreateCommandPool(device_, &poolInfo, nullptr, &pool);
+    if (cmdPushDescriptorSet_ == nullptr || result != VK_SUCCESS) {
+        vkDestroyDevice(device_, nullptr);
+        throwVulkanError(result != VK_SUCCESS ? result : VK_ERROR_EXTENSION_NOT_PRESENT,
+                         "vkCreateCommandPool / vkGetDeviceProcAddr(vkCmdPushDescriptorSetKHR)", __FILE__, __LINE__);
+    }
+    commandPool_ = UniqueCommandPool(device_, pool);
+}
+
+Context::~Context() {
+    // Objects made from the device must go before it; the instance member goes last on its own.
+    vkDeviceWaitIdle(device_);
+    commandPool_.reset();
+    vkDestroyDevice(device_, nullptr);
+}
+
+void Context::submitAndWait(const std::function<void(VkCommandBuffer)>& record, std::chrono::seconds timeout) const {
+    VkCommandBufferAllocateInfo allocateInfo{};
+    allocateInfo.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO;
+    allocateInfo.commandPool = commandPool_.get();
+    allocateInfo.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+    allocateInfo.commandBufferCount = 1;
+    VkCommandBuffer cmd = VK_NULL_HANDLE;
+    VK_CHECK(vkAllocateCommandBuffers(device_, &allocateInfo, &cmd));
+    // Freed on every path, including a throw from `record`.
+    struct FreeOnExit {
+        VkDevice device;
+        VkCommandPool pool;
+        VkCommandBuffer cmd;
+        ~FreeOnExit() { vkFreeCommandBuffers(device, pool, 1, &cmd); }
+    } freeOnExit{device_, commandPool_.get(), cmd};
+
+    VkCommandBufferBeginInfo beginInfo{};
+
+    beginInfo.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO;
+    beginInfo.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+    VK_CHECK(vkBeginCommandBuffer(cmd, &beginInfo));
+    record(cmd);
+    VK_CHECK(vkEndCommandBuffer(cmd));
+
+    VkFenceCreateInfo fenceInfo{};
+
+    fenceInfo.sType = VK_STRUCTURE_TYPE_FENCE_CREATE_INFO;
+    VkFence rawFence = VK_NULL_HANDLE;
+    VK_CHECK(vkCreateFence(device_, &fenceInfo, nullptr, &rawFence));
+    UniqueFence fence(device_, rawFence);
+
+    VkSubmitInfo submit{};
+
+    submit.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO;
+    submit.commandBufferCount = 1;
+    submit.pCommandBuffers = &cmd;
+    VK_CHECK(vkQueueSubmit(queue_, 1, &submit, fence.get()));
+    auto nanoseconds = static_cast<std::uint64_t>(std::chrono::nanoseconds(timeout).count());
+    VkResult waited = vkWaitForFences(device_, 1, &rawFence, VK_TRUE, nanoseconds);
+    if (waited == VK_TIMEOUT) {
+        // The GPU may still use the command buffer and fence; leaking them beats destroying objects in use.
+        fence.release();
+        freeOnExit.cmd = VK_NULL_HANDLE;
+        throw VulkanError(fmt::format("GPU work did not finish within {} s", timeout.count()), VK_TIMEOUT);
+    }
+    VK_CHECK(waited);
+}
+
+} // namespace simeco::vk

@@ -1,0 +1,72 @@
+// The one Vulkan device simeco runs on: instance, chosen physical device, queue, command pool, and a
+// one-shot submit for setup work and tests.
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <functional>
+#include <string>
+
+#include <vulkan/vulkan.h>
+
+#include "vk/device_info.h"
+#include "vk/handle.h"
+#include "vk/instance.h"
+
+namespace simeco::vk {
+
+struct ContextOptions {
+    // `--device`: an index or a name substring; empty picks the best device (a real GPU, else lavapipe).
+    std::string device;
+    // Validation layer plus a messenger counting its messages; on by default when SIMECO_VALIDATION=1.
+    bool validation = validationRequestedByEnvironment();
+    // Where validation messages are collected; must outlive the context. Null: the instance keeps its own.
+    ValidationLog* validationLog = nullptr;
+};
+
+class Context {
+public:
+    explicit Context(const ContextOptions& options = {});
+    ~Context();
+
+    // Buffers and pipelines keep the device handle, so the context stays put.
+    Context(const Context&) = delete;
+    Context& operator=(const Context&) = delete;
+
+    VkDevice device() const { return device_; }
+    VkPhysicalDevice physicalDevice() const { return info_.handle; }
+    VkQueue queue() const { return queue_; }
+    std::uint32_t queueFamily() const { return queueFamily_; }
+
+    const Instance& instance() const { return instance_; }
+    const PhysicalDeviceInfo& deviceInfo() const { return info_; }
+    const VkPhysicalDeviceLimits& limits() const { return properties_.limits; }
+    const VkPhysicalDeviceMemoryProperties& memoryProperties() const { return memory_; }
+    // Bits of a timestamp that are valid on the queue; 0 means no timestamps.
+    std::uint32_t timestampValidBits() const { return timestampValidBits_; }
+
+    bool validationEnabled() const { return instance_.validationEnabled(); }
+    const ValidationLog& validationLog() const { return instance_.validationLog(); }
+
+    // VK_KHR_push_descriptor's entry point, loaded once for every pipeline.
+    PFN_vkCmdPushDescriptorSetKHR cmdPushDescriptorSet() const { return cmdPushDescriptorSet_; }
+
+    // Records with `record` into a fresh command buffer, submits it and waits. A GPU that does not finish
+    // within `timeout` raises VulkanError rather than hanging the program.
+    void submitAndWait(const std::function<void(VkCommandBuffer)>& record,
+                       std::chrono::seconds timeout = std::chrono::seconds(120)) const;
+
+private:
+    Instance instance_;
+    PhysicalDeviceInfo info_;
+    VkPhysicalDeviceProperties properties_{};
+    VkPhysicalDeviceMemoryProperties memory_{};
+    std::uint32_t queueFamily_ = 0;
+    std::uint32_t timestampValidBits_ = 0;
+    VkDevice device_ = VK_NULL_HANDLE;
+    VkQueue queue_ = VK_NULL_HANDLE;
+    UniqueCommandPool commandPool_;
+    PFN_vkCmdPushDescriptorSetKHR cmdPushDescriptorSet_ = nullptr;
+};
+
+} // namespace simeco::vk

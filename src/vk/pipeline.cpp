@@ -1,0 +1,145 @@
+#include "vk/pipeline.h"
+
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "compute/shaders.h"
+#include "vk/buffer.h"
+#include "vk/context.h"
+#include "vk/vk_error.h"
+
+namespace simeco::vk {
+
+BufferRange::BufferRange(const Buffer& whole) : buffer(whole.handle()) {}
+
+BufferRange::BufferRange(const Buffer& source, VkDeviceSize first, VkDeviceSize bytes)
+    : buffer(source.handle()), offset(first), size(bytes) {}
+
+ComputePipeline::ComputePipeline(const Context& context, std::span<const std::uint32_t> spirv, std::string name)
+    : name_(std::move(name)),
+      reflection_(reflectComputeShader(spirv)),
+      maxGroupsX_(context.limits().maxComputeWorkGroupCount[0]),
+      maxGroupsY_(context.limits().maxComputeWorkGroupCount[1]),
+      cmdPushDescriptorSet_(context.cmdPushDescriptorSet()) {
+    VkDevice device = context.device();
+    if (reflection_.pushConstantSize > context.limits().maxPushConstantsSize) {
+        throw VulkanError(fmt::format("kernel {} needs {} bytes of push constants; the device allows {}", name_,
+                                      reflection_.pushConstantSize, context.limits().maxPushConstantsSize),
+                          VK_ERROR_FEATURE_NOT_PRESENT);
+    }
+
+    std::vector<VkDescriptorSetLayoutBinding> bindings;
+    for (const ShaderBinding& b : reflection_.bindings) {
+        if (b.set != 0) {
+            throw ShaderInterfaceError(fmt::format("kernel {}: binding {} is in set {}; push descriptors use set 0 only",
+                                                   name_, b.binding, b.set));
+        }
+        bindings.push_back({b.binding, b.type, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr});
+    }
+    VkDescriptorSetLayoutCreateInfo setInfo{};
+    setInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO;
+    setInfo.flags = VK_DESCRIPTOR_SET_LAYOUT_CREATE_PUSH_DESCRIPTOR_BIT_KHR;
+    setInfo.bindingCount = static_cast<std::uint32_t>(bindings.size());
+    setInfo.pBindings = bindings.data();
+    VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
+    VK_CHECK(vkCreateDescriptorSetLayout(device, &setInfo, nullptr, &setLayout));
+    setLayout_ = UniqueDescriptorSetLayout(device, setLayout);
+
+    VkPushConstantRange pushRange{VK_SHADER_STAGE_COMPUTE_BIT, 0, reflection_.pushConstantSize};
+    VkPipelineLayoutCreateInfo layoutInfo{};
+    layoutInfo.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO;
+    layoutInfo.setLayoutCount = 1;
+    layoutInfo.pSetLayouts = &setLayout;
+    layoutInfo.pushConstantRangeCount = reflection_.pushConstantSize > 0 ? 1 : 0;
+    layoutInfo.pPushConstantRanges = &pushRange;
+    VkPipelineLayout layout = VK_NULL_HANDLE;
+    VK_CHECK(vkCreatePipelineLayout(device, &layoutInfo, nullptr, &layout));
+    layout_ = UniquePipelineLayout(device, layout);
+
+    VkShaderModuleCreateInfo moduleInfo{};
+
+    moduleInfo.sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO;
+    moduleInfo.codeSize = spirv.size_bytes();
+    moduleInfo.pCode = spirv.data();
+    VkShaderModule rawModule = VK_NULL_HANDLE;
+    VK_CHECK(vkCreateShaderModule(device, &moduleInfo, nullptr, &rawModule));
+    UniqueShaderModule module(device, rawModule);  // only needed until the pipeline exists
+
+    VkComputePipelineCreateInfo pipelineInfo{};
+
+    pipelineInfo.sType = VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO;
+    pipelineInfo.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
+    pipelineInfo.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
+    pipelineInfo.stage.module = rawModule;
+    pipelineInfo.stage.pName = reflection_.entryPoint.c_str();
+    pipelineInfo.layout = layout;
+    VkPipeline pipeline = VK_NULL_HANDLE;
+    VK_CHECK(vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &pipelineInfo, nullptr, &pipeline));
+    pipeline_ = UniquePipeline(device, pipeline);
+}
+
+ComputePipeline ComputePipeline::embedded(const Context& context, std::string_view name) {
+    return ComputePipeline(context, shaders::spirv(name), std::string(name));
+}
+
+std::uint64_t ComputePipeline::groupsFor(std::uint64_t items, std::uint32_t itemsPerInvocation) const {
+    std::uint64_t perGroup = std::uint64_t{reflection_.localSize[0]} * reflection_.localSize[1] *
+                             reflection_.localSize[2] * itemsPerInvocation;
+    return (items + perGroup - 1) / perGroup;
+}
+
+void ComputePipeline::dispatchBytes(VkCommandBuffer cmd, std::span<const BufferRange> buffers,
+                                    std::span<const std::byte> push, std::uint64_t groups) const {
+    // Every check comes before the first recorded command, so a mismatch leaves the command buffer untouched.
+    if (push.size() != reflection_.pushConstantSize) {
+        throw DispatchMismatch(fmt::format("kernel {}: push constants are {} bytes on the host but {} in the shader",
+                                           name_, push.size(), reflection_.pushConstantSize));
+    }
+    if (buffers.size() != reflection_.bindings.size()) {
+        throw DispatchMismatch(fmt::format("kernel {}: {} buffers given, the shader declares {} bindings", name_,
+                                           buffers.size(), reflection_.bindings.size()));
+    }
+    for (std::size_t i = 0; i < buffers.size(); ++i) {
+        if (reflection_.bindings[i].binding != i) {
+            throw DispatchMismatch(fmt::format("kernel {}: bindings must be numbered 0..{} (found binding {})", name_,
+                                               buffers.size() - 1, reflection_.bindings[i].binding));
+        }
+        if (buffers[i].buffer == VK_NULL_HANDLE) {
+            throw DispatchMismatch(fmt::format("kernel {}: buffer for binding {} is empty", name_, i));
+        }
+    }
+    std::uint64_t groupsY = (groups + maxGroupsX_ - 1) / maxGroupsX_;
+    if (groupsY > maxGroupsY_) {
+        throw VulkanError(fmt::format("kernel {}: {} workgroups exceed the device's {} x {} grid", name_, groups,
+                                      maxGroupsX_, maxGroupsY_),
+                          VK_ERROR_FEATURE_NOT_PRESENT);
+    }
+    if (groups == 0) {
+        return;
+    }
+    std::uint64_t groupsX = (groups + groupsY - 1) / groupsY;
+
+    std::vector<VkDescriptorBufferInfo> infos(buffers.size());
+    std::vector<VkWriteDescriptorSet> writes(buffers.size());
+    for (std::size_t i = 0; i < buffers.size(); ++i) {
+        infos[i] = {buffers[i].buffer, buffers[i].offset, buffers[i].size};
+        writes[i].sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
+        writes[i].dstBinding = static_cast<std::uint32_t>(i);
+        writes[i].descriptorCount = 1;
+        writes[i].descriptorType = reflection_.bindings[i].type;
+        writes[i].pBufferInfo = &infos[i];
+    }
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_.get());
+    if (!writes.empty()) {
+        cmdPushDescriptorSet_(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.get(), 0,
+                              static_cast<std::uint32_t>(writes.size()), writes.data());
+    }
+    if (!push.empty()) {
+        vkCmdPushConstants(cmd, layout_.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0, static_cast<std::uint32_t>(push.size()),
+                           push.data());
+    }
+    vkCmdDispatch(cmd, static_cast<std::uint32_t>(groupsX), static_cast<std::uint32_t>(groupsY), 1);
+}
+
+} // namespace simeco::vk

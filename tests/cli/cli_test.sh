@@ -1,0 +1,88 @@
+#!/usr/bin/env bash
+# End-to-end checks of the simeco command line. Usage: cli_test.sh SIMECO SOURCE_DIR
+set -u
+simeco=$1
+source_dir=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+passed=0
+failed=0
+
+check() { # name, condition already evaluated as $?
+  if [ "$2" -eq 0 ]; then passed=$((passed + 1)); else failed=$((failed + 1)); echo "FAILED: $1"; fi
+}
+
+"$simeco" --help >"$work/help.txt" 2>&1
+check "--help exits 0" $?
+grep -q "derive" "$work/help.txt"
+check "--help lists derive" $?
+
+"$simeco" derive --help >/dev/null 2>&1
+check "derive --help exits 0" $?
+
+cat >"$work/algae.l" <<'L'
+Lsystem: 1
+derivation length: 5
+Axiom: A
+A --> AB
+B --> A
+endlsystem
+L
+out=$("$simeco" derive "$work/algae.l")
+check "derive exits 0" $?
+[ "$out" = "ABAABABAABAAB" ]
+check "derive prints the string (got '$out')" $?
+
+out=$("$simeco" derive "$work/algae.l" -n 2)
+[ "$out" = "ABA" ]
+check "-n overrides the derivation length (got '$out')" $?
+
+"$simeco" derive "$work/algae.l" --format stats >"$work/stats.txt"
+check "--format stats exits 0" $?
+grep -q "^modules: 13$" "$work/stats.txt" && grep -q "^  A 8$" "$work/stats.txt" && grep -q "^max branch depth: 0$" "$work/stats.txt"
+check "stats report counts" $?
+
+"$simeco" derive "$work/algae.l" --format json >"$work/stats.json"
+check "--format json exits 0" $?
+python3 -c "import json,sys; d=json.load(open('$work/stats.json')); sys.exit(0 if d['modules']==13 and d['symbols']['B']==5 else 1)"
+check "json report is valid and counts modules" $?
+
+out=$("$simeco" derive "$work/algae.l" --plants 3 | wc -l)
+[ "$out" -eq 3 ]
+check "--plants prints one line per plant" $?
+
+printf 'Lsystem: 1\nderivation length: 1\nAxiom: A(1)\nA(x) --> A(y)\nendlsystem\n' >"$work/bad.l"
+"$simeco" derive "$work/bad.l" >"$work/out.txt" 2>"$work/err.txt"
+code=$?
+[ $code -eq 2 ]
+check "bad input exits 2 (got $code)" $?
+grep -q "^$work/bad.l:4:12: error: undefined name 'y'$" "$work/err.txt"
+check "error in file:line:col form ($(cat "$work/err.txt"))" $?
+[ ! -s "$work/out.txt" ]
+check "no partial output on error" $?
+
+head -c 3000 /dev/urandom >"$work/junk.l"
+timeout 20 "$simeco" derive "$work/junk.l" >/dev/null 2>"$work/err.txt"
+code=$?
+[ $code -eq 2 ]
+check "binary junk exits 2 (got $code)" $?
+
+"$simeco" derive "$work/missing.l" >/dev/null 2>"$work/err.txt"
+[ $? -eq 2 ] && grep -q "cannot open file" "$work/err.txt"
+check "missing file is reported" $?
+
+printf 'Lsystem: 1\nderivation length: 60\nAxiom: F\nF --> FF\nendlsystem\n' >"$work/runaway.l"
+timeout 60 "$simeco" derive "$work/runaway.l" --max-modules 100000 >/dev/null 2>"$work/err.txt"
+code=$?
+[ $code -eq 1 ] && grep -q "module budget of 100000" "$work/err.txt"
+check "module budget ends runaway growth with a clear error (code $code)" $?
+
+"$simeco" derive "$work/algae.l" --format nonsense >/dev/null 2>&1
+[ $? -eq 2 ]
+check "bad option exits 2" $?
+
+"$simeco" devices >"$work/devices.txt" 2>&1
+check "devices lists Vulkan devices ($(head -c 300 "$work/devices.txt"))" $?
+
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]

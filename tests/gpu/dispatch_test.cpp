@@ -1,0 +1,94 @@
+// The dispatch helper and SPIR-V reflection against the embedded scan kernels.
+#include <cstdint>
+#include <stdexcept>
+#include <vector>
+
+#include "compute/shaders.h"
+#include "compute/shared/config.h"
+#include "gpu_fixture.h"
+#include "vk/barriers.h"
+#include "vk/buffer.h"
+#include "vk/pipeline.h"
+
+namespace simeco::test {
+namespace {
+
+using DispatchTest = GpuTest;
+
+TEST(ShaderReflectionTest, ReadsLocalSizeBindingsAndPushConstants) {
+    vk::ShaderReflection r = vk::reflectComputeShader(shaders::spirv("scan/downsweep"));
+    EXPECT_EQ(r.entryPoint, "main");
+    EXPECT_EQ(r.localSize[0], shared::kScanWorkgroupSize);
+    EXPECT_EQ(r.localSize[1], 1u);
+    EXPECT_EQ(r.localSize[2], 1u);
+    ASSERT_EQ(r.bindings.size(), 4u);
+    for (std::uint32_t i = 0; i < 4; ++i) {
+        EXPECT_EQ(r.bindings[i].set, 0u);
+        EXPECT_EQ(r.bindings[i].binding, i);
+        EXPECT_EQ(r.bindings[i].type, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
+    }
+    EXPECT_EQ(r.pushConstantSize, sizeof(shared::ScanDownsweepPush));
+}
+
+TEST(ShaderReflectionTest, RejectsWordsThatAreNotSpirv) {
+    const std::uint32_t words[] = {0xdeadbeef, 0, 0, 0, 0};
+    EXPECT_THROW(vk::reflectComputeShader(words), vk::ShaderInterfaceError);
+}
+
+TEST(EmbeddedShadersTest, UnknownNameThrows) {
+    EXPECT_THROW(shaders::spirv("scan/no_such_kernel"), std::out_of_range);
+}
+
+TEST_F(DispatchTest, RejectsMismatchedPushConstantSize) {
+    vk::ComputePipeline reduce = vk::ComputePipeline::embedded(context(), "scan/reduce");
+    vk::Buffer a(context(), 64, vk::MemoryUsage::DeviceLocal);
+    vk::Buffer b(context(), 64, vk::MemoryUsage::DeviceLocal);
+    // The downsweep's push block is 16 bytes; the reduce kernel declares 8.
+    shared::ScanDownsweepPush wrongPush{16, 1, 0, 0};
+    context().submitAndWait([&](VkCommandBuffer cmd) {
+        EXPECT_THROW(reduce.dispatch(cmd, {a, b}, wrongPush, 1), vk::DispatchMismatch);
+        EXPECT_THROW(reduce.dispatch(cmd, {a, b}, 1), vk::DispatchMismatch);  // no push constants at all
+    });
+}
+
+TEST_F(DispatchTest, RejectsMismatchedBindingCount) {
+    vk::ComputePipeline reduce = vk::ComputePipeline::embedded(context(), "scan/reduce");
+    vk::Buffer a(context(), 64, vk::MemoryUsage::DeviceLocal);
+    shared::ScanReducePush push{16, 1};
+    context().submitAndWait([&](VkCommandBuffer cmd) {
+        EXPECT_THROW(reduce.dispatch(cmd, {a}, push, 1), vk::DispatchMismatch);
+        EXPECT_THROW(reduce.dispatch(cmd, {a, a, a}, push, 1), vk::DispatchMismatch);
+    });
+}
+
+TEST_F(DispatchTest, GroupCountsComeFromTheKernelsLocalSize) {
+    vk::ComputePipeline reduce = vk::ComputePipeline::embedded(context(), "scan/reduce");
+    EXPECT_EQ(reduce.groupsFor(0), 0u);
+    EXPECT_EQ(reduce.groupsFor(1), 1u);
+    EXPECT_EQ(reduce.groupsFor(shared::kScanWorkgroupSize), 1u);
+    EXPECT_EQ(reduce.groupsFor(shared::kScanWorkgroupSize + 1), 2u);
+    EXPECT_EQ(reduce.groupsFor(shared::kScanTileSize, shared::kScanValuesPerInvocation * shared::kScanRounds), 1u);
+}
+
+// More workgroups than the x dimension allows (65535 on most devices) go out as a 2D grid; every tile must
+// still be visited exactly once. The reduce kernel with an empty input writes a zero sum per tile.
+TEST_F(DispatchTest, SplitsLargeDispatchesIntoTwoDimensions) {
+    vk::ComputePipeline reduce = vk::ComputePipeline::embedded(context(), "scan/reduce");
+    std::uint32_t tiles = context().limits().maxComputeWorkGroupCount[0] + 1000;
+    vk::Buffer empty(context(), 4, vk::MemoryUsage::DeviceLocal);
+    vk::Buffer sums(context(), std::uint64_t{tiles} * 4, vk::MemoryUsage::DeviceLocal);
+    context().submitAndWait([&](VkCommandBuffer cmd) {
+        vk::cmdFill(cmd, sums, 0xffffffffu);
+        vk::memoryBarrier(cmd, vk::Hazard::TransferToCompute);
+        reduce.dispatch(cmd, {empty, sums}, shared::ScanReducePush{0, tiles}, tiles);
+    });
+    std::vector<std::uint32_t> result = vk::downloadVector<std::uint32_t>(context(), sums, tiles);
+    std::size_t untouched = 0;
+    for (std::uint32_t value : result) {
+        untouched += value != 0 ? 1 : 0;
+    }
+    EXPECT_EQ(untouched, 0u);
+}
+
+} // namespace
+} // namespace simeco::test

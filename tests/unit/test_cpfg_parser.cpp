@@ -1,0 +1,69 @@
+// The cpfg reader: sections, contexts, conditions and statement blocks land in the IR where they belong.
+#include <gtest/gtest.h>
+
+#include "grammar_text.h"
+
+namespace {
+
+using simeco::testing::grammarFromText;
+
+TEST(CpfgParser, ReadsHeaderSectionsAndProductions) {
+    simeco::ir::Grammar g = grammarFromText(
+        "#define STEPS 7\nLsystem: 1\nderivation length: STEPS\nignore: +-\nAxiom: A(1)\n"
+        "B(a) < A(x) > [C]D : {y = x;} y > 0 {z = 1;} --> A(x + 1)\nA(x) --> *\n"
+        "decomposition\nmaximum depth: 3\nA(x) --> B(x)\nhomomorphism\nmaximum depth: 2\nB(x) --> F(x)\n"
+        "endlsystem\n");
+    EXPECT_EQ(g.derivationLength, 7);
+    ASSERT_EQ(g.productions.productions.size(), 2u);
+    const simeco::ir::Production& p = g.productions.productions[0];
+    EXPECT_EQ(p.left.size(), 1u);
+    EXPECT_EQ(p.strict.size(), 1u);
+    EXPECT_EQ(p.right.size(), 4u); // [ C ] D
+    EXPECT_EQ(p.before.size(), 1u);
+    EXPECT_TRUE(p.condition.has_value());
+    EXPECT_EQ(p.after.size(), 1u);
+    EXPECT_EQ(p.slotNames, (std::vector<std::string>{"a", "x", "y", "z"}));
+    EXPECT_TRUE(g.productions.productions[1].alternatives[0].modules.empty());
+    EXPECT_EQ(g.decomposition.maxDepth, 3);
+    EXPECT_EQ(g.homomorphism.maxDepth, 2);
+    EXPECT_EQ(g.homomorphism.productions.size(), 1u);
+    EXPECT_TRUE(g.skippedInContext(*g.alphabet.find("+")));
+    EXPECT_FALSE(g.skippedInContext(*g.alphabet.find("A")));
+}
+
+TEST(CpfgParser, TurtleModulesAreOneCharacterEachAsInCpfg) {
+    simeco::ir::Grammar g = grammarFromText("Lsystem: 1\nAxiom: @Gs~l?P(1,2)$\nendlsystem\n");
+    std::vector<std::string> names;
+    for (const simeco::ir::SuccessorModule& m : g.axiom) names.push_back(g.alphabet.name(m.sym));
+    EXPECT_EQ(names, (std::vector<std::string>{"@", "G", "s", "~", "l", "?", "P", "$"}));
+    EXPECT_EQ(g.axiom[6].args.size(), 2u);
+}
+
+TEST(CpfgParser, ArrowsInAllSpellings) {
+    simeco::ir::Grammar g = grammarFromText("Lsystem: 1\nAxiom: A\nA --> B\nB -> C\nC \xE2\x86\x92 A\nendlsystem\n");
+    EXPECT_EQ(g.productions.productions.size(), 3u);
+}
+
+TEST(CpfgParser, StochasticFactorsMakeEveryProductionWeighted) {
+    simeco::ir::Grammar g = grammarFromText("Lsystem: 1\nseed: 3\nAxiom: F\nF --> FF : 30\nF --> F\nendlsystem\n");
+    EXPECT_EQ(g.seed, 3u);
+    EXPECT_FLOAT_EQ(g.productions.productions[0].weight, 30.0f);
+    EXPECT_FLOAT_EQ(g.productions.productions[1].weight, 1.0f);
+}
+
+TEST(CpfgParser, ViewFileGivesAngleAndFunctions) {
+    namespace fs = std::filesystem;
+    fs::path dir = fs::temp_directory_path() / ("simeco-view-" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    std::ofstream(dir / "m.l") << "Lsystem: 1\nAxiom: A(func(1, 0.5))\nendlsystem\n";
+    std::ofstream(dir / "m.v") << "angle increment: 30\nfunction: f.func\n";
+    std::ofstream(dir / "f.func") << "fver 1 1\nname: f\nsamples: 0\nflip: off\npoints: 4\n0 0\n0.33 0.33\n0.66 0.66\n1 1\n";
+    simeco::ir::Grammar g = simeco::lang::loadGrammarFile((dir / "m.l").string());
+    EXPECT_FLOAT_EQ(g.view.angleIncrement, 30.0f);
+    ASSERT_EQ(g.functions.size(), 1u);
+    // The curve through collinear points is the line y = x; bisection stops within 0.001 in x.
+    EXPECT_NEAR(simeco::ir::evaluateCurve(g.functions[0], 0.5), 0.5, 0.002);
+    fs::remove_all(dir);
+}
+
+} // namespace

@@ -1,0 +1,141 @@
+// Malformed `.l` input: each case must give `file:line:col: error: message` (as an InputError), never a
+// crash, a hang or a partial result. Derive-time errors (division by zero, ...) are reported the same way.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "cpu/derive.h"
+#include "lang/load_grammar.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct MalformedCase {
+    const char* name;
+    std::string text;
+    int line;            // expected line of the error
+    int col;             // expected column, 0 when not checked
+    const char* message; // a part of the expected message
+};
+
+// Writes `text` to a fresh file and loads and derives it; returns the error it reported.
+std::optional<simeco::ir::InputError> loadAndDerive(const std::string& text, const std::string& fileName,
+                                                    fs::path& pathOut) {
+    fs::path dir = fs::temp_directory_path() / ("simeco-malformed-" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    pathOut = dir / fileName;
+    {
+        std::ofstream out(pathOut, std::ios::binary);
+        out << text;
+    }
+    try {
+        simeco::ir::Grammar g = simeco::lang::loadGrammarFile(pathOut.string());
+        simeco::cpu::DeriveOptions options;
+        options.maxModules = 100000;
+        simeco::cpu::deriveCpu(g, options);
+    } catch (const simeco::ir::InputError& e) {
+        fs::remove_all(dir);
+        return e;
+    }
+    fs::remove_all(dir);
+    return std::nullopt;
+}
+
+std::string lsys(const std::string& body) { return "Lsystem: 1\nderivation length: 2\n" + body + "\nendlsystem\n"; }
+
+const std::vector<MalformedCase>& cases() {
+    static const std::vector<MalformedCase> all = {
+        {"unbalanced_open_bracket", lsys("Axiom: F\nF --> F[+F"), 4, 8, "unbalanced '['"},
+        {"unbalanced_close_bracket", lsys("Axiom: F\nF --> F]+F"), 4, 8, "unbalanced ']'"},
+        {"unbalanced_axiom", lsys("Axiom: F[[F]"), 3, 9, "unbalanced '['"},
+        {"bad_expression_operator", lsys("Axiom: A(1)\nA(x) --> A(x+*2)"), 4, 14, "unexpected '*'"},
+        {"missing_close_paren", lsys("Axiom: A(1)\nA(x) --> A((x+1)"), 4, 17, "expected ',' or ')'"},
+        {"undefined_name", lsys("Axiom: A(1)\nA(x) --> A(y)"), 4, 12, "undefined name 'y'"},
+        {"undefined_name_in_condition", lsys("Axiom: A(1)\nA(x) : z > 1 --> A(x)"), 4, 8, "undefined name 'z'"},
+        {"unknown_function", lsys("Axiom: A(1)\nA(x) --> A(foo(x))"), 4, 12, "unknown function 'foo'"},
+        {"wrong_argument_count", lsys("Axiom: A(1)\nA(x) --> A(sqrt(x, 2))"), 4, 12, "'sqrt' takes 1 argument"},
+        {"division_by_zero", lsys("Axiom: A(1)\nA(x) --> A(x/0)"), 4, 13, "division by zero"},
+        {"division_by_zero_variable", lsys("Axiom: A(1,0)\nA(x,z) --> A(x/z,z)"), 4, 15, "division by zero"},
+        {"remainder_by_zero", lsys("Axiom: A(5)\nA(x) --> A(x%0)"), 4, 13, "remainder by zero"},
+        {"missing_arrow", lsys("Axiom: F\nF FF"), 4, 5, "expected '-->'"},
+        {"empty_successor_needs_star", lsys("Axiom: F\nF -->"), 4, 0, "the successor is empty"},
+        {"missing_axiom", "Lsystem: 1\nderivation length: 2\nF --> FF\nendlsystem\n", 3, 1, "expected 'Axiom:'"},
+        {"missing_lsystem", "derivation length: 2\nAxiom: F\n", 1, 1, "expected 'Lsystem:'"},
+        {"missing_endlsystem", "Lsystem: 1\nAxiom: F\nF --> FF\n", 3, 0, "missing 'endlsystem'"},
+        {"bad_derivation_length", lsys("derivation length: -3\nAxiom: F"), 3, 1, "derivation length"},
+        {"non_constant_derivation_length", "Lsystem: 1\nderivation length: q\nAxiom: F\nendlsystem\n", 2, 20, "undefined name 'q'"},
+        {"self_referential_define", "#define X (X+1)\nLsystem: 1\nderivation length: X\nAxiom: F\nendlsystem\n", 3, 20,
+         "macro 'X' refers to itself"},
+        {"mutually_recursive_defines", "#define A B\n#define B A\nLsystem: 1\nAxiom: F(A)\nendlsystem\n", 4, 10,
+         "refers to itself"},
+        {"macro_argument_count", "#define M(a,b) a+b\nLsystem: 1\nAxiom: F(M(1))\nendlsystem\n", 3, 10,
+         "takes 2 argument(s), 1 given"},
+        {"unterminated_comment", "Lsystem: 1\n/* never closed\nAxiom: F\nendlsystem\n", 2, 1, "unterminated comment"},
+        {"unterminated_if", "#if 1\nLsystem: 1\nAxiom: F\nendlsystem\n", 1, 1, "unterminated #if"},
+        {"else_without_if", "#else\nLsystem: 1\nAxiom: F\nendlsystem\n", 1, 1, "#else without #if"},
+        {"duplicate_parameter", lsys("Axiom: A(1,2)\nA(x,x) --> A(x,x)"), 4, 5, "parameter 'x' defined twice"},
+        {"parameter_without_name", lsys("Axiom: A(1)\nA(1) --> A(2)"), 4, 3, "expected a parameter name"},
+        {"empty_parameter_list", lsys("Axiom: A()\nA(x) --> A(x)"), 3, 0, "empty parameter list"},
+        {"paren_without_module", lsys("Axiom: (1)F"), 3, 8, "'(' without a module name"},
+        {"array_index_out_of_range", "Lsystem: 1\ndefine: { array a[2] = {1, 2}; }\nderivation length: 1\nAxiom: A(5)\n"
+                                     "A(x) --> A(a[x])\nendlsystem\n", 5, 12, "out of range for array 'a'"},
+        {"too_many_array_values", "Lsystem: 1\ndefine: { array a[2] = {1, 2, 3}; }\nAxiom: F\nendlsystem\n", 2, 31,
+         "too many values"},
+        {"statement_block_without_braces", lsys("Axiom: A(1)\nA(x) : { if (x > 0) y = 1; } --> A(x)"), 4, 0,
+         "blocks need braces"},
+        {"missing_semicolon", lsys("Axiom: A(1)\nA(x) : { y = x } --> A(y)"), 4, 0, "expected ';'"},
+        {"endless_loop", lsys("Axiom: A(1)\nA(x) : { while (1) { x = x + 1; } } --> A(x)"), 4, 10, "loop still running"},
+        {"maximum_depth_outside_section", lsys("maximum depth: 3\nAxiom: F"), 3, 1, "'maximum depth' belongs"},
+        {"unterminated_string", lsys("Axiom: A(1)\nA(x) : { printf(\"oops); } --> A(x)"), 4, 0, "unterminated string"},
+        {"func_without_view_file", lsys("Axiom: A(func(1, 0.5))"), 3, 10, "no such function"},
+        {"binary_junk", std::string("Lsystem: 1\nAxiom: F\x01\xff\xfe\nendlsystem\n"), 2, 10, "not text"},
+        {"nul_byte", std::string("Lsystem: 1\nAxiom: F\0F\nendlsystem\n", 33), 2, 9, "not text"},
+        {"include_missing_file", "#include \"nowhere.h\"\nLsystem: 1\nAxiom: F\nendlsystem\n", 1, 1,
+         "cannot open included file"},
+    };
+    return all;
+}
+
+class MalformedInput : public ::testing::TestWithParam<size_t> {};
+
+TEST_P(MalformedInput, ReportsFileLineColumnAndMessage) {
+    const MalformedCase& c = cases()[GetParam()];
+    fs::path path;
+    std::optional<simeco::ir::InputError> error = loadAndDerive(c.text, "bad.l", path);
+    ASSERT_TRUE(error.has_value()) << c.name << ": no error reported";
+    EXPECT_EQ(error->loc().file, path.string()) << c.name;
+    EXPECT_EQ(error->loc().line, c.line) << c.name << ": " << error->formatted();
+    if (c.col) {
+        EXPECT_EQ(error->loc().col, c.col) << c.name << ": " << error->formatted();
+    }
+    EXPECT_NE(std::string(error->what()).find(c.message), std::string::npos) << c.name << ": " << error->formatted();
+    std::string formatted = error->formatted();
+    EXPECT_EQ(formatted.rfind(path.string() + ":" + std::to_string(c.line) + ":", 0), 0u) << formatted;
+    EXPECT_NE(formatted.find(": error: "), std::string::npos) << formatted;
+}
+
+INSTANTIATE_TEST_SUITE_P(Cpfg, MalformedInput, ::testing::Range<size_t>(0, cases().size()),
+                         [](const ::testing::TestParamInfo<size_t>& param) { return cases()[param.param].name; });
+
+TEST(MalformedInputCatalogue, HasAtLeastThirtyDistinctCases) { EXPECT_GE(cases().size(), 30u); }
+
+TEST(MalformedInputCatalogue, ModuleBudgetEndsRunawayGrowth) {
+    fs::path dir = fs::temp_directory_path() / ("simeco-budget-" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    fs::path file = dir / "runaway.l";
+    std::ofstream(file) << "Lsystem: 1\nderivation length: 40\nAxiom: F\nF --> FF\nendlsystem\n";
+    simeco::ir::Grammar g = simeco::lang::loadGrammarFile(file.string());
+    simeco::cpu::DeriveOptions options;
+    options.maxModules = 1000;
+    try {
+        simeco::cpu::deriveCpu(g, options);
+        ADD_FAILURE() << "the module budget did not stop the derivation";
+    } catch (const simeco::ir::LimitError& e) {
+        EXPECT_NE(std::string(e.what()).find("module budget of 1000"), std::string::npos) << e.what();
+    }
+    fs::remove_all(dir);
+}
+
+} // namespace

@@ -1,4 +1,5 @@
 // `simeco derive`: derive a grammar and print the string, statistics or JSON.
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <string>
@@ -10,6 +11,7 @@
 #include "app/error_report.h"
 #include "cpu/derive.h"
 #include "cpu/statistics.h"
+#include "lang/eco_parser.h"
 #include "lang/load_grammar.h"
 
 namespace simeco::app {
@@ -26,8 +28,29 @@ struct DeriveArgs {
     uint64_t maxModules = 0;
 };
 
+// The grammars a file holds: one for `.l` and `.lsys`, one per plant for an `.eco` scene.
+std::vector<ir::Grammar> loadGrammars(const std::string& path) {
+    std::vector<ir::Grammar> grammars;
+    if (path.size() > 4 && path.compare(path.size() - 4, 4, ".eco") == 0) {
+        ir::EcoScene scene = lang::parseEcoFile(path);
+        for (const ir::EcoWarning& w : scene.warnings)
+            std::fprintf(stderr, "%s:%d:%d: warning: %s\n", w.loc.file.c_str(), w.loc.line, w.loc.col,
+                         w.message.c_str());
+        if (scene.plants.empty()) throw ir::InputError(scene.loc, "the scene has no plant");
+        for (size_t i = 0; i < scene.plants.size(); ++i) grammars.push_back(lang::compileEcoPlant(scene, i));
+    } else {
+        grammars.push_back(lang::loadGrammarFile(path));
+    }
+    return grammars;
+}
+
+struct Derived {
+    const ir::Grammar* grammar;
+    cpu::DeriveResult result;
+};
+
 void runDerive(const DeriveArgs& args) {
-    ir::Grammar g = lang::loadGrammarFile(args.file);
+    std::vector<ir::Grammar> grammars = loadGrammars(args.file);
     if (args.backend != "cpu")
         throw std::runtime_error("the gpu backend is not available in this build; use --backend cpu");
     cpu::DeriveOptions options;
@@ -36,39 +59,53 @@ void runDerive(const DeriveArgs& args) {
     options.plants = args.plants;
     options.maxModules = args.maxModules;
     auto start = std::chrono::steady_clock::now();
-    cpu::DeriveResult result = cpu::deriveCpu(g, options);
+    std::vector<Derived> derived;
+    for (const ir::Grammar& g : grammars) derived.push_back({&g, cpu::deriveCpu(g, options)});
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const cpu::ModuleString& s = result.string;
 
+    // Everything is derived before anything is printed: an error leaves no partial output.
     if (args.format == "string") {
-        for (size_t p = 0; p < s.plants(); ++p) {
-            std::string line = cpu::formatModules(s, g.alphabet, s.plantStart[p], s.plantStart[p + 1]);
-            std::fwrite(line.data(), 1, line.size(), stdout);
-            std::fputc('\n', stdout);
+        std::string out;
+        for (const Derived& d : derived) {
+            const cpu::ModuleString& s = d.result.string;
+            for (size_t p = 0; p < s.plants(); ++p) {
+                out += cpu::formatModules(s, d.grammar->alphabet, s.plantStart[p], s.plantStart[p + 1]);
+                out.push_back('\n');
+            }
         }
+        std::fwrite(out.data(), 1, out.size(), stdout);
         return;
     }
-    cpu::StringStatistics stats = cpu::computeStatistics(s, g.alphabet);
+    cpu::StringStatistics total;
+    int steps = 0;
+    for (const Derived& d : derived) {
+        cpu::StringStatistics stats = cpu::computeStatistics(d.result.string, d.grammar->alphabet);
+        total.modules += stats.modules;
+        total.plants += stats.plants;
+        total.maxBranchDepth = std::max(total.maxBranchDepth, stats.maxBranchDepth);
+        for (const auto& [name, count] : stats.perSymbol) total.perSymbol[name] += count;
+        steps = std::max(steps, d.result.steps);
+    }
     if (args.format == "stats") {
-        std::printf("modules: %llu\n", static_cast<unsigned long long>(stats.modules));
-        std::printf("plants: %llu\n", static_cast<unsigned long long>(stats.plants));
-        std::printf("steps: %d\n", result.steps);
-        std::printf("max branch depth: %d\n", stats.maxBranchDepth);
+        std::printf("modules: %llu\n", static_cast<unsigned long long>(total.modules));
+        std::printf("plants: %llu\n", static_cast<unsigned long long>(total.plants));
+        std::printf("steps: %d\n", steps);
+        std::printf("max branch depth: %d\n", total.maxBranchDepth);
         std::printf("time: %.6f s\n", seconds);
         std::printf("symbols:\n");
-        for (const auto& [name, count] : stats.perSymbol)
+        for (const auto& [name, count] : total.perSymbol)
             std::printf("  %s %llu\n", name.c_str(), static_cast<unsigned long long>(count));
         return;
     }
     nlohmann::json j;
     j["file"] = args.file;
     j["backend"] = args.backend;
-    j["modules"] = stats.modules;
-    j["plants"] = stats.plants;
-    j["steps"] = result.steps;
-    j["max_branch_depth"] = stats.maxBranchDepth;
+    j["modules"] = total.modules;
+    j["plants"] = total.plants;
+    j["steps"] = steps;
+    j["max_branch_depth"] = total.maxBranchDepth;
     j["seconds"] = seconds;
-    j["symbols"] = stats.perSymbol;
+    j["symbols"] = total.perSymbol;
     std::printf("%s\n", j.dump(2).c_str());
 }
 

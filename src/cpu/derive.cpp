@@ -40,6 +40,8 @@ public:
         cur_.stride = next_.stride = stride_;
         index(g.productions, productionsBySymbol_);
         index(g.decomposition, decompositionBySymbol_);
+        makeFrames(g.productions, productionFrames_);
+        makeFrames(g.decomposition, decompositionFrames_);
         stochastic_ = std::any_of(g.productions.productions.begin(), g.productions.productions.end(),
                                   [](const ir::Production& p) { return p.weight >= 0; });
         if (auto eq = g.alphabet.find("=")) equalsSym_ = int64_t(*eq);
@@ -201,16 +203,18 @@ private:
         return true;
     }
 
-    struct Candidate {
-        uint32_t production;
-        std::vector<double> frame;
-    };
+    // cpfg keeps one variable table per production for the whole derivation: a local keeps the value of the
+    // production's last application until it is assigned again.
+    std::vector<std::vector<double>> productionFrames_, decompositionFrames_;
+
+    static void makeFrames(const ir::RuleSet& rules, std::vector<std::vector<double>>& frames) {
+        for (const ir::Production& p : rules.productions) frames.emplace_back(size_t(p.frameSize), 0.0);
+    }
 
     // Tests production p with its strict predecessor bound by `bindStrict`; contexts around [left, right].
     template <typename BindStrict>
     bool applicable(const ir::Production& p, int64_t left, size_t right, std::vector<double>& frame,
                     BindStrict bindStrict) {
-        frame.assign(size_t(p.frameSize), 0.0);
         if (!p.right.empty() && !matchRight(p.right, right, frame.data())) return false;
         if (!p.left.empty() && !matchLeft(p.left, left, frame.data())) return false;
         bindStrict(frame.data());
@@ -219,15 +223,14 @@ private:
     }
 
     // Among applicable candidates with weights, one drawn with probability proportional to its weight.
-    const Candidate* choose(const ir::RuleSet& rules, const std::vector<Candidate>& candidates) const {
-        if (candidates.empty()) return nullptr;
+    uint32_t choose(const ir::RuleSet& rules, const std::vector<uint32_t>& candidates) const {
         double total = 0;
-        for (const Candidate& c : candidates) total += rules.productions[c.production].weight;
+        for (uint32_t c : candidates) total += rules.productions[c].weight;
         const RandomKey& k = evaluator_.key;
         double r = total * shared::randomUnit(k.seed, k.plant, k.pass, k.module, 0);
-        for (const Candidate& c : candidates)
-            if ((r -= rules.productions[c.production].weight) <= 0) return &c;
-        return &candidates.back();
+        for (uint32_t c : candidates)
+            if ((r -= rules.productions[c].weight) <= 0) return c;
+        return candidates.back();
     }
 
     // Runs the after-statements and writes the successor (one alternative drawn in order) to `out`.
@@ -262,28 +265,24 @@ private:
         if (depthCounter_.size() <= size_t(depth)) depthCounter_.resize(size_t(depth) + 1, 0);
         setKey(step_ * kPassesPerStep + 1 + uint32_t(std::min(depth, int(kPassesPerStep) - 2)),
                depthCounter_[size_t(depth)]++);
-        const ir::Production* found = nullptr;
-        std::vector<double> frame;
-        std::vector<Candidate> candidates;
+        int64_t found = kNone;
+        std::vector<uint32_t> candidates;
         if (m.sym < decompositionBySymbol_.size()) {
             for (uint32_t pi : decompositionBySymbol_[m.sym]) {
                 const ir::Production& p = rules.productions[pi];
                 if (p.strict.size() != 1 || p.strict[0].paramSlots.size() != m.count) continue;
+                std::vector<double>& frame = decompositionFrames_[pi];
                 bool ok = applicable(p, left, right, frame, [&](double* f) { bind(p.strict[0], m.params, f); });
                 if (!ok) continue;
                 if (p.weight < 0) {
-                    found = &p;
+                    found = pi;
                     break;
                 }
-                candidates.push_back({pi, frame});
+                candidates.push_back(pi);
             }
         }
-        if (!found && !candidates.empty()) {
-            const Candidate* c = choose(rules, candidates);
-            found = &rules.productions[c->production];
-            frame = c->frame;
-        }
-        if (!found) {
+        if (found == kNone && !candidates.empty()) found = choose(rules, candidates);
+        if (found == kNone) {
             if (depth == 0) return false;
             next_.push(m.sym, m.params, m.count);
             checkBudget(next_.size());
@@ -296,7 +295,7 @@ private:
         }
         ModuleString produced;
         produced.stride = stride_;
-        produce(*found, frame, produced);
+        produce(rules.productions[size_t(found)], decompositionFrames_[size_t(found)], produced);
         for (size_t k = 0; k < produced.size(); ++k)
             decompose({produced.sym[k], produced.paramsOf(k), produced.paramCount[k]}, depth + 1, left, right);
         return true;
@@ -314,15 +313,14 @@ private:
         depthCounter_.assign(1, 0);
         const ir::RuleSet& rules = g_.productions;
         const bool useDecomposition = !g_.decomposition.productions.empty();
-        std::vector<double> frame;
-        std::vector<Candidate> candidates;
+        std::vector<uint32_t> candidates;
         ModuleString produced;
         produced.stride = stride_;
         size_t n = cur_.size();
         for (size_t i = 0; i < n;) {
             uint32_t sym = cur_.sym[i];
             setKey(step_ * kPassesPerStep, uint32_t(i));
-            const ir::Production* found = nullptr;
+            int64_t found = kNone;
             candidates.clear();
             if (sym < productionsBySymbol_.size()) {
                 for (uint32_t pi : productionsBySymbol_[sym]) {
@@ -332,30 +330,29 @@ private:
                     for (size_t k = 0; k < p.strict.size() && strictMatches; ++k)
                         strictMatches = sameModule(p.strict[k], i + k);
                     if (!strictMatches) continue;
+                    std::vector<double>& frame = productionFrames_[pi];
                     bool ok = applicable(p, int64_t(i) - 1, i + p.strict.size(), frame, [&](double* f) {
                         for (size_t k = 0; k < p.strict.size(); ++k) bind(p.strict[k], cur_.paramsOf(i + k), f);
                     });
                     if (!ok) continue;
                     if (!stochastic_) {
-                        found = &p;
+                        found = pi;
                         break;
                     }
-                    candidates.push_back({pi, frame});
+                    candidates.push_back(pi);
                 }
             }
-            if (stochastic_ && !candidates.empty()) {
-                const Candidate* c = choose(rules, candidates);
-                found = &rules.productions[c->production];
-                frame = c->frame;
-            }
-            if (found) {
-                size_t len = found->strict.size();
+            if (stochastic_ && !candidates.empty()) found = choose(rules, candidates);
+            if (found != kNone) {
+                const ir::Production& p = rules.productions[size_t(found)];
+                std::vector<double>& frame = productionFrames_[size_t(found)];
+                size_t len = p.strict.size();
                 if (!useDecomposition) {
-                    produce(*found, frame, next_);
+                    produce(p, frame, next_);
                     checkBudget(next_.size());
                 } else {
                     produced.clear();
-                    produce(*found, frame, produced);
+                    produce(p, frame, produced);
                     for (size_t k = 0; k < produced.size(); ++k)
                         emit({produced.sym[k], produced.paramsOf(k), produced.paramCount[k]}, int64_t(i) - 1, i + len);
                 }
@@ -363,12 +360,16 @@ private:
                 continue;
             }
             ModuleRef self{sym, cur_.paramsOf(i), cur_.paramCount[i]};
+            uint32_t examined = depthCounter_[0];
             if (useDecomposition && decompose(self, 0, int64_t(i) - 1, i + 1)) {
                 checkBudget(next_.size());
                 ++i;
                 continue;
             }
             if (sym == percentSym_ && cur_.paramCount[i] == 0) {
+                // The cut `%` leaves the string: it does not count among the modules decomposition examined,
+                // which keeps that count equal to a module's position in the step's output.
+                if (useDecomposition) depthCounter_[0] = examined;
                 i = endOfBranch(i + 1); // the cut drops the rest of the branch; its `]` stays
                 continue;
             }

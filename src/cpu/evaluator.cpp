@@ -57,9 +57,18 @@ double Evaluator::eval(const ir::Expr& e, double* frame) {
     case Op::ArrayElem: return arrayElement(e.slot, e.args, e.loc, frame);
     case Op::Neg: return -eval(e.args[0], frame);
     case Op::Not: return eval(e.args[0], frame) == 0.0 ? 1.0 : 0.0;
-    case Op::Add: return eval(e.args[0], frame) + eval(e.args[1], frame);
-    case Op::Sub: return eval(e.args[0], frame) - eval(e.args[1], frame);
-    case Op::Mul: return eval(e.args[0], frame) * eval(e.args[1], frame);
+    case Op::Add: {
+        double a = eval(e.args[0], frame);
+        return a + eval(e.args[1], frame);
+    }
+    case Op::Sub: {
+        double a = eval(e.args[0], frame);
+        return a - eval(e.args[1], frame);
+    }
+    case Op::Mul: {
+        double a = eval(e.args[0], frame);
+        return a * eval(e.args[1], frame);
+    }
     case Op::Div: {
         double a = eval(e.args[0], frame), b = eval(e.args[1], frame);
         if (b == 0.0) throw ir::InputError(e.loc, "division by zero");
@@ -67,17 +76,39 @@ double Evaluator::eval(const ir::Expr& e, double* frame) {
     }
     case Op::Mod: {
         // cpfg: both operands truncated to int, C remainder.
-        long a = static_cast<long>(eval(e.args[0], frame)), b = static_cast<long>(eval(e.args[1], frame));
+        long a = static_cast<long>(eval(e.args[0], frame));
+        long b = static_cast<long>(eval(e.args[1], frame));
         if (b == 0) throw ir::InputError(e.loc, "remainder by zero");
         return static_cast<double>(a % b);
     }
-    case Op::Pow: return std::pow(eval(e.args[0], frame), eval(e.args[1], frame));
-    case Op::Lt: return eval(e.args[0], frame) < eval(e.args[1], frame) ? 1.0 : 0.0;
-    case Op::Le: return eval(e.args[0], frame) <= eval(e.args[1], frame) ? 1.0 : 0.0;
-    case Op::Gt: return eval(e.args[0], frame) > eval(e.args[1], frame) ? 1.0 : 0.0;
-    case Op::Ge: return eval(e.args[0], frame) >= eval(e.args[1], frame) ? 1.0 : 0.0;
-    case Op::Eq: return eval(e.args[0], frame) == eval(e.args[1], frame) ? 1.0 : 0.0;
-    case Op::Ne: return eval(e.args[0], frame) != eval(e.args[1], frame) ? 1.0 : 0.0;
+    case Op::Pow: {
+        double a = eval(e.args[0], frame);
+        return std::pow(a, eval(e.args[1], frame));
+    }
+    case Op::Lt: {
+        double a = eval(e.args[0], frame);
+        return a < eval(e.args[1], frame) ? 1.0 : 0.0;
+    }
+    case Op::Le: {
+        double a = eval(e.args[0], frame);
+        return a <= eval(e.args[1], frame) ? 1.0 : 0.0;
+    }
+    case Op::Gt: {
+        double a = eval(e.args[0], frame);
+        return a > eval(e.args[1], frame) ? 1.0 : 0.0;
+    }
+    case Op::Ge: {
+        double a = eval(e.args[0], frame);
+        return a >= eval(e.args[1], frame) ? 1.0 : 0.0;
+    }
+    case Op::Eq: {
+        double a = eval(e.args[0], frame);
+        return a == eval(e.args[1], frame) ? 1.0 : 0.0;
+    }
+    case Op::Ne: {
+        double a = eval(e.args[0], frame);
+        return a != eval(e.args[1], frame) ? 1.0 : 0.0;
+    }
     case Op::And: return (eval(e.args[0], frame) != 0.0 && eval(e.args[1], frame) != 0.0) ? 1.0 : 0.0;
     case Op::Or: return (eval(e.args[0], frame) != 0.0 || eval(e.args[1], frame) != 0.0) ? 1.0 : 0.0;
     case Op::Select: return eval(e.args[0], frame) != 0.0 ? eval(e.args[1], frame) : eval(e.args[2], frame);
@@ -97,7 +128,10 @@ double Evaluator::call(const ir::Expr& e, double* frame) {
     case Builtin::Asin: return std::asin(arg(0)) * kDegrees;
     case Builtin::Acos: return std::acos(arg(0)) * kDegrees;
     case Builtin::Atan: return std::atan(arg(0)) * kDegrees;
-    case Builtin::Atan2: return std::atan2(arg(1), arg(0)) * kDegrees;
+    case Builtin::Atan2: {
+        double x = arg(0);
+        return std::atan2(arg(1), x) * kDegrees;
+    }
     case Builtin::Exp: return std::exp(arg(0));
     case Builtin::Log: return std::log(arg(0));
     case Builtin::Sqrt: return std::sqrt(arg(0));
@@ -109,10 +143,16 @@ double Evaluator::call(const ir::Expr& e, double* frame) {
         double v = arg(0);
         return v > 0 ? 1.0 : v < 0 ? -1.0 : 0.0;
     }
-    case Builtin::Pow: return std::pow(arg(0), arg(1));
-    case Builtin::Min: return std::min(arg(0), arg(1));
-    case Builtin::Max: return std::max(arg(0), arg(1));
-    case Builtin::Ran: return draw() * arg(0);
+    case Builtin::Pow:
+    case Builtin::Min:
+    case Builtin::Max: {
+        double a = arg(0), b = arg(1);
+        return e.fn == Builtin::Pow ? std::pow(a, b) : e.fn == Builtin::Min ? std::min(a, b) : std::max(a, b);
+    }
+    case Builtin::Ran: {
+        double scale = arg(0);
+        return draw() * scale;
+    }
     case Builtin::Nran: {
         double mean = arg(0), sd = arg(1);
         double u1 = draw(), u2 = draw();

@@ -71,9 +71,11 @@ Point3 pointAtParameter(const ContourCurve& c, double t) {
         int segment = std::clamp(static_cast<int>(t / (1.000001 / double(segments))), 0, segments - 1);
         double u = (t - double(segment) * (1.0 / double(segments))) * double(segments) / 1.000001;
         double w[4];
-        for (int j = 0; j < 4; ++j) w[j] = clampedBasis(4, j, u, 4);
+        for (int j = 0; j < 4; ++j)
+            w[j] = clampedBasis(4, j, u, 4);
         Point3 q[4];
-        for (int j = 0; j < 4; ++j) q[j] = controlPoint(c, segment * 3 + j);
+        for (int j = 0; j < 4; ++j)
+            q[j] = controlPoint(c, segment * 3 + j);
         p.x = q[0].x * w[0] + q[1].x * w[1] + q[2].x * w[2] + q[3].x * w[3];
         p.y = q[0].y * w[0] + q[1].y * w[1] + q[2].y * w[2] + q[3].y * w[3];
         p.z = q[0].z * w[0] + q[1].z * w[1] + q[2].z * w[2] + q[3].z * w[3];
@@ -96,9 +98,11 @@ Point3 pointAtParameter(const ContourCurve& c, double t) {
         int i = std::clamp(3 + static_cast<int>(t * (n - 3.000001)), 3, n - 1);
         double u = 3.0 + t * (double(n) - 3.000001);
         double w[4];
-        for (int j = 0; j < 4; ++j) w[j] = uniformBasis(4, i - 3 + j, u);
+        for (int j = 0; j < 4; ++j)
+            w[j] = uniformBasis(4, i - 3 + j, u);
         Point3 q[4];
-        for (int j = 0; j < 4; ++j) q[j] = controlPoint(c, i - 3 + j);
+        for (int j = 0; j < 4; ++j)
+            q[j] = controlPoint(c, i - 3 + j);
         p.x = q[0].x * w[0] + q[1].x * w[1] + q[2].x * w[2] + q[3].x * w[3];
         p.y = q[0].y * w[0] + q[1].y * w[1] + q[2].y * w[2] + q[3].y * w[3];
         p.z = q[0].z * w[0] + q[1].z * w[1] + q[2].z * w[2] + q[3].z * w[3];
@@ -113,12 +117,14 @@ void buildEvaluationPoints(ContourCurve& c) {
     bool phantom = c.type == ContourType::BSplinePhantom;
     if (phantom) pts.emplace_back();
     for (const ContourPoint& q : c.points)
-        for (int m = 0; m < q.multiplicity; ++m) pts.push_back({q.x, q.y, q.z});
+        for (int m = 0; m < q.multiplicity; ++m)
+            pts.push_back({q.x, q.y, q.z});
     if (c.type == ContourType::BSplineClosed) {
         // Appended one by one from the front, so a curve with fewer than three points repeats itself.
         size_t n = pts.size();
         pts.resize(n + 3);
-        for (size_t i = 0; i < 3; ++i) pts[n + i] = pts[i];
+        for (size_t i = 0; i < 3; ++i)
+            pts[n + i] = pts[i];
     }
     if (phantom) {
         pts.emplace_back();
@@ -158,7 +164,8 @@ void sampleContourCurve(ContourCurve& c, int samples) {
     }
     // A curve of zero length keeps the raw sums (all zero); curveCoordinate then uses t as the parameter.
     if (c.length > 0.0)
-        for (double& l : c.arcFraction) l /= c.length;
+        for (double& l : c.arcFraction)
+            l /= c.length;
 }
 
 double curveCoordinate(const ContourCurve& c, int axis, double t) {
@@ -170,8 +177,10 @@ double curveCoordinate(const ContourCurve& c, int axis, double t) {
         size_t low = 0, high = l.size() - 1;
         while (high - low > 1) {
             size_t mid = (low + high) / 2;
-            if (l[mid] > t) high = mid;
-            else low = mid;
+            if (l[mid] > t)
+                high = mid;
+            else
+                low = mid;
         }
         double span = l[high] - l[low];
         double fraction = span != 0.0 ? (t - l[low]) / span : 0.0;
@@ -181,6 +190,8 @@ double curveCoordinate(const ContourCurve& c, int axis, double t) {
     return axis == 0 ? p.x : axis == 1 ? p.y : p.z;
 }
 
-double curveLength(const ContourCurve& c) { return c.length; }
+double curveLength(const ContourCurve& c) {
+    return c.length;
+}
 
 } // namespace simeco::ir

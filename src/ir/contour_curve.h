@@ -26,10 +26,10 @@ struct ContourCurve {
     std::vector<ContourPoint> points; // as the file lists them
 
     // Filled by sampleContourCurve.
-    std::vector<double> xs, ys, zs;    // control points, repeated by their multiplicity, plus the extra
-                                       // points of closed and phantom curves
-    std::vector<double> arcFraction;   // cumulative chord length at sample i / (samples - 1), over length
-    double length = 0.0;               // summed chord length of the samples (curveGAL)
+    std::vector<double> xs, ys, zs;  // control points, repeated by their multiplicity, plus the extra
+                                     // points of closed and phantom curves
+    std::vector<double> arcFraction; // cumulative chord length at sample i / (samples - 1), over length
+    double length = 0.0;             // summed chord length of the samples (curveGAL)
 };
 
 // Builds the evaluation points and the arc-length table from `points` with `samples` samples (cpfg's

@@ -57,13 +57,13 @@ enum class Op : uint8_t {
 struct Expr {
     Op op = Op::Const;
     Builtin fn = Builtin::Sin;
-    float value = 0.0f;
+    double value = 0.0; // Const: cpfg reads literals in double precision
     int slot = 0;
     std::vector<Expr> args;
     std::string text; // String: the literal's characters
     SourceLoc loc;
 
-    static Expr constant(float v, SourceLoc l = {}) {
+    static Expr constant(double v, SourceLoc l = {}) {
         Expr e;
         e.op = Op::Const;
         e.value = v;

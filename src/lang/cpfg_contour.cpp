@@ -29,10 +29,12 @@ std::vector<Token> tokens(std::string_view line, size_t from) {
     std::vector<Token> out;
     size_t i = from;
     while (i < line.size()) {
-        while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r')) ++i;
+        while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r'))
+            ++i;
         if (i >= line.size()) break;
         size_t start = i;
-        while (i < line.size() && line[i] != ' ' && line[i] != '\t' && line[i] != '\r') ++i;
+        while (i < line.size() && line[i] != ' ' && line[i] != '\t' && line[i] != '\r')
+            ++i;
         out.push_back({line.substr(start, i - start), static_cast<int>(start + 1)});
     }
     return out;
@@ -74,8 +76,8 @@ public:
         if (levels_.empty()) throw ir::InputError({path_, 1, 1}, "expected a 'points: N' line");
         const Level& top = levels_.front();
         if (top.index + 1 != top.count)
-            throw ir::InputError({path_, pointsLine_, 1}, fmt::format("the file declares {} points but lists {}",
-                                                                      top.count, top.index + 1));
+            throw ir::InputError({path_, pointsLine_, 1},
+                                 fmt::format("the file declares {} points but lists {}", top.count, top.index + 1));
         ir::sampleContourCurve(curve_);
         return std::move(curve_);
     }
@@ -165,9 +167,8 @@ private:
         std::vector<Token> words = tokens(line, 0);
         if (words.empty()) return;
         if (levels_.empty()) {
-            std::string hint = words[0].text == "cver"
-                                   ? " (this looks like a 'cver' contour, which 'contour:' lines read)"
-                                   : "";
+            std::string hint =
+                words[0].text == "cver" ? " (this looks like a 'cver' contour, which 'contour:' lines read)" : "";
             fail(words[0].col, "expected a 'points: N' line before the points" + hint);
         }
         size_t given = std::min<size_t>(words.size(), 4);
@@ -177,8 +178,7 @@ private:
         levels_.back().index += 1;
         while (levels_.back().index >= levels_.back().count) {
             levels_.pop_back();
-            if (levels_.empty())
-                fail(words[0].col, "more points than the 'points:' line declares");
+            if (levels_.empty()) fail(words[0].col, "more points than the 'points:' line declares");
             levels_.back().index += 1;
         }
         int dimension = levels_.back().dimension;
@@ -211,6 +211,8 @@ private:
 
 } // namespace
 
-ir::ContourCurve parseContourFile(const std::string& path) { return ContourReader(path).read(); }
+ir::ContourCurve parseContourFile(const std::string& path) {
+    return ContourReader(path).read();
+}
 
 } // namespace simeco::lang

@@ -234,29 +234,29 @@ private:
         cur_.skipBlanks();
         ir::Expr e = parseExpression(cur_, none, {.newlines = NewlinePolicy::TabContinuation});
         expectEndOfLine(what);
-        std::optional<float> v = foldConstant(e);
+        std::optional<double> v = foldConstant(e);
         if (!v) cur_.failAt(start, fmt::format("{} must be a constant", what));
-        return *v;
+        return static_cast<float>(*v);
     }
 
     // Evaluates an expression made of constants only (parse-time values).
-    static std::optional<float> foldConstant(const ir::Expr& e) {
+    static std::optional<double> foldConstant(const ir::Expr& e) {
         std::vector<double> a;
         for (const ir::Expr& arg : e.args) {
-            std::optional<float> v = foldConstant(arg);
+            std::optional<double> v = foldConstant(arg);
             if (!v) return std::nullopt;
             a.push_back(*v);
         }
         switch (e.op) {
         case ir::Op::Const: return e.value;
-        case ir::Op::Neg: return float(-a[0]);
-        case ir::Op::Add: return float(a[0] + a[1]);
-        case ir::Op::Sub: return float(a[0] - a[1]);
-        case ir::Op::Mul: return float(a[0] * a[1]);
+        case ir::Op::Neg: return -a[0];
+        case ir::Op::Add: return a[0] + a[1];
+        case ir::Op::Sub: return a[0] - a[1];
+        case ir::Op::Mul: return a[0] * a[1];
         case ir::Op::Div:
             if (a[1] == 0) throw ir::InputError(e.loc, "division by zero");
-            return float(a[0] / a[1]);
-        case ir::Op::Pow: return float(std::pow(a[0], a[1]));
+            return a[0] / a[1];
+        case ir::Op::Pow: return std::pow(a[0], a[1]);
         default: return std::nullopt;
         }
     }
@@ -298,7 +298,7 @@ private:
                 for (;;) {
                     cur_.skipBlanks(true);
                     size_t at = cur_.pos;
-                    std::optional<float> d = foldConstant(parseExpression(cur_, none));
+                    std::optional<double> d = foldConstant(parseExpression(cur_, none));
                     if (!d || *d < 1 || *d != std::floor(*d) || *d > 1e7f)
                         cur_.failAt(at, "array dimension must be a positive whole number");
                     array.dims.push_back(static_cast<int>(*d));
@@ -321,10 +321,10 @@ private:
                     for (;;) {
                         cur_.skipBlanks(true);
                         size_t at = cur_.pos;
-                        std::optional<float> v = foldConstant(parseExpression(cur_, none));
+                        std::optional<double> v = foldConstant(parseExpression(cur_, none));
                         if (!v) cur_.failAt(at, "array values must be constants");
                         if (count >= size) cur_.failAt(at, fmt::format("too many values for array '{}'", array.name));
-                        array.init[count++] = *v;
+                        array.init[count++] = static_cast<float>(*v);
                         cur_.skipBlanks(true);
                         if (cur_.eat(",")) continue;
                         if (!cur_.eat("}")) cur_.fail("expected '}' after the array values");
@@ -707,9 +707,9 @@ private:
         if (cur_.eat(":")) {
             cur_.skipBlanks();
             size_t at = cur_.pos;
-            std::optional<float> w = foldConstant(parseExpression(cur_, scope, {.newlines = NewlinePolicy::TabContinuation}));
+            std::optional<double> w = foldConstant(parseExpression(cur_, scope, {.newlines = NewlinePolicy::TabContinuation}));
             if (!w || *w < 0) cur_.failAt(at, "the probability factor must be a non-negative constant");
-            p.weight = *w;
+            p.weight = static_cast<float>(*w);
             stochastic_ = true;
         }
         expectEndOfLine("the successor");

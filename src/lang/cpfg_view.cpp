@@ -149,7 +149,12 @@ CpfgView readCpfgView(const std::string& path) {
         } else if (field(line, "function set", value)) {
             readFunctionSet((dir / value).string(), out);
         } else if (field(line, "curve", value)) {
-            out.curves.push_back(parseContourFile((dir / value).string()));
+            std::istringstream in(value);
+            std::string name;
+            int samples = 0;
+            in >> name >> samples;
+            out.curves.push_back(parseContourFile((dir / name).string()));
+            if (samples > 1) ir::sampleContourCurve(out.curves.back(), samples);
         } else if (field(line, "angle increment", value)) {
             viewNumber(value, path, i, "angle increment", out.view.angleIncrement);
             out.view.present = true;

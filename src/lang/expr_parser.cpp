@@ -180,7 +180,7 @@ private:
             return inner;
         }
         if (std::isdigit(static_cast<unsigned char>(c)) || (c == '.' && std::isdigit(static_cast<unsigned char>(cur_.peek(1))))) {
-            std::optional<float> value = parseNumber(cur_);
+            std::optional<double> value = parseNumber(cur_);
             if (!value) cur_.fail("bad number");
             return Expr::constant(*value, loc);
         }
@@ -293,7 +293,7 @@ private:
 
 } // namespace
 
-std::optional<float> parseNumber(TextCursor& cur) {
+std::optional<double> parseNumber(TextCursor& cur) {
     const std::string& text = cur.text();
     size_t i = cur.pos;
     while (i < text.size() && std::isdigit(static_cast<unsigned char>(text[i]))) ++i;
@@ -312,7 +312,7 @@ std::optional<float> parseNumber(TextCursor& cur) {
     }
     std::string literal = text.substr(cur.pos, i - cur.pos);
     cur.pos = i;
-    return std::strtof(literal.c_str(), nullptr);
+    return std::strtod(literal.c_str(), nullptr);
 }
 
 ir::Expr parseExpression(TextCursor& cur, const ExprScope& scope, ExprOptions options) {

@@ -33,7 +33,7 @@ struct ExprOptions {
 // Parses one expression at the cursor. Stops before anything that cannot continue it (`,` `)` `-->` `{` ...).
 ir::Expr parseExpression(TextCursor& cur, const ExprScope& scope, ExprOptions options = {});
 
-// Parses a C float literal at the cursor (digits, optional fraction and exponent).
-std::optional<float> parseNumber(TextCursor& cur);
+// Parses a C floating literal at the cursor (digits, optional fraction and exponent), in double precision.
+std::optional<double> parseNumber(TextCursor& cur);
 
 } // namespace simeco::lang

@@ -141,7 +141,9 @@ TEST(DeriveCpu, RanDrawsFromTheCounterBasedStream) {
     // Two modules draw from different counters: their values differ.
     size_t split = first.find(")A(");
     ASSERT_NE(split, std::string::npos);
-    EXPECT_NE(first.substr(0, split + 1), "A" + first.substr(split + 2));
+    std::string firstValue = first.substr(2, split - 2);
+    std::string secondValue = first.substr(split + 3, first.size() - split - 4);
+    EXPECT_NE(firstValue, secondValue);
 }
 
 TEST(DeriveCpu, PlantsHaveTheirOwnRandomStreams) {
@@ -156,6 +158,12 @@ TEST(DeriveCpu, PlantsHaveTheirOwnRandomStreams) {
 TEST(DeriveCpu, LongModuleNamesFromPredecessors) {
     std::string body = "Apex(x) --> Stem(x)Apex(x+1)\nStem(x) --> Stem(x)";
     EXPECT_EQ(deriveText(lsystem("Apex(0)", body, 2)), "Stem(0)Stem(1)Apex(2)");
+}
+
+TEST(DeriveCpu, DeclaredModuleNamesAreReadLongestFirst) {
+    std::string text = "Lsystem: 1\nmodule Bud BudScale\nderivation length: 2\nAxiom: Bud\n"
+                       "Bud --> F BudScale Bud\nendlsystem\n";
+    EXPECT_EQ(deriveText(text), "FBudScaleFBudScaleBud");
 }
 
 } // namespace

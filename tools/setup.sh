@@ -10,6 +10,7 @@ packages=(
   glslang-tools glslang-dev
   libglm-dev libglfw3-dev libopenexr-dev
   libgtest-dev libcli11-dev nlohmann-json3-dev libfmt-dev
+  gnuplot-nox
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -11,7 +11,9 @@
 #include "app/error_report.h"
 #include "cpu/derive.h"
 #include "cpu/statistics.h"
+#include "gpu/derive_gpu.h"
 #include "lang/eco_parser.h"
+#include "vk/context.h"
 #include "lang/load_grammar.h"
 
 namespace simeco::app {
@@ -26,6 +28,7 @@ struct DeriveArgs {
     std::string backend = "cpu";
     std::string format = "string";
     uint64_t maxModules = 0;
+    std::string device;
 };
 
 // The grammars a file holds: one for `.l` and `.lsys`, one per plant for an `.eco` scene.
@@ -51,8 +54,6 @@ struct Derived {
 
 void runDerive(const DeriveArgs& args) {
     std::vector<ir::Grammar> grammars = loadGrammars(args.file);
-    if (args.backend != "cpu")
-        throw std::runtime_error("the gpu backend is not available in this build; use --backend cpu");
     cpu::DeriveOptions options;
     options.steps = args.steps;
     options.seed = args.seed;
@@ -60,8 +61,21 @@ void runDerive(const DeriveArgs& args) {
     options.maxModules = args.maxModules;
     auto start = std::chrono::steady_clock::now();
     std::vector<Derived> derived;
-    for (const ir::Grammar& g : grammars) derived.push_back({&g, cpu::deriveCpu(g, options)});
-    double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    double seconds = 0;
+    if (args.backend == "gpu") {
+        vk::ContextOptions contextOptions;
+        contextOptions.device = args.device;
+        vk::Context context(contextOptions);
+        for (const ir::Grammar& g : grammars) {
+            gpu::GpuDeriver deriver(context, g);
+            gpu::GpuDeriveStats stats;
+            derived.push_back({&g, deriver.derive(options, true, &stats)});
+            seconds += stats.seconds;
+        }
+    } else {
+        for (const ir::Grammar& g : grammars) derived.push_back({&g, cpu::deriveCpu(g, options)});
+        seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    }
 
     // Everything is derived before anything is printed: an error leaves no partial output.
     if (args.format == "string") {
@@ -124,6 +138,7 @@ void registerDeriveCommand(CLI::App& app, CommandContext& ctx) {
     cmd->add_option("--format", args->format, "string, stats or json")
         ->check(CLI::IsMember({"string", "stats", "json"}));
     cmd->add_option("--max-modules", args->maxModules, "module budget (default: sized to this machine's memory)");
+    cmd->add_option("--device", args->device, "Vulkan device for --backend gpu: an index or a name part (see `simeco devices`)");
     cmd->callback([args, &ctx] { ctx.exitCode = runReportingErrors([&] { runDerive(*args); }); });
 }
 

@@ -12,5 +12,6 @@ struct CommandContext {
 
 void registerDeriveCommand(CLI::App& app, CommandContext& ctx);
 void registerDevicesCommand(CLI::App& app, CommandContext& ctx);
+void registerBenchCommand(CLI::App& app, CommandContext& ctx);
 
 } // namespace simeco::app

@@ -13,6 +13,7 @@ int main(int argc, char** argv) {
     simeco::app::CommandContext ctx;
     simeco::app::registerDeriveCommand(app, ctx);
     simeco::app::registerDevicesCommand(app, ctx);
+    simeco::app::registerBenchCommand(app, ctx);
 
     try {
         app.parse(argc, argv);

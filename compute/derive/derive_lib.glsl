@@ -1,0 +1,249 @@
+// Functions every generated derivation kernel shares: reading the module stream, bracket matching on the
+// depth min-tree, branch-aware context walks, error reports, and double-precision elementary functions.
+//
+// Expects before it: the buffers symIn, parIn, depthTree, levelInfo, contextSkip, errors and the push
+// constants `pc` (DerivePush), and shared/random.h and shared/derive_layout.h.
+//
+// Brackets are matched in parallel from the bracket depth D (an inclusive prefix sum of +1 for `[` and -1 for
+// `]`): the `]` matching a `[` at i is the first j > i with D[j] < D[i], and the `[` matching a `]` at j follows
+// the last k < j with D[k] <= D[j]. Both are found in O(log n) on a binary tree of minima of D (levelInfo holds
+// each level's offset in depthTree and its size), so arbitrarily long branches cost nothing extra.
+
+const uint kOpen = 0u;
+const uint kClose = 1u;
+const int kNoneBelow = -2; // lastBelow: nothing found; -1 means the virtual depth 0 before the string
+
+uint symOf(uint i) { return symIn[i] & kSymbolMask; }
+uint countOf(uint i) { return symIn[i] >> kSymbolBits; }
+double paramOf(uint i, uint k) { return double(parIn[i * pc.stride + k]); }
+bool skipped(uint sym) { return ((contextSkip[sym >> 5u] >> (sym & 31u)) & 1u) != 0u; }
+
+int depthAt(uint level, uint index) { return depthTree[levelInfo[level] + index]; }
+uint levelSize(uint level) { return levelInfo[kMaxDepthLevels + level]; }
+
+// The first index j >= from with D[j] < v, or kNoModule.
+uint firstBelow(uint from, int v) {
+    uint index = from;
+    uint level = 0u;
+    for (;;) {
+        if (index >= levelSize(level)) return kNoModule;
+        if (depthAt(level, index) < v) break;
+        while ((index & 1u) == 1u) {
+            index >>= 1u;
+            ++level;
+        }
+        ++index;
+    }
+    while (level > 0u) {
+        --level;
+        index <<= 1u;
+        if (depthAt(level, index) >= v) ++index;
+    }
+    return index;
+}
+
+// The last index k <= to with D[k] < v; -1 when only the virtual depth 0 before the string is below v;
+// kNoneBelow when nothing is.
+int lastBelow(int to, int v) {
+    int index = to;
+    uint level = 0u;
+    for (;;) {
+        if (index < 0) return v > 0 ? -1 : kNoneBelow;
+        if (depthAt(level, uint(index)) < v) break;
+        while ((index & 1) == 0) {
+            if (index == 0) return v > 0 ? -1 : kNoneBelow;
+            index >>= 1;
+            ++level;
+        }
+        --index;
+    }
+    while (level > 0u) {
+        --level;
+        index = index * 2 + 1;
+        if (uint(index) >= levelSize(level) || depthAt(level, uint(index)) >= v) --index;
+    }
+    return index;
+}
+
+// The `]` closing the `[` at s within the plant ending at pEnd, or kNoModule.
+uint matchOpen(uint s, uint pEnd) {
+    uint j = firstBelow(s + 1u, depthAt(0u, s));
+    return (j == kNoModule || j >= pEnd) ? kNoModule : j;
+}
+
+// The `[` opened by the `]` at j within the plant starting at pBegin, or kNoModule.
+uint matchClose(uint j, uint pBegin) {
+    int k = lastBelow(int(j) - 1, depthAt(0u, j) + 1);
+    if (k == kNoneBelow) return kNoModule;
+    uint open = uint(k + 1);
+    return (open < pBegin || open >= j || symOf(open) != kOpen) ? kNoModule : open;
+}
+
+// The `]` that closes the branch containing position s (or pEnd at the top level or when unmatched).
+uint endOfBranch(uint s, uint pBegin, uint pEnd) {
+    if (s >= pEnd) return pEnd;
+    uint sym = symOf(s);
+    int before = depthAt(0u, s) - (sym == kOpen ? 1 : sym == kClose ? -1 : 0);
+    int k = lastBelow(int(s) - 1, before);
+    if (k == kNoneBelow) return pEnd;
+    uint open = uint(k + 1);
+    if (open < pBegin || open >= s || symOf(open) != kOpen) return pEnd;
+    uint close = matchOpen(open, pEnd);
+    return close == kNoModule ? pEnd : close;
+}
+
+// Right context: moves s to the module the pattern symbol `want` is compared with. Skipped symbols pass,
+// closed branches pass unless the pattern enters one with `[`; false at the end of the plant.
+bool rightAdvance(inout uint s, uint want, uint pEnd) {
+    for (;;) {
+        if (s >= pEnd) return false;
+        uint sym = symOf(s);
+        if (skipped(sym)) {
+            ++s;
+        } else if (want != kOpen && sym == kOpen) {
+            uint close = matchOpen(s, pEnd);
+            if (close == kNoModule) return false;
+            s = close + 1u;
+        } else {
+            return true;
+        }
+    }
+    return false;
+}
+
+// Left context: moves s to the next module to compare, skipping branches to the left and passing `[`.
+bool leftAdvance(inout int s, uint pBegin) {
+    for (;;) {
+        if (s < int(pBegin)) return false;
+        uint sym = symOf(uint(s));
+        if (sym == kClose) {
+            uint open = matchClose(uint(s), pBegin);
+            if (open == kNoModule) return false;
+            s = int(open) - 1;
+        } else if (sym == kOpen || skipped(sym)) {
+            --s;
+        } else {
+            return true;
+        }
+    }
+    return false;
+}
+
+// The first evaluation error of the pass wins; the host turns the code into a located message.
+void reportError(uint code) { atomicCompSwap(errors[0], 0u, code + 1u); }
+
+// ---- double precision elementary functions (GLSL provides sqrt, floor, ... for doubles, not these) ----
+
+const double kPi = 3.14159265358979311600LF;
+const double kHalfPiHi = 1.57079632679489655800LF;
+const double kHalfPiLo = 6.12323399573676603587e-17LF;
+const double kLn2Hi = 6.93147180369123816490e-01LF;
+const double kLn2Lo = 1.90821492927058770002e-10LF;
+
+double sinPoly(double r) {
+    double r2 = r * r;
+    return r * (1.0LF + r2 * (-1.0LF / 6.0LF + r2 * (1.0LF / 120.0LF + r2 * (-1.0LF / 5040.0LF + r2 * (1.0LF / 362880.0LF
+           + r2 * (-1.0LF / 39916800.0LF + r2 * (1.0LF / 6227020800.0LF + r2 * (-1.0LF / 1307674368000.0LF
+           + r2 * (1.0LF / 355687428096000.0LF)))))))));
+}
+double cosPoly(double r) {
+    double r2 = r * r;
+    return 1.0LF + r2 * (-0.5LF + r2 * (1.0LF / 24.0LF + r2 * (-1.0LF / 720.0LF + r2 * (1.0LF / 40320.0LF
+           + r2 * (-1.0LF / 3628800.0LF + r2 * (1.0LF / 479001600.0LF + r2 * (-1.0LF / 87178291200.0LF
+           + r2 * (1.0LF / 20922789888000.0LF))))))));
+}
+// sin or cos (cosine when `cosine`) of x radians, by reduction to [-pi/4, pi/4].
+double sinCosD(double x, bool cosine) {
+    double k = floor(x / kHalfPiHi + 0.5LF);
+    double r = (x - k * kHalfPiHi) - k * kHalfPiLo;
+    int quadrant = int(k - 4.0LF * floor(k / 4.0LF)) + (cosine ? 1 : 0);
+    quadrant &= 3;
+    double s = sinPoly(r), c = cosPoly(r);
+    if (quadrant == 0) return s;
+    if (quadrant == 1) return c;
+    if (quadrant == 2) return -s;
+    return -c;
+}
+double sinD(double x) { return sinCosD(x, false); }
+double cosD(double x) { return sinCosD(x, true); }
+
+double expD(double x) {
+    if (x > 709.0LF) return 1.0LF / 0.0LF;
+    if (x < -745.0LF) return 0.0LF;
+    double k = floor(x / (kLn2Hi + kLn2Lo) + 0.5LF);
+    double r = (x - k * kLn2Hi) - k * kLn2Lo;
+    double term = 1.0LF, sum = 1.0LF;
+    for (int n = 1; n <= 16; ++n) {
+        term *= r / double(n);
+        sum += term;
+    }
+    return ldexp(sum, int(k));
+}
+
+double logD(double x) {
+    if (x < 0.0LF) return 0.0LF / 0.0LF;
+    if (x == 0.0LF) return -1.0LF / 0.0LF;
+    int e;
+    double m = frexp(x, e); // x = m * 2^e, m in [0.5, 1)
+    if (m < 0.70710678118654752440LF) {
+        m *= 2.0LF;
+        --e;
+    }
+    double s = (m - 1.0LF) / (m + 1.0LF), s2 = s * s;
+    double sum = 0.0LF, power = s;
+    for (int n = 1; n <= 27; n += 2) {
+        sum += power / double(n);
+        power *= s2;
+    }
+    return 2.0LF * sum + double(e) * kLn2Hi + double(e) * kLn2Lo;
+}
+
+double powD(double a, double b) {
+    if (b == 0.0LF) return 1.0LF;
+    if (a == 0.0LF) return b > 0.0LF ? 0.0LF : 1.0LF / 0.0LF;
+    if (b == floor(b) && abs(b) <= 64.0LF) {
+        // Whole exponents by repeated squaring (as exact as the C library for these).
+        double result = 1.0LF, base = a;
+        int n = int(abs(b));
+        while (n > 0) {
+            if ((n & 1) == 1) result *= base;
+            base *= base;
+            n >>= 1;
+        }
+        return b < 0.0LF ? 1.0LF / result : result;
+    }
+    if (a < 0.0LF) return 0.0LF / 0.0LF;
+    return expD(b * logD(a));
+}
+
+// atan for |x| <= 1 by two argument halvings and a Taylor series.
+double atanSmall(double x) {
+    double y = x / (1.0LF + sqrt(1.0LF + x * x));
+    y = y / (1.0LF + sqrt(1.0LF + y * y));
+    double y2 = y * y, term = y, sum = 0.0LF;
+    for (int n = 1; n <= 39; n += 2) {
+        sum += term / double(n);
+        term *= -y2;
+    }
+    return 4.0LF * sum;
+}
+double atanD(double x) {
+    if (abs(x) <= 1.0LF) return atanSmall(x);
+    double r = 2.0LF * kHalfPiHi - atanSmall(1.0LF / abs(x));
+    return x < 0.0LF ? -r : r;
+}
+double atan2D(double y, double x) {
+    if (x > 0.0LF) return atanD(y / x);
+    if (x < 0.0LF) return y >= 0.0LF ? atanD(y / x) + kPi : atanD(y / x) - kPi;
+    if (y > 0.0LF) return kHalfPiHi;
+    if (y < 0.0LF) return -kHalfPiHi;
+    return 0.0LF;
+}
+double asinD(double x) {
+    if (abs(x) > 1.0LF) return 0.0LF / 0.0LF;
+    if (abs(x) == 1.0LF) return x * kHalfPiHi;
+    return atanD(x / sqrt(1.0LF - x * x));
+}
+double acosD(double x) { return kHalfPiHi - asinD(x) + kHalfPiLo; }
+
+const double kDegrees = 57.29577951308232286465LF;

@@ -1,0 +1,57 @@
+// The module stream on the device and the derivation kernels' push constants, shared by C++ and GLSL.
+//
+// A module is one uint (symbol in the low 24 bits, parameter count in the high 8) and `stride` floats of
+// parameters; plants are contiguous segments described by a table of first modules. Symbols 0, 1 and 2 are
+// `[`, `]` and `%` in every grammar (ir::kBranchOpen, ir::kBranchClose, ir::kCut).
+#ifndef SIMECO_SHARED_DERIVE_LAYOUT_H
+#define SIMECO_SHARED_DERIVE_LAYOUT_H
+
+#ifdef __cplusplus
+#include <cstdint>
+namespace simeco::shared {
+using uint = uint32_t;
+#define SIMECO_CONST inline constexpr uint
+#else
+#define SIMECO_CONST const uint
+#endif
+
+SIMECO_CONST kDeriveWorkgroupSize = 64u;
+SIMECO_CONST kSymbolBits = 24u;
+SIMECO_CONST kSymbolMask = 0xFFFFFFu;
+SIMECO_CONST kMaxDepthLevels = 32u;  // levels of the bracket-depth min tree (enough for 2^32 modules)
+SIMECO_CONST kNoModule = 0xFFFFFFFFu;
+SIMECO_CONST kChoiceDropped = 0xFFFFFFFFu; // the module lies in a cut part of a branch
+SIMECO_CONST kChoiceCopy = 0u;             // no production: the module is copied
+// A random-stream pass per rewriting pass: step * kPassesPerStep, decomposition depth d at + 1 + d.
+SIMECO_CONST kPassesPerStep = 1024u;
+
+// Push constants of the generated derivation kernels (all modes).
+struct DerivePush {
+    uint count;        // modules of the stream the kernel walks
+    uint plants;       // plants in the stream
+    uint step;         // derivation step (1-based)
+    uint seed;         // random stream seed
+    uint pass;         // random stream pass
+    uint stride;       // parameter slots per module
+    uint globalCount;  // globals per plant
+    uint arrayStride;  // array elements per plant
+    uint oldCount;     // modules of the string being rewritten (contexts are read there)
+    uint depth;        // decomposition depth of this pass
+};
+
+// Push constants of the fixed helper kernels.
+struct DeriveHelperPush {
+    uint count;   // elements
+    uint level;   // depth tree: the level being built
+    uint total;   // plant starts: modules of the new stream
+    uint plants;  // plant starts: plants
+};
+
+#ifdef __cplusplus
+static_assert(sizeof(DerivePush) == 40);
+static_assert(sizeof(DeriveHelperPush) == 16);
+} // namespace simeco::shared
+#endif
+#undef SIMECO_CONST
+
+#endif

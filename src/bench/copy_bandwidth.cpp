@@ -1,0 +1,74 @@
+#include "bench/copy_bandwidth.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <optional>
+
+#include "bench/timing.h"
+#include "vk/barriers.h"
+#include "vk/buffer.h"
+#include "vk/context.h"
+#include "vk/pipeline.h"
+#include "vk/timestamps.h"
+
+namespace simeco::bench {
+namespace {
+
+struct CopyPush {
+    std::uint32_t count;         // uvec4 elements
+    std::uint32_t perInvocation; // uvec4 elements per invocation
+};
+
+constexpr std::uint64_t kElementBytes = 16; // one uvec4
+constexpr std::uint32_t kElementsPerInvocation = 16;
+
+} // namespace
+
+CopyBandwidth measureCopyBandwidth(const vk::Context& context, int warmUp, int repeat) {
+    CopyBandwidth result;
+    result.limitBytes = context.limits().maxStorageBufferRange;
+    std::uint64_t bytes = std::min<std::uint64_t>(kCopyBufferBytes, result.limitBytes);
+    bytes = bytes / kElementBytes * kElementBytes;
+    result.bufferBytes = bytes;
+
+    vk::ComputePipeline copy = vk::ComputePipeline::embedded(context, "bench/copy");
+    vk::Buffer source(context, bytes, vk::MemoryUsage::DeviceLocal);
+    vk::Buffer destination(context, bytes, vk::MemoryUsage::DeviceLocal);
+    // Touch both buffers once, so that no run pays for first-use page faults (lavapipe's memory is host memory).
+    context.submitAndWait([&](VkCommandBuffer cmd) {
+        vk::cmdFill(cmd, source, 0x5eedc0deu);
+        vk::cmdFill(cmd, destination, 0);
+    });
+
+    auto push = CopyPush{static_cast<std::uint32_t>(bytes / kElementBytes), kElementsPerInvocation};
+    std::uint64_t groups = copy.groupsFor(push.count, push.perInvocation);
+    std::optional<vk::Timestamps> timestamps;
+    if (context.timestampValidBits() != 0) {
+        timestamps.emplace(context, 2);
+    }
+    result.timestamps = timestamps.has_value();
+    result.runMillis = repeatRuns(warmUp, repeat, [&] {
+        Clock::time_point start = Clock::now();
+        context.submitAndWait([&](VkCommandBuffer cmd) {
+            if (timestamps) {
+                timestamps->cmdReset(cmd);
+            }
+            vk::memoryBarrier(cmd, vk::Hazard::TransferToCompute);
+            if (timestamps) {
+                timestamps->cmdWrite(cmd, 0, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT);
+            }
+            copy.dispatch(cmd, {source, destination}, push, groups);
+            if (timestamps) {
+                timestamps->cmdWrite(cmd, 1, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT);
+            }
+        });
+        return timestamps ? timestamps->elapsedNs(0, 1) * 1e-6 : secondsSince(start) * 1e3;
+    });
+    result.medianMillis = median(result.runMillis);
+    if (result.medianMillis > 0) {
+        result.bytesPerSecond = 2.0 * static_cast<double>(bytes) / (result.medianMillis * 1e-3);
+    }
+    return result;
+}
+
+} // namespace simeco::bench

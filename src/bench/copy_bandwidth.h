@@ -1,0 +1,28 @@
+// The device's copy bandwidth, measured by a compute kernel (compute/bench/copy.comp) in the same run as the
+// derivations it is compared with.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+namespace simeco::vk {
+class Context;
+}
+
+namespace simeco::bench {
+
+inline constexpr std::uint64_t kCopyBufferBytes = 256ull << 20;
+
+struct CopyBandwidth {
+    std::uint64_t bufferBytes = 0; // bytes copied per run (each of source and destination is this large)
+    std::uint64_t limitBytes = 0;  // the device's largest storage-buffer binding
+    std::vector<double> runMillis; // each timed run
+    double medianMillis = 0;
+    double bytesPerSecond = 0; // (read + written) / median time
+    bool timestamps = false;   // GPU timestamps (else host wall time around each submission)
+};
+
+// Copies min(kCopyBufferBytes, the device's largest storage-buffer binding) bytes `warmUp` + `repeat` times.
+CopyBandwidth measureCopyBandwidth(const vk::Context& context, int warmUp, int repeat);
+
+} // namespace simeco::bench

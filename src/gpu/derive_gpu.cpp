@@ -1,0 +1,515 @@
+#include "gpu/derive_gpu.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstring>
+#include <functional>
+#include <optional>
+#include <span>
+
+#include <fmt/format.h>
+
+#include "compute/shared/derive_layout.h"
+#include "cpu/evaluator.h"
+#include "gpu/derive_codegen.h"
+#include "gpu/glsl_compiler.h"
+#include "gpu/scan.h"
+#include "vk/barriers.h"
+#include "vk/buffer.h"
+#include "vk/context.h"
+#include "vk/pipeline.h"
+#include "vk/timestamps.h"
+
+namespace simeco::gpu {
+
+namespace {
+
+using shared::DeriveHelperPush;
+using shared::DerivePush;
+using vk::Hazard;
+
+// A module stream on the device: symbols, parameters, the plant table, and for decomposition the position
+// each module came from in the string being rewritten and whether the next depth examines it.
+struct Stream {
+    vk::Buffer sym, par, plantStart, origin, live;
+    uint64_t capacity = 0;
+    uint32_t count = 0;
+};
+
+VkDeviceSize bytes(uint64_t count, uint64_t size) { return std::max<VkDeviceSize>(count * size, 4); }
+
+constexpr uint32_t kGreedyChunk = 256; // as greedy_chunks.glsl
+
+} // namespace
+
+struct GpuDeriver::Impl {
+    const vk::Context& ctx;
+    const ir::Grammar& g;
+    int stride;
+    GeneratedKernels kernels;
+    std::optional<vk::ComputePipeline> match, write, decompositionMatch, decompositionWrite;
+    vk::ComputePipeline bracketDepth, depthLeaves, depthLevel, plantStarts, cutApply;
+    vk::ComputePipeline greedyReduce, greedyScan, greedyMark;
+    GpuScan scan;
+    vk::Buffer contextSkip, funcTables, errors, levelInfo, readback;
+    vk::Buffer globals, arrays;
+    vk::Buffer deltas, before, tree, counts, choices, drawStarts, offsets, cutDelta, cutBefore, examined;
+    vk::Buffer chunkFunctions, chunkEntries; // the greedy walk over predecessors of several modules
+    uint64_t scratchCapacity = 0;
+    uint64_t treeCapacity = 0;
+    Stream streams[3];
+    uint32_t plants = 1;
+    double compileSeconds = 0;
+
+    Impl(const vk::Context& c, const ir::Grammar& grammar)
+        : ctx(c), g(grammar), stride(std::max(grammar.maxParams(), 1)),
+          bracketDepth(vk::ComputePipeline::embedded(c, "derive/bracket_depth")),
+          depthLeaves(vk::ComputePipeline::embedded(c, "derive/depth_leaves")),
+          depthLevel(vk::ComputePipeline::embedded(c, "derive/depth_level")),
+          plantStarts(vk::ComputePipeline::embedded(c, "derive/plant_starts")),
+          cutApply(vk::ComputePipeline::embedded(c, "derive/cut_apply")),
+          greedyReduce(vk::ComputePipeline::embedded(c, "derive/greedy_reduce")),
+          greedyScan(vk::ComputePipeline::embedded(c, "derive/greedy_scan")),
+          greedyMark(vk::ComputePipeline::embedded(c, "derive/greedy_mark")), scan(c) {
+        if (std::optional<std::string> reason = gpuUnsupportedReason(g))
+            throw std::runtime_error("the GPU backend cannot derive this grammar: " + *reason +
+                                     " (use --backend cpu)");
+        auto start = std::chrono::steady_clock::now();
+        kernels = generateDeriveKernels(g, stride);
+        auto build = [&](const std::string& source, const char* name) {
+            std::vector<uint32_t> spirv = cachedComputeKernel(source, name);
+            return vk::ComputePipeline(ctx, spirv, name);
+        };
+        match.emplace(build(kernels.match, "derive/match"));
+        write.emplace(build(kernels.write, "derive/write"));
+        if (kernels.hasDecomposition) {
+            decompositionMatch.emplace(build(kernels.decompositionMatch, "derive/decomposition_match"));
+            decompositionWrite.emplace(build(kernels.decompositionWrite, "derive/decomposition_write"));
+        }
+        compileSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+        std::vector<uint32_t> skipBits((g.alphabet.size() + 31) / 32 + 1, 0);
+        for (size_t s = 0; s < g.alphabet.size(); ++s)
+            if (g.skippedInContext(static_cast<ir::SymbolId>(s))) skipBits[s / 32] |= 1u << (s % 32);
+        contextSkip = deviceBufferWith(std::span<const uint32_t>(skipBits));
+        std::vector<double> tables = kernels.functionTables;
+        if (tables.empty()) tables.push_back(0.0);
+        funcTables = deviceBufferWith(std::span<const double>(tables));
+        errors = vk::Buffer(ctx, 16, vk::MemoryUsage::DeviceLocal);
+        levelInfo = vk::Buffer(ctx, 2 * shared::kMaxDepthLevels * 4, vk::MemoryUsage::Upload);
+        readback = vk::Buffer(ctx, 16, vk::MemoryUsage::Readback);
+    }
+
+    template <typename T>
+    vk::Buffer deviceBufferWith(std::span<const T> values) {
+        vk::Buffer buffer(ctx, bytes(values.size(), sizeof(T)), vk::MemoryUsage::DeviceLocal);
+        if (!values.empty()) vk::upload(ctx, buffer, std::as_bytes(values));
+        return buffer;
+    }
+
+    void checkRange(uint64_t count, uint64_t size, const char* what) const {
+        uint64_t limit = ctx.limits().maxStorageBufferRange;
+        if (count * size > limit)
+            throw ir::LimitError(fmt::format("the device binds at most {} MiB per buffer; {} modules need {} MiB of {} "
+                                             "(derive fewer steps or plants, or use a device with larger buffers)",
+                                             limit >> 20, count, (count * size) >> 20, what));
+    }
+
+    void ensureStream(Stream& s, uint64_t count) {
+        if (s.capacity >= count && s.sym) return;
+        uint64_t capacity = std::max<uint64_t>({count + count / 2, 1024, s.capacity});
+        uint64_t limit = ctx.limits().maxStorageBufferRange;
+        capacity = std::min<uint64_t>(capacity, limit / (4ull * uint64_t(stride)));
+        capacity = std::max(capacity, count);
+        checkRange(count, 4ull * uint64_t(stride), "parameters");
+        s.sym = vk::Buffer(ctx, bytes(capacity, 4), vk::MemoryUsage::DeviceLocal);
+        s.par = vk::Buffer(ctx, bytes(capacity, 4ull * uint64_t(stride)), vk::MemoryUsage::DeviceLocal);
+        s.origin = vk::Buffer(ctx, bytes(capacity, 4), vk::MemoryUsage::DeviceLocal);
+        s.live = vk::Buffer(ctx, bytes(capacity, 4), vk::MemoryUsage::DeviceLocal);
+        if (!s.plantStart) s.plantStart = vk::Buffer(ctx, bytes(plants + 1, 4), vk::MemoryUsage::DeviceLocal);
+        s.capacity = capacity;
+    }
+
+    void ensureScratch(uint64_t count) {
+        scan.reserve(static_cast<uint32_t>(count + 1));
+        if (scratchCapacity >= count + 1 && counts) return;
+        uint64_t capacity = std::max<uint64_t>(count + count / 2 + 1, 1024);
+        capacity = std::min<uint64_t>(capacity, ctx.limits().maxStorageBufferRange / 4);
+        capacity = std::max<uint64_t>(capacity, count + 1);
+        checkRange(count + 1, 4, "per-module scratch");
+        for (vk::Buffer* b : {&deltas, &before, &counts, &choices, &drawStarts, &offsets, &cutDelta, &cutBefore, &examined})
+            *b = vk::Buffer(ctx, bytes(capacity, 4), vk::MemoryUsage::DeviceLocal);
+        chunkFunctions = vk::Buffer(ctx, bytes(capacity / kGreedyChunk + 1, 4), vk::MemoryUsage::DeviceLocal);
+        chunkEntries = vk::Buffer(ctx, bytes(capacity / kGreedyChunk + 1, 4), vk::MemoryUsage::DeviceLocal);
+        scratchCapacity = capacity;
+    }
+
+    // The levels of the bracket-depth min tree over `count` leaves: offsets and sizes for levelInfo.
+    uint32_t layoutTree(uint32_t count) {
+        uint32_t info[2 * shared::kMaxDepthLevels] = {};
+        uint64_t offset = 0;
+        uint32_t levels = 0;
+        for (uint32_t size = std::max(count, 1u);; size = (size + 1) / 2) {
+            info[levels] = static_cast<uint32_t>(offset);
+            info[shared::kMaxDepthLevels + levels] = size;
+            offset += size;
+            ++levels;
+            if (size == 1 || levels == shared::kMaxDepthLevels) break;
+        }
+        std::memcpy(levelInfo.mapped(), info, sizeof info);
+        if (treeCapacity < offset) {
+            checkRange(offset, 4, "bracket depths");
+            tree = vk::Buffer(ctx, bytes(offset + offset / 2, 4), vk::MemoryUsage::DeviceLocal);
+            treeCapacity = offset + offset / 2;
+        }
+        return levels;
+    }
+
+    DerivePush push(uint32_t count, uint32_t step, uint32_t seed, uint32_t pass, uint32_t oldCount, uint32_t depth) const {
+        DerivePush p{};
+        p.count = count;
+        p.plants = plants;
+        p.step = step;
+        p.seed = seed;
+        p.pass = pass;
+        p.stride = static_cast<uint32_t>(stride);
+        p.globalCount = static_cast<uint32_t>(g.globalNames.size());
+        uint32_t arrayElements = 0;
+        for (const ir::GlobalArray& a : g.arrays) arrayElements += static_cast<uint32_t>(a.init.size());
+        p.arrayStride = arrayElements;
+        p.oldCount = oldCount;
+        p.depth = depth;
+        return p;
+    }
+
+    // Submits `record`, waits, and returns the two words copied into the readback buffer (a total and the
+    // error word); throws the located error a kernel reported.
+    std::pair<uint32_t, uint32_t> submit(const std::function<void(VkCommandBuffer)>& record, vk::Timestamps* timer,
+                                         double& gpuMillis) {
+        ctx.submitAndWait([&](VkCommandBuffer cmd) {
+            if (timer) {
+                timer->cmdReset(cmd);
+                timer->cmdWrite(cmd, 0, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT);
+            }
+            record(cmd);
+            vk::memoryBarrier(cmd, Hazard::ComputeToTransfer);
+            VkBufferCopy error{0, 4, 4};
+            vkCmdCopyBuffer(cmd, errors.handle(), readback.handle(), 1, &error);
+            vk::memoryBarrier(cmd, Hazard::TransferToHost);
+            if (timer) timer->cmdWrite(cmd, 1, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT);
+        });
+        if (timer) gpuMillis += timer->elapsedNs(0, 1) / 1e6;
+        uint32_t words[2];
+        std::memcpy(words, readback.mapped(), sizeof words);
+        if (words[1] != 0) {
+            uint32_t site = words[1] - 1;
+            if (site < kernels.errors.size()) throw ir::InputError(kernels.errors[site].loc, kernels.errors[site].message);
+            throw std::runtime_error("a derivation kernel reported an unknown error");
+        }
+        return {words[0], words[1]};
+    }
+
+    void copyTotal(VkCommandBuffer cmd) {
+        vk::memoryBarrier(cmd, Hazard::ComputeToTransfer);
+        VkBufferCopy total{0, 0, 4};
+        vkCmdCopyBuffer(cmd, scan.totalBuffer().handle(), readback.handle(), 1, &total);
+    }
+
+    void recordBracketDepth(VkCommandBuffer cmd, const Stream& cur) {
+        uint32_t n = cur.count;
+        DeriveHelperPush hp{n, 0, 0, plants};
+        bracketDepth.dispatch(cmd, {cur.sym, deltas}, hp, bracketDepth.groupsFor(n));
+        vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+        scan.record(cmd, deltas, before, n);
+        vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+        depthLeaves.dispatch(cmd, {deltas, before, tree}, hp, depthLeaves.groupsFor(n));
+        vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+        uint32_t levels = 0;
+        const uint32_t* info = reinterpret_cast<const uint32_t*>(levelInfo.mapped());
+        while (levels < shared::kMaxDepthLevels && (levels == 0 || info[shared::kMaxDepthLevels + levels - 1] > 1)) ++levels;
+        for (uint32_t level = 1; level < levels; ++level) {
+            uint32_t size = info[shared::kMaxDepthLevels + level];
+            DeriveHelperPush lp{size, level, 0, plants};
+            depthLevel.dispatch(cmd, {tree, levelInfo}, lp, depthLevel.groupsFor(size));
+            vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+        }
+    }
+
+    // Which modules start a rewrite when predecessors of several modules consume their neighbours.
+    void recordGreedyWalk(VkCommandBuffer cmd, const Stream& in) {
+        uint32_t n = in.count;
+        uint32_t chunks = (n + kGreedyChunk - 1) / kGreedyChunk;
+        DeriveHelperPush chunked{n, kernels.longestPredecessor, 0, plants};
+        greedyReduce.dispatch(cmd, {choices, plantTable(in), chunkFunctions}, chunked, greedyReduce.groupsFor(chunks));
+        vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+        DeriveHelperPush composed{chunks, 0, 0, plants};
+        greedyScan.dispatch(cmd, {chunkFunctions, chunkEntries}, composed, 1);
+        vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+        greedyMark.dispatch(cmd, {choices, plantTable(in), chunkEntries, counts}, chunked, greedyMark.groupsFor(chunks));
+        vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+    }
+
+    vk::BufferRange plantTable(const Stream& s) const { return vk::BufferRange(s.plantStart, 0, bytes(plants + 1, 4)); }
+
+    // One derivation step from streams[cur] into a new stream; returns its index.
+    int step(int cur, uint32_t stepIndex, uint32_t seed, uint64_t budget, vk::Timestamps* timer, GpuDeriveStats& stats) {
+        Stream& in = streams[cur];
+        int outIndex = (cur + 1) % 3;
+        Stream& out = streams[outIndex];
+        uint32_t n = in.count;
+        double millis = 0;
+        ensureScratch(n);
+        if (kernels.needsBrackets) layoutTree(n);
+        uint32_t pass = stepIndex * shared::kPassesPerStep;
+        auto [total, unused] = submit(
+            [&](VkCommandBuffer cmd) {
+                vk::cmdFill(cmd, errors, 0);
+                if (kernels.mayCut) vk::cmdFill(cmd, cutDelta, 0);
+                vk::memoryBarrier(cmd, Hazard::TransferToCompute);
+                if (kernels.needsBrackets && n > 0) recordBracketDepth(cmd, in);
+                DerivePush p = push(n, stepIndex, seed, pass, n, 0);
+                match->dispatch(cmd,
+                                {in.sym, in.par, plantTable(in), tree ? tree : deltas, levelInfo, globals, arrays, funcTables,
+                                 contextSkip, errors, counts, choices, drawStarts, cutDelta},
+                                p, match->groupsFor(n));
+                vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+                if (kernels.mayCut && n > 0) {
+                    scan.record(cmd, cutDelta, cutBefore, n);
+                    vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+                    DeriveHelperPush hp{n, 0, 0, plants};
+                    cutApply.dispatch(cmd, {cutDelta, cutBefore, counts, choices}, hp, cutApply.groupsFor(n));
+                    vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+                }
+                if (kernels.longestPredecessor > 1 && n > 0) recordGreedyWalk(cmd, in);
+                scan.record(cmd, counts, offsets, n);
+                copyTotal(cmd);
+            },
+            timer, millis);
+        (void)unused;
+        if (total > budget)
+            throw ir::LimitError(fmt::format("the string outgrew the module budget of {} modules in step {} "
+                                             "(raise it with --max-modules, or derive fewer steps)",
+                                             budget, stepIndex));
+        ensureStream(out, total);
+        submit(
+            [&](VkCommandBuffer cmd) {
+                vk::cmdFill(cmd, errors, 0);
+                vk::memoryBarrier(cmd, Hazard::TransferToCompute);
+                DerivePush p = push(n, stepIndex, seed, pass, n, 0);
+                write->dispatch(cmd,
+                                {in.sym, in.par, plantTable(in), tree ? tree : deltas, levelInfo, globals, arrays, funcTables,
+                                 contextSkip, errors, offsets, choices, drawStarts, out.sym, out.par, out.origin, out.live},
+                                p, write->groupsFor(n));
+                DeriveHelperPush hp{n, 0, total, plants};
+                plantStarts.dispatch(cmd, {plantTable(in), offsets, plantTable(out)}, hp, plantStarts.groupsFor(plants + 1));
+                vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+            },
+            timer, millis);
+        out.count = total;
+        stats.bytesMoved += uint64_t(n) * (4 + 4ull * uint64_t(stride) + 12 + 12 + 12) +
+                            uint64_t(total) * (4 + 4ull * uint64_t(stride) + 8);
+        if (kernels.hasDecomposition) outIndex = decompose(cur, outIndex, stepIndex, seed, budget, timer, millis, stats);
+        if (timer) stats.stepMillis.push_back(millis);
+        return outIndex;
+    }
+
+    // Decomposition depth by depth, from streams[x]; the string being rewritten (contexts) is streams[old].
+    int decompose(int old, int x, uint32_t stepIndex, uint32_t seed, uint64_t budget, vk::Timestamps* timer,
+                  double& millis, GpuDeriveStats& stats) {
+        Stream& oldStream = streams[old];
+        int y = 3 - old - x;
+        for (int depth = 0; depth < g.decomposition.maxDepth; ++depth) {
+            Stream& X = streams[x];
+            uint32_t n = X.count;
+            if (n == 0) break;
+            ensureScratch(n);
+            auto [live, unusedLive] = submit(
+                [&](VkCommandBuffer cmd) {
+                    scan.record(cmd, X.live, examined, n);
+                    copyTotal(cmd);
+                },
+                timer, millis);
+            (void)unusedLive;
+            if (live == 0) break;
+            uint32_t pass = stepIndex * shared::kPassesPerStep + 1 + uint32_t(std::min(depth, int(shared::kPassesPerStep) - 2));
+            DerivePush p = push(n, stepIndex, seed, pass, oldStream.count, uint32_t(depth));
+            auto [total, unused] = submit(
+                [&](VkCommandBuffer cmd) {
+                    vk::cmdFill(cmd, errors, 0);
+                    vk::memoryBarrier(cmd, Hazard::TransferToCompute);
+                    decompositionMatch->dispatch(
+                        cmd,
+                        {oldStream.sym, oldStream.par, plantTable(oldStream), tree ? tree : deltas, levelInfo, globals,
+                         arrays, funcTables, contextSkip, errors, X.sym, X.par, plantTable(X), X.live, X.origin, examined,
+                         counts, choices, drawStarts},
+                        p, decompositionMatch->groupsFor(n));
+                    vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+                    scan.record(cmd, counts, offsets, n);
+                    copyTotal(cmd);
+                },
+                timer, millis);
+            (void)unused;
+            if (total > budget)
+                throw ir::LimitError(fmt::format("the string outgrew the module budget of {} modules in step {} "
+                                                 "(raise it with --max-modules, or derive fewer steps)",
+                                                 budget, stepIndex));
+            Stream& Y = streams[y];
+            ensureStream(Y, total);
+            submit(
+                [&](VkCommandBuffer cmd) {
+                    vk::cmdFill(cmd, errors, 0);
+                    vk::memoryBarrier(cmd, Hazard::TransferToCompute);
+                    decompositionWrite->dispatch(
+                        cmd,
+                        {oldStream.sym, oldStream.par, plantTable(oldStream), tree ? tree : deltas, levelInfo, globals,
+                         arrays, funcTables, contextSkip, errors, X.sym, X.par, plantTable(X), X.live, X.origin, examined,
+                         offsets, choices, drawStarts, Y.sym, Y.par, Y.origin, Y.live},
+                        p, decompositionWrite->groupsFor(n));
+                    DeriveHelperPush hp{n, 0, total, plants};
+                    plantStarts.dispatch(cmd, {plantTable(X), offsets, plantTable(Y)}, hp, plantStarts.groupsFor(plants + 1));
+                    vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+                },
+                timer, millis);
+            Y.count = total;
+            stats.bytesMoved += uint64_t(n) * (2 * (4 + 4ull * uint64_t(stride)) + 40) + uint64_t(total) * (12 + 4ull * uint64_t(stride));
+            std::swap(x, y);
+        }
+        return x;
+    }
+};
+
+GpuDeriver::GpuDeriver(const vk::Context& context, const ir::Grammar& g) : impl_(std::make_unique<Impl>(context, g)) {}
+
+GpuDeriver::~GpuDeriver() = default;
+
+cpu::DeriveResult GpuDeriver::derive(const cpu::DeriveOptions& options, bool readBack, GpuDeriveStats* statsOut) {
+    Impl& m = *impl_;
+    const ir::Grammar& g = m.g;
+    GpuDeriveStats stats;
+    stats.compileSeconds = m.compileSeconds;
+    auto start = std::chrono::steady_clock::now();
+    int steps = options.steps >= 0 ? options.steps : g.derivationLength;
+    uint32_t seed = options.seed >= 0 ? uint32_t(options.seed) : g.seed;
+    m.plants = std::max<uint32_t>(options.plants, 1);
+    uint64_t budget = options.maxModules ? options.maxModules : cpu::defaultModuleBudget(m.stride);
+    // The plant tables are sized by the plant count, which may change between derivations.
+    for (Stream& s : m.streams) {
+        s.plantStart = vk::Buffer(m.ctx, bytes(m.plants + 1, 4), vk::MemoryUsage::DeviceLocal);
+        s.count = 0;
+    }
+
+    // Host side: each plant's control blocks and axiom, exactly as the CPU reference evaluates them.
+    std::vector<cpu::PlantState> states(m.plants);
+    cpu::ModuleString initial;
+    initial.stride = m.stride;
+    initial.plantStart.push_back(0);
+    std::vector<float> values;
+    for (uint32_t plant = 0; plant < m.plants; ++plant) {
+        cpu::Evaluator evaluator(g, states[plant]);
+        states[plant].reset(g);
+        evaluator.key.seed = seed;
+        evaluator.key.plant = plant;
+        evaluator.exec(g.startBlock, nullptr);
+        for (const ir::SuccessorModule& mod : g.axiom) {
+            values.clear();
+            for (const ir::Expr& e : mod.args) values.push_back(static_cast<float>(evaluator.eval(e, nullptr)));
+            initial.push(mod.sym, values.data(), values.size());
+        }
+        initial.plantStart.push_back(initial.size());
+    }
+    if (initial.size() > budget)
+        throw ir::LimitError(fmt::format("the axioms alone exceed the module budget of {} modules", budget));
+
+    int cur = 0;
+    {
+        Stream& s = m.streams[cur];
+        m.ensureStream(s, initial.size());
+        std::vector<uint32_t> words(initial.size());
+        for (size_t i = 0; i < initial.size(); ++i) words[i] = initial.sym[i] | (uint32_t(initial.paramCount[i]) << 24);
+        if (!words.empty()) {
+            vk::upload(m.ctx, s.sym, std::as_bytes(std::span<const uint32_t>(words)));
+            vk::upload(m.ctx, s.par, std::as_bytes(std::span<const float>(initial.params)));
+        }
+        std::vector<uint32_t> table(initial.plantStart.begin(), initial.plantStart.end());
+        vk::upload(m.ctx, s.plantStart, std::as_bytes(std::span<const uint32_t>(table)));
+        s.count = static_cast<uint32_t>(initial.size());
+    }
+
+    size_t globalCount = g.globalNames.size();
+    size_t arrayElements = 0;
+    for (const ir::GlobalArray& a : g.arrays) arrayElements += a.init.size();
+    m.globals = vk::Buffer(m.ctx, bytes(m.plants * std::max<size_t>(globalCount, 1), 8), vk::MemoryUsage::Upload);
+    m.arrays = vk::Buffer(m.ctx, bytes(m.plants * std::max<size_t>(arrayElements, 1), 8), vk::MemoryUsage::Upload);
+    auto uploadState = [&] {
+        double* gp = reinterpret_cast<double*>(m.globals.mapped());
+        double* ap = reinterpret_cast<double*>(m.arrays.mapped());
+        for (uint32_t plant = 0; plant < m.plants; ++plant) {
+            std::copy(states[plant].globals.begin(), states[plant].globals.end(), gp + plant * globalCount);
+            size_t at = plant * arrayElements;
+            for (const std::vector<double>& a : states[plant].arrays) {
+                std::copy(a.begin(), a.end(), ap + at);
+                at += a.size();
+            }
+        }
+    };
+    bool hasControl = !g.startEachBlock.empty() || !g.endEachBlock.empty();
+    bool hasQ = !g.globalNames.empty() && g.globalNames.front() == "Q";
+
+    std::optional<vk::Timestamps> timer;
+    if (m.ctx.timestampValidBits() > 0) timer.emplace(m.ctx, 2);
+
+    int done = 0;
+    for (int step = 1; step <= steps; ++step) {
+        for (uint32_t plant = 0; plant < m.plants; ++plant) {
+            if (hasQ) states[plant].globals[0] = step;
+            if (hasControl) {
+                cpu::Evaluator evaluator(g, states[plant]);
+                evaluator.key.seed = seed;
+                evaluator.key.plant = plant;
+                evaluator.exec(g.startEachBlock, nullptr);
+            }
+        }
+        uploadState();
+        cur = m.step(cur, uint32_t(step), seed, budget, timer ? &*timer : nullptr, stats);
+        stats.peakModules = std::max<uint64_t>(stats.peakModules, m.streams[cur].count);
+        ++done;
+        if (hasControl)
+            for (uint32_t plant = 0; plant < m.plants; ++plant) {
+                cpu::Evaluator evaluator(g, states[plant]);
+                evaluator.key.seed = seed;
+                evaluator.key.plant = plant;
+                evaluator.exec(g.endEachBlock, nullptr);
+            }
+    }
+    for (uint32_t plant = 0; plant < m.plants; ++plant) {
+        cpu::Evaluator evaluator(g, states[plant]);
+        evaluator.exec(g.endBlock, nullptr);
+    }
+
+    cpu::DeriveResult result;
+    result.steps = done;
+    Stream& final = m.streams[cur];
+    stats.modules = final.count;
+    result.string.stride = m.stride;
+    std::vector<uint32_t> table = vk::downloadVector<uint32_t>(m.ctx, final.plantStart, m.plants + 1);
+    result.string.plantStart.assign(table.begin(), table.end());
+    if (readBack && final.count > 0) {
+        std::vector<uint32_t> words = vk::downloadVector<uint32_t>(m.ctx, final.sym, final.count);
+        result.string.params = vk::downloadVector<float>(m.ctx, final.par, size_t(final.count) * size_t(m.stride));
+        result.string.sym.resize(words.size());
+        result.string.paramCount.resize(words.size());
+        for (size_t i = 0; i < words.size(); ++i) {
+            result.string.sym[i] = words[i] & shared::kSymbolMask;
+            result.string.paramCount[i] = static_cast<uint8_t>(words[i] >> shared::kSymbolBits);
+        }
+        // Unused parameter slots are whatever the device left there; the CPU's are zero.
+        for (size_t i = 0; i < words.size(); ++i)
+            for (size_t k = result.string.paramCount[i]; k < size_t(m.stride); ++k)
+                result.string.params[i * size_t(m.stride) + k] = 0.0f;
+    }
+    stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (statsOut) *statsOut = stats;
+    return result;
+}
+
+} // namespace simeco::gpu

@@ -1,0 +1,50 @@
+// Derivation on the GPU: every step is match/count -> exclusive scan -> write over the whole module stream of
+// all plants, with kernels generated from the grammar (see derive_codegen.h). The result is identical to the
+// CPU reference engine's (cpu/derive.h): same modules, parameters within float rounding, same random draws.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cpu/derive.h"
+#include "ir/grammar.h"
+
+namespace simeco::vk {
+class Context;
+}
+
+namespace simeco::gpu {
+
+// Why a grammar cannot be derived by the parallel GPU passes, or nothing when it can.
+std::optional<std::string> gpuUnsupportedReason(const ir::Grammar& g);
+
+struct GpuDeriveStats {
+    uint64_t modules = 0;            // modules of all plants after the last step
+    double seconds = 0;              // wall time of the derivation (without kernel compilation)
+    double compileSeconds = 0;       // generating and compiling (or loading from the cache) the kernels
+    uint64_t bytesMoved = 0;         // bytes the passes read and wrote, as counted by the host
+    std::vector<double> stepMillis;  // GPU time of each step from timestamps (empty if unsupported)
+    uint64_t peakModules = 0;
+};
+
+class GpuDeriver {
+public:
+    // Generates and compiles the grammar's kernels (cached on disk by content hash).
+    GpuDeriver(const vk::Context& context, const ir::Grammar& g);
+    ~GpuDeriver();
+    GpuDeriver(const GpuDeriver&) = delete;
+    GpuDeriver& operator=(const GpuDeriver&) = delete;
+
+    // Derives options.plants copies of the grammar in one buffer. The string is read back only when
+    // `readBack`; otherwise the result's string is empty and `stats` tells the sizes.
+    cpu::DeriveResult derive(const cpu::DeriveOptions& options, bool readBack = true, GpuDeriveStats* stats = nullptr);
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+} // namespace simeco::gpu

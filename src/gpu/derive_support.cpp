@@ -1,0 +1,116 @@
+// What the parallel GPU passes can derive exactly as the CPU reference does.
+//
+// The passes rewrite every module at once, so anything that makes one module's rewriting depend on an earlier
+// module's — productions writing globals or arrays, locals that carry their value over from the production's
+// previous application (cpfg keeps one variable table per production), file output, stop() — is refused with
+// the reason, as are ring L-systems. printf() is accepted and prints nothing: the derived string is the same.
+#include <set>
+
+#include <fmt/format.h>
+
+#include "gpu/derive_gpu.h"
+
+namespace simeco::gpu {
+
+namespace {
+
+struct Checker {
+    const ir::Grammar& g;
+    std::optional<std::string> reason;
+
+    void fail(const ir::SourceLoc& loc, const std::string& what) {
+        if (!reason) reason = fmt::format("{}:{}: {}", loc.file, loc.line, what);
+    }
+
+    // Reads in e of slots not yet assigned, and unsupported calls.
+    void expr(const ir::Expr& e, const std::set<int>& assigned) {
+        if (e.op == ir::Op::Local && !assigned.count(e.slot))
+            fail(e.loc, "a local variable is read before it is assigned (cpfg carries its value over between "
+                        "applications of the production)");
+        if (e.op == ir::Op::Call) {
+            switch (e.fn) {
+            case ir::Builtin::Bran:
+            case ir::Builtin::Stop:
+            case ir::Builtin::Fopen:
+            case ir::Builtin::Fclose:
+            case ir::Builtin::Fflush:
+            case ir::Builtin::Fprintf:
+            case ir::Builtin::Fscanf:
+            case ir::Builtin::CurveX:
+            case ir::Builtin::CurveY:
+            case ir::Builtin::CurveZ:
+            case ir::Builtin::CurveGal: fail(e.loc, fmt::format("{}() in a production", ir::builtinName(e.fn))); break;
+            case ir::Builtin::Func:
+                for (const ir::FunctionCurve& f : g.functions)
+                    if (f.samples <= 2) fail(e.loc, "func() of a function without precomputed samples");
+                break;
+            default: break;
+            }
+        }
+        for (const ir::Expr& a : e.args) expr(a, assigned);
+    }
+
+    void statements(const std::vector<ir::Stmt>& stmts, std::set<int>& assigned) {
+        for (const ir::Stmt& s : stmts) {
+            switch (s.kind) {
+            case ir::StmtKind::Assign:
+                expr(s.expr, assigned);
+                for (const ir::Expr& i : s.indices) expr(i, assigned);
+                if (s.target != ir::TargetKind::Local) fail(s.loc, "a production assigns a global variable or an array");
+                else assigned.insert(s.slot);
+                break;
+            case ir::StmtKind::Eval: expr(s.expr, assigned); break;
+            case ir::StmtKind::If: {
+                expr(s.expr, assigned);
+                std::set<int> a = assigned, b = assigned;
+                statements(s.body, a);
+                statements(s.elseBody, b);
+                for (int slot : a)
+                    if (b.count(slot)) assigned.insert(slot);
+                break;
+            }
+            case ir::StmtKind::While: {
+                expr(s.expr, assigned);
+                std::set<int> inside = assigned;
+                statements(s.body, inside);
+                expr(s.expr, inside);
+                break;
+            }
+            case ir::StmtKind::DoWhile:
+                statements(s.body, assigned);
+                expr(s.expr, assigned);
+                break;
+            }
+        }
+    }
+
+    void production(const ir::Production& p, bool decomposition) {
+        if (p.strict.size() > 8) fail(p.loc, "a predecessor of more than 8 modules");
+        if (decomposition && p.strict[0].sym == ir::kCut) fail(p.loc, "a decomposition production for the cut '%'");
+        std::set<int> assigned;
+        for (const auto* patterns : {&p.left, &p.strict, &p.right})
+            for (const ir::PatternModule& m : *patterns) assigned.insert(m.paramSlots.begin(), m.paramSlots.end());
+        statements(p.before, assigned);
+        if (p.condition) expr(*p.condition, assigned);
+        statements(p.after, assigned);
+        for (const ir::Alternative& alt : p.alternatives)
+            for (const ir::SuccessorModule& m : alt.modules) {
+                if (m.args.size() > 255) fail(m.loc, "more than 255 parameters");
+                for (const ir::Expr& a : m.args) expr(a, assigned);
+            }
+    }
+};
+
+} // namespace
+
+std::optional<std::string> gpuUnsupportedReason(const ir::Grammar& g) {
+    Checker check{g, std::nullopt};
+    if (g.ring) check.fail(g.axiomLoc, "a ring L-system");
+    if (g.alphabet.size() > (1u << 24)) check.fail(g.axiomLoc, "more than 2^24 symbols");
+    for (const ir::Production& p : g.productions.productions) check.production(p, false);
+    if (g.decomposition.maxDepth > 0)
+        for (const ir::Production& p : g.decomposition.productions) check.production(p, true);
+    return check.reason;
+}
+
+} // namespace simeco::gpu

@@ -1,0 +1,381 @@
+// The GPU derivation against the CPU reference engine: the example grammars, the cpfg corpus, random grammars
+// and many plants at once must give the same modules, with parameters equal within float rounding.
+#include <stdlib.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "../unit/grammar_text.h"
+#include "cpu/derive.h"
+#include "gpu/derive_gpu.h"
+#include "gpu_fixture.h"
+#include "ir/source_loc.h"
+#include "lang/load_grammar.h"
+#include "random_grammar.h"
+
+namespace simeco::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kGrammars = fs::path(SIMECO_SOURCE_DIR) / "grammars";
+const fs::path kCorpus = fs::path(SIMECO_SHARED_DIR) / "corpus" / "cpfg-vlab";
+
+// Random grammars keep below this; a grammar that outgrows it is skipped, not failed.
+constexpr std::uint64_t kRandomModuleBudget = 20000;
+constexpr int kRandomGrammars = 500;
+constexpr double kMinSupportedShare = 0.9;
+
+// Reruns a range of random grammars by hand: SIMECO_RANDOM_FIRST_SEED=1234 SIMECO_RANDOM_GRAMMARS=1.
+std::uint64_t envOr(const char* name, std::uint64_t fallback) {
+    const char* value = std::getenv(name);
+    return value && *value ? std::strtoull(value, nullptr, 10) : fallback;
+}
+
+bool sameParameter(float want, float got) {
+    if (std::isnan(want) || std::isnan(got)) return std::isnan(want) && std::isnan(got);
+    if (want == got) return true; // infinities included
+    double difference = std::fabs(double{want} - double{got});
+    return difference <= 1e-6 || difference <= 1e-5 * std::max(std::fabs(double{want}), std::fabs(double{got}));
+}
+
+std::string moduleText(const cpu::ModuleString& s, const ir::Alphabet& alphabet, std::size_t i) {
+    return cpu::formatModules(s, alphabet, i, i + 1);
+}
+
+// Empty when the GPU's result equals the CPU's; else the first differing module with what precedes it.
+std::string firstDifference(const cpu::DeriveResult& want, const cpu::DeriveResult& got, const ir::Alphabet& alphabet) {
+    std::ostringstream out;
+    if (want.steps != got.steps) out << "steps " << got.steps << ", expected " << want.steps << "; ";
+    const cpu::ModuleString& a = want.string;
+    const cpu::ModuleString& b = got.string;
+    std::size_t common = std::min(a.size(), b.size());
+    for (std::size_t i = 0; i < common; ++i) {
+        bool same = a.sym[i] == b.sym[i] && a.paramCount[i] == b.paramCount[i];
+        for (std::size_t k = 0; same && k < a.paramCount[i]; ++k)
+            same = sameParameter(a.paramsOf(i)[k], b.paramsOf(i)[k]);
+        if (same) continue;
+        std::size_t from = i >= 8 ? i - 8 : 0;
+        auto plant = std::upper_bound(a.plantStart.begin(), a.plantStart.end(), std::uint64_t{i});
+        out << "module " << i << " of " << a.size() << " (plant " << (plant - a.plantStart.begin() - 1)
+            << "): " << moduleText(b, alphabet, i) << ", expected " << moduleText(a, alphabet, i) << " (after \""
+            << cpu::formatModules(a, alphabet, from, i) << "\"); ";
+        break;
+    }
+    if (a.size() != b.size()) out << "module count " << b.size() << ", expected " << a.size() << "; ";
+    if (a.plantStart != b.plantStart) {
+        std::size_t p = 0;
+        while (p < a.plantStart.size() && p < b.plantStart.size() && a.plantStart[p] == b.plantStart[p])
+            ++p;
+        out << "plant segment table differs at entry " << p << " (" << b.plantStart.size() << " entries, expected "
+            << a.plantStart.size() << "); ";
+    }
+    return out.str();
+}
+
+enum class Verdict { Match, Differ, Unsupported, OverBudget };
+
+struct Outcome {
+    Verdict verdict = Verdict::Match;
+    std::string detail; // the difference, the reason it is unsupported, or the error
+};
+
+// Derives `g` with both engines. Errors other than the CPU outgrowing the module budget propagate.
+Outcome compareEngines(const vk::Context& context, const ir::Grammar& g, const cpu::DeriveOptions& options) {
+    if (std::optional<std::string> reason = gpu::gpuUnsupportedReason(g)) return {Verdict::Unsupported, *reason};
+    cpu::DeriveResult want;
+    try {
+        want = cpu::deriveCpu(g, options);
+    } catch (const ir::LimitError& e) {
+        return {Verdict::OverBudget, e.what()};
+    }
+    gpu::GpuDeriver deriver(context, g);
+    cpu::DeriveResult got = deriver.derive(options);
+    std::string difference = firstDifference(want, got, g.alphabet);
+    return {difference.empty() ? Verdict::Match : Verdict::Differ, difference};
+}
+
+std::string describeError(const std::exception& e) {
+    if (const auto* input = dynamic_cast<const ir::InputError*>(&e)) return input->formatted();
+    return e.what();
+}
+
+// Tallies of a loop over grammar files: unsupported ones are listed, differences and errors fail.
+struct Tally {
+    int total = 0, matched = 0;
+    std::vector<std::string> unsupported;
+
+    void expectSupportedShare(const char* what) const {
+        for (const std::string& u : unsupported)
+            std::printf("unsupported on the GPU: %s\n", u.c_str());
+        std::printf("%s: %d of %d match the CPU, %zu unsupported\n", what, matched, total, unsupported.size());
+        EXPECT_GE(static_cast<double>(total - static_cast<int>(unsupported.size())), kMinSupportedShare * total)
+            << "too many " << what << " unsupported on the GPU";
+    }
+};
+
+void compareFile(const vk::Context& context, const fs::path& file, const std::string& name, Tally& tally) {
+    ++tally.total;
+    try {
+        ir::Grammar g = lang::loadGrammarFile(file.string());
+        Outcome outcome = compareEngines(context, g, {});
+        switch (outcome.verdict) {
+        case Verdict::Match:
+            ++tally.matched;
+            break;
+        case Verdict::Unsupported:
+            tally.unsupported.push_back(name + ": " + outcome.detail);
+            break;
+        case Verdict::OverBudget:
+            ADD_FAILURE() << name << ": over the module budget: " << outcome.detail;
+            break;
+        case Verdict::Differ:
+            ADD_FAILURE() << name << ": GPU differs from CPU: " << outcome.detail;
+            break;
+        }
+    } catch (const std::exception& e) {
+        ADD_FAILURE() << name << ": " << describeError(e);
+    }
+}
+
+using DeriveGpuTest = GpuTest;
+
+// Models may write files (fopen) relative to the working directory: they run in a scratch directory.
+class ScratchDirGpuTest : public GpuTest {
+protected:
+    void SetUp() override {
+        GpuTest::SetUp();
+        if (HasFatalFailure()) return;
+        char pattern[] = "/tmp/simeco-gpu-derive-XXXXXX";
+        ASSERT_NE(mkdtemp(pattern), nullptr);
+        scratch_ = pattern;
+        previous_ = fs::current_path();
+        fs::current_path(scratch_);
+    }
+    void TearDown() override {
+        if (!scratch_.empty()) {
+            fs::current_path(previous_);
+            fs::remove_all(scratch_);
+        }
+        GpuTest::TearDown();
+    }
+
+private:
+    fs::path scratch_, previous_;
+};
+
+TEST_F(DeriveGpuTest, ExampleGrammarsMatchTheCpu) {
+    std::vector<fs::path> files;
+    for (const fs::directory_entry& entry : fs::recursive_directory_iterator(kGrammars)) {
+        std::string extension = entry.path().extension().string();
+        if (entry.is_regular_file() && (extension == ".l" || extension == ".lsys")) files.push_back(entry.path());
+    }
+    std::sort(files.begin(), files.end());
+    ASSERT_GE(files.size(), 15u) << "example grammars not found under " << kGrammars;
+    Tally tally;
+    for (const fs::path& file : files)
+        compareFile(context(), file, fs::relative(file, kGrammars).string(), tally);
+    tally.expectSupportedShare("example grammars");
+}
+
+struct CorpusModel {
+    std::string folder, file;
+};
+
+std::vector<CorpusModel> readManifest() {
+    std::vector<CorpusModel> models;
+    std::ifstream in(kCorpus / "MANIFEST.tsv");
+    std::string line;
+    std::getline(in, line); // header: folder, file, chars, features, compare
+    while (std::getline(in, line)) {
+        std::vector<std::string> cells;
+        std::stringstream row(line);
+        for (std::string cell; std::getline(row, cell, '\t');)
+            cells.push_back(cell);
+        if (cells.size() >= 2) models.push_back({cells[0], cells[1]});
+    }
+    return models;
+}
+
+TEST_F(ScratchDirGpuTest, CorpusModelsMatchTheCpu) {
+    std::vector<CorpusModel> models = readManifest();
+    ASSERT_GE(models.size(), 60u) << "the corpus manifest was not found or is incomplete at " << kCorpus;
+    Tally tally;
+    for (const CorpusModel& model : models)
+        compareFile(context(), kCorpus / "models" / model.folder / model.file, model.folder, tally);
+    tally.expectSupportedShare("corpus models");
+}
+
+// The generator itself, on the CPU alone: every grammar parses and derives, few outgrow the budget, the same
+// seed gives the same text, and each feature shows up often enough to be tested.
+TEST(RandomGrammarTest, GeneratedGrammarsDeriveOnTheCpu) {
+    EXPECT_EQ(randomGrammarText(42), randomGrammarText(42));
+    EXPECT_NE(randomGrammarText(42), randomGrammarText(43));
+    int skipped = 0;
+    std::vector<std::string> errors;
+    struct Feature {
+        const char* name;
+        int count = 0;
+    };
+    Feature stochastic{"seed: and factors"}, contextFilter{"ignore:/consider:"}, decomposition{"decomposition"},
+        leftContext{"left context"}, branchContext{"right context with a branch"}, condition{"condition"},
+        statements{"statement block"}, deletion{"deletion"}, cut{"cut %"}, random{"ran()"}, ifElse{"if/else"},
+        parameters3{"three parameters"};
+    for (int i = 0; i < kRandomGrammars; ++i) {
+        std::uint64_t seed = static_cast<std::uint64_t>(i) + 1;
+        std::string text = randomGrammarText(seed);
+        try {
+            ir::Grammar g = simeco::testing::grammarFromText(text);
+            cpu::DeriveOptions options;
+            options.maxModules = kRandomModuleBudget;
+            try {
+                cpu::deriveCpu(g, options);
+            } catch (const ir::LimitError&) {
+                ++skipped;
+            }
+            bool left = false, branch = false, cond = false, block = false, erase = false, cuts = false;
+            for (const ir::RuleSet* rules : {&g.productions, &g.decomposition}) {
+                for (const ir::Production& p : rules->productions) {
+                    left = left || !p.left.empty();
+                    for (const ir::PatternModule& m : p.right)
+                        branch = branch || m.sym == ir::kBranchOpen;
+                    cond = cond || p.condition.has_value();
+                    block = block || !p.before.empty() || !p.after.empty();
+                    erase = erase || p.alternatives.front().modules.empty();
+                    for (const ir::SuccessorModule& m : p.alternatives.front().modules)
+                        cuts = cuts || m.sym == ir::kCut;
+                }
+            }
+            stochastic.count += text.find("\nseed:") != std::string::npos;
+            contextFilter.count += std::find(g.contextSkip.begin(), g.contextSkip.end(), true) != g.contextSkip.end();
+            decomposition.count += !g.decomposition.productions.empty();
+            leftContext.count += left;
+            branchContext.count += branch;
+            condition.count += cond;
+            statements.count += block;
+            deletion.count += erase;
+            cut.count += cuts;
+            random.count += text.find("ran(") != std::string::npos;
+            ifElse.count += text.find("if (") != std::string::npos;
+            parameters3.count += g.maxParams() >= 3;
+        } catch (const std::exception& e) {
+            errors.push_back("seed " + std::to_string(seed) + ": " + describeError(e) + "\n" + text);
+        }
+    }
+    for (const std::string& e : errors)
+        ADD_FAILURE() << e;
+    EXPECT_LE(skipped, kRandomGrammars / 10) << "too many random grammars outgrow the module budget";
+    for (const Feature* f : {&stochastic, &contextFilter, &decomposition, &leftContext, &branchContext, &condition,
+                             &statements, &deletion, &cut, &random, &ifElse, &parameters3}) {
+        std::printf("%-28s in %3d of %d random grammars\n", f->name, f->count, kRandomGrammars);
+        EXPECT_GE(f->count, kRandomGrammars / 20) << "the generator rarely writes: " << f->name;
+    }
+}
+
+TEST_F(DeriveGpuTest, RandomGrammarsMatchTheCpu) {
+    std::uint64_t first = envOr("SIMECO_RANDOM_FIRST_SEED", 1);
+    std::uint64_t count = envOr("SIMECO_RANDOM_GRAMMARS", kRandomGrammars);
+    constexpr int kTextsShown = 5; // a broken pass tends to break hundreds
+    std::uint64_t matched = 0, skipped = 0, failed = 0;
+    for (std::uint64_t seed = first; seed < first + count; ++seed) {
+        std::string text = randomGrammarText(seed);
+        std::string failure;
+        try {
+            ir::Grammar g = simeco::testing::grammarFromText(text);
+            cpu::DeriveOptions options;
+            options.maxModules = kRandomModuleBudget;
+            Outcome outcome = compareEngines(context(), g, options);
+            switch (outcome.verdict) {
+            case Verdict::Match:
+                ++matched;
+                break;
+            case Verdict::OverBudget:
+                ++skipped;
+                break;
+            case Verdict::Unsupported:
+                failure = "unsupported on the GPU: " + outcome.detail;
+                break;
+            case Verdict::Differ:
+                failure = "GPU differs from CPU: " + outcome.detail;
+                break;
+            }
+        } catch (const std::exception& e) {
+            failure = describeError(e);
+        }
+        if (failure.empty()) continue;
+        ++failed;
+        ADD_FAILURE() << "random grammar seed " << seed << ": " << failure
+                      << (failed <= kTextsShown ? "\n" + text : std::string());
+    }
+    std::printf("random grammars: %llu of %llu match the CPU, %llu over the module budget\n",
+                static_cast<unsigned long long>(matched), static_cast<unsigned long long>(count),
+                static_cast<unsigned long long>(skipped));
+    EXPECT_LE(skipped * 10, count) << "too many random grammars outgrow the module budget";
+}
+
+// A stochastic grammar with random parameters, for the tests of many plants.
+ir::Grammar plantGrammar() {
+    return simeco::testing::grammarFromText("Lsystem: 1\n"
+                                            "seed: 11\n"
+                                            "derivation length: 5\n"
+                                            "Axiom: A(1)\n"
+                                            "A(x) --> F(x)[+A(x*0.8)]F(ran(1))A(x*0.9) : 2\n"
+                                            "A(x) --> F(x)[-A(x*0.7)]A(x+ran(0.5)) : 1\n"
+                                            "A(x) --> F(x)A(x*1.1) : 1\n"
+                                            "F(l) : l > 0.95 --> F(l*0.5)F(l*0.5)\n"
+                                            "endlsystem\n");
+}
+
+// `--plants`: plant k draws from its own random stream on both engines, so any number of plants must match.
+TEST_F(DeriveGpuTest, ManyPlantsMatchTheCpu) {
+    ir::Grammar g = plantGrammar();
+    ASSERT_FALSE(gpu::gpuUnsupportedReason(g).has_value()) << *gpu::gpuUnsupportedReason(g);
+    for (std::uint32_t plants : {1u, 7u, 1000u}) {
+        SCOPED_TRACE(std::to_string(plants) + " plants");
+        cpu::DeriveOptions options;
+        options.plants = plants;
+        cpu::DeriveResult want = cpu::deriveCpu(g, options);
+        ASSERT_EQ(want.string.plants(), plants);
+        if (plants > 1) {
+            // The plants differ, or the test would not see streams mixed up between plants.
+            std::set<std::string> distinct;
+            for (std::uint32_t p = 0; p < std::min(plants, 7u); ++p)
+                distinct.insert(cpu::formatModules(want.string, g.alphabet, want.string.plantStart[p],
+                                                   want.string.plantStart[p + 1]));
+            ASSERT_GT(distinct.size(), 1u);
+        }
+        gpu::GpuDeriver deriver(context(), g);
+        EXPECT_EQ(firstDifference(want, deriver.derive(options), g.alphabet), "");
+    }
+}
+
+// One deriver derives again and again: with and without reading back, with more plants, then fewer.
+TEST_F(DeriveGpuTest, DeriverDerivesRepeatedly) {
+    ir::Grammar g = plantGrammar();
+    gpu::GpuDeriver deriver(context(), g);
+    for (std::uint32_t plants : {7u, 1u, 1000u, 7u}) {
+        SCOPED_TRACE(std::to_string(plants) + " plants");
+        cpu::DeriveOptions options;
+        options.plants = plants;
+        cpu::DeriveResult want = cpu::deriveCpu(g, options);
+        EXPECT_EQ(firstDifference(want, deriver.derive(options), g.alphabet), "");
+
+        gpu::GpuDeriveStats stats;
+        cpu::DeriveResult sizesOnly = deriver.derive(options, /*readBack=*/false, &stats);
+        EXPECT_EQ(sizesOnly.string.size(), 0u);
+        EXPECT_EQ(stats.modules, want.string.size());
+    }
+}
+
+} // namespace
+} // namespace simeco::test

@@ -1,0 +1,87 @@
+#!/usr/bin/env bash
+# Plots a `simeco bench --json` report: modules per second against string size (modules after the last step),
+# one line per backend, log-log. Usage: tools/plot_bench.sh BENCH.json OUT.png
+# Needs gnuplot (Debian package gnuplot-nox, installed here with apt-get when missing) and python3.
+set -euo pipefail
+if [ $# -ne 2 ]; then
+  echo "usage: $0 BENCH.json OUT.png" >&2
+  exit 2
+fi
+report=$1
+out=$2
+[ -r "$report" ] || { echo "$0: cannot read $report" >&2; exit 2; }
+
+if ! command -v gnuplot >/dev/null 2>&1; then
+  sudo_cmd=""
+  [ "$(id -u)" -ne 0 ] && sudo_cmd="sudo"
+  echo "plot_bench: installing gnuplot-nox" >&2
+  $sudo_cmd apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo_cmd apt-get install -y -qq --no-install-recommends gnuplot-nox
+fi
+
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+
+# One data file per backend (string size, modules/s, grammar index), sorted by size; the title names the device;
+# the key lists which point shape stands for which grammar.
+python3 - "$report" "$work" <<'PY'
+import json, sys
+
+report = json.load(open(sys.argv[1]))
+work = sys.argv[2]
+grammars = []
+for e in report["entries"]:
+    if e["name"] not in grammars:
+        grammars.append(e["name"])
+shapes = [7, 5, 9, 11, 13, 15, 4, 6, 8, 10]
+for backend in ("cpu", "gpu"):
+    rows = []
+    for e in report["entries"]:
+        r = e.get(backend, {})
+        if r.get("status") == "ok" and r.get("modules", 0) > 0 and r.get("modules_per_second", 0) > 0:
+            rows.append((r["modules"], r["modules_per_second"], shapes[grammars.index(e["name"]) % len(shapes)]))
+    rows.sort()
+    with open(f"{work}/{backend}.dat", "w") as f:
+        for modules, rate, shape in rows:
+            f.write(f"{modules} {rate} {shape}\n")
+with open(f"{work}/grammars.gp", "w") as f:
+    keys = [f"NaN with points pt {shapes[i % len(shapes)]} lc rgb 'black' title '{name}'" for i, name in enumerate(grammars)]
+    f.write(", ".join(keys))
+device = report.get("device", {}).get("name") or "no GPU"
+copy = report.get("copy_bandwidth")
+title = f"simeco bench on {device}"
+if copy:
+    title += f" (copy bandwidth {copy['bytes_per_second'] / 1e9:.2f} GB/s)"
+with open(f"{work}/title.txt", "w") as f:
+    f.write(title.replace('"', "'"))
+PY
+
+series=()
+if [ -s "$work/cpu.dat" ]; then
+  series+=("'$work/cpu.dat' using 1:2 with lines lw 2 lc rgb '#1f77b4' title 'CPU reference (1 thread)'")
+  series+=("'$work/cpu.dat' using 1:2:3 with points pt variable ps 1.5 lc rgb '#1f77b4' notitle")
+fi
+if [ -s "$work/gpu.dat" ]; then
+  series+=("'$work/gpu.dat' using 1:2 with lines lw 2 lc rgb '#d62728' title 'GPU backend'")
+  series+=("'$work/gpu.dat' using 1:2:3 with points pt variable ps 1.5 lc rgb '#d62728' notitle")
+fi
+if [ ${#series[@]} -eq 0 ]; then
+  echo "$0: $report has no successful runs to plot" >&2
+  exit 1
+fi
+plot="$(IFS=,; echo "${series[*]}"), $(cat "$work/grammars.gp")"
+
+gnuplot <<GP
+set terminal pngcairo size 1000,650 font ",11"
+set output "$out"
+set title "$(cat "$work/title.txt")"
+set logscale xy
+set xlabel "string size (modules of all plants after the last step)"
+set ylabel "modules per second (median)"
+set format x "10^{%L}"
+set format y "10^{%L}"
+set grid
+set key outside right top
+plot $plot
+GP
+echo "plot_bench: wrote $out"

@@ -502,6 +502,30 @@ std::string writeDispatch(const ir::RuleSet& rules, RuleKind kind) {
     return code;
 }
 
+// How a kernel writes successor modules: nowhere (match passes), or into symOut/parOut, with the position each
+// module came from and its liveness when decomposition follows.
+std::string emitters(bool writes, bool provenance) {
+    if (!writes)
+        return "void emitModule(uint pos, uint sym, uint count, uint origin) {}\n"
+               "void emitParam(uint pos, uint k, double value) {}\n\n";
+    std::string s = "void emitModule(uint pos, uint sym, uint count, uint origin) {\n"
+                    "    symOut[pos] = sym | (count << kSymbolBits);\n";
+    if (provenance) // where each module came from, for decomposition's contexts
+        s += "    originOut[pos] = origin;\n"
+             "    liveOut[pos] = 1u;\n";
+    return s + "}\n"
+               "void emitParam(uint pos, uint k, double value) { parOut[pos * pc.stride + k] = float(value); }\n\n";
+}
+
+// The end of a match kernel: what it found for module i.
+std::string recordChoice() {
+    return "    if (chosen == 0u) produced = 1u;\n"
+           "    counts[i] = produced;\n"
+           "    choices[i] = chosen | ((length - 1u) << 24u); // the predecessor's length for the greedy walk\n"
+           "    drawStarts[i] = start;\n"
+           "}\n";
+}
+
 } // namespace
 
 GeneratedKernels generateDeriveKernels(const ir::Grammar& g, int stride) {
@@ -560,9 +584,7 @@ GeneratedKernels generateDeriveKernels(const ir::Grammar& g, int stride) {
     // ---- derivation step: match ----
     {
         std::string s = prelude + declarations(false, false) + library + functions;
-        s += "double strictParam(uint i, uint k) { return paramOf(i, k); }\n"
-             "void emitModule(uint pos, uint sym, uint count, uint origin) {}\n"
-             "void emitParam(uint pos, uint k, double value) {}\n\n";
+        s += "double strictParam(uint i, uint k) { return paramOf(i, k); }\n" + emitters(false, false);
         s += findPlant("plantStart", "plantOf");
         s += stepFunctions;
         s += "void main() {\n" + globalIndex;
@@ -574,7 +596,6 @@ GeneratedKernels generateDeriveKernels(const ir::Grammar& g, int stride) {
              "    uint ctxRight = i + 1u;\n"
              "    uint draw = 1u, chosen = 0u, start = 0u, produced = 1u, length = 1u;\n";
         s += selection(g.productions, RuleKind::Step, stochastic);
-        s += "    if (chosen == 0u) produced = 1u;\n";
         if (k.mayCut) {
             s += "    if (chosen == 0u && sym == 2u && count == 0u) {\n"
                  "        // A cut: this module and the rest of its branch leave the string.\n"
@@ -582,23 +603,13 @@ GeneratedKernels generateDeriveKernels(const ir::Grammar& g, int stride) {
                  "        atomicAdd(cutDelta[endOfBranch(i + 1u, pBegin, pEnd)], 0xFFFFFFFFu);\n"
                  "    }\n";
         }
-        s += "    counts[i] = produced;\n"
-             "    choices[i] = chosen | ((length - 1u) << 24u); // the predecessor's length for the greedy walk\n"
-             "    drawStarts[i] = start;\n"
-             "}\n";
+        s += recordChoice();
         k.match = std::move(s);
     }
     // ---- derivation step: write ----
     {
         std::string s = prelude + declarations(false, true) + library + functions;
-        s += "double strictParam(uint i, uint k) { return paramOf(i, k); }\n"
-             "void emitModule(uint pos, uint sym, uint count, uint origin) {\n"
-             "    symOut[pos] = sym | (count << kSymbolBits);\n";
-        if (k.hasDecomposition) // where each module came from, for decomposition's contexts
-            s += "    originOut[pos] = origin;\n"
-                 "    liveOut[pos] = 1u;\n";
-        s += "}\n"
-             "void emitParam(uint pos, uint k, double value) { parOut[pos * pc.stride + k] = float(value); }\n\n";
+        s += "double strictParam(uint i, uint k) { return paramOf(i, k); }\n" + emitters(true, k.hasDecomposition);
         s += findPlant("plantStart", "plantOf");
         s += stepFunctions;
         s += "void main() {\n" + globalIndex;
@@ -634,9 +645,8 @@ GeneratedKernels generateDeriveKernels(const ir::Grammar& g, int stride) {
         // ---- decomposition: match ----
         {
             std::string s = prelude + declarations(true, false) + library + functions;
-            s += "double strictParam(uint i, uint k) { return double(parX[i * pc.stride + k]); }\n"
-                 "void emitModule(uint pos, uint sym, uint count, uint origin) {}\n"
-                 "void emitParam(uint pos, uint k, double value) {}\n\n";
+            s += "double strictParam(uint i, uint k) { return double(parX[i * pc.stride + k]); }\n" +
+                 emitters(false, false);
             s += findPlant("plantStartX", "plantOfX");
             s += decompositionFunctions;
             s += "void main() {\n" + globalIndex;
@@ -645,23 +655,14 @@ GeneratedKernels generateDeriveKernels(const ir::Grammar& g, int stride) {
             s += "    uint sym = symX[i] & kSymbolMask, count = symX[i] >> kSymbolBits;\n"
                  "    uint draw = 1u, chosen = 0u, start = 0u, produced = 1u, length = 1u;\n";
             s += selection(g.decomposition, RuleKind::Decomposition, decompositionStochastic);
-            s += "    if (chosen == 0u) produced = 1u;\n"
-                 "    counts[i] = produced;\n"
-                 "    choices[i] = chosen;\n"
-                 "    drawStarts[i] = start;\n"
-                 "}\n";
+            s += recordChoice();
             k.decompositionMatch = std::move(s);
         }
         // ---- decomposition: write ----
         {
             std::string s = prelude + declarations(true, true) + library + functions;
-            s += "double strictParam(uint i, uint k) { return double(parX[i * pc.stride + k]); }\n"
-                 "void emitModule(uint pos, uint sym, uint count, uint origin) {\n"
-                 "    symOut[pos] = sym | (count << kSymbolBits);\n"
-                 "    originOut[pos] = origin;\n"
-                 "    liveOut[pos] = 1u;\n"
-                 "}\n"
-                 "void emitParam(uint pos, uint k, double value) { parOut[pos * pc.stride + k] = float(value); }\n\n";
+            s += "double strictParam(uint i, uint k) { return double(parX[i * pc.stride + k]); }\n" +
+                 emitters(true, true);
             s += findPlant("plantStartX", "plantOfX");
             s += decompositionFunctions;
             s += "void main() {\n" + globalIndex;

@@ -209,6 +209,13 @@ struct GpuDeriver::Impl {
         return {words[0], words[1]};
     }
 
+    static void checkBudget(uint64_t total, uint64_t budget, uint32_t stepIndex) {
+        if (total > budget)
+            throw ir::LimitError(fmt::format("the string outgrew the module budget of {} modules in step {} "
+                                             "(raise it with --max-modules, or derive fewer steps)",
+                                             budget, stepIndex));
+    }
+
     void copyTotal(VkCommandBuffer cmd) {
         vk::memoryBarrier(cmd, Hazard::ComputeToTransfer);
         VkBufferCopy total{0, 0, 4};
@@ -286,10 +293,7 @@ struct GpuDeriver::Impl {
             },
             timer, millis);
         (void)unused;
-        if (total > budget)
-            throw ir::LimitError(fmt::format("the string outgrew the module budget of {} modules in step {} "
-                                             "(raise it with --max-modules, or derive fewer steps)",
-                                             budget, stepIndex));
+        checkBudget(total, budget, stepIndex);
         ensureStream(out, total);
         submit(
             [&](VkCommandBuffer cmd) {
@@ -349,10 +353,7 @@ struct GpuDeriver::Impl {
                 },
                 timer, millis);
             (void)unused;
-            if (total > budget)
-                throw ir::LimitError(fmt::format("the string outgrew the module budget of {} modules in step {} "
-                                                 "(raise it with --max-modules, or derive fewer steps)",
-                                                 budget, stepIndex));
+            checkBudget(total, budget, stepIndex);
             Stream& Y = streams[y];
             ensureStream(Y, total);
             submit(

@@ -528,10 +528,9 @@ std::string recordChoice() {
 
 } // namespace
 
-GeneratedKernels generateDeriveKernels(const ir::Grammar& g, int stride) {
+GeneratedKernels generateDeriveKernels(const ir::Grammar& g) {
     GeneratedKernels k;
     k.hasDecomposition = !g.decomposition.productions.empty() && g.decomposition.maxDepth > 0;
-    std::optional<ir::SymbolId> equals = g.alphabet.find("=");
     for (const ir::RuleSet* rules : {&g.productions, &g.decomposition})
         for (const ir::Production& p : rules->productions) {
             if (!p.left.empty() || !p.right.empty()) k.needsBrackets = true;
@@ -542,7 +541,6 @@ GeneratedKernels generateDeriveKernels(const ir::Grammar& g, int stride) {
     for (const ir::SuccessorModule& m : g.axiom)
         if (m.sym == ir::kCut) k.mayCut = true;
     if (k.mayCut) k.needsBrackets = true;
-    (void)equals;
     for (const ir::Production& p : g.productions.productions)
         k.longestPredecessor = std::max<uint32_t>(k.longestPredecessor, static_cast<uint32_t>(p.strict.size()));
     bool stochastic = false;
@@ -683,7 +681,6 @@ GeneratedKernels generateDeriveKernels(const ir::Grammar& g, int stride) {
             k.decompositionWrite = std::move(s);
         }
     }
-    (void)stride;
     return k;
 }
 

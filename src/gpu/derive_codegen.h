@@ -34,8 +34,8 @@ struct GeneratedKernels {
     std::vector<double> functionTables; // the sampled func() tables, concatenated
 };
 
-// The GLSL of the kernels for grammar g with `stride` parameter slots per module. The grammar must be
-// supported (gpuUnsupportedReason(g) empty).
-GeneratedKernels generateDeriveKernels(const ir::Grammar& g, int stride);
+// The GLSL of the kernels for grammar g (parameter slots per module come at run time, in the push constants).
+// The grammar must be supported (gpuUnsupportedReason(g) empty).
+GeneratedKernels generateDeriveKernels(const ir::Grammar& g);
 
 } // namespace simeco::gpu

@@ -75,7 +75,7 @@ struct GpuDeriver::Impl {
             throw std::runtime_error("the GPU backend cannot derive this grammar: " + *reason +
                                      " (use --backend cpu)");
         auto start = std::chrono::steady_clock::now();
-        kernels = generateDeriveKernels(g, stride);
+        kernels = generateDeriveKernels(g);
         auto build = [&](const std::string& source, const char* name) {
             std::vector<uint32_t> spirv = cachedComputeKernel(source, name);
             return vk::ComputePipeline(ctx, spirv, name);
@@ -182,9 +182,9 @@ struct GpuDeriver::Impl {
         return p;
     }
 
-    // Submits `record`, waits, and returns the two words copied into the readback buffer (a total and the
-    // error word); throws the located error a kernel reported.
-    std::pair<uint32_t, uint32_t> submit(const std::function<void(VkCommandBuffer)>& record, vk::Timestamps* timer,
+    // Submits `record`, waits, and returns the total the recording copied into the readback buffer; throws
+    // the located error a kernel reported.
+    uint32_t submit(const std::function<void(VkCommandBuffer)>& record, vk::Timestamps* timer,
                                          double& gpuMillis) {
         ctx.submitAndWait([&](VkCommandBuffer cmd) {
             if (timer) {
@@ -206,7 +206,7 @@ struct GpuDeriver::Impl {
             if (site < kernels.errors.size()) throw ir::InputError(kernels.errors[site].loc, kernels.errors[site].message);
             throw std::runtime_error("a derivation kernel reported an unknown error");
         }
-        return {words[0], words[1]};
+        return words[0];
     }
 
     static void checkBudget(uint64_t total, uint64_t budget, uint32_t stepIndex) {
@@ -268,7 +268,7 @@ struct GpuDeriver::Impl {
         ensureScratch(n);
         if (kernels.needsBrackets) layoutTree(n);
         uint32_t pass = stepIndex * shared::kPassesPerStep;
-        auto [total, unused] = submit(
+        uint32_t total = submit(
             [&](VkCommandBuffer cmd) {
                 vk::cmdFill(cmd, errors, 0);
                 if (kernels.mayCut) vk::cmdFill(cmd, cutDelta, 0);
@@ -292,7 +292,6 @@ struct GpuDeriver::Impl {
                 copyTotal(cmd);
             },
             timer, millis);
-        (void)unused;
         checkBudget(total, budget, stepIndex);
         ensureStream(out, total);
         submit(
@@ -327,17 +326,16 @@ struct GpuDeriver::Impl {
             uint32_t n = X.count;
             if (n == 0) break;
             ensureScratch(n);
-            auto [live, unusedLive] = submit(
+            uint32_t live = submit(
                 [&](VkCommandBuffer cmd) {
                     scan.record(cmd, X.live, examined, n);
                     copyTotal(cmd);
                 },
                 timer, millis);
-            (void)unusedLive;
             if (live == 0) break;
             uint32_t pass = stepIndex * shared::kPassesPerStep + 1 + uint32_t(std::min(depth, int(shared::kPassesPerStep) - 2));
             DerivePush p = push(n, stepIndex, seed, pass, oldStream.count, uint32_t(depth));
-            auto [total, unused] = submit(
+            uint32_t total = submit(
                 [&](VkCommandBuffer cmd) {
                     vk::cmdFill(cmd, errors, 0);
                     vk::memoryBarrier(cmd, Hazard::TransferToCompute);
@@ -352,7 +350,6 @@ struct GpuDeriver::Impl {
                     copyTotal(cmd);
                 },
                 timer, millis);
-            (void)unused;
             checkBudget(total, budget, stepIndex);
             Stream& Y = streams[y];
             ensureStream(Y, total);

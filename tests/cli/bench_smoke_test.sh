@@ -5,6 +5,7 @@ set -u
 simeco=$1
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
+export SIMECO_KERNEL_CACHE="$work/kernels" # generated kernels stay out of the user's cache
 
 "$simeco" bench --quick --repeat 2 --warm-up 1 --json "$work/bench.json" >"$work/table.txt" 2>"$work/err.txt"
 code=$?

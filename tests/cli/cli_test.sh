@@ -5,6 +5,7 @@ simeco=$1
 source_dir=$2
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
+export SIMECO_KERNEL_CACHE="$work/kernels" # generated kernels stay out of the user's cache
 passed=0
 failed=0
 

@@ -1,5 +1,6 @@
 #include "gpu_fixture.h"
 
+#include <cstdlib>
 #include <vector>
 
 namespace simeco::test {
@@ -9,6 +10,12 @@ std::unique_ptr<vk::Context> GpuTest::context_;
 std::string GpuTest::setupError_;
 
 namespace {
+
+// Kernels the tests generate are cached in the build tree, not in the user's cache.
+const bool kKernelCacheInBuildTree = [] {
+    ::setenv("SIMECO_KERNEL_CACHE", SIMECO_TEST_KERNEL_CACHE, 0);
+    return true;
+}();
 
 std::string listMessages(const vk::ValidationLog& log, std::size_t from) {
     std::vector<std::string> messages = log.messages();

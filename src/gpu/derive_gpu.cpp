@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstring>
+#include <initializer_list>
 #include <functional>
 #include <optional>
 #include <span>
@@ -256,6 +257,23 @@ struct GpuDeriver::Impl {
         vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
     }
 
+    // The bindings every generated derivation kernel starts with (see declarations() in derive_codegen.cpp):
+    // the string being rewritten, its brackets, the plants' globals and arrays, function tables, the context
+    // filter and the error word; `rest` follows them.
+    void dispatchDerive(VkCommandBuffer cmd, const vk::ComputePipeline& kernel, const Stream& strings,
+                        std::initializer_list<vk::BufferRange> rest, const DerivePush& p, uint32_t n) {
+        std::vector<vk::BufferRange> buffers{strings.sym, strings.par, plantTable(strings), tree ? tree : deltas,
+                                             levelInfo, globals, arrays, funcTables, contextSkip, errors};
+        buffers.insert(buffers.end(), rest.begin(), rest.end());
+        kernel.dispatchBytes(cmd, buffers, std::as_bytes(std::span(&p, 1)), kernel.groupsFor(n));
+    }
+
+    // Each plant's first module in the stream written with `offsets`.
+    void recordPlantStarts(VkCommandBuffer cmd, const Stream& from, const Stream& to, uint32_t n, uint32_t total) {
+        DeriveHelperPush hp{n, 0, total, plants};
+        plantStarts.dispatch(cmd, {plantTable(from), offsets, plantTable(to)}, hp, plantStarts.groupsFor(plants + 1));
+    }
+
     vk::BufferRange plantTable(const Stream& s) const { return vk::BufferRange(s.plantStart, 0, bytes(plants + 1, 4)); }
 
     // One derivation step from streams[cur] into a new stream; returns its index.
@@ -275,10 +293,7 @@ struct GpuDeriver::Impl {
                 vk::memoryBarrier(cmd, Hazard::TransferToCompute);
                 if (kernels.needsBrackets && n > 0) recordBracketDepth(cmd, in);
                 DerivePush p = push(n, stepIndex, seed, pass, n, 0);
-                match->dispatch(cmd,
-                                {in.sym, in.par, plantTable(in), tree ? tree : deltas, levelInfo, globals, arrays, funcTables,
-                                 contextSkip, errors, counts, choices, drawStarts, cutDelta},
-                                p, match->groupsFor(n));
+                dispatchDerive(cmd, *match, in, {counts, choices, drawStarts, cutDelta}, p, n);
                 vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
                 if (kernels.mayCut && n > 0) {
                     scan.record(cmd, cutDelta, cutBefore, n);
@@ -299,12 +314,9 @@ struct GpuDeriver::Impl {
                 vk::cmdFill(cmd, errors, 0);
                 vk::memoryBarrier(cmd, Hazard::TransferToCompute);
                 DerivePush p = push(n, stepIndex, seed, pass, n, 0);
-                write->dispatch(cmd,
-                                {in.sym, in.par, plantTable(in), tree ? tree : deltas, levelInfo, globals, arrays, funcTables,
-                                 contextSkip, errors, offsets, choices, drawStarts, out.sym, out.par, out.origin, out.live},
-                                p, write->groupsFor(n));
-                DeriveHelperPush hp{n, 0, total, plants};
-                plantStarts.dispatch(cmd, {plantTable(in), offsets, plantTable(out)}, hp, plantStarts.groupsFor(plants + 1));
+                dispatchDerive(cmd, *write, in,
+                               {offsets, choices, drawStarts, out.sym, out.par, out.origin, out.live}, p, n);
+                recordPlantStarts(cmd, in, out, n, total);
                 vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
             },
             timer, millis);
@@ -339,12 +351,9 @@ struct GpuDeriver::Impl {
                 [&](VkCommandBuffer cmd) {
                     vk::cmdFill(cmd, errors, 0);
                     vk::memoryBarrier(cmd, Hazard::TransferToCompute);
-                    decompositionMatch->dispatch(
-                        cmd,
-                        {oldStream.sym, oldStream.par, plantTable(oldStream), tree ? tree : deltas, levelInfo, globals,
-                         arrays, funcTables, contextSkip, errors, X.sym, X.par, plantTable(X), X.live, X.origin, examined,
-                         counts, choices, drawStarts},
-                        p, decompositionMatch->groupsFor(n));
+                    dispatchDerive(cmd, *decompositionMatch, oldStream,
+                                   {X.sym, X.par, plantTable(X), X.live, X.origin, examined, counts, choices, drawStarts},
+                                   p, n);
                     vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
                     scan.record(cmd, counts, offsets, n);
                     copyTotal(cmd);
@@ -357,14 +366,11 @@ struct GpuDeriver::Impl {
                 [&](VkCommandBuffer cmd) {
                     vk::cmdFill(cmd, errors, 0);
                     vk::memoryBarrier(cmd, Hazard::TransferToCompute);
-                    decompositionWrite->dispatch(
-                        cmd,
-                        {oldStream.sym, oldStream.par, plantTable(oldStream), tree ? tree : deltas, levelInfo, globals,
-                         arrays, funcTables, contextSkip, errors, X.sym, X.par, plantTable(X), X.live, X.origin, examined,
-                         offsets, choices, drawStarts, Y.sym, Y.par, Y.origin, Y.live},
-                        p, decompositionWrite->groupsFor(n));
-                    DeriveHelperPush hp{n, 0, total, plants};
-                    plantStarts.dispatch(cmd, {plantTable(X), offsets, plantTable(Y)}, hp, plantStarts.groupsFor(plants + 1));
+                    dispatchDerive(cmd, *decompositionWrite, oldStream,
+                                   {X.sym, X.par, plantTable(X), X.live, X.origin, examined, offsets, choices, drawStarts,
+                                    Y.sym, Y.par, Y.origin, Y.live},
+                                   p, n);
+                    recordPlantStarts(cmd, X, Y, n, total);
                     vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
                 },
                 timer, millis);

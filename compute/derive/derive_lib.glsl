@@ -16,7 +16,8 @@ const int kNoneBelow = -2; // lastBelow: nothing found; -1 means the virtual dep
 uint symOf(uint i) { return symIn[i] & kSymbolMask; }
 uint countOf(uint i) { return symIn[i] >> kSymbolBits; }
 double paramOf(uint i, uint k) { return double(parIn[i * pc.stride + k]); }
-bool skipped(uint sym) { return ((contextSkip[sym >> 5u] >> (sym & 31u)) & 1u) != 0u; }
+// contextSkip holds one row of bits per species; `row` is the first word of the species' row.
+bool skipped(uint sym, uint row) { return ((contextSkip[row + (sym >> 5u)] >> (sym & 31u)) & 1u) != 0u; }
 
 int depthAt(uint level, uint index) { return depthTree[levelInfo[level] + index]; }
 uint levelSize(uint level) { return levelInfo[kMaxDepthLevels + level]; }
@@ -94,11 +95,11 @@ uint endOfBranch(uint s, uint pBegin, uint pEnd) {
 
 // Right context: moves s to the module the pattern symbol `want` is compared with. Skipped symbols pass,
 // closed branches pass unless the pattern enters one with `[`; false at the end of the plant.
-bool rightAdvance(inout uint s, uint want, uint pEnd) {
+bool rightAdvance(inout uint s, uint want, uint pEnd, uint skipRow) {
     for (;;) {
         if (s >= pEnd) return false;
         uint sym = symOf(s);
-        if (skipped(sym)) {
+        if (skipped(sym, skipRow)) {
             ++s;
         } else if (want != kOpen && sym == kOpen) {
             uint close = matchOpen(s, pEnd);
@@ -112,7 +113,7 @@ bool rightAdvance(inout uint s, uint want, uint pEnd) {
 }
 
 // Left context: moves s to the next module to compare, skipping branches to the left and passing `[`.
-bool leftAdvance(inout int s, uint pBegin) {
+bool leftAdvance(inout int s, uint pBegin, uint skipRow) {
     for (;;) {
         if (s < int(pBegin)) return false;
         uint sym = symOf(uint(s));
@@ -120,7 +121,7 @@ bool leftAdvance(inout int s, uint pBegin) {
             uint open = matchClose(uint(s), pBegin);
             if (open == kNoModule) return false;
             s = int(open) - 1;
-        } else if (sym == kOpen || skipped(sym)) {
+        } else if (sym == kOpen || skipped(sym, skipRow)) {
             --s;
         } else {
             return true;

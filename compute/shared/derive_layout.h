@@ -37,7 +37,19 @@ struct DerivePush {
     uint arrayStride;  // array elements per plant
     uint oldCount;     // modules of the string being rewritten (contexts are read there)
     uint depth;        // decomposition depth of this pass
+    uint mode;         // sequential kernel: 0 counts each plant's modules, 1 writes them
+    uint stackLevels;  // sequential kernel: decomposition stack levels per plant
+    uint moduleLimit;  // sequential kernel: a plant counting past this stops and reports it
+    uint chunk;        // sequential kernel: input modules a plant rewrites per dispatch
+    uint dispatch;     // sequential kernel: the dispatch's index in its pass (0 starts the plants)
 };
+
+// Flags the sequential kernel raises in errors[1].
+SIMECO_CONST kFlagStackFull = 1u;    // a plant's decomposition went deeper than its stack: retry with more levels
+SIMECO_CONST kFlagOverLimit = 2u;    // a plant counted more than moduleLimit modules
+// A loop ended before its condition let it: drivers may cap the iterations of one invocation (lavapipe stops
+// all loops of an invocation after 65535 iterations in total). Retry with smaller chunks.
+SIMECO_CONST kFlagLoopCut = 4u;
 
 // Push constants of the fixed helper kernels.
 struct DeriveHelperPush {
@@ -48,7 +60,7 @@ struct DeriveHelperPush {
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(DerivePush) == 40);
+static_assert(sizeof(DerivePush) == 60);
 static_assert(sizeof(DeriveHelperPush) == 16);
 } // namespace simeco::shared
 #endif

@@ -1,5 +1,4 @@
 // `simeco derive`: derive a grammar and print the string, statistics or JSON.
-#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <string>
@@ -12,9 +11,10 @@
 #include "cpu/derive.h"
 #include "cpu/statistics.h"
 #include "gpu/derive_gpu.h"
+#include "ir/species.h"
 #include "lang/eco_parser.h"
-#include "vk/context.h"
 #include "lang/load_grammar.h"
+#include "vk/context.h"
 
 namespace simeco::app {
 
@@ -24,14 +24,15 @@ struct DeriveArgs {
     std::string file;
     int steps = -1;
     int64_t seed = -1;
-    uint32_t plants = 1;
+    uint32_t plants = 0; // 0: one plant per grammar (each species of a scene once)
     std::string backend = "cpu";
     std::string format = "string";
     uint64_t maxModules = 0;
     std::string device;
+    std::string strategy = "auto";
 };
 
-// The grammars a file holds: one for `.l` and `.lsys`, one per plant for an `.eco` scene.
+// The grammars a file holds: one for `.l` and `.lsys`, one per plant (species) of an `.eco` scene.
 std::vector<ir::Grammar> loadGrammars(const std::string& path) {
     std::vector<ir::Grammar> grammars;
     if (path.size() > 4 && path.compare(path.size() - 4, 4, ".eco") == 0) {
@@ -47,63 +48,49 @@ std::vector<ir::Grammar> loadGrammars(const std::string& path) {
     return grammars;
 }
 
-struct Derived {
-    const ir::Grammar* grammar;
-    cpu::DeriveResult result;
-};
-
 void runDerive(const DeriveArgs& args) {
-    std::vector<ir::Grammar> grammars = loadGrammars(args.file);
+    std::vector<ir::Grammar> species = ir::unifySpecies(loadGrammars(args.file));
+    const ir::Alphabet& alphabet = species.front().alphabet;
     cpu::DeriveOptions options;
     options.steps = args.steps;
     options.seed = args.seed;
-    options.plants = args.plants;
+    options.plants = args.plants ? args.plants : static_cast<uint32_t>(species.size());
     options.maxModules = args.maxModules;
     auto start = std::chrono::steady_clock::now();
-    std::vector<Derived> derived;
+    cpu::DeriveResult result;
     double seconds = 0;
     if (args.backend == "gpu") {
         vk::ContextOptions contextOptions;
         contextOptions.device = args.device;
         vk::Context context(contextOptions);
-        for (const ir::Grammar& g : grammars) {
-            gpu::GpuDeriver deriver(context, g);
-            gpu::GpuDeriveStats stats;
-            derived.push_back({&g, deriver.derive(options, true, &stats)});
-            seconds += stats.seconds;
-        }
+        gpu::GpuStrategy strategy = args.strategy == "parallel"     ? gpu::GpuStrategy::Parallel
+                                    : args.strategy == "sequential" ? gpu::GpuStrategy::Sequential
+                                                                    : gpu::GpuStrategy::Auto;
+        gpu::GpuDeriver deriver(context, species, strategy);
+        gpu::GpuDeriveStats stats;
+        result = deriver.derive(options, true, &stats);
+        seconds = stats.seconds;
     } else {
-        for (const ir::Grammar& g : grammars) derived.push_back({&g, cpu::deriveCpu(g, options)});
+        result = cpu::deriveSpeciesCpu(species, options);
         seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }
 
     // Everything is derived before anything is printed: an error leaves no partial output.
+    const cpu::ModuleString& s = result.string;
     if (args.format == "string") {
         std::string out;
-        for (const Derived& d : derived) {
-            const cpu::ModuleString& s = d.result.string;
-            for (size_t p = 0; p < s.plants(); ++p) {
-                out += cpu::formatModules(s, d.grammar->alphabet, s.plantStart[p], s.plantStart[p + 1]);
-                out.push_back('\n');
-            }
+        for (size_t p = 0; p < s.plants(); ++p) {
+            out += cpu::formatModules(s, alphabet, s.plantStart[p], s.plantStart[p + 1]);
+            out.push_back('\n');
         }
         std::fwrite(out.data(), 1, out.size(), stdout);
         return;
     }
-    cpu::StringStatistics total;
-    int steps = 0;
-    for (const Derived& d : derived) {
-        cpu::StringStatistics stats = cpu::computeStatistics(d.result.string, d.grammar->alphabet);
-        total.modules += stats.modules;
-        total.plants += stats.plants;
-        total.maxBranchDepth = std::max(total.maxBranchDepth, stats.maxBranchDepth);
-        for (const auto& [name, count] : stats.perSymbol) total.perSymbol[name] += count;
-        steps = std::max(steps, d.result.steps);
-    }
+    cpu::StringStatistics total = cpu::computeStatistics(s, alphabet);
     if (args.format == "stats") {
         std::printf("modules: %llu\n", static_cast<unsigned long long>(total.modules));
         std::printf("plants: %llu\n", static_cast<unsigned long long>(total.plants));
-        std::printf("steps: %d\n", steps);
+        std::printf("steps: %d\n", result.steps);
         std::printf("max branch depth: %d\n", total.maxBranchDepth);
         std::printf("time: %.6f s\n", seconds);
         std::printf("symbols:\n");
@@ -116,7 +103,7 @@ void runDerive(const DeriveArgs& args) {
     j["backend"] = args.backend;
     j["modules"] = total.modules;
     j["plants"] = total.plants;
-    j["steps"] = steps;
+    j["steps"] = result.steps;
     j["max_branch_depth"] = total.maxBranchDepth;
     j["seconds"] = seconds;
     j["symbols"] = total.perSymbol;
@@ -127,18 +114,23 @@ void runDerive(const DeriveArgs& args) {
 
 void registerDeriveCommand(CLI::App& app, CommandContext& ctx) {
     auto args = std::make_shared<DeriveArgs>();
-    CLI::App* cmd = app.add_subcommand("derive", "Derive an L-system (.l, .lsys) or a SimEco scene's plant (.eco)");
+    CLI::App* cmd = app.add_subcommand("derive", "Derive an L-system (.l, .lsys) or the plants of a SimEco scene (.eco)");
     cmd->add_option("file", args->file, "grammar file")->required();
     cmd->add_option("-n,--steps", args->steps, "derivation steps (default: the file's derivation length)")
         ->check(CLI::Range(0, 1000000));
     cmd->add_option("--seed", args->seed, "seed of the random streams (default: the file's seed, else 0)")
         ->check(CLI::Range(int64_t(0), int64_t(UINT32_MAX)));
-    cmd->add_option("--plants", args->plants, "number of plants derived together")->check(CLI::Range(1u, 1000000u));
+    cmd->add_option("--plants", args->plants,
+                    "number of plants derived together; a scene's species take turns (default: one of each)")->check(CLI::Range(1u, 1000000u));
     cmd->add_option("--backend", args->backend, "cpu or gpu")->check(CLI::IsMember({"cpu", "gpu"}));
     cmd->add_option("--format", args->format, "string, stats or json")
         ->check(CLI::IsMember({"string", "stats", "json"}));
     cmd->add_option("--max-modules", args->maxModules, "module budget (default: sized to this machine's memory)");
     cmd->add_option("--device", args->device, "Vulkan device for --backend gpu: an index or a name part (see `simeco devices`)");
+    cmd->add_option("--gpu-strategy", args->strategy,
+                    "parallel (every module at once), sequential (one invocation per plant, for grammars whose "
+                    "productions write globals) or auto")
+        ->check(CLI::IsMember({"auto", "parallel", "sequential"}));
     cmd->callback([args, &ctx] { ctx.exitCode = runReportingErrors([&] { runDerive(*args); }); });
 }
 

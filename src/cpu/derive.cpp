@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <limits>
+#include <stdexcept>
 
 #include <fmt/format.h>
 #include <unistd.h>
 
 #include "cpu/evaluator.h"
+#include "ir/species.h"
 #include "shared/random.h"
 
 namespace simeco::cpu {
@@ -50,10 +52,7 @@ public:
 
     int run(int steps) {
         state_.reset(g_);
-        evaluator_.key.pass = 0;
-        evaluator_.key.module = 0;
-        evaluator_.key.draw = 0;
-        evaluator_.exec(g_.startBlock, nullptr);
+        runBlock(g_.startBlock, 0, ControlBlock::Start);
         // The axiom's parameters may use globals of the Start block.
         std::vector<float> values;
         for (const ir::SuccessorModule& m : g_.axiom) {
@@ -66,19 +65,24 @@ public:
         for (int step = 1; step <= steps; ++step) {
             step_ = static_cast<uint32_t>(step);
             if (!state_.globals.empty() && g_.globalNames.front() == "Q") state_.globals[0] = step;
-            evaluator_.exec(g_.startEachBlock, nullptr);
+            runBlock(g_.startEachBlock, step_, ControlBlock::StartEach);
             rewrite();
-            evaluator_.exec(g_.endEachBlock, nullptr);
+            runBlock(g_.endEachBlock, step_, ControlBlock::EndEach);
             ++done;
             if (state_.stopRequested) break;
         }
-        evaluator_.exec(g_.endBlock, nullptr);
+        runBlock(g_.endBlock, 0, ControlBlock::End);
         return done;
     }
 
     ModuleString& result() { return cur_; }
 
 private:
+    void runBlock(const std::vector<ir::Stmt>& block, uint32_t step, ControlBlock which) {
+        evaluator_.key = controlBlockKey(evaluator_.key.seed, evaluator_.key.plant, step, which);
+        evaluator_.exec(block, nullptr);
+    }
+
     const ir::Grammar& g_;
     PlantState state_;
     Evaluator evaluator_;
@@ -263,7 +267,7 @@ private:
         const ir::RuleSet& rules = g_.decomposition;
         if (rules.productions.empty() || rules.maxDepth <= 0) return false;
         if (depthCounter_.size() <= size_t(depth)) depthCounter_.resize(size_t(depth) + 1, 0);
-        setKey(step_ * kPassesPerStep + 1 + uint32_t(std::min(depth, int(kPassesPerStep) - 2)),
+        setKey(decompositionPass(step_, depth),
                depthCounter_[size_t(depth)]++);
         int64_t found = kNone;
         std::vector<uint32_t> candidates;
@@ -384,23 +388,34 @@ private:
 } // namespace
 
 DeriveResult deriveCpu(const ir::Grammar& g, const DeriveOptions& options) {
-    int steps = options.steps >= 0 ? options.steps : g.derivationLength;
-    uint32_t seed = options.seed >= 0 ? uint32_t(options.seed) : g.seed;
-    int stride = std::max(g.maxParams(), 1);
+    return deriveSpeciesCpu({g}, options);
+}
+
+DeriveResult deriveSpeciesCpu(const std::vector<ir::Grammar>& species, const DeriveOptions& options) {
+    if (species.empty()) throw std::invalid_argument("deriveSpeciesCpu: no species");
+    uint32_t seed = options.seed >= 0 ? uint32_t(options.seed) : species.front().seed;
+    int stride = 1;
+    for (const ir::Grammar& g : species) stride = std::max(stride, g.maxParams());
     uint64_t budget = options.maxModules ? options.maxModules : defaultModuleBudget(stride);
     DeriveResult result;
     result.string.stride = stride;
     result.string.plantStart.push_back(0);
     uint64_t used = 0;
     for (uint32_t plant = 0; plant < std::max<uint32_t>(options.plants, 1); ++plant) {
+        const ir::Grammar& g = species[ir::speciesOfPlant(plant, species.size())];
         PlantDeriver deriver(g, plant, seed, budget - used);
-        result.steps = deriver.run(steps);
+        result.steps = std::max(result.steps, deriver.run(options.steps >= 0 ? options.steps : g.derivationLength));
         const ModuleString& s = deriver.result();
         used += s.size();
         ModuleString& out = result.string;
-        out.sym.insert(out.sym.end(), s.sym.begin(), s.sym.end());
-        out.paramCount.insert(out.paramCount.end(), s.paramCount.begin(), s.paramCount.end());
-        out.params.insert(out.params.end(), s.params.begin(), s.params.end());
+        if (s.stride == stride) {
+            out.sym.insert(out.sym.end(), s.sym.begin(), s.sym.end());
+            out.paramCount.insert(out.paramCount.end(), s.paramCount.begin(), s.paramCount.end());
+            out.params.insert(out.params.end(), s.params.begin(), s.params.end());
+        } else { // a species with fewer parameter slots than the string's stride
+            out.reserve(out.size() + s.size());
+            for (size_t i = 0; i < s.size(); ++i) out.pushFrom(s, i);
+        }
         out.plantStart.push_back(out.sym.size());
     }
     return result;

@@ -6,8 +6,11 @@
 // applied to every module produced in a step, cut `%`, and parameters stored as 32-bit floats.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
+#include <vector>
 
+#include "cpu/evaluator.h"
 #include "cpu/module_string.h"
 #include "ir/grammar.h"
 
@@ -25,15 +28,38 @@ struct DeriveOptions {
 
 struct DeriveResult {
     ModuleString string; // all plants, one segment each
-    int steps = 0;       // steps performed (fewer than asked when a model called stop())
+    int steps = 0;       // steps performed by the plant that went furthest (fewer when a model called stop())
 };
 
 // Throws ir::InputError for evaluation errors (division by zero, ...) and ir::LimitError when the string
 // outgrows the module budget.
 DeriveResult deriveCpu(const ir::Grammar& g, const DeriveOptions& options);
 
+// Plants of several species in one string: `species` share one alphabet (ir::unifySpecies) and plant p is of
+// species p mod species.size(). Each species derives its own derivation length unless options.steps is set;
+// the seed is options.seed, else the first species'. The stride is the largest of the species'.
+DeriveResult deriveSpeciesCpu(const std::vector<ir::Grammar>& species, const DeriveOptions& options);
+
 // Random stream passes: a derivation step uses pass step * kPassesPerStep, decomposition at depth d in
-// that step pass step * kPassesPerStep + 1 + d.
+// that step pass step * kPassesPerStep + 1 + d (depths past kPassesPerStep - 3 share the last one), and the
+// control blocks the step's last pass.
 inline constexpr uint32_t kPassesPerStep = 1024;
+
+inline uint32_t decompositionPass(uint32_t step, int depth) {
+    return step * kPassesPerStep + 1 + uint32_t(std::min(depth, int(kPassesPerStep) - 3));
+}
+
+// Where the control blocks draw from: Start in pass 0; StartEach (module 0) and EndEach (module 1) of a step
+// in its last pass; End in step 0's last pass (module 2). The same on every engine, whatever the string.
+enum class ControlBlock : uint32_t { Start, StartEach, EndEach, End };
+inline RandomKey controlBlockKey(uint32_t seed, uint32_t plant, uint32_t step, ControlBlock block) {
+    switch (block) {
+    case ControlBlock::Start: return {seed, plant, 0, 0, 0};
+    case ControlBlock::StartEach: return {seed, plant, step * kPassesPerStep + kPassesPerStep - 1, 0, 0};
+    case ControlBlock::EndEach: return {seed, plant, step * kPassesPerStep + kPassesPerStep - 1, 1, 0};
+    case ControlBlock::End: break;
+    }
+    return {seed, plant, kPassesPerStep - 1, 2, 0};
+}
 
 } // namespace simeco::cpu

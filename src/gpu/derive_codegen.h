@@ -1,9 +1,10 @@
 // Grammar-specialised derivation kernels: the IR compiled to GLSL.
 //
 // Each production becomes a function that walks its contexts, binds its parameters, runs its statements and
-// condition as straight-line code and, when asked, writes its successor. Four kernels use them: the match and
-// write passes of a derivation step, and the match and write passes of a decomposition depth. The host's
-// control blocks (Start, StartEach, ...) stay on the CPU; productions only read globals.
+// condition as straight-line code and, when asked, writes its successor (production_codegen.h). The parallel
+// strategy rewrites every module at once with four kernels: the match and write passes of a derivation step,
+// and the match and write passes of a decomposition depth; its productions only read globals. The sequential
+// strategy covers the rest. The host's control blocks (Start, StartEach, ...) stay on the CPU.
 #pragma once
 
 #include <cstdint>
@@ -26,16 +27,27 @@ struct GeneratedKernels {
     std::string write;              // derivation step: write successors at their offsets
     std::string decompositionMatch; // one decomposition depth: choose, count
     std::string decompositionWrite; // one decomposition depth: write
+    std::string sequential;         // the sequential strategy: one invocation per plant rewrites it in order
+    uint32_t frameSlots = 0;        // sequential: persistent locals per plant
+    uint32_t stackWidth = 1;        // sequential: the longest successor (modules per decomposition stack level)
     std::vector<ErrorSite> errors;
     bool needsBrackets = false;     // contexts, cuts or `=` need matching brackets
     bool mayCut = false;            // a `%` can appear in the string
     bool hasDecomposition = false;
+    int maxDecompositionDepth = 0;  // the deepest of the species' decompositions
     uint32_t longestPredecessor = 1; // > 1: the greedy walk decides which modules start a rewrite
     std::vector<double> functionTables; // the sampled func() tables, concatenated
 };
 
-// The GLSL of the kernels for grammar g (parameter slots per module come at run time, in the push constants).
-// The grammar must be supported (gpuUnsupportedReason(g) empty).
-GeneratedKernels generateDeriveKernels(const ir::Grammar& g);
+// The GLSL of the kernels for plants of the given species (one alphabet: ir::unifySpecies); plant p is of
+// species p mod species.size(). Parameter slots per module come at run time, in the push constants. Every
+// species must be supported (gpuUnsupportedReason empty).
+GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species);
+
+// The sequential strategy's kernel (sequential_codegen.cpp): one invocation per plant walks the plant's string
+// in order, exactly as the CPU reference does, so productions may write globals and arrays, locals carry over
+// between applications, stop() works and decomposition runs depth-first with an explicit stack. Run twice
+// per step: mode 0 counts each plant's modules (on copies of the state), mode 1 writes them and the state.
+GeneratedKernels generateSequentialKernel(const std::vector<ir::Grammar>& species);
 
 } // namespace simeco::gpu

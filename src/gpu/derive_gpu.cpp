@@ -15,6 +15,7 @@
 #include "gpu/derive_codegen.h"
 #include "gpu/glsl_compiler.h"
 #include "gpu/scan.h"
+#include "ir/species.h"
 #include "vk/barriers.h"
 #include "vk/buffer.h"
 #include "vk/context.h"
@@ -45,25 +46,36 @@ constexpr uint32_t kGreedyChunk = 256; // as greedy_chunks.glsl
 
 struct GpuDeriver::Impl {
     const vk::Context& ctx;
-    const ir::Grammar& g;
+    std::vector<ir::Grammar> species;
+    GpuStrategy strategy;
     int stride;
+    uint32_t globalStride = 0, arrayStride = 0; // globals and array elements per plant (the most of any species)
     GeneratedKernels kernels;
-    std::optional<vk::ComputePipeline> match, write, decompositionMatch, decompositionWrite;
+    std::optional<vk::ComputePipeline> match, write, decompositionMatch, decompositionWrite, sequential;
     vk::ComputePipeline bracketDepth, depthLeaves, depthLevel, plantStarts, cutApply;
     vk::ComputePipeline greedyReduce, greedyScan, greedyMark;
     GpuScan scan;
     vk::Buffer contextSkip, funcTables, errors, levelInfo, readback;
-    vk::Buffer globals, arrays;
+    vk::Buffer globals, arrays, plantFrozen;
     vk::Buffer deltas, before, tree, counts, choices, drawStarts, offsets, cutDelta, cutBefore, examined;
     vk::Buffer chunkFunctions, chunkEntries; // the greedy walk over predecessors of several modules
+    // The sequential strategy: persistent locals, copies of the state for the counting pass, the decomposition
+    // stack, and each plant's module count.
+    vk::Buffer frames, framesCopy, globalsCopy, arraysCopy, stackSym, stackPar, stackState, plantCounts, countsReadback;
+    vk::Buffer resume;
+    uint32_t stackLevels = 0;
+    // Input modules per plant and dispatch: small enough that no invocation loops long (kFlagLoopCut).
+    uint32_t chunk = 256;
+    std::vector<uint32_t> hostPlantTable; // the current stream's plant table, kept on the host
+    uint32_t lastFlags = 0; // errors[1] of the last submit
     uint64_t scratchCapacity = 0;
     uint64_t treeCapacity = 0;
     Stream streams[3];
     uint32_t plants = 1;
     double compileSeconds = 0;
 
-    Impl(const vk::Context& c, const ir::Grammar& grammar)
-        : ctx(c), g(grammar), stride(std::max(grammar.maxParams(), 1)),
+    Impl(const vk::Context& c, std::vector<ir::Grammar> grammars, GpuStrategy requested)
+        : ctx(c), species(std::move(grammars)), strategy(requested), stride(1),
           bracketDepth(vk::ComputePipeline::embedded(c, "derive/bracket_depth")),
           depthLeaves(vk::ComputePipeline::embedded(c, "derive/depth_leaves")),
           depthLevel(vk::ComputePipeline::embedded(c, "derive/depth_level")),
@@ -72,26 +84,49 @@ struct GpuDeriver::Impl {
           greedyReduce(vk::ComputePipeline::embedded(c, "derive/greedy_reduce")),
           greedyScan(vk::ComputePipeline::embedded(c, "derive/greedy_scan")),
           greedyMark(vk::ComputePipeline::embedded(c, "derive/greedy_mark")), scan(c) {
-        if (std::optional<std::string> reason = gpuUnsupportedReason(g))
-            throw std::runtime_error("the GPU backend cannot derive this grammar: " + *reason +
-                                     " (use --backend cpu)");
+        if (species.empty()) throw std::invalid_argument("GpuDeriver: no species");
+        for (const ir::Grammar& g : species) {
+            if (std::optional<std::string> reason = gpuUnsupportedReason(g))
+                throw std::runtime_error("the GPU backend cannot derive this grammar: " + *reason +
+                                         " (use --backend cpu)");
+            std::optional<std::string> parallelReason = gpuParallelUnsupportedReason(g);
+            if (parallelReason && strategy == GpuStrategy::Parallel)
+                throw std::runtime_error("the parallel GPU passes cannot derive this grammar: " + *parallelReason);
+            if (parallelReason) strategy = GpuStrategy::Sequential;
+            stride = std::max(stride, g.maxParams());
+            globalStride = std::max(globalStride, static_cast<uint32_t>(g.globalNames.size()));
+            uint32_t elements = 0;
+            for (const ir::GlobalArray& a : g.arrays) elements += static_cast<uint32_t>(a.init.size());
+            arrayStride = std::max(arrayStride, elements);
+        }
+        if (strategy == GpuStrategy::Auto) strategy = GpuStrategy::Parallel;
         auto start = std::chrono::steady_clock::now();
-        kernels = generateDeriveKernels(g);
         auto build = [&](const std::string& source, const char* name) {
             std::vector<uint32_t> spirv = cachedComputeKernel(source, name);
             return vk::ComputePipeline(ctx, spirv, name);
         };
-        match.emplace(build(kernels.match, "derive/match"));
-        write.emplace(build(kernels.write, "derive/write"));
-        if (kernels.hasDecomposition) {
+        if (strategy == GpuStrategy::Sequential) {
+            kernels = generateSequentialKernel(species);
+            sequential.emplace(build(kernels.sequential, "derive/sequential"));
+        } else {
+            kernels = generateDeriveKernels(species);
+            match.emplace(build(kernels.match, "derive/match"));
+            write.emplace(build(kernels.write, "derive/write"));
+        }
+        if (kernels.hasDecomposition && strategy == GpuStrategy::Parallel) {
             decompositionMatch.emplace(build(kernels.decompositionMatch, "derive/decomposition_match"));
             decompositionWrite.emplace(build(kernels.decompositionWrite, "derive/decomposition_write"));
         }
         compileSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-        std::vector<uint32_t> skipBits((g.alphabet.size() + 31) / 32 + 1, 0);
-        for (size_t s = 0; s < g.alphabet.size(); ++s)
-            if (g.skippedInContext(static_cast<ir::SymbolId>(s))) skipBits[s / 32] |= 1u << (s % 32);
+        // One row of bits per species (derive_lib.glsl's skipped()).
+        size_t symbols = species.front().alphabet.size();
+        size_t rowWords = (symbols + 31) / 32 + 1;
+        std::vector<uint32_t> skipBits(rowWords * species.size(), 0);
+        for (size_t sp = 0; sp < species.size(); ++sp)
+            for (size_t s = 0; s < symbols; ++s)
+                if (species[sp].skippedInContext(static_cast<ir::SymbolId>(s)))
+                    skipBits[sp * rowWords + s / 32] |= 1u << (s % 32);
         contextSkip = deviceBufferWith(std::span<const uint32_t>(skipBits));
         std::vector<double> tables = kernels.functionTables;
         if (tables.empty()) tables.push_back(0.0);
@@ -174,10 +209,8 @@ struct GpuDeriver::Impl {
         p.seed = seed;
         p.pass = pass;
         p.stride = static_cast<uint32_t>(stride);
-        p.globalCount = static_cast<uint32_t>(g.globalNames.size());
-        uint32_t arrayElements = 0;
-        for (const ir::GlobalArray& a : g.arrays) arrayElements += static_cast<uint32_t>(a.init.size());
-        p.arrayStride = arrayElements;
+        p.globalCount = globalStride;
+        p.arrayStride = arrayStride;
         p.oldCount = oldCount;
         p.depth = depth;
         return p;
@@ -194,14 +227,15 @@ struct GpuDeriver::Impl {
             }
             record(cmd);
             vk::memoryBarrier(cmd, Hazard::ComputeToTransfer);
-            VkBufferCopy error{0, 4, 4};
+            VkBufferCopy error{0, 4, 8}; // the error site, then the sequential kernel's flags
             vkCmdCopyBuffer(cmd, errors.handle(), readback.handle(), 1, &error);
             vk::memoryBarrier(cmd, Hazard::TransferToHost);
             if (timer) timer->cmdWrite(cmd, 1, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT);
         });
         if (timer) gpuMillis += timer->elapsedNs(0, 1) / 1e6;
-        uint32_t words[2];
+        uint32_t words[3];
         std::memcpy(words, readback.mapped(), sizeof words);
+        lastFlags = words[2];
         if (words[1] != 0) {
             uint32_t site = words[1] - 1;
             if (site < kernels.errors.size()) throw ir::InputError(kernels.errors[site].loc, kernels.errors[site].message);
@@ -263,7 +297,8 @@ struct GpuDeriver::Impl {
     void dispatchDerive(VkCommandBuffer cmd, const vk::ComputePipeline& kernel, const Stream& strings,
                         std::initializer_list<vk::BufferRange> rest, const DerivePush& p, uint32_t n) {
         std::vector<vk::BufferRange> buffers{strings.sym, strings.par, plantTable(strings), tree ? tree : deltas,
-                                             levelInfo, globals, arrays, funcTables, contextSkip, errors};
+                                             levelInfo, globals, arrays, funcTables, contextSkip, errors,
+                                             plantFrozen};
         buffers.insert(buffers.end(), rest.begin(), rest.end());
         kernel.dispatchBytes(cmd, buffers, std::as_bytes(std::span(&p, 1)), kernel.groupsFor(n));
     }
@@ -333,7 +368,7 @@ struct GpuDeriver::Impl {
                   double& millis, GpuDeriveStats& stats) {
         Stream& oldStream = streams[old];
         int y = 3 - old - x;
-        for (int depth = 0; depth < g.decomposition.maxDepth; ++depth) {
+        for (int depth = 0; depth < kernels.maxDecompositionDepth; ++depth) {
             Stream& X = streams[x];
             uint32_t n = X.count;
             if (n == 0) break;
@@ -345,7 +380,7 @@ struct GpuDeriver::Impl {
                 },
                 timer, millis);
             if (live == 0) break;
-            uint32_t pass = stepIndex * shared::kPassesPerStep + 1 + uint32_t(std::min(depth, int(shared::kPassesPerStep) - 2));
+            uint32_t pass = cpu::decompositionPass(stepIndex, depth);
             DerivePush p = push(n, stepIndex, seed, pass, oldStream.count, uint32_t(depth));
             uint32_t total = submit(
                 [&](VkCommandBuffer cmd) {
@@ -380,20 +415,149 @@ struct GpuDeriver::Impl {
         }
         return x;
     }
+
+    // ---- the sequential strategy ----
+
+    // Sizes the decomposition stack for `levels` levels per plant.
+    void ensureStack(uint32_t levels) {
+        uint64_t modules = uint64_t(plants) * levels * kernels.stackWidth;
+        checkRange(modules, 4ull * uint64_t(stride), "decomposition stack (derive fewer plants at once)");
+        checkRange(uint64_t(plants) * 3 * levels, 4, "decomposition stack state");
+        stackSym = vk::Buffer(ctx, bytes(modules, 4), vk::MemoryUsage::DeviceLocal);
+        stackPar = vk::Buffer(ctx, bytes(modules, 4ull * uint64_t(stride)), vk::MemoryUsage::DeviceLocal);
+        stackState = vk::Buffer(ctx, bytes(uint64_t(plants) * 3 * levels, 4), vk::MemoryUsage::DeviceLocal);
+        stackLevels = levels;
+    }
+
+    // Buffers of a sequential derivation of `plants` plants; the locals start at zero as cpfg's do.
+    void prepareSequential() {
+        uint64_t frameBytes = bytes(uint64_t(plants) * std::max(kernels.frameSlots, 1u), 8);
+        frames = vk::Buffer(ctx, frameBytes, vk::MemoryUsage::DeviceLocal);
+        framesCopy = vk::Buffer(ctx, frameBytes, vk::MemoryUsage::DeviceLocal);
+        globalsCopy = vk::Buffer(ctx, globals.size(), vk::MemoryUsage::DeviceLocal);
+        arraysCopy = vk::Buffer(ctx, arrays.size(), vk::MemoryUsage::DeviceLocal);
+        plantCounts = vk::Buffer(ctx, bytes(plants, 4), vk::MemoryUsage::DeviceLocal);
+        countsReadback = vk::Buffer(ctx, bytes(plants, 4), vk::MemoryUsage::Readback);
+        resume = vk::Buffer(ctx, bytes(2ull * plants, 4), vk::MemoryUsage::DeviceLocal);
+        ctx.submitAndWait([&](VkCommandBuffer cmd) { vk::cmdFill(cmd, frames, 0); });
+        int deepest = kernels.hasDecomposition ? kernels.maxDecompositionDepth + 1 : 1;
+        ensureStack(static_cast<uint32_t>(std::min(deepest, 16)));
+    }
+
+    // A pass of the sequential kernel: as many dispatches as the longest plant needs chunks.
+    void dispatchSequential(VkCommandBuffer cmd, uint32_t mode, const Stream& in, const Stream& out,
+                            const DerivePush& base, const std::vector<uint32_t>& inTable) {
+        DerivePush p = base;
+        p.mode = mode;
+        p.stackLevels = stackLevels;
+        p.chunk = chunk;
+        uint32_t longest = 0;
+        for (size_t plant = 0; plant + 1 < inTable.size(); ++plant)
+            longest = std::max(longest, inTable[plant + 1] - inTable[plant]);
+        uint32_t dispatches = std::max<uint32_t>(1, (longest + chunk - 1) / chunk);
+        bool counting = mode == 0;
+        // The counting pass runs on copies of the state, so that the writing pass starts from the same one.
+        std::vector<vk::BufferRange> buffers{in.sym, in.par, plantTable(in), tree ? tree : deltas, levelInfo,
+                                             counting ? globalsCopy : globals, counting ? arraysCopy : arrays,
+                                             funcTables, contextSkip, errors, plantFrozen,
+                                             counting ? framesCopy : frames, stackSym, stackPar, stackState,
+                                             plantCounts, plantTable(out), out.sym, out.par, resume};
+        for (p.dispatch = 0; p.dispatch < dispatches; ++p.dispatch) {
+            sequential->dispatchBytes(cmd, buffers, std::as_bytes(std::span(&p, 1)), sequential->groupsFor(plants));
+            vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+        }
+    }
+
+    // One step with one invocation per plant: count (growing the stack when a plant outgrows it), then write.
+    int stepSequential(int cur, uint32_t stepIndex, uint32_t seed, uint64_t budget, vk::Timestamps* timer,
+                       GpuDeriveStats& stats) {
+        Stream& in = streams[cur];
+        int outIndex = (cur + 1) % 3;
+        Stream& out = streams[outIndex];
+        uint32_t n = in.count;
+        double millis = 0;
+        ensureScratch(n);
+        if (kernels.needsBrackets) layoutTree(n);
+        ensureStream(out, 1); // bound (unused) while counting
+        DerivePush p = push(n, stepIndex, seed, stepIndex * shared::kPassesPerStep, n, 0);
+        p.moduleLimit = static_cast<uint32_t>(std::min<uint64_t>(budget, UINT32_MAX - 1));
+        int deepest = kernels.hasDecomposition ? kernels.maxDecompositionDepth + 1 : 1;
+        for (;;) {
+            submit(
+                [&](VkCommandBuffer cmd) {
+                    vk::cmdFill(cmd, errors, 0);
+                    for (auto [from, to] : {std::pair{&globals, &globalsCopy}, {&arrays, &arraysCopy}, {&frames, &framesCopy}}) {
+                        VkBufferCopy all{0, 0, from->size()};
+                        vkCmdCopyBuffer(cmd, from->handle(), to->handle(), 1, &all);
+                    }
+                    vk::memoryBarrier(cmd, Hazard::TransferToCompute);
+                    if (kernels.needsBrackets && n > 0) recordBracketDepth(cmd, in);
+                    dispatchSequential(cmd, 0, in, out, p, hostPlantTable);
+                    vk::memoryBarrier(cmd, Hazard::ComputeToTransfer);
+                    VkBufferCopy countsCopy{0, 0, plantCounts.size()};
+                    vkCmdCopyBuffer(cmd, plantCounts.handle(), countsReadback.handle(), 1, &countsCopy);
+                },
+                timer, millis);
+            if (lastFlags & shared::kFlagOverLimit) checkBudget(uint64_t(budget) + 1, budget, stepIndex);
+            if (lastFlags & shared::kFlagLoopCut) {
+                if (chunk == 1)
+                    throw ir::LimitError(fmt::format(
+                        "step {}: the device's driver ended a shader loop early (lavapipe stops an invocation's loops "
+                        "after 65535 iterations in all), even when rewriting one module at a time; derive this "
+                        "grammar with --backend cpu",
+                        stepIndex));
+                chunk = std::max<uint32_t>(1, chunk / 4);
+                continue;
+            }
+            if (!(lastFlags & shared::kFlagStackFull)) break;
+            if (int(stackLevels) >= deepest) throw std::logic_error("decomposition stack full at the maximum depth");
+            ensureStack(static_cast<uint32_t>(std::min<int64_t>(int64_t(stackLevels) * 4, deepest)));
+        }
+        std::vector<uint32_t> table(plants + 1, 0);
+        const uint32_t* counted = reinterpret_cast<const uint32_t*>(countsReadback.mapped());
+        uint64_t total = 0;
+        for (uint32_t plant = 0; plant < plants; ++plant) {
+            table[plant] = static_cast<uint32_t>(std::min<uint64_t>(total, UINT32_MAX));
+            total += counted[plant];
+        }
+        checkBudget(total, budget, stepIndex);
+        checkRange(total, 4, "modules");
+        table[plants] = static_cast<uint32_t>(total);
+        ensureStream(out, total);
+
+        vk::upload(ctx, out.plantStart, std::as_bytes(std::span<const uint32_t>(table)));
+        submit(
+            [&](VkCommandBuffer cmd) {
+                vk::cmdFill(cmd, errors, 0);
+                vk::memoryBarrier(cmd, Hazard::TransferToCompute);
+                dispatchSequential(cmd, 1, in, out, p, hostPlantTable);
+                vk::memoryBarrier(cmd, Hazard::ComputeToHost);
+            },
+            timer, millis);
+        out.count = static_cast<uint32_t>(total);
+        hostPlantTable = std::move(table);
+        stats.bytesMoved += 2 * uint64_t(n) * (4 + 4ull * uint64_t(stride)) + total * (4 + 4ull * uint64_t(stride));
+        if (timer) stats.stepMillis.push_back(millis);
+        return outIndex;
+    }
 };
 
-GpuDeriver::GpuDeriver(const vk::Context& context, const ir::Grammar& g) : impl_(std::make_unique<Impl>(context, g)) {}
+GpuDeriver::GpuDeriver(const vk::Context& context, const ir::Grammar& g, GpuStrategy strategy)
+    : impl_(std::make_unique<Impl>(context, std::vector<ir::Grammar>{g}, strategy)) {}
+
+GpuDeriver::GpuDeriver(const vk::Context& context, std::vector<ir::Grammar> species, GpuStrategy strategy)
+    : impl_(std::make_unique<Impl>(context, std::move(species), strategy)) {}
+
+GpuStrategy GpuDeriver::strategy() const { return impl_->strategy; }
 
 GpuDeriver::~GpuDeriver() = default;
 
 cpu::DeriveResult GpuDeriver::derive(const cpu::DeriveOptions& options, bool readBack, GpuDeriveStats* statsOut) {
     Impl& m = *impl_;
-    const ir::Grammar& g = m.g;
     GpuDeriveStats stats;
     stats.compileSeconds = m.compileSeconds;
     auto start = std::chrono::steady_clock::now();
-    int steps = options.steps >= 0 ? options.steps : g.derivationLength;
-    uint32_t seed = options.seed >= 0 ? uint32_t(options.seed) : g.seed;
+    uint32_t seed = options.seed >= 0 ? uint32_t(options.seed) : m.species.front().seed;
     m.plants = std::max<uint32_t>(options.plants, 1);
     uint64_t budget = options.maxModules ? options.maxModules : cpu::defaultModuleBudget(m.stride);
     // The plant tables are sized by the plant count, which may change between derivations.
@@ -401,18 +565,30 @@ cpu::DeriveResult GpuDeriver::derive(const cpu::DeriveOptions& options, bool rea
         s.plantStart = vk::Buffer(m.ctx, bytes(m.plants + 1, 4), vk::MemoryUsage::DeviceLocal);
         s.count = 0;
     }
+    auto speciesOf = [&](uint32_t plant) -> const ir::Grammar& {
+        return m.species[ir::speciesOfPlant(plant, m.species.size())];
+    };
+    auto stepsOf = [&](uint32_t plant) { return options.steps >= 0 ? options.steps : speciesOf(plant).derivationLength; };
+    int steps = 0;
+    for (uint32_t plant = 0; plant < std::min<uint32_t>(m.plants, uint32_t(m.species.size())); ++plant)
+        steps = std::max(steps, stepsOf(plant));
 
     // Host side: each plant's control blocks and axiom, exactly as the CPU reference evaluates them.
     std::vector<cpu::PlantState> states(m.plants);
+    auto runBlock = [&](uint32_t plant, const std::vector<ir::Stmt>& block, uint32_t step, cpu::ControlBlock which) {
+        cpu::Evaluator evaluator(speciesOf(plant), states[plant]);
+        evaluator.key = cpu::controlBlockKey(seed, plant, step, which);
+        evaluator.exec(block, nullptr);
+    };
     cpu::ModuleString initial;
     initial.stride = m.stride;
     initial.plantStart.push_back(0);
     std::vector<float> values;
     for (uint32_t plant = 0; plant < m.plants; ++plant) {
-        cpu::Evaluator evaluator(g, states[plant]);
+        const ir::Grammar& g = speciesOf(plant);
         states[plant].reset(g);
-        evaluator.key.seed = seed;
-        evaluator.key.plant = plant;
+        cpu::Evaluator evaluator(g, states[plant]);
+        evaluator.key = cpu::controlBlockKey(seed, plant, 0, cpu::ControlBlock::Start);
         evaluator.exec(g.startBlock, nullptr);
         for (const ir::SuccessorModule& mod : g.axiom) {
             values.clear();
@@ -439,59 +615,83 @@ cpu::DeriveResult GpuDeriver::derive(const cpu::DeriveOptions& options, bool rea
         s.count = static_cast<uint32_t>(initial.size());
     }
 
-    size_t globalCount = g.globalNames.size();
-    size_t arrayElements = 0;
-    for (const ir::GlobalArray& a : g.arrays) arrayElements += a.init.size();
-    m.globals = vk::Buffer(m.ctx, bytes(m.plants * std::max<size_t>(globalCount, 1), 8), vk::MemoryUsage::Upload);
-    m.arrays = vk::Buffer(m.ctx, bytes(m.plants * std::max<size_t>(arrayElements, 1), 8), vk::MemoryUsage::Upload);
+    m.globals = vk::Buffer(m.ctx, bytes(uint64_t(m.plants) * std::max<uint32_t>(m.globalStride, 1), 8), vk::MemoryUsage::Upload);
+    m.arrays = vk::Buffer(m.ctx, bytes(uint64_t(m.plants) * std::max<uint32_t>(m.arrayStride, 1), 8), vk::MemoryUsage::Upload);
+    m.plantFrozen = vk::Buffer(m.ctx, bytes(m.plants, 4), vk::MemoryUsage::Upload);
+    const bool sequential = m.strategy == GpuStrategy::Sequential;
+    if (sequential) {
+        m.prepareSequential();
+        m.hostPlantTable.assign(initial.plantStart.begin(), initial.plantStart.end());
+    }
+    // The sequential kernel's productions write the state; the host reads it back after each step.
+    auto downloadState = [&] {
+        const double* gp = reinterpret_cast<const double*>(m.globals.mapped());
+        const double* ap = reinterpret_cast<const double*>(m.arrays.mapped());
+        const uint32_t* fp = reinterpret_cast<const uint32_t*>(m.plantFrozen.mapped());
+        for (uint32_t plant = 0; plant < m.plants; ++plant) {
+            std::vector<double>& globals = states[plant].globals;
+            std::copy(gp + uint64_t(plant) * m.globalStride, gp + uint64_t(plant) * m.globalStride + globals.size(),
+                      globals.begin());
+            const double* at = ap + uint64_t(plant) * m.arrayStride;
+            for (std::vector<double>& a : states[plant].arrays) {
+                std::copy(at, at + a.size(), a.begin());
+                at += a.size();
+            }
+            if (fp[plant] == 2u) states[plant].stopRequested = true;
+        }
+    };
+    // A plant freezes once it has derived its species' length, or after the step in which it called stop().
+    std::vector<int> derived(m.plants, 0);
+    std::vector<uint8_t> growing(m.plants, 0);
     auto uploadState = [&] {
         double* gp = reinterpret_cast<double*>(m.globals.mapped());
         double* ap = reinterpret_cast<double*>(m.arrays.mapped());
+        uint32_t* fp = reinterpret_cast<uint32_t*>(m.plantFrozen.mapped());
         for (uint32_t plant = 0; plant < m.plants; ++plant) {
-            std::copy(states[plant].globals.begin(), states[plant].globals.end(), gp + plant * globalCount);
-            size_t at = plant * arrayElements;
+            std::copy(states[plant].globals.begin(), states[plant].globals.end(), gp + uint64_t(plant) * m.globalStride);
+            uint64_t at = uint64_t(plant) * m.arrayStride;
             for (const std::vector<double>& a : states[plant].arrays) {
                 std::copy(a.begin(), a.end(), ap + at);
                 at += a.size();
             }
+            fp[plant] = growing[plant] ? 0u : 1u;
         }
     };
-    bool hasControl = !g.startEachBlock.empty() || !g.endEachBlock.empty();
-    bool hasQ = !g.globalNames.empty() && g.globalNames.front() == "Q";
 
     std::optional<vk::Timestamps> timer;
     if (m.ctx.timestampValidBits() > 0) timer.emplace(m.ctx, 2);
 
-    int done = 0;
     for (int step = 1; step <= steps; ++step) {
+        bool anyGrowing = false;
         for (uint32_t plant = 0; plant < m.plants; ++plant) {
-            if (hasQ) states[plant].globals[0] = step;
-            if (hasControl) {
-                cpu::Evaluator evaluator(g, states[plant]);
-                evaluator.key.seed = seed;
-                evaluator.key.plant = plant;
-                evaluator.exec(g.startEachBlock, nullptr);
-            }
+            growing[plant] = step <= stepsOf(plant) && !states[plant].stopRequested;
+            if (!growing[plant]) continue;
+            anyGrowing = true;
+            const ir::Grammar& g = speciesOf(plant);
+            if (!g.globalNames.empty() && g.globalNames.front() == "Q") states[plant].globals[0] = step;
+            runBlock(plant, g.startEachBlock, uint32_t(step), cpu::ControlBlock::StartEach);
         }
+        if (!anyGrowing) break;
         uploadState();
-        cur = m.step(cur, uint32_t(step), seed, budget, timer ? &*timer : nullptr, stats);
+        vk::Timestamps* stepTimer = timer ? &*timer : nullptr;
+        if (sequential) {
+            cur = m.stepSequential(cur, uint32_t(step), seed, budget, stepTimer, stats);
+            downloadState();
+        } else {
+            cur = m.step(cur, uint32_t(step), seed, budget, stepTimer, stats);
+        }
         stats.peakModules = std::max<uint64_t>(stats.peakModules, m.streams[cur].count);
-        ++done;
-        if (hasControl)
-            for (uint32_t plant = 0; plant < m.plants; ++plant) {
-                cpu::Evaluator evaluator(g, states[plant]);
-                evaluator.key.seed = seed;
-                evaluator.key.plant = plant;
-                evaluator.exec(g.endEachBlock, nullptr);
-            }
+        for (uint32_t plant = 0; plant < m.plants; ++plant) {
+            if (!growing[plant]) continue;
+            ++derived[plant];
+            runBlock(plant, speciesOf(plant).endEachBlock, uint32_t(step), cpu::ControlBlock::EndEach);
+        }
     }
-    for (uint32_t plant = 0; plant < m.plants; ++plant) {
-        cpu::Evaluator evaluator(g, states[plant]);
-        evaluator.exec(g.endBlock, nullptr);
-    }
+    for (uint32_t plant = 0; plant < m.plants; ++plant)
+        runBlock(plant, speciesOf(plant).endBlock, 0, cpu::ControlBlock::End);
 
     cpu::DeriveResult result;
-    result.steps = done;
+    result.steps = *std::max_element(derived.begin(), derived.end());
     Stream& final = m.streams[cur];
     stats.modules = final.count;
     result.string.stride = m.stride;

@@ -18,8 +18,16 @@ class Context;
 
 namespace simeco::gpu {
 
-// Why a grammar cannot be derived by the parallel GPU passes, or nothing when it can.
+// Why a grammar cannot be derived on the GPU at all, or nothing when it can.
 std::optional<std::string> gpuUnsupportedReason(const ir::Grammar& g);
+// Why a grammar needs the sequential strategy rather than the parallel passes, or nothing.
+std::optional<std::string> gpuParallelUnsupportedReason(const ir::Grammar& g);
+
+// How the device rewrites: every module at once (match/count, scan, write over the whole stream), or one
+// invocation per plant walking its string in order, for grammars whose productions depend on the order of
+// application (global writes, carried-over locals, stop()). Auto takes the parallel passes when every species
+// allows them.
+enum class GpuStrategy { Auto, Parallel, Sequential };
 
 struct GpuDeriveStats {
     uint64_t modules = 0;            // modules of all plants after the last step
@@ -33,14 +41,20 @@ struct GpuDeriveStats {
 class GpuDeriver {
 public:
     // Generates and compiles the grammar's kernels (cached on disk by content hash).
-    GpuDeriver(const vk::Context& context, const ir::Grammar& g);
+    GpuDeriver(const vk::Context& context, const ir::Grammar& g, GpuStrategy strategy = GpuStrategy::Auto);
+    // Plants of several species in one stream: the grammars share one alphabet (ir::unifySpecies), plant p is
+    // of species p mod species.size(), and each species derives its own derivation length.
+    GpuDeriver(const vk::Context& context, std::vector<ir::Grammar> species, GpuStrategy strategy = GpuStrategy::Auto);
     ~GpuDeriver();
     GpuDeriver(const GpuDeriver&) = delete;
     GpuDeriver& operator=(const GpuDeriver&) = delete;
 
-    // Derives options.plants copies of the grammar in one buffer. The string is read back only when
+    // Derives options.plants plants in one buffer (copies of the grammar, or the species in turn). The string is read back only when
     // `readBack`; otherwise the result's string is empty and `stats` tells the sizes.
     cpu::DeriveResult derive(const cpu::DeriveOptions& options, bool readBack = true, GpuDeriveStats* stats = nullptr);
+
+    // Parallel or Sequential: the strategy this deriver uses.
+    GpuStrategy strategy() const;
 
 private:
     struct Impl;

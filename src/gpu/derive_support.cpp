@@ -1,9 +1,11 @@
-// What the parallel GPU passes can derive exactly as the CPU reference does.
+// What the GPU strategies can derive exactly as the CPU reference does.
 //
-// The passes rewrite every module at once, so anything that makes one module's rewriting depend on an earlier
-// module's — productions writing globals or arrays, locals that carry their value over from the production's
-// previous application (cpfg keeps one variable table per production), file output, stop() — is refused with
-// the reason, as are ring L-systems. printf() is accepted and prints nothing: the derived string is the same.
+// The parallel passes rewrite every module at once, so anything that makes one module's rewriting depend on an
+// earlier module's — productions writing globals or arrays, locals that carry their value over from the
+// production's previous application (cpfg keeps one variable table per production), stop() — is left to the
+// sequential kernel, which walks each plant in order. Neither does what a device cannot: file input and output
+// in productions. Ring L-systems and contour curves (curveX ...) are not on the device yet. printf() is
+// accepted and prints nothing: the derived string is the same.
 #include <set>
 
 #include <fmt/format.h>
@@ -16,6 +18,7 @@ namespace {
 
 struct Checker {
     const ir::Grammar& g;
+    bool parallel; // the parallel passes' limits too
     std::optional<std::string> reason;
 
     void fail(const ir::SourceLoc& loc, const std::string& what) {
@@ -24,13 +27,15 @@ struct Checker {
 
     // Reads in e of slots not yet assigned, and unsupported calls.
     void expr(const ir::Expr& e, const std::set<int>& assigned) {
-        if (e.op == ir::Op::Local && !assigned.count(e.slot))
+        if (parallel && e.op == ir::Op::Local && !assigned.count(e.slot))
             fail(e.loc, "a local variable is read before it is assigned (cpfg carries its value over between "
                         "applications of the production)");
         if (e.op == ir::Op::Call) {
             switch (e.fn) {
-            case ir::Builtin::Bran:
             case ir::Builtin::Stop:
+                if (parallel) fail(e.loc, "stop() in a production");
+                break;
+            case ir::Builtin::Bran:
             case ir::Builtin::Fopen:
             case ir::Builtin::Fclose:
             case ir::Builtin::Fflush:
@@ -56,7 +61,8 @@ struct Checker {
             case ir::StmtKind::Assign:
                 expr(s.expr, assigned);
                 for (const ir::Expr& i : s.indices) expr(i, assigned);
-                if (s.target != ir::TargetKind::Local) fail(s.loc, "a production assigns a global variable or an array");
+                if (parallel && s.target != ir::TargetKind::Local)
+                    fail(s.loc, "a production assigns a global variable or an array");
                 else assigned.insert(s.slot);
                 break;
             case ir::StmtKind::Eval: expr(s.expr, assigned); break;
@@ -85,8 +91,9 @@ struct Checker {
     }
 
     void production(const ir::Production& p, bool decomposition) {
-        if (p.strict.size() > 8) fail(p.loc, "a predecessor of more than 8 modules");
-        if (decomposition && p.strict[0].sym == ir::kCut) fail(p.loc, "a decomposition production for the cut '%'");
+        if (parallel && p.strict.size() > 8) fail(p.loc, "a predecessor of more than 8 modules");
+        if (parallel && decomposition && p.strict[0].sym == ir::kCut)
+            fail(p.loc, "a decomposition production for the cut '%'");
         std::set<int> assigned;
         for (const auto* patterns : {&p.left, &p.strict, &p.right})
             for (const ir::PatternModule& m : *patterns) assigned.insert(m.paramSlots.begin(), m.paramSlots.end());
@@ -101,10 +108,8 @@ struct Checker {
     }
 };
 
-} // namespace
-
-std::optional<std::string> gpuUnsupportedReason(const ir::Grammar& g) {
-    Checker check{g, std::nullopt};
+std::optional<std::string> unsupportedReason(const ir::Grammar& g, bool parallel) {
+    Checker check{g, parallel, std::nullopt};
     if (g.ring) check.fail(g.axiomLoc, "a ring L-system");
     if (g.alphabet.size() > (1u << 24)) check.fail(g.axiomLoc, "more than 2^24 symbols");
     for (const ir::Production& p : g.productions.productions) check.production(p, false);
@@ -112,5 +117,11 @@ std::optional<std::string> gpuUnsupportedReason(const ir::Grammar& g) {
         for (const ir::Production& p : g.decomposition.productions) check.production(p, true);
     return check.reason;
 }
+
+} // namespace
+
+std::optional<std::string> gpuUnsupportedReason(const ir::Grammar& g) { return unsupportedReason(g, false); }
+
+std::optional<std::string> gpuParallelUnsupportedReason(const ir::Grammar& g) { return unsupportedReason(g, true); }
 
 } // namespace simeco::gpu

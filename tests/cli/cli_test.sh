@@ -52,6 +52,14 @@ out=$("$simeco" derive "$work/algae.l" --plants 3 | wc -l)
 [ "$out" -eq 3 ]
 check "--plants prints one line per plant" $?
 
+"$simeco" derive "$source_dir/scenes/garden.eco" >"$work/garden-cpu.txt" 2>/dev/null
+[ "$(wc -l <"$work/garden-cpu.txt")" -eq 3 ] && [ "$(sort -u "$work/garden-cpu.txt" | wc -l)" -eq 3 ]
+check "a scene of three species derives one distinct plant of each" $?
+"$simeco" derive "$source_dir/scenes/garden.eco" --backend gpu --plants 6 >"$work/garden-gpu.txt" 2>/dev/null
+"$simeco" derive "$source_dir/scenes/garden.eco" --plants 6 >"$work/garden-cpu6.txt" 2>/dev/null
+[ -s "$work/garden-gpu.txt" ] && cmp -s "$work/garden-gpu.txt" "$work/garden-cpu6.txt"
+check "the GPU derives the scene's species in one pass as the CPU does" $?
+
 printf 'Lsystem: 1\nderivation length: 1\nAxiom: A(1)\nA(x) --> A(y)\nendlsystem\n' >"$work/bad.l"
 "$simeco" derive "$work/bad.l" >"$work/out.txt" 2>"$work/err.txt"
 code=$?

@@ -18,6 +18,7 @@
 #include "../unit/grammar_text.h"
 #include "cpu/derive.h"
 #include "gpu/derive_gpu.h"
+#include "compare_strings.h"
 #include "gpu_fixture.h"
 #include "ir/source_loc.h"
 #include "lang/load_grammar.h"
@@ -42,47 +43,6 @@ std::uint64_t envOr(const char* name, std::uint64_t fallback) {
     return value && *value ? std::strtoull(value, nullptr, 10) : fallback;
 }
 
-bool sameParameter(float want, float got) {
-    if (std::isnan(want) || std::isnan(got)) return std::isnan(want) && std::isnan(got);
-    if (want == got) return true; // infinities included
-    double difference = std::fabs(double{want} - double{got});
-    return difference <= 1e-6 || difference <= 1e-5 * std::max(std::fabs(double{want}), std::fabs(double{got}));
-}
-
-std::string moduleText(const cpu::ModuleString& s, const ir::Alphabet& alphabet, std::size_t i) {
-    return cpu::formatModules(s, alphabet, i, i + 1);
-}
-
-// Empty when the GPU's result equals the CPU's; else the first differing module with what precedes it.
-std::string firstDifference(const cpu::DeriveResult& want, const cpu::DeriveResult& got, const ir::Alphabet& alphabet) {
-    std::ostringstream out;
-    if (want.steps != got.steps) out << "steps " << got.steps << ", expected " << want.steps << "; ";
-    const cpu::ModuleString& a = want.string;
-    const cpu::ModuleString& b = got.string;
-    std::size_t common = std::min(a.size(), b.size());
-    for (std::size_t i = 0; i < common; ++i) {
-        bool same = a.sym[i] == b.sym[i] && a.paramCount[i] == b.paramCount[i];
-        for (std::size_t k = 0; same && k < a.paramCount[i]; ++k)
-            same = sameParameter(a.paramsOf(i)[k], b.paramsOf(i)[k]);
-        if (same) continue;
-        std::size_t from = i >= 8 ? i - 8 : 0;
-        auto plant = std::upper_bound(a.plantStart.begin(), a.plantStart.end(), std::uint64_t{i});
-        out << "module " << i << " of " << a.size() << " (plant " << (plant - a.plantStart.begin() - 1)
-            << "): " << moduleText(b, alphabet, i) << ", expected " << moduleText(a, alphabet, i) << " (after \""
-            << cpu::formatModules(a, alphabet, from, i) << "\"); ";
-        break;
-    }
-    if (a.size() != b.size()) out << "module count " << b.size() << ", expected " << a.size() << "; ";
-    if (a.plantStart != b.plantStart) {
-        std::size_t p = 0;
-        while (p < a.plantStart.size() && p < b.plantStart.size() && a.plantStart[p] == b.plantStart[p])
-            ++p;
-        out << "plant segment table differs at entry " << p << " (" << b.plantStart.size() << " entries, expected "
-            << a.plantStart.size() << "); ";
-    }
-    return out.str();
-}
-
 enum class Verdict { Match, Differ, Unsupported, OverBudget };
 
 struct Outcome {
@@ -91,7 +51,8 @@ struct Outcome {
 };
 
 // Derives `g` with both engines. Errors other than the CPU outgrowing the module budget propagate.
-Outcome compareEngines(const vk::Context& context, const ir::Grammar& g, const cpu::DeriveOptions& options) {
+Outcome compareEngines(const vk::Context& context, const ir::Grammar& g, const cpu::DeriveOptions& options,
+                       gpu::GpuStrategy strategy = gpu::GpuStrategy::Auto) {
     if (std::optional<std::string> reason = gpu::gpuUnsupportedReason(g)) return {Verdict::Unsupported, *reason};
     cpu::DeriveResult want;
     try {
@@ -99,7 +60,7 @@ Outcome compareEngines(const vk::Context& context, const ir::Grammar& g, const c
     } catch (const ir::LimitError& e) {
         return {Verdict::OverBudget, e.what()};
     }
-    gpu::GpuDeriver deriver(context, g);
+    gpu::GpuDeriver deriver(context, g, strategy);
     cpu::DeriveResult got = deriver.derive(options);
     std::string difference = firstDifference(want, got, g.alphabet);
     return {difference.empty() ? Verdict::Match : Verdict::Differ, difference};
@@ -124,11 +85,12 @@ struct Tally {
     }
 };
 
-void compareFile(const vk::Context& context, const fs::path& file, const std::string& name, Tally& tally) {
+void compareFile(const vk::Context& context, const fs::path& file, const std::string& name, Tally& tally,
+                 gpu::GpuStrategy strategy = gpu::GpuStrategy::Auto) {
     ++tally.total;
     try {
         ir::Grammar g = lang::loadGrammarFile(file.string());
-        Outcome outcome = compareEngines(context, g, {});
+        Outcome outcome = compareEngines(context, g, {}, strategy);
         switch (outcome.verdict) {
         case Verdict::Match:
             ++tally.matched;
@@ -182,10 +144,13 @@ TEST_F(DeriveGpuTest, ExampleGrammarsMatchTheCpu) {
     }
     std::sort(files.begin(), files.end());
     ASSERT_GE(files.size(), 15u) << "example grammars not found under " << kGrammars;
-    Tally tally;
-    for (const fs::path& file : files)
+    Tally tally, sequential;
+    for (const fs::path& file : files) {
         compareFile(context(), file, fs::relative(file, kGrammars).string(), tally);
+        compareFile(context(), file, fs::relative(file, kGrammars).string(), sequential, gpu::GpuStrategy::Sequential);
+    }
     tally.expectSupportedShare("example grammars");
+    sequential.expectSupportedShare("example grammars, sequential strategy");
 }
 
 struct CorpusModel {
@@ -214,6 +179,18 @@ TEST_F(ScratchDirGpuTest, CorpusModelsMatchTheCpu) {
     for (const CorpusModel& model : models)
         compareFile(context(), kCorpus / "models" / model.folder / model.file, model.folder, tally);
     tally.expectSupportedShare("corpus models");
+}
+
+// Every corpus model again with one invocation per plant: the strategy for grammars the parallel passes
+// refuse, checked here on all of them.
+TEST_F(ScratchDirGpuTest, CorpusModelsMatchTheCpuSequentially) {
+    std::vector<CorpusModel> models = readManifest();
+    ASSERT_GE(models.size(), 60u) << "the corpus manifest was not found or is incomplete at " << kCorpus;
+    Tally tally;
+    for (const CorpusModel& model : models)
+        compareFile(context(), kCorpus / "models" / model.folder / model.file, model.folder, tally,
+                    gpu::GpuStrategy::Sequential);
+    tally.expectSupportedShare("corpus models, sequential strategy");
 }
 
 // The generator itself, on the CPU alone: every grammar parses and derives, few outgrow the budget, the same
@@ -282,9 +259,8 @@ TEST(RandomGrammarTest, GeneratedGrammarsDeriveOnTheCpu) {
     }
 }
 
-TEST_F(DeriveGpuTest, RandomGrammarsMatchTheCpu) {
-    std::uint64_t first = envOr("SIMECO_RANDOM_FIRST_SEED", 1);
-    std::uint64_t count = envOr("SIMECO_RANDOM_GRAMMARS", kRandomGrammars);
+void compareRandomGrammars(const vk::Context& context, std::uint64_t first, std::uint64_t count,
+                           gpu::GpuStrategy strategy) {
     constexpr int kTextsShown = 5; // a broken pass tends to break hundreds
     std::uint64_t matched = 0, skipped = 0, failed = 0;
     for (std::uint64_t seed = first; seed < first + count; ++seed) {
@@ -294,7 +270,7 @@ TEST_F(DeriveGpuTest, RandomGrammarsMatchTheCpu) {
             ir::Grammar g = simeco::testing::grammarFromText(text);
             cpu::DeriveOptions options;
             options.maxModules = kRandomModuleBudget;
-            Outcome outcome = compareEngines(context(), g, options);
+            Outcome outcome = compareEngines(context, g, options, strategy);
             switch (outcome.verdict) {
             case Verdict::Match:
                 ++matched;
@@ -321,6 +297,17 @@ TEST_F(DeriveGpuTest, RandomGrammarsMatchTheCpu) {
                 static_cast<unsigned long long>(matched), static_cast<unsigned long long>(count),
                 static_cast<unsigned long long>(skipped));
     EXPECT_LE(skipped * 10, count) << "too many random grammars outgrow the module budget";
+}
+
+TEST_F(DeriveGpuTest, RandomGrammarsMatchTheCpu) {
+    compareRandomGrammars(context(), envOr("SIMECO_RANDOM_FIRST_SEED", 1), envOr("SIMECO_RANDOM_GRAMMARS", kRandomGrammars),
+                          gpu::GpuStrategy::Auto);
+}
+
+// The sequential strategy on random grammars too (fewer: one invocation per plant is slow on lavapipe).
+TEST_F(DeriveGpuTest, RandomGrammarsMatchTheCpuSequentially) {
+    compareRandomGrammars(context(), envOr("SIMECO_RANDOM_FIRST_SEED", 1), envOr("SIMECO_RANDOM_SEQUENTIAL", 100),
+                          gpu::GpuStrategy::Sequential);
 }
 
 // A stochastic grammar with random parameters, for the tests of many plants.

@@ -1,0 +1,531 @@
+#include "gpu/production_codegen.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <optional>
+
+#include <fmt/format.h>
+
+#include "compute/shaders.h"
+
+namespace simeco::gpu::codegen {
+
+namespace {
+
+constexpr unsigned kLoopLimit = 10'000'000u; // as the CPU reference's evaluator
+
+
+// Emits straight-line GLSL for expressions and statements of one production.
+class BodyEmitter {
+public:
+    BodyEmitter(const ir::Grammar& g, size_t species, std::vector<ErrorSite>& errors, std::string& out)
+        : g_(g), species_(species), errors_(errors), out_(out) {}
+
+    void line(const std::string& text) {
+        out_.append(static_cast<size_t>(indent_) * 4, ' ');
+        out_ += text;
+        out_ += '\n';
+    }
+    void open(const std::string& text) {
+        line(text);
+        ++indent_;
+    }
+    void close(const std::string& text = "}") {
+        --indent_;
+        line(text);
+    }
+    void setIndent(int indent) { indent_ = indent; }
+
+    uint32_t site(const ir::SourceLoc& loc, const std::string& message) {
+        errors_.push_back({loc, message});
+        return static_cast<uint32_t>(errors_.size() - 1);
+    }
+
+    std::string temp() { return fmt::format("t{}", temps_++); }
+
+    // The name of a double holding e's value, after the statements that compute it.
+    std::string expr(const ir::Expr& e) {
+        using ir::Op;
+        switch (e.op) {
+        case Op::Const: return literal(e.value);
+        case Op::Local: return fmt::format("v{}", e.slot);
+        case Op::Global: return fmt::format("globals[globalBase + {}u]", e.slot);
+        case Op::ArrayElem: return arrayElement(e);
+        case Op::Neg: return define(fmt::format("-{}", expr(e.args[0])));
+        case Op::Not: return define(fmt::format("({} == 0.0LF ? 1.0LF : 0.0LF)", expr(e.args[0])));
+        case Op::Add:
+        case Op::Sub:
+        case Op::Mul: {
+            std::string a = expr(e.args[0]);
+            std::string b = expr(e.args[1]);
+            const char* op = e.op == Op::Add ? "+" : e.op == Op::Sub ? "-" : "*";
+            return define(fmt::format("{} {} {}", a, op, b));
+        }
+        case Op::Div: {
+            std::string a = expr(e.args[0]);
+            std::string b = expr(e.args[1]);
+            line(fmt::format("if ({} == 0.0LF) reportError({}u);", b, site(e.loc, "division by zero")));
+            return define(fmt::format("{} == 0.0LF ? 0.0LF : {} / {}", b, a, b));
+        }
+        case Op::Mod: {
+            std::string a = expr(e.args[0]);
+            std::string b = expr(e.args[1]);
+            std::string ia = temp(), ib = temp();
+            line(fmt::format("int {} = int({}), {} = int({});", ia, a, ib, b));
+            line(fmt::format("if ({} == 0) {{ reportError({}u); {} = 1; }}", ib, site(e.loc, "remainder by zero"), ib));
+            // OpSDiv truncates toward zero, so this is C's remainder for negative operands too.
+            return define(fmt::format("double({} - ({} / {}) * {})", ia, ia, ib, ib));
+        }
+        case Op::Pow: {
+            std::string a = expr(e.args[0]);
+            std::string b = expr(e.args[1]);
+            return define(fmt::format("powD({}, {})", a, b));
+        }
+        case Op::Lt:
+        case Op::Le:
+        case Op::Gt:
+        case Op::Ge:
+        case Op::Eq:
+        case Op::Ne: {
+            static const char* ops[] = {"<", "<=", ">", ">=", "==", "!="};
+            std::string a = expr(e.args[0]);
+            std::string b = expr(e.args[1]);
+            return define(fmt::format("({} {} {}) ? 1.0LF : 0.0LF", a,
+                                      ops[static_cast<int>(e.op) - static_cast<int>(Op::Lt)], b));
+        }
+        case Op::And:
+        case Op::Or: {
+            std::string result = temp();
+            std::string a = expr(e.args[0]);
+            line(fmt::format("double {} = 0.0LF;", result));
+            open(fmt::format("if ({} {} 0.0LF) {{", a, e.op == Op::And ? "!=" : "=="));
+            std::string b = expr(e.args[1]);
+            line(fmt::format("{} = {} != 0.0LF ? 1.0LF : 0.0LF;", result, b));
+            close(e.op == Op::And ? "}" : fmt::format("}} else {{ {} = 1.0LF; }}", result));
+            return result;
+        }
+        case Op::Select: {
+            std::string result = temp();
+            std::string c = expr(e.args[0]);
+            line(fmt::format("double {};", result));
+            open(fmt::format("if ({} != 0.0LF) {{", c));
+            line(fmt::format("{} = {};", result, expr(e.args[1])));
+            close();
+            open("else {");
+            line(fmt::format("{} = {};", result, expr(e.args[2])));
+            close();
+            return result;
+        }
+        case Op::Call: return call(e);
+        case Op::String: return "0.0LF";
+        }
+        return "0.0LF";
+    }
+
+    void statements(const std::vector<ir::Stmt>& stmts) {
+        for (const ir::Stmt& s : stmts) statement(s);
+    }
+
+private:
+    const ir::Grammar& g_;
+    size_t species_;
+    std::vector<ErrorSite>& errors_;
+    std::string& out_;
+    int indent_ = 1;
+    int temps_ = 0;
+
+    std::string define(const std::string& value) {
+        std::string name = temp();
+        line(fmt::format("double {} = {};", name, value));
+        return name;
+    }
+
+    std::string draw() {
+        std::string name = temp();
+        line(fmt::format("double {} = double(randomUnit(pc.seed, plant, currentPass(), key, draw)); ++draw;", name));
+        return name;
+    }
+
+    std::string arrayElement(const ir::Expr& e) {
+        std::optional<std::string> index = arrayIndex(e.slot, e.args, e.loc);
+        return index ? define("arrays[" + *index + "]") : "0.0LF";
+    }
+
+    // The index in `arrays` of an element, after the statements that check it; none for a wrong dimension.
+    std::optional<std::string> arrayIndex(int slot, const std::vector<ir::Expr>& indices, const ir::SourceLoc& loc) {
+        const ir::GlobalArray& a = g_.arrays[static_cast<size_t>(slot)];
+        uint32_t offset = 0;
+        for (int k = 0; k < slot; ++k) offset += static_cast<uint32_t>(g_.arrays[static_cast<size_t>(k)].init.size());
+        if (indices.size() != a.dims.size()) {
+            line(fmt::format("reportError({}u);", site(loc, fmt::format("array '{}' has {} dimension(s), {} index(es) given",
+                                                                       a.name, a.dims.size(), indices.size()))));
+            return std::nullopt;
+        }
+        std::string flat = temp();
+        line(fmt::format("uint {} = 0u;", flat));
+        for (size_t k = 0; k < indices.size(); ++k) {
+            std::string v = expr(indices[k]);
+            std::string index = temp();
+            line(fmt::format("int {} = int(floor({}));", index, v));
+            uint32_t where = site(loc, fmt::format("index out of range for array '{}' (dimension {} has {} elements)",
+                                                   a.name, k + 1, a.dims[k]));
+            line(fmt::format("if (!({} >= 0.0LF) || {} >= {}) {{ reportError({}u); {} = 0; }}", v, index, a.dims[k], where,
+                             index));
+            line(fmt::format("{} = {} * {}u + uint({});", flat, flat, a.dims[k], index));
+        }
+        return fmt::format("arrayBase + {}u + {}", offset, flat);
+    }
+
+    std::string call(const ir::Expr& e) {
+        using ir::Builtin;
+        std::vector<std::string> a;
+        if (e.fn != Builtin::Ran) // ran draws after its argument is known, as the CPU does
+            for (const ir::Expr& arg : e.args) a.push_back(expr(arg));
+        switch (e.fn) {
+        case Builtin::Sin: return define(fmt::format("sinD({} / kDegrees)", a[0]));
+        case Builtin::Cos: return define(fmt::format("cosD({} / kDegrees)", a[0]));
+        case Builtin::Tan: return define(fmt::format("sinD({0} / kDegrees) / cosD({0} / kDegrees)", a[0]));
+        case Builtin::Asin: return define(fmt::format("asinD({}) * kDegrees", a[0]));
+        case Builtin::Acos: return define(fmt::format("acosD({}) * kDegrees", a[0]));
+        case Builtin::Atan: return define(fmt::format("atanD({}) * kDegrees", a[0]));
+        case Builtin::Atan2: return define(fmt::format("atan2D({}, {}) * kDegrees", a[1], a[0]));
+        case Builtin::Exp: return define(fmt::format("expD({})", a[0]));
+        case Builtin::Log: return define(fmt::format("logD({})", a[0]));
+        case Builtin::Sqrt: return define(fmt::format("sqrt({})", a[0]));
+        case Builtin::Fabs: return define(fmt::format("abs({})", a[0]));
+        case Builtin::Floor: return define(fmt::format("floor({})", a[0]));
+        case Builtin::Ceil: return define(fmt::format("ceil({})", a[0]));
+        case Builtin::Trunc: return define(fmt::format("floor({} + 0.5LF)", a[0]));
+        case Builtin::Sign: return define(fmt::format("{0} > 0.0LF ? 1.0LF : ({0} < 0.0LF ? -1.0LF : 0.0LF)", a[0]));
+        case Builtin::Pow: return define(fmt::format("powD({}, {})", a[0], a[1]));
+        case Builtin::Min: return define(fmt::format("min({}, {})", a[0], a[1]));
+        case Builtin::Max: return define(fmt::format("max({}, {})", a[0], a[1]));
+        case Builtin::Ran: {
+            std::string scale = expr(e.args[0]);
+            std::string u = draw();
+            return define(fmt::format("{} * {}", u, scale));
+        }
+        case Builtin::Nran: {
+            std::string u1 = draw();
+            std::string u2 = draw();
+            return define(fmt::format("{} + {} * sqrt(-2.0LF * logD(1.0LF - {})) * cosD(2.0LF * kPi * {})", a[0], a[1],
+                                      u1, u2));
+        }
+        case Builtin::Biran: {
+            uint32_t where = site(e.loc, "biran(n, p) needs 0 <= n <= 1000000");
+            line(fmt::format("if ({0} < 0.0LF || {0} > 1000000.0LF) reportError({1}u);", a[0], where));
+            std::string count = temp();
+            line(fmt::format("double {} = 0.0LF;", count));
+            open(fmt::format("for (int k = 0; k < int(clamp({}, 0.0LF, 1000000.0LF)); ++k) {{", a[0]));
+            line(fmt::format("if (double(randomUnit(pc.seed, plant, currentPass(), key, draw)) <= {}) {} += 1.0LF;", a[1], count));
+            line("++draw;");
+            close();
+            return count;
+        }
+        case Builtin::Srand: return "0.0LF";
+        case Builtin::Stop: // only in the sequential kernel (the parallel passes refuse it)
+            line(a.empty() ? "requestStop(plant);" : fmt::format("if ({} != 0.0LF) requestStop(plant);", a[0]));
+            return "0.0LF";
+        case Builtin::Printf: return "0.0LF"; // arguments evaluated above (for their draws); nothing is printed
+        case Builtin::Func: {
+            uint32_t where = site(e.loc, fmt::format("func(id, x): no such function (the view file defines {})",
+                                                     g_.functions.size()));
+            return define(fmt::format("funcValue{}({}, {}, {}u)", species_, a[0], a[1], where));
+        }
+        default: return "0.0LF"; // excluded by gpuUnsupportedReason
+        }
+    }
+
+    void statement(const ir::Stmt& s) {
+        switch (s.kind) {
+        case ir::StmtKind::Assign: {
+            // Globals and arrays are written only by the sequential kernel (the parallel passes refuse it).
+            std::string v = expr(s.expr);
+            if (s.target == ir::TargetKind::Local) {
+                line(fmt::format("v{} = {};", s.slot, v));
+            } else if (s.target == ir::TargetKind::Global) {
+                line(fmt::format("globals[globalBase + {}u] = {};", s.slot, v));
+            } else if (std::optional<std::string> index = arrayIndex(s.slot, s.indices, s.loc)) {
+                line(fmt::format("arrays[{}] = {};", *index, v));
+            }
+            break;
+        }
+        case ir::StmtKind::Eval: expr(s.expr); break;
+        case ir::StmtKind::If: {
+            std::string c = expr(s.expr);
+            open(fmt::format("if ({} != 0.0LF) {{", c));
+            statements(s.body);
+            close();
+            if (!s.elseBody.empty()) {
+                open("else {");
+                statements(s.elseBody);
+                close();
+            }
+            break;
+        }
+        case ir::StmtKind::While:
+        case ir::StmtKind::DoWhile: {
+            uint32_t where = site(s.loc, fmt::format("loop still running after {} iterations", kLoopLimit));
+            // Some drivers end an invocation's loops after a fixed number of iterations (lavapipe: 65535 in
+            // all); a loop that ends without its condition failing is reported rather than trusted.
+            uint32_t cut = site(s.loc, "the device's driver ended this loop early (lavapipe stops an invocation's "
+                                       "loops after 65535 iterations in all); derive with --backend cpu");
+            std::string guard = temp(), finished = temp();
+            line(fmt::format("uint {} = 0u;", guard));
+            line(fmt::format("bool {} = false;", finished));
+            open("for (;;) {");
+            if (s.kind == ir::StmtKind::DoWhile) statements(s.body);
+            std::string c = expr(s.expr);
+            line(fmt::format("if ({} == 0.0LF) {{ {} = true; break; }}", c, finished));
+            line(fmt::format("if (++{} > {}u) {{ reportError({}u); {} = true; break; }}", guard, kLoopLimit, where, finished));
+            if (s.kind == ir::StmtKind::While) statements(s.body);
+            close();
+            line(fmt::format("if (!{}) reportError({}u);", finished, cut));
+            break;
+        }
+        }
+    }
+};
+
+
+} // namespace
+
+// A double literal with every digit of the value.
+std::string literal(double v) {
+    if (std::isnan(v)) return "(0.0LF / 0.0LF)";
+    if (std::isinf(v)) return v > 0 ? "(1.0LF / 0.0LF)" : "(-1.0LF / 0.0LF)";
+    char buffer[64];
+    std::snprintf(buffer, sizeof buffer, "%.17g", v);
+    std::string s = buffer;
+    if (s.find_first_of(".eE") == std::string::npos) s += ".0";
+    return "(" + s + "LF)";
+}
+
+
+std::string functionName(size_t species, RuleKind kind, size_t index) {
+    return fmt::format("s{}{}{}", species, kind == RuleKind::Step ? "step" : "decompose", index);
+}
+
+uint32_t skipWords(const ir::Grammar& g) { return static_cast<uint32_t>((g.alphabet.size() + 31) / 32 + 1); }
+
+namespace {
+
+// The parts of a production's code, in order: matching, then producing.
+void emitMatch(BodyEmitter& body, const ir::Grammar& g, size_t species, const ir::Production& p, RuleKind kind) {
+    std::optional<ir::SymbolId> equals = g.alphabet.find("=");
+    uint32_t skipRow = static_cast<uint32_t>(species) * skipWords(g);
+    for (size_t k = 1; k < p.strict.size(); ++k) {
+        // The further modules of a predecessor of several modules: adjacent, nothing skipped.
+        const ir::PatternModule& m = p.strict[k];
+        body.line(fmt::format("if (i + {0}u >= pEnd || symOf(i + {0}u) != {1}u || countOf(i + {0}u) != {2}u) return false;",
+                              k, m.sym, m.paramSlots.size()));
+        for (size_t a = 0; a < m.paramSlots.size(); ++a)
+            body.line(fmt::format("v{} = paramOf(i + {}u, {}u);", m.paramSlots[a], k, a));
+    }
+    if (!p.right.empty()) {
+        body.open("{");
+        body.line(fmt::format("uint s = ctxRight + {}u;", p.strict.size() - 1));
+        for (const ir::PatternModule& m : p.right) {
+            if (equals && m.sym == *equals) {
+                body.line("s = endOfBranch(s, pBegin, pEnd);");
+                continue;
+            }
+            body.line(fmt::format("if (!rightAdvance(s, {}u, pEnd, {}u)) return false;", m.sym, skipRow));
+            body.line(fmt::format("if (symOf(s) != {}u || countOf(s) != {}u) return false;", m.sym, m.paramSlots.size()));
+            for (size_t k = 0; k < m.paramSlots.size(); ++k)
+                body.line(fmt::format("v{} = paramOf(s, {}u);", m.paramSlots[k], k));
+            body.line("++s;");
+        }
+        body.close();
+    }
+    if (!p.left.empty()) {
+        body.open("{");
+        body.line("int s = ctxLeft;");
+        for (auto it = p.left.rbegin(); it != p.left.rend(); ++it) {
+            body.line(fmt::format("if (!leftAdvance(s, pBegin, {}u)) return false;", skipRow));
+            body.line(fmt::format("if (symOf(uint(s)) != {}u || countOf(uint(s)) != {}u) return false;", it->sym,
+                                  it->paramSlots.size()));
+            for (size_t k = 0; k < it->paramSlots.size(); ++k)
+                body.line(fmt::format("v{} = paramOf(uint(s), {}u);", it->paramSlots[k], k));
+            body.line("--s;");
+        }
+        body.close();
+    }
+    // A step's predecessor is in the string being rewritten; a decomposition's where the kernel keeps it.
+    const char* strictParam = kind == RuleKind::Step ? "paramOf" : "strictParam";
+    for (size_t k = 0; k < p.strict[0].paramSlots.size(); ++k)
+        body.line(fmt::format("v{} = {}(i, {}u);", p.strict[0].paramSlots[k], strictParam, k));
+    body.statements(p.before);
+    if (p.condition) {
+        std::string c = body.expr(*p.condition);
+        body.line(fmt::format("if ({} == 0.0LF) return false;", c));
+    }
+}
+
+// The after-statements and the draw of an alternative; sets outCount.
+void emitChoice(BodyEmitter& body, const ir::Production& p) {
+    body.statements(p.after);
+    size_t alternatives = p.alternatives.size();
+    body.line(fmt::format("uint alt = {}u;", alternatives - 1));
+    for (size_t k = 0; k + 1 < alternatives; ++k) {
+        body.open("if (alt == " + std::to_string(alternatives - 1) + "u) {");
+        body.line("double u = double(randomUnit(pc.seed, plant, currentPass(), key, draw)); ++draw;");
+        body.line(fmt::format("if (u < {}) alt = {}u;", literal(static_cast<double>(p.alternatives[k].probability)), k));
+        body.close();
+    }
+    for (size_t k = 0; k < alternatives; ++k)
+        body.line(fmt::format("if (alt == {}u) outCount = {}u;", k, p.alternatives[k].modules.size()));
+}
+
+// The chosen alternative's modules at outPos + j.
+void emitSuccessor(BodyEmitter& body, const ir::Production& p) {
+    for (size_t k = 0; k < p.alternatives.size(); ++k) {
+        const ir::Alternative& alt = p.alternatives[k];
+        if (alt.modules.empty()) continue;
+        body.open(fmt::format("if (alt == {}u) {{", k));
+        for (size_t j = 0; j < alt.modules.size(); ++j) {
+            const ir::SuccessorModule& m = alt.modules[j];
+            std::vector<std::string> values;
+            for (const ir::Expr& arg : m.args) values.push_back(body.expr(arg));
+            body.line(fmt::format("emitModule(outPos + {}u, {}u, {}u, origin);", j, m.sym, m.args.size()));
+            for (size_t a = 0; a < values.size(); ++a)
+                body.line(fmt::format("emitParam(outPos + {}u, {}u, {});", j, a, values[a]));
+        }
+        body.close();
+    }
+}
+
+std::string frameParameters(const ir::Production& p) {
+    std::string s;
+    for (int slot = 0; slot < p.frameSize; ++slot) s += fmt::format(", inout double v{}", slot);
+    return s;
+}
+
+std::string frameArguments(const ir::Production& p) {
+    std::string s;
+    for (int slot = 0; slot < p.frameSize; ++slot) s += fmt::format(", v{}", slot);
+    return s;
+}
+
+// `RESULT NAME(PARAMETERS, uint frame)`: loads the locals from frames[frame ...], calls the body function with
+// them and stores them back, so that they carry over to the production's next application.
+std::string frameWrapper(const ir::Production& p, const std::string& result, const std::string& name,
+                         const std::string& parameters, const std::string& arguments) {
+    std::string s = fmt::format("{} {}({}, uint frame) {{\n", result, name, parameters);
+    for (int slot = 0; slot < p.frameSize; ++slot) s += fmt::format("    double v{0} = frames[frame + {0}u];\n", slot);
+    s += fmt::format("    {}{}Body({}{});\n", result == "void" ? "" : result + " r = ", name, arguments, frameArguments(p));
+    for (int slot = 0; slot < p.frameSize; ++slot) s += fmt::format("    frames[frame + {0}u] = v{0};\n", slot);
+    if (result != "void") s += "    return r;\n";
+    return s + "}\n\n";
+}
+
+} // namespace
+
+void emitProduction(const ir::Grammar& g, size_t species, const ir::Production& p, RuleKind kind, size_t index,
+                    FrameStyle style, std::vector<ErrorSite>& errors, std::string& out) {
+    std::string name = functionName(species, kind, index);
+    out += fmt::format("// {}:{}: production {}\n", p.loc.file, p.loc.line, index + 1);
+    BodyEmitter body(g, species, errors, out);
+    const char* bases = "uint globalBase = plant * pc.globalCount;\n    uint arrayBase = plant * pc.arrayStride;";
+    const std::string testParameters =
+        "uint i, uint plant, uint key, uint pBegin, uint pEnd, int ctxLeft, uint ctxRight, inout uint draw";
+    if (style == FrameStyle::Fresh) {
+        out += fmt::format("bool {}({}, uint mode, uint outPos, uint origin, out uint outCount) {{\n", name, testParameters);
+        body.line("outCount = 0u;");
+        body.line(bases);
+        for (int slot = 0; slot < p.frameSize; ++slot) body.line(fmt::format("double v{} = 0.0LF;", slot));
+        emitMatch(body, g, species, p, kind);
+        body.line("if (mode == 0u) return true;");
+        emitChoice(body, p);
+        body.line("if (mode == 1u) return true;");
+        emitSuccessor(body, p);
+        body.line("return true;");
+        out += "}\n\n";
+        return;
+    }
+    out += fmt::format("bool {}TestBody({}{}) {{\n", name, testParameters, frameParameters(p));
+    body.line(bases);
+    emitMatch(body, g, species, p, kind);
+    body.line("return true;");
+    out += "}\n\n";
+    out += frameWrapper(p, "bool", name + "Test", testParameters, "i, plant, key, pBegin, pEnd, ctxLeft, ctxRight, draw");
+    const std::string produceParameters = "uint plant, uint key, inout uint draw, out uint outCount";
+    out += fmt::format("void {}ProduceBody({}{}) {{\n", name, produceParameters, frameParameters(p));
+    body.line("outCount = 0u;");
+    body.line(bases);
+    body.line("const uint outPos = 0u, origin = 0u;");
+    emitChoice(body, p);
+    emitSuccessor(body, p);
+    out += "}\n\n";
+    out += frameWrapper(p, "void", name + "Produce", produceParameters, "plant, key, draw, outCount");
+}
+
+std::string functionTableCode(const ir::Grammar& g, size_t species, std::vector<double>& tables) {
+    std::string code = fmt::format("double funcValue{}(double idValue, double x, uint errorSite) {{\n"
+                                   "    int id = int(idValue);\n", species);
+    code += "    uint offset = 0u; int samples = 0;\n";
+    for (size_t f = 0; f < g.functions.size(); ++f) {
+        code += fmt::format("    if (id == {}) {{ offset = {}u; samples = {}; }}\n", f + 1, tables.size(),
+                            g.functions[f].samples);
+        tables.insert(tables.end(), g.functions[f].table.begin(), g.functions[f].table.end());
+    }
+    code += "    if (samples == 0) { reportError(errorSite); return 0.0LF; }\n"
+            "    if (x < 0.0LF) x = 0.0LF;\n"
+            "    if (x > 1.0LF) x = 1.0LF;\n"
+            "    double index = x * double(samples - 1);\n"
+            "    int i = int(floor(index));\n"
+            "    double w2 = index - double(i), w1 = 1.0LF - w2;\n"
+            "    if (i >= samples - 1) return funcTables[offset + uint(samples - 1)];\n"
+            "    return w1 * funcTables[offset + uint(i)] + w2 * funcTables[offset + uint(i + 1)];\n"
+            "}\n\n";
+    return code;
+}
+
+
+std::string perSpecies(size_t count, const std::function<std::string(size_t)>& body) {
+    std::string code = "    switch (species) {\n";
+    for (size_t sp = 0; sp < count; ++sp) code += fmt::format("    case {}u: {{\n{}        break;\n    }}\n", sp, body(sp));
+    return code + "    }\n";
+}
+
+bool isStochastic(const ir::RuleSet& rules) {
+    return std::any_of(rules.productions.begin(), rules.productions.end(),
+                       [](const ir::Production& p) { return p.weight >= 0; });
+}
+
+GeneratedKernels speciesTraits(const std::vector<ir::Grammar>& species) {
+    GeneratedKernels k;
+    for (const ir::Grammar& g : species) {
+        if (!g.decomposition.productions.empty() && g.decomposition.maxDepth > 0) {
+            k.hasDecomposition = true;
+            k.maxDecompositionDepth = std::max(k.maxDecompositionDepth, g.decomposition.maxDepth);
+        }
+        for (const ir::RuleSet* rules : {&g.productions, &g.decomposition})
+            for (const ir::Production& p : rules->productions) {
+                if (!p.left.empty() || !p.right.empty()) k.needsBrackets = true;
+                for (const ir::Alternative& alt : p.alternatives)
+                    for (const ir::SuccessorModule& m : alt.modules)
+                        if (m.sym == ir::kCut) k.mayCut = true;
+            }
+        for (const ir::SuccessorModule& m : g.axiom)
+            if (m.sym == ir::kCut) k.mayCut = true;
+        for (const ir::Production& p : g.productions.productions)
+            k.longestPredecessor = std::max<uint32_t>(k.longestPredecessor, static_cast<uint32_t>(p.strict.size()));
+    }
+    if (k.mayCut) k.needsBrackets = true;
+    return k;
+}
+
+std::string kernelPrelude(size_t speciesCount) {
+    std::string s = "#version 460\n"
+                    "#extension GL_EXT_shader_explicit_arithmetic_types_float64 : require\n";
+    s += std::string(shaders::glslSource("shared/derive_layout.h"));
+    s += std::string(shaders::glslSource("shared/random.h"));
+    s += "layout(local_size_x = kDeriveWorkgroupSize) in;\n"
+         "layout(push_constant) uniform Push { DerivePush pc; };\n";
+    s += fmt::format("const uint kSpeciesCount = {}u; // plant p is of species p % kSpeciesCount\n", speciesCount);
+    return s;
+}
+
+} // namespace simeco::gpu::codegen

@@ -1,0 +1,57 @@
+// Productions as GLSL functions, shared by the kernel generators (derive_codegen.h).
+//
+// A production becomes straight-line code that walks its contexts, binds its parameters, runs its statements
+// and condition and writes its successor through emitModule/emitParam, which each kernel defines. Two styles:
+// the parallel passes give every application fresh locals, in one function run in three modes; the
+// sequential kernel keeps cpfg's one variable table per production (locals carry over between applications)
+// and splits testing from producing so that statements with side effects run once.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "gpu/derive_codegen.h"
+#include "ir/grammar.h"
+
+namespace simeco::gpu::codegen {
+
+enum class RuleKind { Step, Decomposition };
+
+enum class FrameStyle {
+    Fresh,      // `bool NAME(..., uint mode, uint outPos, uint origin, out uint outCount)`: mode 0 tests, 1 also
+                // runs the after-statements and sets outCount, 2 also writes the successor at outPos
+    Persistent, // `bool NAMETest(..., uint frame)` and `void NAMEProduce(..., uint frame, out uint outCount)`
+                // with the locals in frames[frame ...], the successor written at positions 0, 1, ...
+};
+
+// A double literal with every digit of the value.
+std::string literal(double v);
+
+std::string functionName(size_t species, RuleKind kind, size_t index);
+
+// Words of one species' row in the context filter buffer (derive_lib.glsl's skipped()).
+uint32_t skipWords(const ir::Grammar& g);
+
+// Production `index` of species `species`. Persistent frames live at frames[frameOffset + slot] of the plant's
+// frame block (`frame` argument). Error sites are appended to `errors`.
+void emitProduction(const ir::Grammar& g, size_t species, const ir::Production& p, RuleKind kind, size_t index,
+                    FrameStyle style, std::vector<ErrorSite>& errors, std::string& out);
+
+// `double funcValue<species>(id, x, errorSite)`: the species' func() tables, appended to `tables`.
+std::string functionTableCode(const ir::Grammar& g, size_t species, std::vector<double>& tables);
+
+// `switch (species)` with body(species) in each case.
+std::string perSpecies(size_t count, const std::function<std::string(size_t)>& body);
+
+bool isStochastic(const ir::RuleSet& rules);
+
+// What the kernels of these species need: brackets, cuts, decomposition depth, predecessor lengths.
+GeneratedKernels speciesTraits(const std::vector<ir::Grammar>& species);
+
+// The common start of every generated kernel: version, extensions, layouts, push constants, kSpeciesCount.
+std::string kernelPrelude(size_t speciesCount);
+
+} // namespace simeco::gpu::codegen

@@ -1,0 +1,14 @@
+// Comparing a derived string with the CPU reference's: the same modules, parameters within float rounding.
+#pragma once
+
+#include <string>
+
+#include "cpu/derive.h"
+
+namespace simeco::test {
+
+// Empty when `got` equals `want`; else the first differing module with what precedes it, and any difference
+// in module count, plant segments or steps.
+std::string firstDifference(const cpu::DeriveResult& want, const cpu::DeriveResult& got, const ir::Alphabet& alphabet);
+
+} // namespace simeco::test

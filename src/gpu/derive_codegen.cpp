@@ -20,45 +20,31 @@ using codegen::RuleKind;
 
 // The buffers of each kernel. Contexts always read the string being rewritten (symIn, parIn).
 std::string declarations(bool decomposition, bool write) {
-    std::string d;
-    int b = 0;
-    auto buffer = [&](const char* access, const char* type, const char* name) {
-        d += fmt::format("layout(set = 0, binding = {}, std430) {} buffer B{} {{ {} {}[]; }};\n", b++, access, name, type, name);
-    };
-    buffer("readonly", "uint", "symIn");
-    buffer("readonly", "float", "parIn");
-    buffer("readonly", "uint", "plantStart");
-    buffer("readonly", "int", "depthTree");
-    buffer("readonly", "uint", "levelInfo");
-    buffer("readonly", "double", "globals");
-    buffer("readonly", "double", "arrays");
-    buffer("readonly", "double", "funcTables");
-    buffer("readonly", "uint", "contextSkip");
-    buffer("", "uint", "errors");
-    buffer("readonly", "uint", "plantFrozen");
+    codegen::Bindings b;
+    b.addShared(false);
     if (decomposition) {
-        buffer("readonly", "uint", "symX");
-        buffer("readonly", "float", "parX");
-        buffer("readonly", "uint", "plantStartX");
-        buffer("readonly", "uint", "liveX");
-        buffer("readonly", "uint", "originX");
-        buffer("readonly", "uint", "examined");
+        b.add("readonly", "uint", "symX");
+        b.add("readonly", "float", "parX");
+        b.add("readonly", "uint", "plantStartX");
+        b.add("readonly", "uint", "liveX");
+        b.add("readonly", "uint", "originX");
+        b.add("readonly", "uint", "examined");
     }
     if (!write) {
-        buffer("writeonly", "uint", "counts");
-        buffer("writeonly", "uint", "choices");
-        buffer("writeonly", "uint", "drawStarts");
-        if (!decomposition) buffer("", "uint", "cutDelta");
+        b.add("writeonly", "uint", "counts");
+        b.add("writeonly", "uint", "choices");
+        b.add("writeonly", "uint", "drawStarts");
+        if (!decomposition) b.add("", "uint", "cutDelta");
     } else {
-        buffer("readonly", "uint", "offsets");
-        buffer("readonly", "uint", "choices");
-        buffer("readonly", "uint", "drawStarts");
-        buffer("writeonly", "uint", "symOut");
-        buffer("writeonly", "float", "parOut");
-        buffer("writeonly", "uint", "originOut");
-        buffer("writeonly", "uint", "liveOut");
+        b.add("readonly", "uint", "offsets");
+        b.add("readonly", "uint", "choices");
+        b.add("readonly", "uint", "drawStarts");
+        b.add("writeonly", "uint", "symOut");
+        b.add("writeonly", "float", "parOut");
+        b.add("writeonly", "uint", "originOut");
+        b.add("writeonly", "uint", "liveOut");
     }
-    return d;
+    return b.text();
 }
 
 // The selection among one symbol's productions, as the CPU reference does it: the first applicable in file

@@ -418,6 +418,11 @@ struct GpuDeriver::Impl {
 
     // ---- the sequential strategy ----
 
+    // The stack levels the deepest decomposition can use (one level per depth, and the last one's modules).
+    uint32_t deepestStack() const {
+        return kernels.hasDecomposition ? static_cast<uint32_t>(kernels.maxDecompositionDepth) + 1 : 1;
+    }
+
     // Sizes the decomposition stack for `levels` levels per plant.
     void ensureStack(uint32_t levels) {
         uint64_t modules = uint64_t(plants) * levels * kernels.stackWidth;
@@ -440,8 +445,7 @@ struct GpuDeriver::Impl {
         countsReadback = vk::Buffer(ctx, bytes(plants, 4), vk::MemoryUsage::Readback);
         resume = vk::Buffer(ctx, bytes(2ull * plants, 4), vk::MemoryUsage::DeviceLocal);
         ctx.submitAndWait([&](VkCommandBuffer cmd) { vk::cmdFill(cmd, frames, 0); });
-        int deepest = kernels.hasDecomposition ? kernels.maxDecompositionDepth + 1 : 1;
-        ensureStack(static_cast<uint32_t>(std::min(deepest, 16)));
+        ensureStack(std::min(deepestStack(), 16u));
     }
 
     // A pass of the sequential kernel: as many dispatches as the longest plant needs chunks.
@@ -481,7 +485,6 @@ struct GpuDeriver::Impl {
         ensureStream(out, 1); // bound (unused) while counting
         DerivePush p = push(n, stepIndex, seed, stepIndex * shared::kPassesPerStep, n, 0);
         p.moduleLimit = static_cast<uint32_t>(std::min<uint64_t>(budget, UINT32_MAX - 1));
-        int deepest = kernels.hasDecomposition ? kernels.maxDecompositionDepth + 1 : 1;
         for (;;) {
             submit(
                 [&](VkCommandBuffer cmd) {
@@ -510,8 +513,8 @@ struct GpuDeriver::Impl {
                 continue;
             }
             if (!(lastFlags & shared::kFlagStackFull)) break;
-            if (int(stackLevels) >= deepest) throw std::logic_error("decomposition stack full at the maximum depth");
-            ensureStack(static_cast<uint32_t>(std::min<int64_t>(int64_t(stackLevels) * 4, deepest)));
+            if (stackLevels >= deepestStack()) throw std::logic_error("decomposition stack full at the maximum depth");
+            ensureStack(std::min(stackLevels * 4, deepestStack()));
         }
         std::vector<uint32_t> table(plants + 1, 0);
         const uint32_t* counted = reinterpret_cast<const uint32_t*>(countsReadback.mapped());

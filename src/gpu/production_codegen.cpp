@@ -303,6 +303,26 @@ std::string literal(double v) {
 }
 
 
+void Bindings::add(const char* access, const char* type, const char* name) {
+    text_ += fmt::format("layout(set = 0, binding = {}, std430) {} buffer B{} {{ {} {}[]; }};\n", next_++, access, name,
+                         type, name);
+}
+
+void Bindings::addShared(bool stateWritable) {
+    const char* state = stateWritable ? "" : "readonly";
+    add("readonly", "uint", "symIn");
+    add("readonly", "float", "parIn");
+    add("readonly", "uint", "plantStart");
+    add("readonly", "int", "depthTree");
+    add("readonly", "uint", "levelInfo");
+    add(state, "double", "globals");
+    add(state, "double", "arrays");
+    add("readonly", "double", "funcTables");
+    add("readonly", "uint", "contextSkip");
+    add("", "uint", "errors");
+    add(state, "uint", "plantFrozen"); // the sequential kernel marks 2 when a production calls stop()
+}
+
 std::string functionName(size_t species, RuleKind kind, size_t index) {
     return fmt::format("s{}{}{}", species, kind == RuleKind::Step ? "step" : "decompose", index);
 }

@@ -27,6 +27,21 @@ enum class FrameStyle {
                 // with the locals in frames[frame ...], the successor written at positions 0, 1, ...
 };
 
+// The storage buffer declarations of a kernel, bound in the order they are added.
+class Bindings {
+public:
+    void add(const char* access, const char* type, const char* name);
+    // The first bindings of every derivation kernel: the string being rewritten, its brackets, the plants'
+    // state (written only by the sequential kernel), function tables, the context filter, the error word and
+    // the frozen plants.
+    void addShared(bool stateWritable);
+    const std::string& text() const { return text_; }
+
+private:
+    std::string text_;
+    int next_ = 0;
+};
+
 // A double literal with every digit of the value.
 std::string literal(double v);
 

@@ -22,33 +22,18 @@ using codegen::literal;
 using codegen::RuleKind;
 
 std::string declarations() {
-    std::string d;
-    int b = 0;
-    auto buffer = [&](const char* access, const char* type, const char* name) {
-        d += fmt::format("layout(set = 0, binding = {}, std430) {} buffer B{} {{ {} {}[]; }};\n", b++, access, name, type, name);
-    };
-    // The same first bindings as the parallel kernels, with the plants' state writable.
-    buffer("readonly", "uint", "symIn");
-    buffer("readonly", "float", "parIn");
-    buffer("readonly", "uint", "plantStart");
-    buffer("readonly", "int", "depthTree");
-    buffer("readonly", "uint", "levelInfo");
-    buffer("", "double", "globals");
-    buffer("", "double", "arrays");
-    buffer("readonly", "double", "funcTables");
-    buffer("readonly", "uint", "contextSkip");
-    buffer("", "uint", "errors");
-    buffer("", "uint", "plantFrozen"); // 2 once a production called stop()
-    buffer("", "double", "frames");    // the productions' persistent locals, kFrameSlots per plant
-    buffer("", "uint", "stackSym");    // the decomposition stack: pc.stackLevels * kStackWidth modules per plant
-    buffer("", "float", "stackPar");
-    buffer("", "uint", "stackState");  // per plant and level: modules, the next one; then the depth counters
-    buffer("writeonly", "uint", "plantCounts");
-    buffer("readonly", "uint", "outStart");
-    buffer("writeonly", "uint", "symOut");
-    buffer("writeonly", "float", "parOut");
-    buffer("", "uint", "resume");      // per plant: the next input module and output position between dispatches
-    return d;
+    codegen::Bindings b;
+    b.addShared(true);
+    b.add("", "double", "frames");    // the productions' persistent locals, kFrameSlots per plant
+    b.add("", "uint", "stackSym");    // the decomposition stack: pc.stackLevels * kStackWidth modules per plant
+    b.add("", "float", "stackPar");
+    b.add("", "uint", "stackState");  // per plant and level: modules, the next one; then the depth counters
+    b.add("writeonly", "uint", "plantCounts");
+    b.add("readonly", "uint", "outStart");
+    b.add("writeonly", "uint", "symOut");
+    b.add("writeonly", "float", "parOut");
+    b.add("", "uint", "resume");      // per plant: the next input module and output position between dispatches
+    return b.text();
 }
 
 // Where the productions write and how modules move between the string, the stack and the output.

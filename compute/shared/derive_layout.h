@@ -44,6 +44,12 @@ struct DerivePush {
     uint dispatch;     // sequential kernel: the dispatch's index in its pass (0 starts the plants)
 };
 
+// plantFrozen values: the host freezes a plant that stopped or finished its derivation length; a production
+// calling stop() asks for it to stop after the step.
+SIMECO_CONST kPlantGrowing = 0u;
+SIMECO_CONST kPlantFrozen = 1u;
+SIMECO_CONST kPlantStopRequested = 2u;
+
 // Flags the sequential kernel raises in errors[1].
 SIMECO_CONST kFlagStackFull = 1u;    // a plant's decomposition went deeper than its stack: retry with more levels
 SIMECO_CONST kFlagOverLimit = 2u;    // a plant counted more than moduleLimit modules

@@ -183,7 +183,7 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species) 
     };
     // A plant that stopped (stop(), or its species' derivation length reached) keeps its string.
     const std::string frozenCopy =
-        "    if (plantFrozen[plant] != 0u) { counts[i] = 1u; choices[i] = kChoiceCopy; drawStarts[i] = 0u; return; }\n";
+        "    if (plantFrozen[plant] == kPlantFrozen) { counts[i] = 1u; choices[i] = kChoiceCopy; drawStarts[i] = 0u; return; }\n";
 
     // ---- derivation step: match ----
     {

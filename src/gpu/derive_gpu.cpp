@@ -640,7 +640,7 @@ cpu::DeriveResult GpuDeriver::derive(const cpu::DeriveOptions& options, bool rea
                 std::copy(at, at + a.size(), a.begin());
                 at += a.size();
             }
-            if (fp[plant] == 2u) states[plant].stopRequested = true;
+            if (fp[plant] == shared::kPlantStopRequested) states[plant].stopRequested = true;
         }
     };
     // A plant freezes once it has derived its species' length, or after the step in which it called stop().
@@ -657,7 +657,7 @@ cpu::DeriveResult GpuDeriver::derive(const cpu::DeriveOptions& options, bool rea
                 std::copy(a.begin(), a.end(), ap + at);
                 at += a.size();
             }
-            fp[plant] = growing[plant] ? 0u : 1u;
+            fp[plant] = growing[plant] ? shared::kPlantGrowing : shared::kPlantFrozen;
         }
     };
 

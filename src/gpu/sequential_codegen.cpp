@@ -46,7 +46,8 @@ uint gStack;         // the plant's first module in the stack
 bool gAbort = false; // the stack is full or the plant outgrew the limit: stop, the host reacts
 
 uint currentPass() { return gPass; }
-void requestStop(uint plant) { if (pc.mode == 1u) plantFrozen[plant] = 2u; }
+// The plant stops after this step, as on the CPU: its remaining modules in this pass are still rewritten.
+void requestStop(uint plant) { if (pc.mode == 1u) plantFrozen[plant] = kPlantStopRequested; }
 double strictParam(uint i, uint k) { return double(stackPar[i * pc.stride + k]); }
 uint levelBase(uint level) { return gStack + level * kStackWidth; }
 
@@ -314,7 +315,7 @@ GeneratedKernels generateSequentialKernel(const std::vector<ir::Grammar>& specie
          "    uint stopAt = min(pEnd, i + pc.chunk);\n"
          "    gState = plant * 3u * pc.stackLevels;\n"
          "    gStack = plant * pc.stackLevels * kStackWidth;\n"
-         "    if (plantFrozen[plant] != 0u) {\n"
+         "    if (plantFrozen[plant] == kPlantFrozen) {\n"
          "        for (; i < stopAt; ++i) outputFromInput(i, next);\n"
          "    } else {\n"
          "        uint species = plant % kSpeciesCount;\n";

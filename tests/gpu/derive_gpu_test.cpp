@@ -299,10 +299,23 @@ void compareRandomGrammars(const vk::Context& context, std::uint64_t first, std:
     EXPECT_LE(skipped * 10, count) << "too many random grammars outgrow the module budget";
 }
 
-TEST_F(DeriveGpuTest, RandomGrammarsMatchTheCpu) {
-    compareRandomGrammars(context(), envOr("SIMECO_RANDOM_FIRST_SEED", 1), envOr("SIMECO_RANDOM_GRAMMARS", kRandomGrammars),
-                          gpu::GpuStrategy::Auto);
+// The random grammars in shards, so that each test stays well inside its time limit and ctest can run shards
+// side by side; SIMECO_RANDOM_FIRST_SEED and SIMECO_RANDOM_GRAMMARS choose the range they share.
+constexpr int kRandomShards = 5;
+
+class RandomGrammarShard : public GpuTest, public ::testing::WithParamInterface<int> {};
+
+TEST_P(RandomGrammarShard, MatchesTheCpu) {
+    std::uint64_t first = envOr("SIMECO_RANDOM_FIRST_SEED", 1);
+    std::uint64_t count = envOr("SIMECO_RANDOM_GRAMMARS", kRandomGrammars);
+    std::uint64_t perShard = (count + kRandomShards - 1) / kRandomShards;
+    std::uint64_t begin = std::min(count, perShard * static_cast<std::uint64_t>(GetParam()));
+    std::uint64_t end = std::min(count, begin + perShard);
+    if (begin == end) GTEST_SKIP() << "SIMECO_RANDOM_GRAMMARS=" << count << " leaves this shard empty";
+    compareRandomGrammars(context(), first + begin, end - begin, gpu::GpuStrategy::Auto);
 }
+
+INSTANTIATE_TEST_SUITE_P(RandomGrammars, RandomGrammarShard, ::testing::Range(0, kRandomShards));
 
 // The sequential strategy on random grammars too (fewer: one invocation per plant is slow on lavapipe;
 // SIMECO_RANDOM_SEQUENTIAL=500 runs more).

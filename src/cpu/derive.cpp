@@ -41,9 +41,9 @@ public:
         stride_ = std::max(g.maxParams(), 1);
         cur_.stride = next_.stride = stride_;
         index(g.productions, productionsBySymbol_);
-        index(g.decomposition, decompositionBySymbol_);
         makeFrames(g.productions, productionFrames_);
-        makeFrames(g.decomposition, decompositionFrames_);
+        decomposition_ = RecursiveRules(g.decomposition);
+        homomorphism_ = RecursiveRules(g.homomorphism);
         stochastic_ = std::any_of(g.productions.productions.begin(), g.productions.productions.end(),
                                   [](const ir::Production& p) { return p.weight >= 0; });
         if (auto eq = g.alphabet.find("=")) equalsSym_ = int64_t(*eq);
@@ -75,6 +75,23 @@ public:
         return done;
     }
 
+    // Replaces the derived string by its image under the homomorphism, the string the turtle interprets:
+    // every module rewritten recursively up to the homomorphism's maximum depth, contexts read in the derived
+    // string. A `%` it produces stays in the string (the turtle ignores it) rather than cutting.
+    void applyHomomorphism() {
+        if (g_.homomorphism.productions.empty()) return;
+        matchBrackets();
+        next_.clear();
+        depthCounter_.assign(1, 0);
+        for (size_t i = 0; i < cur_.size(); ++i) {
+            ModuleRef self{cur_.sym[i], cur_.paramsOf(i), cur_.paramCount[i]};
+            if (!rewriteRecursively(homomorphism_, homomorphismPass, self, 0, int64_t(i) - 1, i + 1))
+                next_.push(self.sym, self.params, self.count);
+            checkBudget(next_.size());
+        }
+        std::swap(cur_, next_);
+    }
+
     ModuleString& result() { return cur_; }
 
 private:
@@ -90,7 +107,7 @@ private:
     int stride_ = 1;
     ModuleString cur_, next_;
     std::vector<int64_t> match_; // the matching bracket of each bracket in cur_
-    std::vector<std::vector<uint32_t>> productionsBySymbol_, decompositionBySymbol_;
+    std::vector<std::vector<uint32_t>> productionsBySymbol_;
     bool stochastic_ = false;
     int64_t equalsSym_ = kNone;
     uint32_t percentSym_ = ir::kCut;
@@ -209,11 +226,24 @@ private:
 
     // cpfg keeps one variable table per production for the whole derivation: a local keeps the value of the
     // production's last application until it is assigned again.
-    std::vector<std::vector<double>> productionFrames_, decompositionFrames_;
+    std::vector<std::vector<double>> productionFrames_;
 
     static void makeFrames(const ir::RuleSet& rules, std::vector<std::vector<double>>& frames) {
         for (const ir::Production& p : rules.productions) frames.emplace_back(size_t(p.frameSize), 0.0);
     }
+
+    // Decomposition or homomorphism: rules applied to single modules, recursively up to a maximum depth.
+    struct RecursiveRules {
+        RecursiveRules() = default;
+        explicit RecursiveRules(const ir::RuleSet& r) : rules(&r) {
+            index(r, bySymbol);
+            makeFrames(r, frames);
+        }
+        const ir::RuleSet* rules = nullptr;
+        std::vector<std::vector<uint32_t>> bySymbol;
+        std::vector<std::vector<double>> frames;
+    };
+    RecursiveRules decomposition_, homomorphism_;
 
     // Tests production p with its strict predecessor bound by `bindStrict`; contexts around [left, right].
     template <typename BindStrict>
@@ -260,22 +290,23 @@ private:
         evaluator_.key.draw = 1; // draw 0 belongs to the choice among stochastic productions
     }
 
-    // Decomposes module m (depth-first, up to the maximum depth) into next_, with contexts taken around
-    // the predecessor in the current string. Returns false when no decomposition production applies at
-    // depth 0 (the caller then copies or cuts).
-    bool decompose(const ModuleRef& m, int depth, int64_t left, size_t right) {
-        const ir::RuleSet& rules = g_.decomposition;
+    // Rewrites module m with `set` (depth-first, up to the maximum depth) into next_, with contexts taken
+    // around the predecessor in the current string. Returns false when no rule applies at depth 0 (the
+    // caller then copies or cuts).
+    template <typename PassOfDepth>
+    bool rewriteRecursively(RecursiveRules& set, PassOfDepth passOfDepth, const ModuleRef& m, int depth,
+                            int64_t left, size_t right) {
+        const ir::RuleSet& rules = *set.rules;
         if (rules.productions.empty() || rules.maxDepth <= 0) return false;
         if (depthCounter_.size() <= size_t(depth)) depthCounter_.resize(size_t(depth) + 1, 0);
-        setKey(decompositionPass(step_, depth),
-               depthCounter_[size_t(depth)]++);
+        setKey(passOfDepth(step_, depth), depthCounter_[size_t(depth)]++);
         int64_t found = kNone;
         std::vector<uint32_t> candidates;
-        if (m.sym < decompositionBySymbol_.size()) {
-            for (uint32_t pi : decompositionBySymbol_[m.sym]) {
+        if (m.sym < set.bySymbol.size()) {
+            for (uint32_t pi : set.bySymbol[m.sym]) {
                 const ir::Production& p = rules.productions[pi];
                 if (p.strict.size() != 1 || p.strict[0].paramSlots.size() != m.count) continue;
-                std::vector<double>& frame = decompositionFrames_[pi];
+                std::vector<double>& frame = set.frames[pi];
                 bool ok = applicable(p, left, right, frame, [&](double* f) { bind(p.strict[0], m.params, f); });
                 if (!ok) continue;
                 if (p.weight < 0) {
@@ -299,10 +330,15 @@ private:
         }
         ModuleString produced;
         produced.stride = stride_;
-        produce(rules.productions[size_t(found)], decompositionFrames_[size_t(found)], produced);
+        produce(rules.productions[size_t(found)], set.frames[size_t(found)], produced);
         for (size_t k = 0; k < produced.size(); ++k)
-            decompose({produced.sym[k], produced.paramsOf(k), produced.paramCount[k]}, depth + 1, left, right);
+            rewriteRecursively(set, passOfDepth, {produced.sym[k], produced.paramsOf(k), produced.paramCount[k]},
+                               depth + 1, left, right);
         return true;
+    }
+
+    bool decompose(const ModuleRef& m, int depth, int64_t left, size_t right) {
+        return rewriteRecursively(decomposition_, decompositionPass, m, depth, left, right);
     }
 
     // Emits module m after trying decomposition on it.
@@ -405,6 +441,7 @@ DeriveResult deriveSpeciesCpu(const std::vector<ir::Grammar>& species, const Der
         const ir::Grammar& g = species[ir::speciesOfPlant(plant, species.size())];
         PlantDeriver deriver(g, plant, seed, budget - used);
         result.steps = std::max(result.steps, deriver.run(options.steps >= 0 ? options.steps : g.derivationLength));
+        if (options.homomorphism) deriver.applyHomomorphism();
         const ModuleString& s = deriver.result();
         used += s.size();
         ModuleString& out = result.string;

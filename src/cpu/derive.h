@@ -24,6 +24,7 @@ struct DeriveOptions {
     int64_t seed = -1;       // -1: the grammar's `seed:` (or 0)
     uint32_t plants = 1;     // independent copies, each with its own random stream
     uint64_t maxModules = 0; // 0: defaultModuleBudget
+    bool homomorphism = false; // return the string the turtle interprets: the result under the homomorphism
 };
 
 struct DeriveResult {
@@ -47,6 +48,11 @@ inline constexpr uint32_t kPassesPerStep = 1024;
 
 inline uint32_t decompositionPass(uint32_t step, int depth) {
     return step * kPassesPerStep + 1 + uint32_t(std::min(depth, int(kPassesPerStep) - 3));
+}
+
+// The homomorphism at depth d draws from pass 1 + d of step 0, which rewrites nothing.
+inline uint32_t homomorphismPass(uint32_t /*step*/, int depth) {
+    return decompositionPass(0, depth);
 }
 
 // Where the control blocks draw from: Start in pass 0; StartEach (module 0) and EndEach (module 1) of a step

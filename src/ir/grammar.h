@@ -5,6 +5,7 @@
 // the CPU reference engine runs it; the GPU back end compiles it.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -108,6 +109,19 @@ struct ViewSettings {
     float lineWidth = 1.0f;
     float widthIncrement = 1.0f;
     float colorIncrement = 1.0f;
+    float initialColor = 1.0f;
+    // Tropism: after each drawn segment the heading bends toward `tropismDirection` by elasticity * |H x T|.
+    std::array<float, 3> tropismDirection = {0.0f, -1.0f, 0.0f};
+    float initialElasticity = 0.0f;
+    float elasticityIncrement = 0.0f;
+    // `;` colour indices to linear RGB (a model's colour map); empty: simeco's default palette.
+    std::vector<std::array<float, 3>> palette;
+    // `~name` surfaces the view file names, with the file each was read from and its scale.
+    struct Surface {
+        std::string name, file;
+        float scale = 1.0f;
+    };
+    std::vector<Surface> surfaces;
     bool present = false;
 };
 

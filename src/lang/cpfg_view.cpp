@@ -1,5 +1,7 @@
 #include "lang/cpfg_view.h"
 
+#include <array>
+#include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <sstream>
@@ -81,6 +83,44 @@ void readFunctionSet(const std::string& path, CpfgView& out) {
         out.functions.push_back(std::move(f));
         if (!name.empty()) out.macros[name] = std::to_string(out.functions.size());
     }
+}
+
+std::string firstWord(const std::string& text) {
+    std::istringstream in(text);
+    std::string word;
+    in >> word;
+    return word;
+}
+
+// `x,y,z` or `x y z`.
+void readVector(std::string text, const std::string& file, size_t line, const char* what, std::array<float, 3>& v) {
+    for (char& c : text)
+        if (c == ',') c = ' ';
+    std::istringstream in(text);
+    std::array<float, 3> read{};
+    if (!(in >> read[0] >> read[1] >> read[2])) {
+        std::fprintf(stderr, "%s:%zu:1: warning: expected three numbers for %s; using the default\n", file.c_str(),
+                     line + 1, what);
+        return;
+    }
+    v = read;
+}
+
+// The newer form `tropism: T: x y z A: angle E: elasticity S: step`; simeco keeps one tropism.
+void readTropism(const std::string& text, const std::string& file, size_t line, ir::ViewSettings& view) {
+    // The text after `key` up to the next `X:` key.
+    auto after = [&](const char* key) -> std::string {
+        size_t at = text.find(key);
+        if (at == std::string::npos) return {};
+        size_t end = at + 2;
+        while (end < text.size() && !(std::isupper(static_cast<unsigned char>(text[end])) && end + 1 < text.size() &&
+                                      text[end + 1] == ':'))
+            ++end;
+        return text.substr(at + 2, end - at - 2);
+    };
+    if (std::string t = after("T:"); !t.empty()) readVector(t, file, line, "tropism direction", view.tropismDirection);
+    if (std::string e = after("E:"); !e.empty()) viewNumber(e, file, line, "tropism elasticity", view.initialElasticity);
+    if (std::string s = after("S:"); !s.empty()) viewNumber(s, file, line, "elasticity step", view.elasticityIncrement);
 }
 
 } // namespace
@@ -169,6 +209,22 @@ CpfgView readCpfgView(const std::string& path) {
             viewNumber(value, path, i, "line width increment", out.view.widthIncrement);
         } else if (field(line, "color increment", value)) {
             viewNumber(value, path, i, "color increment", out.view.colorIncrement);
+        } else if (field(line, "initial color", value)) {
+            viewNumber(firstWord(value), path, i, "initial color", out.view.initialColor);
+        } else if (field(line, "tropism direction", value)) {
+            readVector(value, path, i, "tropism direction", out.view.tropismDirection);
+        } else if (field(line, "initial elasticity", value)) {
+            viewNumber(value, path, i, "initial elasticity", out.view.initialElasticity);
+        } else if (field(line, "elasticity increment", value)) {
+            viewNumber(value, path, i, "elasticity increment", out.view.elasticityIncrement);
+        } else if (field(line, "tropism", value)) {
+            readTropism(value, path, i, out.view);
+        } else if (field(line, "surface", value)) {
+            std::istringstream in(value);
+            ir::ViewSettings::Surface surface;
+            in >> surface.name >> surface.file;
+            if (!(in >> surface.scale)) surface.scale = 1.0f;
+            if (!surface.name.empty()) out.view.surfaces.push_back(surface);
         }
     }
     return out;

@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "lang/color_map.h"
 #include "lang/cpfg_parser.h"
 #include "lang/cpfg_preprocessor.h"
 #include "lang/cpfg_view.h"
@@ -16,15 +17,19 @@ namespace simeco::lang {
 namespace fs = std::filesystem;
 
 std::string findViewFile(const std::string& lsystemPath) {
+    return findModelFile(lsystemPath, ".v");
+}
+
+std::string findModelFile(const std::string& lsystemPath, const std::string& extension) {
     fs::path path(lsystemPath);
-    fs::path sameName = path.parent_path() / (path.stem().string() + ".v");
+    fs::path sameName = path.parent_path() / (path.stem().string() + extension);
     std::error_code ec;
     if (fs::is_regular_file(sameName, ec)) return sameName.string();
     std::string only;
     fs::path dir = path.parent_path().empty() ? fs::path(".") : path.parent_path();
     for (const fs::directory_entry& entry : fs::directory_iterator(dir, ec)) {
-        if (entry.path().extension() != ".v") continue;
-        if (!only.empty()) return {}; // several view files: none is clearly this model's
+        if (entry.path().extension() != extension) continue;
+        if (!only.empty()) return {}; // several such files: none is clearly this model's
         only = entry.path().string();
     }
     return only;
@@ -47,6 +52,7 @@ ir::Grammar loadGrammarFile(const std::string& path) {
     ir::Grammar g = parseCpfg(preprocessFile(path, view.macros), std::move(view.functions));
     g.view = view.view;
     g.curves = std::move(view.curves);
+    if (std::string map = findModelFile(path, ".map"); !map.empty()) g.view.palette = readColorMap(map);
     return g;
 }
 

@@ -13,5 +13,7 @@ ir::Grammar loadGrammarFile(const std::string& path);
 
 // The cpfg view file that belongs to an `.l` file: `<name>.v` beside it, else the only `.v` there.
 std::string findViewFile(const std::string& lsystemPath);
+// A file of the model with that extension (".map"): `<name><extension>` beside it, else the only one there.
+std::string findModelFile(const std::string& lsystemPath, const std::string& extension);
 
 } // namespace simeco::lang

@@ -1,0 +1,72 @@
+// Organ instances: what turtle interpretation writes and the renderer draws, shared by C++ and GLSL.
+//
+// One instance per drawn organ (a stem segment, a sphere, a disc, a leaf, a polygon triangle). The turtle
+// kernels write them grouped by kind into one buffer: kind k occupies instances [first[k], first[k] + count[k])
+// as told by an OrganTable in a second buffer, so the renderer draws each kind with one indirect draw and the
+// host never reads the instances.
+#ifndef SIMECO_SHARED_ORGAN_LAYOUT_H
+#define SIMECO_SHARED_ORGAN_LAYOUT_H
+
+#ifdef __cplusplus
+#include <cstdint>
+namespace simeco::shared {
+using uint = uint32_t;
+struct vec4 {
+    float x, y, z, w;
+};
+#define SIMECO_CONST inline constexpr uint
+#else
+#define SIMECO_CONST const uint
+#endif
+
+// Organ kinds, each drawn with its own mesh.
+SIMECO_CONST kOrganStem = 0u;     // F/G segment: a (tapered) cylinder from position along heading, mitred at joints
+SIMECO_CONST kOrganSphere = 1u;   // @O: a sphere of diameter radiusBase * 2 centred on position
+SIMECO_CONST kOrganDisc = 2u;     // @c: a disc in the heading-left plane; @o: the same disc turned to the viewer
+SIMECO_CONST kOrganLeaf = 3u;     // ~name: a leaf blade along heading, in the heading-left plane (shape in `shape`)
+SIMECO_CONST kOrganTriangle = 4u; // one triangle of a filled polygon `{ ... }`; vertices in the three vectors
+SIMECO_CONST kOrganKinds = 5u;
+
+// Leaf blade shapes (OrganInstance.shape for kOrganLeaf), chosen from a surface's name.
+SIMECO_CONST kLeafLanceolate = 0u;
+SIMECO_CONST kLeafOvate = 1u;
+SIMECO_CONST kLeafCordate = 2u;
+SIMECO_CONST kLeafCompound = 3u;
+// OrganInstance.shape for kOrganDisc: faces the viewer (@o) rather than lying in the heading-left plane (@c).
+SIMECO_CONST kDiscFacesViewer = 1u;
+
+// A triangle stores its vertices in position.xyz, heading.xyz and up.xyz; the other kinds a frame.
+struct OrganInstance {
+    vec4 position; // xyz: base (stem, leaf) or centre (sphere, disc); w: length along heading (stem, leaf)
+    vec4 heading;  // xyz: unit heading H; w: radius at the base (stem), radius (sphere, disc), width (leaf)
+    vec4 up;       // xyz: unit up U (left is U x H); w: radius at the top (stem)
+    vec4 color;    // linear RGB and alpha
+    // Stem joints: the heading of the segment below (xyz, zero at a branch's first segment) and of the segment
+    // continuing this one (zero at a tip); the ends are cut on the bisecting planes, so a bent stem is closed.
+    vec4 previousHeading;
+    vec4 nextHeading;
+    uint plant;    // plant index in the field
+    uint kind;     // kOrgan*
+    uint shape;    // leaf shape, disc orientation
+    uint module;   // index of the interpreted module that drew it (the organ id in images)
+};
+
+// Per kind: instances written and where they start. Followed by the bounds of everything drawn, as
+// order-preserving integers of floats (see boundsKey in turtle kernels) so kernels can reduce them with atomics.
+struct OrganTable {
+    uint count[kOrganKinds];
+    uint first[kOrganKinds];
+    uint pad0;
+    uint pad1;
+    int boundsMin[4];
+    int boundsMax[4];
+};
+
+#ifdef __cplusplus
+static_assert(sizeof(OrganInstance) == 112);
+static_assert(sizeof(OrganTable) == 80);
+} // namespace simeco::shared
+#endif
+#undef SIMECO_CONST
+
+#endif

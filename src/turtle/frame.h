@@ -1,0 +1,84 @@
+// The turtle's orientation and the rotations every turtle command is made of, as the turtle kernels
+// compute them (compute/turtle/turtle_lib.glsl mirrors each function), so CPU and GPU agree closely.
+#pragma once
+
+#include <cmath>
+
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+
+namespace simeco::turtle {
+
+// Heading, left and up: a right-handed frame with up = heading x left. A new turtle points up the y axis
+// with left toward -x, as cpfg's does.
+struct Frame {
+    glm::vec3 heading{0, 1, 0};
+    glm::vec3 left{-1, 0, 0};
+    glm::vec3 up{0, 0, 1};
+};
+
+// Turns a toward b by `radians` in their common plane: a' = a cos + b sin, b' = b cos - a sin.
+inline void turnToward(glm::vec3& a, glm::vec3& b, float radians) {
+    float c = std::cos(radians), s = std::sin(radians);
+    glm::vec3 na = a * c + b * s;
+    glm::vec3 nb = b * c - a * s;
+    a = na;
+    b = nb;
+}
+
+// Rotates v about the unit axis by `radians` (Rodrigues).
+inline glm::vec3 rotateAbout(glm::vec3 v, glm::vec3 axis, float radians) {
+    float c = std::cos(radians), s = std::sin(radians);
+    return v * c + glm::cross(axis, v) * s + axis * (glm::dot(axis, v) * (1.0f - c));
+}
+
+inline void rotateFrame(Frame& f, glm::vec3 axis, float radians) {
+    f.heading = rotateAbout(f.heading, axis, radians);
+    f.left = rotateAbout(f.left, axis, radians);
+    f.up = rotateAbout(f.up, axis, radians);
+}
+
+// `$`: rolls about the heading so that left is horizontal and up is closest to the world's up (+y).
+inline void rollLevel(Frame& f) {
+    glm::vec3 l = glm::cross(glm::vec3(0, 1, 0), f.heading);
+    float n = glm::length(l);
+    if (n < 1e-6f) return; // heading vertical: every roll is level
+    f.left = l / n;
+    f.up = glm::cross(f.heading, f.left);
+}
+
+// Tropism after a drawn segment: the heading bends toward t by elasticity * |H x t| about H x t.
+inline void bend(Frame& f, glm::vec3 t, float elasticity) {
+    glm::vec3 axis = glm::cross(f.heading, t);
+    float n = glm::length(axis);
+    if (elasticity == 0.0f || n < 1e-6f) return;
+    rotateFrame(f, axis / n, elasticity * n);
+}
+
+// `@R`: heading set to h; without an up vector, the frame turns by the smallest rotation taking the old heading
+// to the new one.
+inline void setHeading(Frame& f, glm::vec3 h) {
+    float n = glm::length(h);
+    if (n < 1e-12f) return;
+    h /= n;
+    glm::vec3 axis = glm::cross(f.heading, h);
+    float s = glm::length(axis), c = glm::dot(f.heading, h);
+    if (s > 1e-6f) {
+        rotateFrame(f, axis / s, std::atan2(s, c));
+    } else if (c < 0) {
+        rotateFrame(f, f.up, 3.14159265358979f);
+    }
+    f.heading = h;
+}
+
+inline void setHeadingAndUp(Frame& f, glm::vec3 h, glm::vec3 u) {
+    if (glm::length(h) < 1e-12f || glm::length(u) < 1e-12f) return;
+    h = glm::normalize(h);
+    glm::vec3 l = glm::cross(u, h);
+    if (glm::length(l) < 1e-6f) return setHeading(f, h);
+    f.heading = h;
+    f.left = glm::normalize(l);
+    f.up = glm::cross(h, f.left);
+}
+
+} // namespace simeco::turtle

@@ -1,0 +1,52 @@
+// Turtle interpretation of a module stream into organ instances (shared/organ_layout.h), and the field the
+// plants stand in.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include <glm/common.hpp>
+#include <glm/vec3.hpp>
+
+#include "compute/shared/organ_layout.h"
+#include "cpu/module_string.h"
+#include "turtle/turtle_settings.h"
+
+namespace simeco::turtle {
+
+struct Bounds {
+    glm::vec3 min{1e30f}, max{-1e30f};
+    bool empty() const { return min.x > max.x; }
+    void add(glm::vec3 p, float radius = 0.0f) {
+        min = glm::min(min, p - radius);
+        max = glm::max(max, p + radius);
+    }
+    void add(const Bounds& b) {
+        if (b.empty()) return;
+        add(b.min);
+        add(b.max);
+    }
+};
+
+struct Interpretation {
+    std::vector<shared::OrganInstance> organs;         // grouped by kind, in module order within a kind
+    std::array<uint32_t, shared::kOrganKinds> count{}; // instances of each kind
+    std::array<uint32_t, shared::kOrganKinds> first{}; // where each kind starts
+    Bounds bounds;                                     // of everything drawn, in the field
+    std::vector<glm::vec3> plantOrigins;               // where each plant stands
+};
+
+// How plants stand: in rows and columns on the ground (y = 0), `spacing` apart; 0 spaces them by the widest
+// plant's horizontal extent (times 1.2), so that neighbours do not overlap.
+struct FieldOptions {
+    float spacing = 0.0f;
+};
+
+// The grid position of plant p of `plants` in units of spacing: centred on the origin, x across, z along.
+glm::vec3 fieldCell(uint32_t plant, uint32_t plants);
+
+// The spacing FieldOptions asks for, given each plant's own bounds (drawn at the origin).
+float fieldSpacing(const FieldOptions& options, const std::vector<Bounds>& plantBounds);
+
+} // namespace simeco::turtle

@@ -1,0 +1,330 @@
+#include "turtle/turtle_cpu.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+#include "compute/shared/turtle_layout.h"
+#include "turtle/frame.h"
+#include "turtle/turtle_commands.h"
+
+namespace simeco::turtle {
+
+using namespace shared;
+
+namespace {
+
+constexpr float kDegrees = 3.14159265358979f / 180.0f;
+
+struct TurtleState {
+    Frame frame;
+    glm::vec3 position{0.0f};
+    float width = 1.0f;
+    float color = 1.0f;
+    float scale = 1.0f;
+    float elasticity = 0.0f;
+    // The last stem segment this branch drew, while the next one continues it (no move or branch between).
+    int64_t lastStem = -1;
+    // The generalized cylinder's last control point, when one is open.
+    bool cylinderOpen = false;
+    glm::vec3 anchor{0.0f};
+    float anchorWidth = 0.0f;
+    int64_t lastTube = -1;
+};
+
+shared::vec4 v4(glm::vec3 v, float w) { return {v.x, v.y, v.z, w}; }
+glm::vec3 v3(const shared::vec4& v) { return {v.x, v.y, v.z}; }
+
+// An up vector for a segment along `heading`: the turtle's up with its heading component removed.
+glm::vec3 perpendicularUp(glm::vec3 heading, const Frame& f) {
+    glm::vec3 u = f.up - heading * glm::dot(f.up, heading);
+    if (glm::length(u) < 1e-6f) u = f.left - heading * glm::dot(f.left, heading);
+    return glm::normalize(u);
+}
+
+// Walks one plant's modules [begin, end) and calls visit(i, state before, state after) for each; organs go
+// to `organs` (plant-local positions).
+class PlantTurtle {
+public:
+    PlantTurtle(const cpu::ModuleString& s, const TurtleCommands& commands, const TurtleSettings& t,
+                uint32_t plant, std::vector<OrganInstance>& organs)
+        : s_(s), commands_(commands), t_(t), plant_(plant), organs_(organs) {}
+
+    template <typename Visit>
+    void walk(size_t begin, size_t end, Visit visit) {
+        TurtleState state;
+        state.width = t_.width;
+        state.color = t_.initialColor;
+        state.elasticity = t_.elasticity;
+        std::vector<TurtleState> stack;
+        for (size_t i = begin; i < end; ++i) {
+            uint32_t command = commands_.commandAt(s_, begin, end, i);
+            TurtleState before = state;
+            if (command == kTurtleBranchOpen) {
+                stack.push_back(state);
+                state.lastStem = -1;
+                state.lastTube = -1;
+            } else if (command == kTurtleBranchClose) {
+                if (!stack.empty()) {
+                    state = stack.back();
+                    stack.pop_back();
+                }
+            } else {
+                apply(state, command, i);
+            }
+            visit(i, command, before, state);
+        }
+    }
+
+private:
+    const cpu::ModuleString& s_;
+    const TurtleCommands& commands_;
+    const TurtleSettings& t_;
+    uint32_t plant_;
+    std::vector<OrganInstance>& organs_;
+    std::vector<std::vector<glm::vec3>> polygons_;
+
+    float param(size_t i, size_t k, float otherwise) const {
+        return s_.paramCount[i] > k ? s_.paramsOf(i)[k] : otherwise;
+    }
+    bool hasParam(size_t i) const { return s_.paramCount[i] > 0; }
+    float angle(size_t i) const { return param(i, 0, t_.angleDegrees) * kDegrees; }
+
+    OrganInstance& emit(uint32_t kind, size_t module, const TurtleState& st) {
+        OrganInstance o{};
+        o.kind = kind;
+        o.plant = plant_;
+        o.module = uint32_t(module);
+        glm::vec4 c = t_.color(st.color);
+        o.color = {c.r, c.g, c.b, c.a};
+        organs_.push_back(o);
+        return organs_.back();
+    }
+
+    void polygonVertex(size_t module, const TurtleState& st) {
+        std::vector<glm::vec3>& polygon = polygons_.back();
+        polygon.push_back(st.position);
+        if (polygon.size() < 3) return;
+        OrganInstance& o = emit(kOrganTriangle, module, st);
+        o.position = v4(polygon.front(), 0);
+        o.heading = v4(polygon[polygon.size() - 2], 0);
+        o.up = v4(polygon.back(), 0);
+    }
+
+    void drawStem(TurtleState& st, size_t module, float length) {
+        float radius = 0.5f * st.width * st.scale;
+        OrganInstance& o = emit(kOrganStem, module, st);
+        o.position = v4(st.position, length);
+        o.heading = v4(st.frame.heading, radius);
+        o.up = v4(st.frame.up, radius);
+        int64_t index = int64_t(organs_.size()) - 1;
+        if (st.lastStem >= 0) {
+            o.previousHeading = v4(v3(organs_[size_t(st.lastStem)].heading), 0);
+            organs_[size_t(st.lastStem)].nextHeading = v4(st.frame.heading, 0);
+        }
+        st.lastStem = index;
+    }
+
+    void cylinderPoint(TurtleState& st, size_t module) {
+        if (!st.cylinderOpen) return;
+        glm::vec3 d = st.position - st.anchor;
+        float length = glm::length(d);
+        if (length > 1e-6f) {
+            glm::vec3 heading = d / length;
+            OrganInstance& o = emit(kOrganStem, module, st);
+            o.position = v4(st.anchor, length);
+            o.heading = v4(heading, 0.5f * st.anchorWidth * st.scale);
+            o.up = v4(perpendicularUp(heading, st.frame), 0.5f * st.width * st.scale);
+            int64_t index = int64_t(organs_.size()) - 1;
+            if (st.lastTube >= 0) {
+                o.previousHeading = v4(v3(organs_[size_t(st.lastTube)].heading), 0);
+                organs_[size_t(st.lastTube)].nextHeading = v4(heading, 0);
+            }
+            st.lastTube = index;
+        }
+        st.anchor = st.position;
+        st.anchorWidth = st.width;
+    }
+
+    void move(TurtleState& st, size_t i, bool draw) {
+        float length = param(i, 0, t_.step) * st.scale;
+        if (draw && polygons_.empty()) drawStem(st, i, length);
+        if (!draw) st.lastStem = -1;
+        st.position += st.frame.heading * length;
+        if (draw) bend(st.frame, t_.tropism, st.elasticity);
+        if (!polygons_.empty()) polygonVertex(i, st);
+    }
+
+    void apply(TurtleState& st, uint32_t command, size_t i) {
+        Frame& f = st.frame;
+        switch (command) {
+        case kTurtleDraw: move(st, i, true); break;
+        case kTurtleMove: move(st, i, false); break;
+        case kTurtleTurnLeft: turnToward(f.heading, f.left, angle(i)); break;
+        case kTurtleTurnRight: turnToward(f.heading, f.left, -angle(i)); break;
+        case kTurtlePitchDown: turnToward(f.heading, f.up, -angle(i)); break;
+        case kTurtlePitchUp: turnToward(f.heading, f.up, angle(i)); break;
+        case kTurtleRollLeft: turnToward(f.up, f.left, angle(i)); break;
+        case kTurtleRollRight: turnToward(f.up, f.left, -angle(i)); break;
+        case kTurtleTurnAround:
+            f.heading = -f.heading;
+            f.left = -f.left;
+            break;
+        case kTurtleRollLevel: rollLevel(f); break;
+        case kTurtlePitchRadians: turnToward(f.heading, f.up, -param(i, 0, 0)); break;
+        case kTurtleRollRadians: turnToward(f.up, f.left, param(i, 0, 0)); break;
+        case kTurtleRotateWorldX: rotateFrame(f, {1, 0, 0}, param(i, 0, 0)); break;
+        case kTurtleRotateWorldY: rotateFrame(f, {0, 1, 0}, param(i, 0, 0)); break;
+        case kTurtleRotateWorldZ: rotateFrame(f, {0, 0, 1}, param(i, 0, 0)); break;
+        case kTurtleWidthUp: st.width = hasParam(i) ? param(i, 0, 0) : st.width + t_.widthIncrement; break;
+        case kTurtleWidthDown: st.width = hasParam(i) ? param(i, 0, 0) : st.width - t_.widthIncrement; break;
+        case kTurtleColorUp: st.color = hasParam(i) ? param(i, 0, 0) : st.color + t_.colorIncrement; break;
+        case kTurtleColorDown: st.color = hasParam(i) ? param(i, 0, 0) : st.color - t_.colorIncrement; break;
+        case kTurtleScaleSet: st.scale = param(i, 0, st.scale); break;
+        case kTurtleScaleUp: st.scale *= param(i, 0, 1.0f); break;
+        case kTurtleScaleDown: st.scale /= (param(i, 0, 1.0f) != 0.0f ? param(i, 0, 1.0f) : 1.0f); break;
+        case kTurtleElasticitySet: st.elasticity = param(i, 1, st.elasticity); break;
+        case kTurtleElasticityUp: st.elasticity += param(i, 1, t_.elasticityIncrement); break;
+        case kTurtleElasticityDown: st.elasticity -= param(i, 1, t_.elasticityIncrement); break;
+        case kTurtleSetPosition:
+            st.position = {param(i, 0, st.position.x), param(i, 1, st.position.y), param(i, 2, st.position.z)};
+            st.lastStem = -1;
+            break;
+        case kTurtleSetHeading:
+            if (s_.paramCount[i] >= 6)
+                setHeadingAndUp(f, {param(i, 0, 0), param(i, 1, 0), param(i, 2, 0)},
+                                {param(i, 3, 0), param(i, 4, 0), param(i, 5, 0)});
+            else if (s_.paramCount[i] >= 3)
+                setHeading(f, {param(i, 0, 0), param(i, 1, 0), param(i, 2, 0)});
+            break;
+        case kTurtleSphere:
+        case kTurtleDisc:
+        case kTurtleDiscFacing: {
+            float radius = 0.5f * param(i, 0, st.width) * st.scale;
+            uint32_t kind = command == kTurtleSphere ? kOrganSphere : kOrganDisc;
+            OrganInstance& o = emit(kind, i, st);
+            o.position = v4(st.position, 0);
+            o.heading = v4(f.heading, radius);
+            o.up = v4(f.up, radius);
+            o.shape = command == kTurtleDiscFacing ? kDiscFacesViewer : 0u;
+            break;
+        }
+        case kTurtleSurface: {
+            float length = t_.surfaceScale[s_.sym[i]] * param(i, 0, 1.0f) * st.scale;
+            OrganInstance& o = emit(kOrganLeaf, i, st);
+            o.position = v4(st.position, length);
+            o.heading = v4(f.heading, length);
+            o.up = v4(f.up, 0);
+            o.shape = t_.surfaceShape[s_.sym[i]];
+            break;
+        }
+        case kTurtlePolygonBegin: // `{(type)` starts a generalized cylinder, `{` a polygon
+            if (hasParam(i)) apply(st, kTurtleCylinderStart, i);
+            else polygons_.emplace_back();
+            break;
+        case kTurtlePolygonEnd:
+            if (hasParam(i)) apply(st, kTurtleCylinderPoint, i);
+            else if (!polygons_.empty()) polygons_.pop_back();
+            break;
+        case kTurtlePolygonVertex:
+            if (!polygons_.empty()) polygonVertex(i, st);
+            break;
+        case kTurtleCylinderStart:
+            st.cylinderOpen = true;
+            st.anchor = st.position;
+            st.anchorWidth = st.width;
+            st.lastTube = -1;
+            break;
+        case kTurtleCylinderPoint: cylinderPoint(st, i); break;
+        default: break;
+        }
+    }
+};
+
+Bounds organBounds(const OrganInstance& o) {
+    Bounds b;
+    glm::vec3 p = v3(o.position), h = v3(o.heading);
+    switch (o.kind) {
+    case kOrganStem: {
+        float r = std::max(o.heading.w, o.up.w);
+        b.add(p, r);
+        b.add(p + h * o.position.w, r);
+        break;
+    }
+    case kOrganLeaf:
+        b.add(p, 0.5f * o.heading.w);
+        b.add(p + h * o.position.w, 0.5f * o.heading.w);
+        break;
+    case kOrganTriangle:
+        b.add(p);
+        b.add(h);
+        b.add(v3(o.up));
+        break;
+    default: b.add(p, o.heading.w); break;
+    }
+    return b;
+}
+
+void translate(OrganInstance& o, glm::vec3 d) {
+    o.position.x += d.x, o.position.y += d.y, o.position.z += d.z;
+    if (o.kind == kOrganTriangle) {
+        o.heading.x += d.x, o.heading.y += d.y, o.heading.z += d.z;
+        o.up.x += d.x, o.up.y += d.y, o.up.z += d.z;
+    }
+}
+
+} // namespace
+
+Interpretation interpretCpu(const cpu::ModuleString& string, const TurtleCommands& commands,
+                            const std::vector<TurtleSettings>& species, const FieldOptions& field) {
+    Interpretation result;
+    uint32_t plants = uint32_t(string.plants());
+    std::vector<std::vector<OrganInstance>> perPlant(plants);
+    std::vector<Bounds> plantBounds(plants);
+    for (uint32_t p = 0; p < plants; ++p) {
+        PlantTurtle turtle(string, commands, species[p % species.size()], p, perPlant[p]);
+        turtle.walk(string.plantStart[p], string.plantStart[p + 1], [](size_t, uint32_t, const TurtleState&, const TurtleState&) {});
+        for (const OrganInstance& o : perPlant[p]) plantBounds[p].add(organBounds(o));
+    }
+    float spacing = fieldSpacing(field, plantBounds);
+    for (uint32_t p = 0; p < plants; ++p) {
+        glm::vec3 origin = fieldCell(p, plants) * spacing;
+        result.plantOrigins.push_back(origin);
+        for (OrganInstance& o : perPlant[p]) {
+            translate(o, origin);
+            result.bounds.add(organBounds(o));
+            ++result.count[o.kind];
+        }
+    }
+    for (uint32_t k = 1; k < kOrganKinds; ++k) result.first[k] = result.first[k - 1] + result.count[k - 1];
+    result.organs.resize(result.first[kOrganKinds - 1] + result.count[kOrganKinds - 1]);
+    // Plants in order, and each plant's organs in module order: within a kind, instances follow the string.
+    std::array<uint32_t, kOrganKinds> next = result.first;
+    for (uint32_t p = 0; p < plants; ++p)
+        for (const OrganInstance& o : perPlant[p]) result.organs[next[o.kind]++] = o;
+    return result;
+}
+
+void fillQueries(cpu::ModuleString& string, const TurtleCommands& commands, const std::vector<TurtleSettings>& species) {
+    std::vector<OrganInstance> unused;
+    for (uint32_t p = 0; p < string.plants(); ++p) {
+        PlantTurtle turtle(string, commands, species[p % species.size()], p, unused);
+        turtle.walk(string.plantStart[p], string.plantStart[p + 1],
+                    [&](size_t i, uint32_t command, const TurtleState&, const TurtleState& st) {
+                        glm::vec3 v;
+                        switch (command) {
+                        case kTurtleQueryPosition: v = st.position; break;
+                        case kTurtleQueryHeading: v = st.frame.heading; break;
+                        case kTurtleQueryLeft: v = st.frame.left; break;
+                        case kTurtleQueryUp: v = st.frame.up; break;
+                        default: return;
+                        }
+                        float* params = string.params.data() + i * size_t(string.stride);
+                        for (size_t k = 0; k < std::min<size_t>(string.paramCount[i], 3); ++k) params[k] = v[int(k)];
+                    });
+        unused.clear();
+    }
+}
+
+} // namespace simeco::turtle

@@ -1,0 +1,100 @@
+#include "turtle/turtle_settings.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+#include "compute/shared/organ_layout.h"
+
+namespace simeco::turtle {
+
+namespace {
+
+std::string lower(std::string s) {
+    for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return s;
+}
+
+bool mentions(const std::string& text, std::initializer_list<const char*> words) {
+    return std::any_of(words.begin(), words.end(), [&](const char* w) { return text.find(w) != std::string::npos; });
+}
+
+} // namespace
+
+glm::vec4 TurtleSettings::color(float index) const {
+    long i = std::lround(index);
+    i = std::clamp<long>(i, 0, long(palette.size()) - 1);
+    return palette[size_t(i)];
+}
+
+std::vector<glm::vec4> defaultPalette() {
+    std::vector<glm::vec4> p(kPaletteSize);
+    const glm::vec4 named[] = {
+        {0.00f, 0.00f, 0.00f, 1}, // 0 black
+        {0.20f, 0.11f, 0.05f, 1}, // 1 bark
+        {0.09f, 0.30f, 0.05f, 1}, // 2 leaf green
+        {0.04f, 0.16f, 0.03f, 1}, // 3 dark green
+        {0.80f, 0.62f, 0.05f, 1}, // 4 yellow
+        {0.60f, 0.04f, 0.05f, 1}, // 5 red
+        {0.85f, 0.85f, 0.80f, 1}, // 6 white
+        {0.35f, 0.10f, 0.45f, 1}, // 7 purple
+        {0.85f, 0.30f, 0.45f, 1}, // 8 pink
+        {0.25f, 0.45f, 0.08f, 1}, // 9 light green
+    };
+    std::copy(std::begin(named), std::end(named), p.begin());
+    for (size_t i = std::size(named); i < p.size(); ++i) {
+        // A hue ramp, so neighbouring indices stay distinguishable.
+        float h = float(i) * 0.618034f;
+        h -= std::floor(h);
+        glm::vec3 rgb = glm::clamp(glm::abs(glm::mod(h * 6.0f + glm::vec3(0, 4, 2), 6.0f) - 3.0f) - 1.0f, 0.0f, 1.0f);
+        p[i] = glm::vec4(rgb * rgb * 0.6f + 0.05f, 1.0f);
+    }
+    return p;
+}
+
+uint32_t leafShapeOf(const std::string& name) {
+    std::string n = lower(name);
+    if (mentions(n, {"cord", "heart", "oxalis", "clover"})) return shared::kLeafCordate;
+    if (mentions(n, {"lanc", "grass", "narrow", "needle", "blade"})) return shared::kLeafLanceolate;
+    if (mentions(n, {"comp", "pinna", "fern", "rosa"})) return shared::kLeafCompound;
+    return shared::kLeafOvate;
+}
+
+TurtleSettings turtleSettings(const ir::Grammar& grammar, const ir::Alphabet& alphabet) {
+    const ir::ViewSettings& v = grammar.view;
+    TurtleSettings t;
+    t.angleDegrees = v.angleIncrement;
+    t.step = v.stepSize;
+    t.width = v.lineWidth;
+    t.widthIncrement = v.widthIncrement;
+    t.colorIncrement = v.colorIncrement;
+    t.initialColor = v.initialColor;
+    glm::vec3 tropism(v.tropismDirection[0], v.tropismDirection[1], v.tropismDirection[2]);
+    t.tropism = glm::length(tropism) > 0 ? glm::normalize(tropism) : glm::vec3(0, -1, 0);
+    t.elasticity = v.initialElasticity;
+    t.elasticityIncrement = v.elasticityIncrement;
+    if (v.palette.empty()) {
+        t.palette = defaultPalette();
+    } else {
+        t.palette.assign(kPaletteSize, glm::vec4(0, 0, 0, 1));
+        for (size_t i = 0; i < std::min(kPaletteSize, v.palette.size()); ++i)
+            t.palette[i] = glm::vec4(v.palette[i][0], v.palette[i][1], v.palette[i][2], 1.0f);
+    }
+    // Any symbol can follow `~` as a surface id: scale 1 and a shape from its name unless the view names it.
+    t.surfaceScale.assign(alphabet.size(), 1.0f);
+    t.surfaceShape.assign(alphabet.size(), shared::kLeafOvate);
+    for (size_t s = 0; s < alphabet.size(); ++s) {
+        const std::string& id = alphabet.name(ir::SymbolId(s));
+        t.surfaceShape[s] = leafShapeOf(id);
+        for (const ir::ViewSettings::Surface& surface : v.surfaces) {
+            if (surface.name != id) continue;
+            t.surfaceScale[s] = surface.scale;
+            t.surfaceShape[s] = leafShapeOf(surface.file + " " + id);
+        }
+    }
+    return t;
+}
+
+} // namespace simeco::turtle

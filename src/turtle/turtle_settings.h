@@ -1,0 +1,46 @@
+// The turtle's settings for one species, resolved from its grammar's view settings: defaults filled in, the
+// colour palette complete, and every symbol that may name a `~` surface given a scale and a leaf shape.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include "ir/grammar.h"
+
+namespace simeco::turtle {
+
+inline constexpr size_t kPaletteSize = 256;
+
+struct TurtleSettings {
+    float angleDegrees = 45.0f;
+    float step = 1.0f;
+    float width = 1.0f;
+    float widthIncrement = 1.0f;
+    float colorIncrement = 1.0f;
+    float initialColor = 1.0f;
+    glm::vec3 tropism{0.0f, -1.0f, 0.0f}; // unit
+    float elasticity = 0.0f;
+    float elasticityIncrement = 0.0f;
+    std::vector<glm::vec4> palette;       // kPaletteSize linear RGBA colours
+    // Per symbol id, for `~` and that symbol: the surface's scale and leaf shape (kLeaf*).
+    std::vector<float> surfaceScale;
+    std::vector<uint32_t> surfaceShape;
+
+    glm::vec4 color(float index) const;
+};
+
+// `grammar` supplies the view settings; `alphabet` the symbols (the species' shared alphabet).
+TurtleSettings turtleSettings(const ir::Grammar& grammar, const ir::Alphabet& alphabet);
+
+// simeco's palette for models without a colour map: 0 black, then bark, greens, flower and fruit colours,
+// then a ramp of hues.
+std::vector<glm::vec4> defaultPalette();
+
+// A leaf shape from a surface's name or file name: cordate, lanceolate, compound, else ovate.
+uint32_t leafShapeOf(const std::string& name);
+
+} // namespace simeco::turtle

@@ -1,0 +1,108 @@
+// The reference turtle, case by case, with geometry worked out by hand.
+#include <gtest/gtest.h>
+
+#include "compute/shared/organ_layout.h"
+#include "grammar_text.h"
+#include "turtle/turtle_commands.h"
+#include "turtle/turtle_cpu.h"
+
+namespace {
+
+using namespace simeco;
+using simeco::testing::grammarFromText;
+using simeco::testing::lsystem;
+
+turtle::Interpretation interpret(const std::string& text, uint32_t plants = 1) {
+    ir::Grammar g = grammarFromText(text);
+    cpu::DeriveOptions options;
+    options.plants = plants;
+    options.homomorphism = true;
+    cpu::DeriveResult r = cpu::deriveCpu(g, options);
+    return turtle::interpretCpu(r.string, turtle::turtleCommands(g.alphabet), {turtle::turtleSettings(g, g.alphabet)});
+}
+
+glm::vec3 xyz(const shared::vec4& v) { return {v.x, v.y, v.z}; }
+
+void expectNear(glm::vec3 got, glm::vec3 want) {
+    EXPECT_NEAR(got.x, want.x, 1e-5f);
+    EXPECT_NEAR(got.y, want.y, 1e-5f);
+    EXPECT_NEAR(got.z, want.z, 1e-5f);
+}
+
+TEST(TurtleCpu, TurnsLeftTowardMinusXAndJoinsSegments) {
+    turtle::Interpretation r = interpret(lsystem("F+(90)F(2)", "", 0));
+    ASSERT_EQ(r.count[shared::kOrganStem], 2u);
+    const shared::OrganInstance& a = r.organs[0];
+    const shared::OrganInstance& b = r.organs[1];
+    expectNear(xyz(a.position), {0, 0, 0});
+    expectNear(xyz(a.heading), {0, 1, 0});
+    EXPECT_FLOAT_EQ(a.position.w, 1.0f);
+    expectNear(xyz(b.position), {0, 1, 0});
+    expectNear(xyz(b.heading), {-1, 0, 0});
+    EXPECT_FLOAT_EQ(b.position.w, 2.0f);
+    // The joint: each segment knows the other's heading; the ends of the string have none.
+    expectNear(xyz(a.nextHeading), {-1, 0, 0});
+    expectNear(xyz(b.previousHeading), {0, 1, 0});
+    expectNear(xyz(a.previousHeading), {0, 0, 0});
+    expectNear(xyz(b.nextHeading), {0, 0, 0});
+    expectNear(r.bounds.max, {0.5f, 1.5f, 0.5f});
+    expectNear(r.bounds.min, {-2.5f, -0.5f, -0.5f});
+}
+
+TEST(TurtleCpu, BranchesRestoreTheStateAndDoNotContinueTheParent) {
+    turtle::Interpretation r = interpret(lsystem("F[&(90)F]#(3)F", "", 0));
+    ASSERT_EQ(r.count[shared::kOrganStem], 3u);
+    expectNear(xyz(r.organs[1].position), {0, 1, 0});
+    expectNear(xyz(r.organs[1].heading), {0, 0, -1}); // pitch down: heading toward -up
+    expectNear(xyz(r.organs[1].previousHeading), {0, 0, 0});
+    expectNear(xyz(r.organs[2].position), {0, 1, 0});
+    expectNear(xyz(r.organs[2].heading), {0, 1, 0});
+    EXPECT_FLOAT_EQ(r.organs[2].heading.w, 1.5f); // width 3: radius 1.5
+    expectNear(xyz(r.organs[0].nextHeading), {0, 1, 0});
+}
+
+TEST(TurtleCpu, CpfgMultiModuleCommandsAndHomomorphism) {
+    // `@O(2)` is `@` then `O(2)`; the homomorphism draws A as a sphere on a segment.
+    turtle::Interpretation r = interpret(lsystem("A", "homomorphism\nA --> F(3);(5)@O(2)", 0));
+    ASSERT_EQ(r.count[shared::kOrganStem], 1u);
+    ASSERT_EQ(r.count[shared::kOrganSphere], 1u);
+    const shared::OrganInstance& s = r.organs[r.first[shared::kOrganSphere]];
+    expectNear(xyz(s.position), {0, 3, 0});
+    EXPECT_FLOAT_EQ(s.heading.w, 1.0f);
+    glm::vec4 red = turtle::defaultPalette()[5];
+    EXPECT_FLOAT_EQ(s.color.x, red.r);
+}
+
+TEST(TurtleCpu, PolygonsBecomeTriangleFans) {
+    turtle::Interpretation r = interpret(lsystem("{.f+(90)f+(90)f}", "", 0));
+    ASSERT_EQ(r.count[shared::kOrganTriangle], 2u);
+    EXPECT_EQ(r.count[shared::kOrganStem], 0u);
+    const shared::OrganInstance& t = r.organs[r.first[shared::kOrganTriangle] + 1];
+    expectNear(xyz(t.position), {0, 0, 0});
+    expectNear(xyz(t.heading), {-1, 1, 0});
+    expectNear(xyz(t.up), {-1, 0, 0});
+}
+
+TEST(TurtleCpu, PlantsStandInAGridSpacedByTheWidestPlant) {
+    turtle::Interpretation r = interpret(lsystem("+(90)F(4)", "", 0), 4);
+    ASSERT_EQ(r.plantOrigins.size(), 4u);
+    // Each plant is 4 wide (plus its radius 0.5 on either side): spacing 1.2 * 5.
+    expectNear(r.plantOrigins[0], {-3, 0, -3});
+    expectNear(r.plantOrigins[3], {3, 0, 3});
+    EXPECT_EQ(r.organs[3].plant, 3u);
+}
+
+TEST(TurtleCpu, TropismBendsTheNextSegmentTowardTheDirection) {
+    ir::Grammar g = grammarFromText(lsystem("F+(90)FF", "", 0));
+    g.view.tropismDirection = {0, -1, 0};
+    g.view.initialElasticity = 0.5f;
+    cpu::DeriveResult d = cpu::deriveCpu(g, {});
+    turtle::Interpretation r =
+        turtle::interpretCpu(d.string, turtle::turtleCommands(g.alphabet), {turtle::turtleSettings(g, g.alphabet)});
+    ASSERT_EQ(r.count[shared::kOrganStem], 3u);
+    // Up the y axis, H x T is zero: no bending. Heading -x: bent down by 0.5 rad.
+    expectNear(xyz(r.organs[1].heading), {-1, 0, 0});
+    expectNear(xyz(r.organs[2].heading), {-std::cos(0.5f), -std::sin(0.5f), 0});
+}
+
+} // namespace

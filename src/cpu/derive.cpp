@@ -75,6 +75,15 @@ public:
         return done;
     }
 
+    // Takes modules [begin, end) of `s` as the derived string, with the globals as the Start block leaves them.
+    void adopt(const ModuleString& s, size_t begin, size_t end) {
+        state_.reset(g_);
+        runBlock(g_.startBlock, 0, ControlBlock::Start);
+        cur_.clear();
+        cur_.reserve(end - begin);
+        for (size_t i = begin; i < end; ++i) cur_.push(s.sym[i], s.paramsOf(i), s.paramCount[i]);
+    }
+
     // Replaces the derived string by its image under the homomorphism, the string the turtle interprets:
     // every module rewritten recursively up to the homomorphism's maximum depth, contexts read in the derived
     // string. A `%` it produces stays in the string (the turtle ignores it) rather than cutting.
@@ -421,6 +430,19 @@ private:
     }
 };
 
+// Appends one plant's string, whose stride may be smaller than the stream's.
+void appendPlant(ModuleString& out, const ModuleString& s) {
+    if (s.stride == out.stride) {
+        out.sym.insert(out.sym.end(), s.sym.begin(), s.sym.end());
+        out.paramCount.insert(out.paramCount.end(), s.paramCount.begin(), s.paramCount.end());
+        out.params.insert(out.params.end(), s.params.begin(), s.params.end());
+    } else {
+        out.reserve(out.size() + s.size());
+        for (size_t i = 0; i < s.size(); ++i) out.pushFrom(s, i);
+    }
+    out.plantStart.push_back(out.sym.size());
+}
+
 } // namespace
 
 DeriveResult deriveCpu(const ir::Grammar& g, const DeriveOptions& options) {
@@ -442,20 +464,29 @@ DeriveResult deriveSpeciesCpu(const std::vector<ir::Grammar>& species, const Der
         PlantDeriver deriver(g, plant, seed, budget - used);
         result.steps = std::max(result.steps, deriver.run(options.steps >= 0 ? options.steps : g.derivationLength));
         if (options.homomorphism) deriver.applyHomomorphism();
-        const ModuleString& s = deriver.result();
-        used += s.size();
-        ModuleString& out = result.string;
-        if (s.stride == stride) {
-            out.sym.insert(out.sym.end(), s.sym.begin(), s.sym.end());
-            out.paramCount.insert(out.paramCount.end(), s.paramCount.begin(), s.paramCount.end());
-            out.params.insert(out.params.end(), s.params.begin(), s.params.end());
-        } else { // a species with fewer parameter slots than the string's stride
-            out.reserve(out.size() + s.size());
-            for (size_t i = 0; i < s.size(); ++i) out.pushFrom(s, i);
-        }
-        out.plantStart.push_back(out.sym.size());
+        used += deriver.result().size();
+        appendPlant(result.string, deriver.result());
     }
     return result;
+}
+
+ModuleString applyHomomorphismCpu(const std::vector<ir::Grammar>& species, const ModuleString& derived,
+                                  const DeriveOptions& options) {
+    if (species.empty()) throw std::invalid_argument("applyHomomorphismCpu: no species");
+    uint32_t seed = options.seed >= 0 ? uint32_t(options.seed) : species.front().seed;
+    uint64_t budget = options.maxModules ? options.maxModules : defaultModuleBudget(derived.stride);
+    ModuleString out;
+    out.stride = derived.stride;
+    for (const ir::Grammar& g : species) out.stride = std::max(out.stride, g.maxParams());
+    out.plantStart.push_back(0);
+    for (uint32_t plant = 0; plant < derived.plants(); ++plant) {
+        const ir::Grammar& g = species[ir::speciesOfPlant(plant, species.size())];
+        PlantDeriver deriver(g, plant, seed, budget - std::min<uint64_t>(budget, out.size()));
+        deriver.adopt(derived, derived.plantStart[plant], derived.plantStart[plant + 1]);
+        deriver.applyHomomorphism();
+        appendPlant(out, deriver.result());
+    }
+    return out;
 }
 
 } // namespace simeco::cpu

@@ -41,6 +41,11 @@ DeriveResult deriveCpu(const ir::Grammar& g, const DeriveOptions& options);
 // the seed is options.seed, else the first species'. The stride is the largest of the species'.
 DeriveResult deriveSpeciesCpu(const std::vector<ir::Grammar>& species, const DeriveOptions& options);
 
+// The string the turtle reads for a string derived elsewhere (on the GPU): each plant's modules under its
+// species' homomorphism, with the globals as the Start block sets them.
+ModuleString applyHomomorphismCpu(const std::vector<ir::Grammar>& species, const ModuleString& derived,
+                                  const DeriveOptions& options);
+
 // Random stream passes: a derivation step uses pass step * kPassesPerStep, decomposition at depth d in
 // that step pass step * kPassesPerStep + 1 + d (depths past kPassesPerStep - 3 share the last one), and the
 // control blocks the step's last pass.

@@ -68,6 +68,11 @@ Context::Context(const ContextOptions& options) : instance_(options.validation, 
     enabled.features.shaderInt64 = supported.features.shaderInt64;
     enabled.features.shaderInt16 = supported.features.shaderInt16;
     enabled.features.shaderFloat64 = supported.features.shaderFloat64;
+    // The renderer: draws whose firstInstance selects a kind's instances, per-attachment blending (colour
+    // blends, ids do not), and depth clamp for shadow volumes reaching infinity.
+    enabled.features.drawIndirectFirstInstance = supported.features.drawIndirectFirstInstance;
+    enabled.features.independentBlend = supported.features.independentBlend;
+    enabled.features.depthClamp = supported.features.depthClamp;
 
     float priority = 1.0f;
     VkDeviceQueueCreateInfo queueInfo{};

@@ -1,0 +1,86 @@
+// From an organ mesh vertex (organ-local, see MeshVertex) to the world, for every organ kind. organ.vert draws
+// with it and shadow_volumes.comp casts with it, so a shadow's caster is exactly the geometry on screen.
+//
+// Frame: H = heading, U = up, L = cross(U, H) (left); local x runs along H, y along L, z along U.
+
+struct OrganVertex {
+    vec3 position;
+    vec3 normal;
+    bool present;  // false: the vertex belongs to another leaf shape of the shared leaf mesh
+};
+
+vec3 organLeft(OrganInstance o) {
+    return cross(o.up.xyz, o.heading.xyz);
+}
+
+// Where a stem's end ring meets the joint plane. The plane bisects this segment's heading and the joint's other
+// heading, so both segments are cut on the same plane and a bent stem stays closed; no other heading means a
+// flat end. The denominator is bounded so that a near reversal gives a long mitre rather than an infinite one.
+vec3 stemRingPoint(vec3 ringCentre, vec3 offset, vec3 heading, vec3 otherHeading, out vec3 planeNormal) {
+    planeNormal = heading;
+    if (dot(otherHeading, otherHeading) > 1e-12) {
+        vec3 bisector = heading + normalize(otherHeading);
+        if (dot(bisector, bisector) > 1e-6) {
+            planeNormal = normalize(bisector);
+        }
+    }
+    float along = -dot(planeNormal, offset) / max(dot(planeNormal, heading), 0.2);
+    return ringCentre + offset + along * heading;
+}
+
+OrganVertex organVertex(OrganInstance o, uint kind, vec4 local, vec4 localNormal, vec3 cameraRight, vec3 cameraUp) {
+    OrganVertex v;
+    v.present = true;
+    vec3 H = o.heading.xyz;
+    vec3 U = o.up.xyz;
+    vec3 L = cross(U, H);
+    if (kind == kOrganStem) {
+        bool top = local.w > 0.5;
+        float segmentLength = o.position.w;
+        float radiusBottom = o.heading.w;
+        float radiusTop = o.up.w;
+        vec3 radial = local.y * L + local.z * U;  // unit on the rings, zero at the cap centres
+        vec3 ringCentre = o.position.xyz + (top ? segmentLength : 0.0) * H;
+        vec3 planeNormal;
+        v.position = stemRingPoint(ringCentre, (top ? radiusTop : radiusBottom) * radial, H,
+                                   top ? o.nextHeading.xyz : o.previousHeading.xyz, planeNormal);
+        if (localNormal.w > 0.5) {
+            v.normal = top ? planeNormal : -planeNormal;
+        } else {
+            // The side of a cone: the radial direction tilted by the taper.
+            v.normal = radial * max(segmentLength, 1e-6) + (radiusBottom - radiusTop) * H;
+        }
+    } else if (kind == kOrganSphere) {
+        vec3 direction = local.x * H + local.y * L + local.z * U;
+        v.position = o.position.xyz + o.heading.w * direction;
+        v.normal = direction;
+    } else if (kind == kOrganDisc) {
+        vec3 axisA = H;
+        vec3 axisB = L;
+        if (o.shape == kDiscFacesViewer) {
+            axisA = cameraUp;
+            axisB = -cameraRight;
+        }
+        v.position = o.position.xyz + o.heading.w * (local.x * axisA + local.y * axisB);
+        v.normal = cross(axisA, axisB);
+    } else if (kind == kOrganLeaf) {
+        // The leaf mesh holds every shape; a vertex of another shape collapses onto the base, so its triangles
+        // have no area and draw nothing.
+        uint shape = min(o.shape, kLeafCompound);
+        v.present = uint(localNormal.w + 0.5) == shape;
+        v.position = o.position.xyz;
+        if (v.present) {
+            v.position += local.x * o.position.w * H + local.y * o.heading.w * L;
+        }
+        v.normal = U;
+    } else {
+        // kOrganTriangle: the mesh is three vertices numbered by local.x.
+        vec3 a = o.position.xyz;
+        vec3 b = o.heading.xyz;
+        vec3 c = o.up.xyz;
+        uint corner = uint(local.x + 0.5);
+        v.position = corner == 0u ? a : (corner == 1u ? b : c);
+        v.normal = cross(b - a, c - a);
+    }
+    return v;
+}

@@ -1,0 +1,308 @@
+#include "draw/organ_meshes.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <span>
+
+#include <glm/glm.hpp>
+
+#include "vk/context.h"
+
+namespace simeco::draw {
+namespace {
+
+using shared::MeshVertex;
+constexpr float kPi = std::numbers::pi_v<float>;
+
+// Appends meshes to the shared arrays; indices are local to the mesh, which the draw's vertexOffset rebases.
+class MeshBuilder {
+public:
+    explicit MeshBuilder(OrganMeshData& data) : data_(data) {}
+
+    void begin() {
+        firstIndex_ = static_cast<std::uint32_t>(data_.indices.size());
+        base_ = static_cast<std::uint32_t>(data_.vertices.size());
+    }
+
+    std::uint32_t vertex(glm::vec3 p, glm::vec3 n, float positionW = 0.0f, float normalW = 0.0f) {
+        data_.vertices.push_back({{p.x, p.y, p.z, positionW}, {n.x, n.y, n.z, normalW}});
+        return static_cast<std::uint32_t>(data_.vertices.size()) - 1 - base_;
+    }
+
+    void triangle(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+        data_.indices.insert(data_.indices.end(), {a, b, c});
+    }
+
+    // A polygon given counter-clockwise around +z, fanned from an interior point that sees all of it.
+    void fan(glm::vec2 centre, std::span<const glm::vec2> outline, float normalW) {
+        const glm::vec3 normal(0, 0, 1);
+        std::uint32_t middle = vertex(glm::vec3(centre, 0), normal, 0, normalW);
+        std::uint32_t first = vertex(glm::vec3(outline[0], 0), normal, 0, normalW);
+        std::uint32_t previous = first;
+        for (std::size_t i = 1; i < outline.size(); ++i) {
+            std::uint32_t next = vertex(glm::vec3(outline[i], 0), normal, 0, normalW);
+            triangle(middle, previous, next);
+            previous = next;
+        }
+        triangle(middle, previous, first);
+    }
+
+    MeshRange end() const {
+        return {firstIndex_, static_cast<std::uint32_t>(data_.indices.size()) - firstIndex_,
+                static_cast<std::int32_t>(base_)};
+    }
+
+private:
+    OrganMeshData& data_;
+    std::uint32_t firstIndex_ = 0;
+    std::uint32_t base_ = 0;
+};
+
+// The unit stem: rings around the x axis at x = 0 and x = 1 (position.w tells which), closed by flat caps
+// (normal.w = 1). The vertex shader scales, tapers and mitres it.
+MeshRange addStem(MeshBuilder& b, std::uint32_t sides) {
+    b.begin();
+    auto radial = [&](std::uint32_t i) {
+        float angle = 2.0f * kPi * static_cast<float>(i % sides) / static_cast<float>(sides);
+        return glm::vec3(0, std::cos(angle), std::sin(angle));
+    };
+    std::uint32_t bottom = 0;
+    for (std::uint32_t ring = 0; ring < 2; ++ring) {
+        for (std::uint32_t i = 0; i < sides; ++i) {
+            std::uint32_t v = b.vertex(radial(i) + glm::vec3(static_cast<float>(ring), 0, 0), radial(i),
+                                       static_cast<float>(ring));
+            if (ring == 0 && i == 0) {
+                bottom = v;
+            }
+        }
+    }
+    std::uint32_t top = bottom + sides;
+    for (std::uint32_t i = 0; i < sides; ++i) {
+        std::uint32_t j = (i + 1) % sides;
+        b.triangle(bottom + i, bottom + j, top + i);
+        b.triangle(bottom + j, top + j, top + i);
+    }
+    for (std::uint32_t ring = 0; ring < 2; ++ring) {
+        float x = static_cast<float>(ring);
+        glm::vec3 normal(ring == 0 ? -1.0f : 1.0f, 0, 0);
+        std::uint32_t centre = b.vertex(glm::vec3(x, 0, 0), normal, x, 1.0f);
+        std::uint32_t first = b.vertex(radial(0) + glm::vec3(x, 0, 0), normal, x, 1.0f);
+        for (std::uint32_t i = 1; i < sides; ++i) {
+            b.vertex(radial(i) + glm::vec3(x, 0, 0), normal, x, 1.0f);
+        }
+        for (std::uint32_t i = 0; i < sides; ++i) {
+            std::uint32_t v0 = first + i;
+            std::uint32_t v1 = first + (i + 1) % sides;
+            if (ring == 0) {
+                b.triangle(centre, v1, v0);
+            } else {
+                b.triangle(centre, v0, v1);
+            }
+        }
+    }
+    return b.end();
+}
+
+// The unit sphere with its poles on the x axis; `stacks` bands of latitude, `slices` of longitude.
+MeshRange addSphere(MeshBuilder& b, std::uint32_t slices, std::uint32_t stacks) {
+    b.begin();
+    std::uint32_t first = 0;
+    for (std::uint32_t j = 0; j <= stacks; ++j) {
+        float latitude = kPi * (static_cast<float>(j) / static_cast<float>(stacks) - 0.5f);
+        for (std::uint32_t i = 0; i < slices; ++i) {
+            float longitude = 2.0f * kPi * static_cast<float>(i) / static_cast<float>(slices);
+            glm::vec3 p(std::sin(latitude), std::cos(latitude) * std::cos(longitude),
+                        std::cos(latitude) * std::sin(longitude));
+            if (j == 0) {
+                p = glm::vec3(-1, 0, 0);
+            } else if (j == stacks) {
+                p = glm::vec3(1, 0, 0);
+            }
+            std::uint32_t v = b.vertex(p, p);
+            if (j == 0 && i == 0) {
+                first = v;
+            }
+        }
+    }
+    for (std::uint32_t j = 0; j < stacks; ++j) {
+        for (std::uint32_t i = 0; i < slices; ++i) {
+            std::uint32_t a = first + j * slices + i;
+            std::uint32_t bb = first + j * slices + (i + 1) % slices;
+            std::uint32_t c = bb + slices;
+            std::uint32_t d = a + slices;
+            // The rings at the poles are single points: one triangle of each quad there has no area.
+            if (j != 0) {
+                b.triangle(a, bb, d);
+            }
+            if (j + 1 != stacks) {
+                b.triangle(bb, c, d);
+            }
+        }
+    }
+    return b.end();
+}
+
+MeshRange addDisc(MeshBuilder& b, std::uint32_t sides) {
+    b.begin();
+    std::vector<glm::vec2> outline;
+    for (std::uint32_t i = 0; i < sides; ++i) {
+        float angle = 2.0f * kPi * static_cast<float>(i) / static_cast<float>(sides);
+        outline.emplace_back(std::cos(angle), std::sin(angle));
+    }
+    b.fan(glm::vec2(0), outline, 0.0f);
+    return b.end();
+}
+
+// A blade from its half-width along the midrib (x in [0, 1], width 1 at most), counter-clockwise: from the
+// tip down the left side (+y) to the base and back up the right side.
+std::vector<glm::vec2> bladeOutline(float (*halfWidth)(float), std::uint32_t pointsPerSide) {
+    std::vector<glm::vec2> outline;
+    outline.emplace_back(1.0f, 0.0f);
+    for (std::uint32_t i = 1; i < pointsPerSide; ++i) {
+        float x = 1.0f - static_cast<float>(i) / static_cast<float>(pointsPerSide);
+        outline.emplace_back(x, halfWidth(x));
+    }
+    outline.emplace_back(0.0f, 0.0f);
+    for (std::uint32_t i = pointsPerSide - 1; i >= 1; --i) {
+        float x = 1.0f - static_cast<float>(i) / static_cast<float>(pointsPerSide);
+        outline.emplace_back(x, -halfWidth(x));
+    }
+    return outline;
+}
+
+// Widest at a third of the length, narrowing to a point.
+float lanceolateHalfWidth(float x) {
+    return 0.5f * std::sqrt(x) * (1.0f - x) / 0.3849f;
+}
+
+// Widest a little below the middle, rounded.
+float ovateHalfWidth(float x) {
+    return 0.5f * std::sin(kPi * std::pow(x, 0.8f));
+}
+
+// Heart-shaped: the classic heart curve, its notch at the base (x = 0) and its lobes reaching behind it.
+std::vector<glm::vec2> cordateOutline(std::uint32_t points) {
+    std::vector<glm::vec2> outline;
+    for (std::uint32_t i = 0; i < points; ++i) {
+        // t = 0 is the notch; the curve runs counter-clockwise seen from +z once mapped below.
+        float t = 2.0f * kPi * static_cast<float>(i) / static_cast<float>(points);
+        float s = std::sin(t);
+        float across = 16.0f * s * s * s;
+        float along = 13.0f * std::cos(t) - 5.0f * std::cos(2 * t) - 2.0f * std::cos(3 * t) - std::cos(4 * t);
+        outline.emplace_back((5.0f - along) / 22.0f, -across / 32.0f);
+    }
+    return outline;
+}
+
+void addBlade(MeshBuilder& b, const std::vector<glm::vec2>& outline, glm::vec2 centre, float shape) {
+    b.fan(centre, outline, shape);
+}
+
+// A pinnate compound leaf: a rachis with two pairs of leaflets and a terminal one.
+void addCompound(MeshBuilder& b, float shape) {
+    const glm::vec3 normal(0, 0, 1);
+    const float rachisEnd = 0.62f;
+    const float rachisHalfWidth = 0.03f;
+    std::uint32_t r0 = b.vertex({0, -rachisHalfWidth, 0}, normal, 0, shape);
+    std::uint32_t r1 = b.vertex({rachisEnd, -rachisHalfWidth, 0}, normal, 0, shape);
+    std::uint32_t r2 = b.vertex({rachisEnd, rachisHalfWidth, 0}, normal, 0, shape);
+    std::uint32_t r3 = b.vertex({0, rachisHalfWidth, 0}, normal, 0, shape);
+    b.triangle(r0, r1, r2);
+    b.triangle(r0, r2, r3);
+
+    struct Leaflet {
+        glm::vec2 base;
+        float angle;  // from the midrib, counter-clockwise
+        float length;
+        float width;
+    };
+    const Leaflet leaflets[] = {
+        {{0.22f, 0}, 0.95f, 0.36f, 0.38f},  {{0.22f, 0}, -0.95f, 0.36f, 0.38f},
+        {{0.45f, 0}, 0.85f, 0.36f, 0.38f},  {{0.45f, 0}, -0.85f, 0.36f, 0.38f},
+        {{rachisEnd - 0.02f, 0}, 0.0f, 0.40f, 0.55f},
+    };
+    std::vector<glm::vec2> unit = bladeOutline(ovateHalfWidth, 6);
+    for (const Leaflet& leaflet : leaflets) {
+        glm::vec2 along(std::cos(leaflet.angle), std::sin(leaflet.angle));
+        glm::vec2 across(-along.y, along.x);
+        std::vector<glm::vec2> outline;
+        for (glm::vec2 p : unit) {
+            outline.push_back(leaflet.base + p.x * leaflet.length * along + p.y * leaflet.width * across);
+        }
+        b.fan(leaflet.base + 0.45f * leaflet.length * along, outline, shape);
+    }
+}
+
+} // namespace
+
+OrganMeshData buildOrganMeshes() {
+    using namespace shared;
+    OrganMeshData data;
+    MeshBuilder b(data);
+
+    data.organs[kOrganStem] = addStem(b, kStemSides);
+    data.hulls[kOrganStem] = addStem(b, kStemHullSides);
+    // The hull's rings and meridians are every other one of the drawn sphere's.
+    data.organs[kOrganSphere] = addSphere(b, 16, 10);
+    data.hulls[kOrganSphere] = addSphere(b, 8, 5);
+    data.organs[kOrganDisc] = addDisc(b, 20);
+    data.hulls[kOrganDisc] = data.organs[kOrganDisc];
+
+    b.begin();
+    std::array<std::uint32_t, 4> leafTriangles{};
+    auto count = [&](std::uint32_t shape, std::uint32_t before) {
+        leafTriangles[shape] = static_cast<std::uint32_t>(data.indices.size()) / 3 - before;
+    };
+    std::uint32_t before = static_cast<std::uint32_t>(data.indices.size()) / 3;
+    addBlade(b, bladeOutline(lanceolateHalfWidth, 12), {0.35f, 0}, static_cast<float>(kLeafLanceolate));
+    count(kLeafLanceolate, before);
+    before = static_cast<std::uint32_t>(data.indices.size()) / 3;
+    addBlade(b, bladeOutline(ovateHalfWidth, 12), {0.45f, 0}, static_cast<float>(kLeafOvate));
+    count(kLeafOvate, before);
+    before = static_cast<std::uint32_t>(data.indices.size()) / 3;
+    addBlade(b, cordateOutline(32), {0.4f, 0}, static_cast<float>(kLeafCordate));
+    count(kLeafCordate, before);
+    before = static_cast<std::uint32_t>(data.indices.size()) / 3;
+    addCompound(b, static_cast<float>(kLeafCompound));
+    count(kLeafCompound, before);
+    data.organs[kOrganLeaf] = b.end();
+    data.hulls[kOrganLeaf] = data.organs[kOrganLeaf];
+
+    b.begin();
+    for (int corner = 0; corner < 3; ++corner) {
+        b.vertex(glm::vec3(static_cast<float>(corner), 0, 0), glm::vec3(0, 0, 1));
+    }
+    b.triangle(0, 1, 2);
+    data.organs[kOrganTriangle] = b.end();
+    data.hulls[kOrganTriangle] = data.organs[kOrganTriangle];
+
+    b.begin();
+    const glm::vec3 up(0, 1, 0);
+    std::uint32_t g0 = b.vertex({-1, 0, -1}, up);
+    std::uint32_t g1 = b.vertex({-1, 0, 1}, up);
+    std::uint32_t g2 = b.vertex({1, 0, 1}, up);
+    std::uint32_t g3 = b.vertex({1, 0, -1}, up);
+    b.triangle(g0, g1, g2);
+    b.triangle(g0, g2, g3);
+    data.ground = b.end();
+
+    for (std::uint32_t kind = 0; kind < kOrganKinds; ++kind) {
+        data.closedHull[kind] = kind == kOrganStem || kind == kOrganSphere;
+        data.castingTriangles[kind] = data.hulls[kind].triangleCount();
+    }
+    data.castingTriangles[kOrganLeaf] = *std::max_element(leafTriangles.begin(), leafTriangles.end());
+    return data;
+}
+
+OrganMeshes::OrganMeshes(const vk::Context& context)
+    : data_(buildOrganMeshes()),
+      vertices_(context, data_.vertices.size() * sizeof(shared::MeshVertex), vk::MemoryUsage::DeviceLocal,
+                VK_BUFFER_USAGE_VERTEX_BUFFER_BIT),
+      indices_(context, data_.indices.size() * sizeof(std::uint32_t), vk::MemoryUsage::DeviceLocal,
+               VK_BUFFER_USAGE_INDEX_BUFFER_BIT) {
+    vk::uploadSpan(context, vertices_, std::span<const shared::MeshVertex>(data_.vertices));
+    vk::uploadSpan(context, indices_, std::span<const std::uint32_t>(data_.indices));
+}
+
+} // namespace simeco::draw

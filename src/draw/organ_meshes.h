@@ -1,0 +1,64 @@
+// The procedural meshes organs are drawn with, one per organ kind, in organ-local coordinates (x along the
+// heading, y along left = up x heading, z along up; see render/organ_transform.glsl), plus the low-poly hulls
+// that cast their shadows and the ground plane, all in one vertex buffer and one index buffer on the device.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "render/draw_layout.h"
+#include "vk/buffer.h"
+
+namespace simeco::vk {
+class Context;
+}
+
+namespace simeco::draw {
+
+// A mesh inside the shared buffers, as an indexed draw takes it.
+struct MeshRange {
+    std::uint32_t firstIndex = 0;
+    std::uint32_t indexCount = 0;
+    std::int32_t vertexOffset = 0;
+
+    std::uint32_t triangleCount() const { return indexCount / 3; }
+};
+
+struct OrganMeshData {
+    std::vector<shared::MeshVertex> vertices;
+    std::vector<std::uint32_t> indices;  // triangles wound counter-clockwise seen from outside (right-handed)
+    std::array<MeshRange, shared::kOrganKinds> organs;  // drawn, by kind (kOrgan*)
+    std::array<MeshRange, shared::kOrganKinds> hulls;   // cast shadows, by kind
+    // Whether a kind's hull is closed (casts from the faces turned away from the sun) or an open sheet.
+    std::array<bool, shared::kOrganKinds> closedHull{};
+    // Hull triangles one instance of a kind can cast at most (the leaf hull holds every shape, one is cast).
+    std::array<std::uint32_t, shared::kOrganKinds> castingTriangles{};
+    MeshRange ground;  // the square [-1, 1]^2 in x and z at y = 0, facing +y
+};
+
+// Sides of the drawn stem and of its shadow hull; the hull's corners are corners of the drawn stem, so the
+// hull lies inside it.
+inline constexpr std::uint32_t kStemSides = 12;
+inline constexpr std::uint32_t kStemHullSides = 6;
+
+// The meshes, built on the CPU. Leaf vertices carry their shape (kLeaf*) in normal.w; the four leaf shapes
+// share the leaf kind's range and each instance keeps only the triangles of its own shape.
+OrganMeshData buildOrganMeshes();
+
+// The meshes on the device, usable as vertex, index and storage buffers.
+class OrganMeshes {
+public:
+    explicit OrganMeshes(const vk::Context& context);
+
+    const OrganMeshData& data() const { return data_; }
+    const vk::Buffer& vertices() const { return vertices_; }
+    const vk::Buffer& indices() const { return indices_; }
+
+private:
+    OrganMeshData data_;
+    vk::Buffer vertices_;
+    vk::Buffer indices_;
+};
+
+} // namespace simeco::draw

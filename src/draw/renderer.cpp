@@ -1,0 +1,329 @@
+#include "draw/renderer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include <fmt/format.h>
+#include <glm/geometric.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "draw/draw_pipelines.h"
+#include "draw/organ_meshes.h"
+#include "draw/render_target.h"
+#include "render/draw_layout.h"
+#include "render/render_shaders.h"
+#include "vk/buffer.h"
+#include "vk/context.h"
+#include "vk/pipeline.h"
+#include "vk/vk_error.h"
+
+namespace simeco::draw {
+namespace {
+
+using shared::kOrganKinds;
+
+constexpr VkDeviceSize kDrawCommandSize = sizeof(VkDrawIndexedIndirectCommand);
+static_assert(kDrawCommandSize == 20);
+// Open surfaces cast from a copy pushed this fraction of their size away from the sun (see the kernel).
+constexpr float kOpenSurfaceShift = 0.02f;
+// Line half-width of toon outlines per 600 pixels of image height, and what counts as a depth edge.
+constexpr float kOutlinePixelsPer600 = 1.0f;
+constexpr float kOutlineThreshold = 0.02f;
+
+shared::vec4 vec4Of(glm::vec3 v, float w = 0.0f) {
+    return {v.x, v.y, v.z, w};
+}
+
+vk::ComputePipeline kernel(const vk::Context& context, const char* name) {
+    return vk::ComputePipeline(context, render_shaders::spirv(name), name);
+}
+
+void requireFeatures(const vk::Context& context) {
+    VkPhysicalDeviceFeatures features{};
+    vkGetPhysicalDeviceFeatures(context.physicalDevice(), &features);
+    std::string missing;
+    if (!features.drawIndirectFirstInstance) {
+        missing += " drawIndirectFirstInstance";
+    }
+    if (!features.independentBlend) {
+        missing += " independentBlend";
+    }
+    if (!features.depthClamp) {
+        missing += " depthClamp";
+    }
+    if (!missing.empty()) {
+        throw vk::VulkanError(
+            fmt::format("the device '{}' cannot render: it lacks{}", context.deviceInfo().name, missing),
+            VK_ERROR_FEATURE_NOT_PRESENT);
+    }
+    checkRenderFormats(context);
+}
+
+} // namespace
+
+struct Renderer::Resources {
+    explicit Resources(const vk::Context& context)
+        : meshes(context),
+          renderPass(createRenderPass(context)),
+          pipelines(context, renderPass.get()),
+          drawArgs(kernel(context, "draw_args.comp")),
+          shadowVolumes(kernel(context, "shadow_volumes.comp")),
+          toonOutline(kernel(context, "toon_outline.comp")),
+          frameConstants(context, sizeof(shared::DrawFrame), vk::MemoryUsage::Upload,
+                         VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT),
+          drawCommands(context, kOrganKinds * kDrawCommandSize, vk::MemoryUsage::DeviceLocal,
+                       VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT),
+          volumeDraw(context, sizeof(shared::VolumeDraw), vk::MemoryUsage::DeviceLocal,
+                     VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT) {}
+
+    OrganMeshes meshes;
+    UniqueRenderPass renderPass;
+    DrawPipelines pipelines;
+    vk::ComputePipeline drawArgs;
+    vk::ComputePipeline shadowVolumes;
+    vk::ComputePipeline toonOutline;
+    vk::Buffer frameConstants;
+    vk::Buffer drawCommands;
+    vk::Buffer volumeDraw;
+    vk::Buffer volumeVertices;
+    std::uint32_t volumeCapacity = 0;  // vertices
+    std::unique_ptr<RenderTarget> target;
+};
+
+CameraView frameCamera(const Bounds& bounds, const RenderSettings& settings) {
+    float aspect = settings.height > 0 ? static_cast<float>(settings.width) / static_cast<float>(settings.height) : 1;
+    return cameraView(settings.camera.value_or(Camera{}), bounds, aspect);
+}
+
+Renderer::Renderer(const vk::Context& context) : context_(context) {
+    requireFeatures(context);
+    resources_ = std::make_unique<Resources>(context);
+}
+
+Renderer::~Renderer() = default;
+
+Frame Renderer::render(const vk::Buffer& instances, const vk::Buffer& table, const Bounds& bounds,
+                       const RenderSettings& settings) {
+    const VkPhysicalDeviceLimits& limits = context_.limits();
+    if (settings.width == 0 || settings.height == 0 || settings.width > limits.maxFramebufferWidth ||
+        settings.height > limits.maxFramebufferHeight) {
+        throw std::invalid_argument(fmt::format("cannot render a {} x {} image: the device allows 1 to {} x {}",
+                                                settings.width, settings.height, limits.maxFramebufferWidth,
+                                                limits.maxFramebufferHeight));
+    }
+    float sunLength = glm::length(settings.sunDirection);
+    if (!(sunLength > 0.0f) || !std::isfinite(sunLength)) {
+        throw std::invalid_argument("the sun direction must be a nonzero finite vector");
+    }
+    glm::vec3 towardsSun = settings.sunDirection / sunLength;
+    Resources& r = *resources_;
+    if (!r.target || r.target->width() != settings.width || r.target->height() != settings.height) {
+        r.target.reset();
+        r.target = std::make_unique<RenderTarget>(context_, r.renderPass.get(), settings.width, settings.height);
+    }
+    const RenderTarget& target = *r.target;
+    const OrganMeshData& meshes = r.meshes.data();
+    bool shadows = settings.shadows == Shadows::Volume;
+    bool toon = settings.style == Style::Toon;
+
+    CameraView camera = frameCamera(bounds, settings);
+    Bounds box = framedBounds(bounds);
+    float radius = 0.5f * glm::length(box.extent());
+
+    shared::DrawFrame frame{};
+    std::memcpy(&frame.viewProj, glm::value_ptr(camera.viewProj), sizeof(frame.viewProj));
+    frame.cameraPosition = vec4Of(camera.position, 1.0f);
+    frame.cameraRight = vec4Of(camera.right);
+    frame.cameraUp = vec4Of(camera.up);
+    frame.sunDirection = vec4Of(towardsSun);
+    frame.sunColor = vec4Of(settings.sunColor);
+    frame.skyColor = vec4Of(settings.skyColor);
+    frame.groundBounce = vec4Of(settings.groundBounce);
+    frame.groundColor = vec4Of(settings.groundColor);
+    glm::vec3 centre = box.centre();
+    frame.groundPlane = {centre.x, box.min.y, centre.z, 2.5f * radius};
+    frame.options = {toon ? shared::kStyleToon : shared::kStyleLit, settings.toonBands, 0, 0};
+    std::memcpy(r.frameConstants.mapped(), &frame, sizeof(frame));
+
+    // The host reads the table's counts (not the instances) to size the shadow volumes.
+    shared::OrganTable counts{};
+    if (shadows) {
+        counts = vk::downloadVector<shared::OrganTable>(context_, table, 1)[0];
+        std::uint64_t needed = 0;
+        for (std::uint32_t kind = 0; kind < kOrganKinds; ++kind) {
+            needed += std::uint64_t{counts.count[kind]} * meshes.castingTriangles[kind] *
+                      shared::kVolumeVerticesPerTriangle;
+        }
+        std::uint64_t affordable = settings.maxShadowVolumeBytes / sizeof(shared::vec4);
+        std::uint64_t limit = std::min<std::uint64_t>(affordable, std::numeric_limits<std::uint32_t>::max());
+        needed = std::clamp<std::uint64_t>(needed, shared::kVolumeVerticesPerTriangle, limit);
+        needed -= needed % shared::kVolumeVerticesPerTriangle;
+        if (needed > r.volumeCapacity) {
+            r.volumeVertices = vk::Buffer();
+            r.volumeVertices = vk::Buffer(context_, needed * sizeof(shared::vec4), vk::MemoryUsage::DeviceLocal,
+                                          VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+            r.volumeCapacity = static_cast<std::uint32_t>(needed);
+        }
+    }
+
+    shared::DrawArgsPush args{};
+    for (std::uint32_t kind = 0; kind < kOrganKinds; ++kind) {
+        args.indexCount[kind] = meshes.organs[kind].indexCount;
+        args.firstIndex[kind] = meshes.organs[kind].firstIndex;
+        args.vertexOffset[kind] = meshes.organs[kind].vertexOffset;
+    }
+    args.volumeCapacity = shadows ? r.volumeCapacity : 0;
+
+    context_.submitAndWait([&](VkCommandBuffer cmd) {
+        // The instances and table come from earlier submissions of other passes.
+        memoryDependency(cmd, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_ACCESS_MEMORY_WRITE_BIT,
+                         VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT |
+                             VK_PIPELINE_STAGE_VERTEX_SHADER_BIT,
+                         VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT);
+        vk::cmdFill(cmd, r.volumeDraw, 0);
+        memoryDependency(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                         VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+        if (shadows) {
+            for (std::uint32_t kind = 0; kind < kOrganKinds; ++kind) {
+                if (counts.count[kind] == 0) {
+                    continue;
+                }
+                const MeshRange& hull = meshes.hulls[kind];
+                shared::ShadowVolumePush push{};
+                push.awayFromSun = vec4Of(-towardsSun, kOpenSurfaceShift);
+                push.cameraRight = frame.cameraRight;
+                push.cameraUp = frame.cameraUp;
+                push.kind = kind;
+                push.firstIndex = hull.firstIndex;
+                push.triangleCount = hull.triangleCount();
+                push.vertexOffset = hull.vertexOffset;
+                push.capacity = r.volumeCapacity;
+                push.closedHull = meshes.closedHull[kind] ? 1u : 0u;
+                r.shadowVolumes.dispatch(cmd,
+                                         {instances, table, r.meshes.vertices(), r.meshes.indices(), r.volumeDraw,
+                                          r.volumeVertices},
+                                         push, r.shadowVolumes.groupsFor(counts.count[kind]));
+            }
+            memoryDependency(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
+                             VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                             VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+        }
+        r.drawArgs.dispatch(cmd, {table, r.drawCommands, r.volumeDraw}, args, 1);
+        memoryDependency(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
+                         VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_VERTEX_INPUT_BIT,
+                         VK_ACCESS_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_VERTEX_ATTRIBUTE_READ_BIT);
+
+        std::array<VkClearValue, 4> clears{};
+        clears[kColorAttachment].color = {{settings.background.r, settings.background.g, settings.background.b, 0}};
+        clears[kPlantAttachment].color.uint32[0] = Frame::kNoId;
+        clears[kOrganAttachment].color.uint32[0] = Frame::kNoId;
+        clears[kDepthAttachment].depthStencil = {1.0f, 0};
+        VkRenderPassBeginInfo begin{};
+        begin.sType = VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO;
+        begin.renderPass = r.renderPass.get();
+        begin.framebuffer = target.framebuffer();
+        begin.renderArea = {{0, 0}, {target.width(), target.height()}};
+        begin.clearValueCount = static_cast<std::uint32_t>(clears.size());
+        begin.pClearValues = clears.data();
+        vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
+        VkViewport viewport{0, 0, static_cast<float>(target.width()), static_cast<float>(target.height()), 0, 1};
+        VkRect2D scissor{{0, 0}, {target.width(), target.height()}};
+        vkCmdSetViewport(cmd, 0, 1, &viewport);
+        vkCmdSetScissor(cmd, 0, 1, &scissor);
+        r.pipelines.pushDescriptors(cmd, instances, r.frameConstants);
+
+        auto drawScene = [&](std::uint32_t pass) {
+            bool sunPass = pass == shared::kPassSun;
+            VkDeviceSize zero = 0;
+            VkBuffer meshVertices = r.meshes.vertices().handle();
+            vkCmdBindVertexBuffers(cmd, 0, 1, &meshVertices, &zero);
+            vkCmdBindIndexBuffer(cmd, r.meshes.indices().handle(), 0, VK_INDEX_TYPE_UINT32);
+            auto push = [&](std::uint32_t kind) {
+                shared::DrawPush constants{kind, pass};
+                vkCmdPushConstants(cmd, r.pipelines.layout(), VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT,
+                                   0, sizeof(constants), &constants);
+            };
+            auto drawKind = [&](std::uint32_t kind) {
+                push(kind);
+                vkCmdDrawIndexedIndirect(cmd, r.drawCommands.handle(), kind * kDrawCommandSize, 1,
+                                         static_cast<std::uint32_t>(kDrawCommandSize));
+            };
+            for (Culling culling : {Culling::Back, Culling::None}) {
+                vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
+                                  sunPass ? r.pipelines.sun(culling) : r.pipelines.base(culling));
+                for (std::uint32_t kind = 0; kind < kOrganKinds; ++kind) {
+                    if (meshes.closedHull[kind] == (culling == Culling::Back)) {
+                        drawKind(kind);
+                    }
+                }
+            }
+            if (settings.ground) {
+                push(shared::kDrawGround);
+                vkCmdDrawIndexed(cmd, meshes.ground.indexCount, 1, meshes.ground.firstIndex,
+                                 meshes.ground.vertexOffset, 0);
+            }
+        };
+        if (shadows) {
+            drawScene(shared::kPassAmbient);
+            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, r.pipelines.volume());
+            VkDeviceSize zero = 0;
+            VkBuffer volumeVertices = r.volumeVertices.handle();
+            vkCmdBindVertexBuffers(cmd, 0, 1, &volumeVertices, &zero);
+            vkCmdDrawIndirect(cmd, r.volumeDraw.handle(), offsetof(shared::VolumeDraw, vertexCount), 1,
+                              sizeof(VkDrawIndirectCommand));
+            drawScene(shared::kPassSun);
+        } else {
+            drawScene(shared::kPassFull);
+        }
+        vkCmdEndRenderPass(cmd);
+
+        target.cmdCopyToBuffers(cmd);
+        memoryDependency(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                         VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_HOST_BIT,
+                         VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_HOST_READ_BIT);
+        if (toon) {
+            shared::OutlinePush outline{};
+            outline.lineColor = vec4Of(settings.outlineColor, 1.0f);
+            outline.width = target.width();
+            outline.height = target.height();
+            outline.radius = static_cast<std::uint32_t>(
+                std::max(1.0f, std::round(kOutlinePixelsPer600 * static_cast<float>(target.height()) / 600.0f)));
+            outline.threshold = kOutlineThreshold;
+            outline.nearPlane = camera.nearPlane;
+            outline.farPlane = camera.farPlane;
+            std::uint64_t pixels = std::uint64_t{target.width()} * target.height();
+            r.toonOutline.dispatch(cmd, {target.color(), target.depth(), target.plant(), target.outlined()}, outline,
+                                   r.toonOutline.groupsFor(pixels));
+            memoryDependency(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
+                             VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT);
+        }
+    });
+
+    Frame result;
+    result.width = target.width();
+    result.height = target.height();
+    std::size_t pixels = result.pixelCount();
+    const vk::Buffer& color = toon ? target.outlined() : target.color();
+    result.rgba.resize(4 * pixels);
+    std::memcpy(result.rgba.data(), color.mapped(), result.rgba.size() * sizeof(float));
+    result.plant.resize(pixels);
+    std::memcpy(result.plant.data(), target.plant().mapped(), pixels * sizeof(std::uint32_t));
+    result.organ.resize(pixels);
+    std::memcpy(result.organ.data(), target.organ().mapped(), pixels * sizeof(std::uint32_t));
+    // Depth buffer values back to distances along the view axis (the inverse of the [0, 1] projection).
+    result.depth.resize(pixels);
+    const auto* depth = reinterpret_cast<const float*>(target.depth().mapped());
+    float n = camera.nearPlane;
+    float f = camera.farPlane;
+    for (std::size_t i = 0; i < pixels; ++i) {
+        float d = depth[i];
+        result.depth[i] = d >= 1.0f ? std::numeric_limits<float>::infinity() : f * n / (f - d * (f - n));
+    }
+    return result;
+}
+
+} // namespace simeco::draw

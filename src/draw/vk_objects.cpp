@@ -1,0 +1,61 @@
+#include "draw/vk_objects.h"
+
+#include "vk/buffer.h"
+#include "vk/context.h"
+#include "vk/vk_error.h"
+
+namespace simeco::draw {
+
+Attachment::Attachment(const vk::Context& context, VkFormat imageFormat, VkImageAspectFlags aspect,
+                       VkImageUsageFlags usage, std::uint32_t width, std::uint32_t height)
+    : format(imageFormat) {
+    VkDevice device = context.device();
+    VkImageCreateInfo info{};
+    info.sType = VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO;
+    info.imageType = VK_IMAGE_TYPE_2D;
+    info.format = format;
+    info.extent = {width, height, 1};
+    info.mipLevels = 1;
+    info.arrayLayers = 1;
+    info.samples = VK_SAMPLE_COUNT_1_BIT;
+    info.tiling = VK_IMAGE_TILING_OPTIMAL;
+    info.usage = usage;
+    info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+    info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    VkImage rawImage = VK_NULL_HANDLE;
+    VK_CHECK(vkCreateImage(device, &info, nullptr, &rawImage));
+    image = UniqueImage(device, rawImage);
+
+    VkMemoryRequirements requirements{};
+    vkGetImageMemoryRequirements(device, rawImage, &requirements);
+    VkMemoryAllocateInfo allocateInfo{};
+    allocateInfo.sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO;
+    allocateInfo.allocationSize = requirements.size;
+    allocateInfo.memoryTypeIndex = vk::chooseMemoryType(context.memoryProperties(), requirements.memoryTypeBits, 0,
+                                                        VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+    VkDeviceMemory rawMemory = VK_NULL_HANDLE;
+    VK_CHECK(vkAllocateMemory(device, &allocateInfo, nullptr, &rawMemory));
+    memory = vk::UniqueMemory(device, rawMemory);
+    VK_CHECK(vkBindImageMemory(device, rawImage, rawMemory, 0));
+
+    VkImageViewCreateInfo viewInfo{};
+    viewInfo.sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO;
+    viewInfo.image = rawImage;
+    viewInfo.viewType = VK_IMAGE_VIEW_TYPE_2D;
+    viewInfo.format = format;
+    viewInfo.subresourceRange = {aspect, 0, 1, 0, 1};
+    VkImageView rawView = VK_NULL_HANDLE;
+    VK_CHECK(vkCreateImageView(device, &viewInfo, nullptr, &rawView));
+    view = UniqueImageView(device, rawView);
+}
+
+void memoryDependency(VkCommandBuffer cmd, VkPipelineStageFlags srcStages, VkAccessFlags srcAccess,
+                      VkPipelineStageFlags dstStages, VkAccessFlags dstAccess) {
+    VkMemoryBarrier barrier{};
+    barrier.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER;
+    barrier.srcAccessMask = srcAccess;
+    barrier.dstAccessMask = dstAccess;
+    vkCmdPipelineBarrier(cmd, srcStages, dstStages, 0, 1, &barrier, 0, nullptr, 0, nullptr);
+}
+
+} // namespace simeco::draw

@@ -1,0 +1,151 @@
+// The procedural organ meshes on the CPU: closed meshes wound outwards and watertight, hulls inside what is
+// drawn, leaf blades flat in the heading-left plane.
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+#include <tuple>
+
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+#include <gtest/gtest.h>
+
+#include "draw/organ_meshes.h"
+
+namespace simeco::test {
+namespace {
+
+using draw::MeshRange;
+using draw::OrganMeshData;
+
+glm::vec3 position(const OrganMeshData& d, const MeshRange& m, std::uint32_t i) {
+    const shared::vec4& p = d.vertices[static_cast<std::size_t>(m.vertexOffset) + d.indices[m.firstIndex + i]].position;
+    return {p.x, p.y, p.z};
+}
+
+// For a convex closed mesh around `centre`, every face's winding normal points away from the centre.
+void expectWoundOutwards(const OrganMeshData& d, const MeshRange& m, glm::vec3 centre, const char* name) {
+    ASSERT_GT(m.triangleCount(), 0u) << name;
+    for (std::uint32_t t = 0; t < m.triangleCount(); ++t) {
+        glm::vec3 a = position(d, m, 3 * t);
+        glm::vec3 b = position(d, m, 3 * t + 1);
+        glm::vec3 c = position(d, m, 3 * t + 2);
+        glm::vec3 n = glm::cross(b - a, c - a);
+        EXPECT_GT(glm::dot(n, (a + b + c) / 3.0f - centre), 1e-6f) << name << " triangle " << t;
+    }
+}
+
+// Every edge (by position) is used once in each direction: no holes, no flipped faces.
+void expectWatertight(const OrganMeshData& d, const MeshRange& m, const char* name) {
+    auto key = [](glm::vec3 p) {
+        return std::make_tuple(std::lround(p.x * 1e4f), std::lround(p.y * 1e4f), std::lround(p.z * 1e4f));
+    };
+    using Key = decltype(key(glm::vec3()));
+    std::map<std::pair<Key, Key>, int> edges;
+    for (std::uint32_t t = 0; t < m.triangleCount(); ++t) {
+        for (int e = 0; e < 3; ++e) {
+            edges[{key(position(d, m, 3 * t + e)), key(position(d, m, 3 * t + (e + 1) % 3))}] += 1;
+        }
+    }
+    for (const auto& [edge, count] : edges) {
+        EXPECT_EQ(count, 1) << name << ": an edge used twice in one direction";
+        auto twin = edges.find({edge.second, edge.first});
+        EXPECT_TRUE(twin != edges.end() && twin->second == 1) << name << ": an edge without its opposite";
+    }
+}
+
+TEST(OrganMeshesTest, ClosedMeshesAreWatertightAndWoundOutwards) {
+    OrganMeshData d = draw::buildOrganMeshes();
+    using namespace shared;
+    for (bool hull : {false, true}) {
+        const auto& meshes = hull ? d.hulls : d.organs;
+        expectWoundOutwards(d, meshes[kOrganStem], {0.5f, 0, 0}, hull ? "stem hull" : "stem");
+        expectWoundOutwards(d, meshes[kOrganSphere], {0, 0, 0}, hull ? "sphere hull" : "sphere");
+        expectWatertight(d, meshes[kOrganStem], hull ? "stem hull" : "stem");
+        expectWatertight(d, meshes[kOrganSphere], hull ? "sphere hull" : "sphere");
+    }
+    EXPECT_TRUE(d.closedHull[kOrganStem]);
+    EXPECT_TRUE(d.closedHull[kOrganSphere]);
+    EXPECT_FALSE(d.closedHull[kOrganLeaf]);
+}
+
+TEST(OrganMeshesTest, StemRingsAndCapsAreFlagged) {
+    OrganMeshData d = draw::buildOrganMeshes();
+    const MeshRange& stem = d.organs[shared::kOrganStem];
+    int caps = 0;
+    for (std::uint32_t i = 0; i < stem.indexCount; ++i) {
+        const shared::MeshVertex& v = d.vertices[static_cast<std::size_t>(stem.vertexOffset) + d.indices[stem.firstIndex + i]];
+        EXPECT_TRUE(v.position.w == 0.0f || v.position.w == 1.0f);
+        EXPECT_EQ(v.position.x, v.position.w) << "the ring flag matches the end the vertex sits on";
+        if (v.normal.w == 1.0f) {
+            ++caps;
+            EXPECT_EQ(std::abs(v.normal.x), 1.0f);
+        }
+    }
+    EXPECT_EQ(caps, static_cast<int>(2 * 3 * draw::kStemSides));
+}
+
+TEST(OrganMeshesTest, HullCornersAreCornersOfTheDrawnMesh) {
+    OrganMeshData d = draw::buildOrganMeshes();
+    for (std::uint32_t kind : {shared::kOrganStem, shared::kOrganSphere}) {
+        std::set<std::tuple<long, long, long>> drawn;
+        const MeshRange& organ = d.organs[kind];
+        for (std::uint32_t i = 0; i < organ.indexCount; ++i) {
+            glm::vec3 p = position(d, organ, i);
+            drawn.insert({std::lround(p.x * 1e4f), std::lround(p.y * 1e4f), std::lround(p.z * 1e4f)});
+        }
+        const MeshRange& hull = d.hulls[kind];
+        ASSERT_LT(hull.triangleCount(), organ.triangleCount());
+        for (std::uint32_t i = 0; i < hull.indexCount; ++i) {
+            glm::vec3 p = position(d, hull, i);
+            EXPECT_TRUE(drawn.count({std::lround(p.x * 1e4f), std::lround(p.y * 1e4f), std::lround(p.z * 1e4f)}))
+                << "kind " << kind << " hull vertex " << i;
+        }
+    }
+}
+
+TEST(OrganMeshesTest, LeafBladesLieInTheHeadingLeftPlaneFacingUp) {
+    OrganMeshData d = draw::buildOrganMeshes();
+    const MeshRange& leaf = d.organs[shared::kOrganLeaf];
+    std::map<int, std::uint32_t> trianglesPerShape;
+    for (std::uint32_t t = 0; t < leaf.triangleCount(); ++t) {
+        glm::vec3 p[3];
+        int shape = -1;
+        for (int k = 0; k < 3; ++k) {
+            const shared::MeshVertex& v =
+                d.vertices[static_cast<std::size_t>(leaf.vertexOffset) + d.indices[leaf.firstIndex + 3 * t + k]];
+            p[k] = {v.position.x, v.position.y, v.position.z};
+            EXPECT_EQ(v.position.z, 0.0f) << "out of the heading-left plane";
+            EXPECT_EQ(v.normal.z, 1.0f);
+            EXPECT_GE(v.position.x, -0.4f);
+            EXPECT_LE(v.position.x, 1.0f);
+            EXPECT_LE(std::abs(v.position.y), 0.5f + 1e-6f);
+            if (k > 0) {
+                EXPECT_EQ(static_cast<int>(v.normal.w), shape) << "a triangle mixes leaf shapes";
+            }
+            shape = static_cast<int>(v.normal.w);
+        }
+        EXPECT_GT(glm::cross(p[1] - p[0], p[2] - p[0]).z, 0.0f) << "triangle " << t << " faces down";
+        ++trianglesPerShape[shape];
+    }
+    ASSERT_EQ(trianglesPerShape.size(), 4u);
+    for (std::uint32_t shape = 0; shape < 4; ++shape) {
+        EXPECT_GT(trianglesPerShape[static_cast<int>(shape)], 8u) << "shape " << shape;
+        EXPECT_LE(trianglesPerShape[static_cast<int>(shape)], d.castingTriangles[shared::kOrganLeaf]);
+    }
+}
+
+TEST(OrganMeshesTest, TriangleAndGround) {
+    OrganMeshData d = draw::buildOrganMeshes();
+    EXPECT_EQ(d.organs[shared::kOrganTriangle].indexCount, 3u);
+    EXPECT_EQ(d.ground.indexCount, 6u);
+    for (std::uint32_t t = 0; t < 2; ++t) {
+        glm::vec3 a = position(d, d.ground, 3 * t);
+        glm::vec3 b = position(d, d.ground, 3 * t + 1);
+        glm::vec3 c = position(d, d.ground, 3 * t + 2);
+        EXPECT_GT(glm::cross(b - a, c - a).y, 0.0f) << "the ground faces up";
+    }
+}
+
+} // namespace
+} // namespace simeco::test

@@ -1,0 +1,276 @@
+// Frames rendered from hand-made instance buffers: framing, where organs land, ids, the table's counts, and
+// the toon style.
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <stdexcept>
+#include <utility>
+
+#include <glm/geometric.hpp>
+#include <gtest/gtest.h>
+
+#include "draw/renderer.h"
+#include "gpu_fixture.h"
+#include "test_scene.h"
+
+namespace simeco::test {
+namespace {
+
+using draw::Frame;
+
+class RendererTest : public GpuTest {
+protected:
+    static void SetUpTestSuite() {
+        GpuTest::SetUpTestSuite();
+    }
+    draw::Renderer& renderer() {
+        static draw::Renderer* instance = nullptr;
+        if (instance == nullptr) {
+            // Kept for the whole process: pipelines are built once, and released before the context in main's exit.
+            renderers_.push_back(std::make_unique<draw::Renderer>(context()));
+            instance = renderers_.back().get();
+        }
+        return *instance;
+    }
+    static void TearDownTestSuite() {
+        renderers_.clear();
+        GpuTest::TearDownTestSuite();
+    }
+
+    static inline std::vector<std::unique_ptr<draw::Renderer>> renderers_;
+};
+
+draw::RenderSettings smallSettings(std::uint32_t width = 160, std::uint32_t height = 120) {
+    draw::RenderSettings s;
+    s.width = width;
+    s.height = height;
+    s.shadows = draw::Shadows::None;
+    return s;
+}
+
+TEST_F(RendererTest, VerticalStemIsFramedWhereItsBoundsProject) {
+    TestScene scene = uploadScene(context(), {makeStem({0, 0, 0}, {0, 1, 0}, {0, 0, 1}, 1.0f, 0.05f, 0, 7)});
+    draw::RenderSettings s = smallSettings();
+    Frame frame = renderer().render(scene.instances, scene.table, scene.bounds, s);
+    maybeSavePreview(frame, "stem_framed");
+    ASSERT_EQ(frame.width, s.width);
+    ASSERT_EQ(frame.height, s.height);
+
+    PixelBox stem = organPixels(frame, 7);
+    ASSERT_FALSE(stem.empty());
+    // A sane share of the frame: most of its height, a thin strip of its width, not touching the edges.
+    float heightShare = static_cast<float>(stem.maxY - stem.minY + 1) / static_cast<float>(frame.height);
+    EXPECT_GT(heightShare, 0.6f);
+    EXPECT_LT(heightShare, 1.0f);
+    EXPECT_GT(stem.minY, 0);
+    EXPECT_LT(stem.maxY, static_cast<int>(frame.height) - 1);
+    EXPECT_LT(stem.pixels, frame.pixelCount() / 4);
+
+    // The silhouette lies within the projection of the stem's bounding box and spans nearly all of it.
+    draw::CameraView camera = draw::frameCamera(scene.bounds, s);
+    glm::vec2 lo(1e9f), hi(-1e9f);
+    for (int corner = 0; corner < 8; ++corner) {
+        glm::vec3 c((corner & 1) ? scene.bounds.max.x : scene.bounds.min.x,
+                    (corner & 2) ? scene.bounds.max.y : scene.bounds.min.y,
+                    (corner & 4) ? scene.bounds.max.z : scene.bounds.min.z);
+        glm::vec2 p = projectToPixel(camera, c, frame.width, frame.height);
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    }
+    EXPECT_GE(static_cast<float>(stem.minX), lo.x - 1.0f);
+    EXPECT_LE(static_cast<float>(stem.maxX), hi.x + 1.0f);
+    EXPECT_GE(static_cast<float>(stem.minY), lo.y - 1.0f);
+    EXPECT_LE(static_cast<float>(stem.maxY), hi.y + 1.0f);
+    EXPECT_GT(static_cast<float>(stem.maxY - stem.minY + 1), 0.9f * (hi.y - lo.y));
+    // The axis of the stem projects onto the silhouette's middle.
+    glm::vec2 base = projectToPixel(camera, {0, 0, 0}, frame.width, frame.height);
+    glm::vec2 top = projectToPixel(camera, {0, 1, 0}, frame.width, frame.height);
+    EXPECT_NEAR(0.5f * (stem.minX + stem.maxX + 1), 0.5f * (base.x + top.x), 1.5f);
+}
+
+TEST_F(RendererTest, SphereAppearsWhereTheCameraProjectsItWithItsFrontDepth) {
+    glm::vec3 centre(2.0f, 1.0f, -1.0f);
+    float radius = 0.3f;
+    TestScene scene = uploadScene(context(), {makeSphere(centre, radius, 3, 42),
+                                              makeStem({0, 0, 0}, {0, 1, 0}, {0, 0, 1}, 1.5f, 0.05f, 0, 1)});
+    draw::RenderSettings s = smallSettings(200, 150);
+    draw::Camera camera;
+    camera.azimuthDegrees = -40.0f;
+    camera.elevationDegrees = 25.0f;
+    camera.distance = 6.0f;
+    camera.target = glm::vec3(1.0f, 0.5f, 0.0f);
+    s.camera = camera;
+    Frame frame = renderer().render(scene.instances, scene.table, scene.bounds, s);
+    maybeSavePreview(frame, "sphere_projected");
+
+    draw::CameraView view = draw::frameCamera(scene.bounds, s);
+    glm::vec2 p = projectToPixel(view, centre, frame.width, frame.height);
+    auto x = static_cast<std::uint32_t>(p.x);
+    auto y = static_cast<std::uint32_t>(p.y);
+    ASSERT_LT(x, frame.width);
+    ASSERT_LT(y, frame.height);
+    EXPECT_EQ(frame.organ[frame.index(x, y)], 42u);
+    EXPECT_EQ(frame.plant[frame.index(x, y)], 3u);
+    // The surface seen is the near side of the sphere (back faces are culled, not front faces).
+    glm::vec3 forward = glm::normalize(view.target - view.position);
+    float centreDepth = glm::dot(centre - view.position, forward);
+    EXPECT_NEAR(frame.depth[frame.index(x, y)], centreDepth - radius, 0.03f);
+    // Its silhouette is centred on the projected centre, about as wide as the projected diameter.
+    PixelBox sphere = organPixels(frame, 42);
+    EXPECT_NEAR(0.5f * (sphere.minX + sphere.maxX + 1), p.x, 1.5f);
+    EXPECT_NEAR(0.5f * (sphere.minY + sphere.maxY + 1), p.y, 1.5f);
+    glm::vec2 edge = projectToPixel(view, centre + radius * view.right, frame.width, frame.height);
+    EXPECT_NEAR(static_cast<float>(sphere.maxX - sphere.minX + 1), 2.0f * (edge.x - p.x), 2.5f);
+}
+
+TEST_F(RendererTest, IdsAreThoseOfTheInstancesDrawnThereAndBackgroundHasNone) {
+    std::vector<OrganInstance> organs{
+        makeStem({-2, 0, 0}, {0, 1, 0}, {0, 0, 1}, 1.0f, 0.15f, 10, 100),
+        makeSphere({-1, 0.5f, 0}, 0.3f, 11, 101),
+        makeLeaf({0, 0.2f, 0}, {0, 1, 0}, {0, 0, 1}, 0.8f, 0.6f, shared::kLeafOvate, 12, 102),
+        makeDisc({1, 0.5f, 0}, {0, 1, 0}, {0, 0, 1}, 0.35f, 13, 103),
+        makeTriangle({1.7f, 0.1f, 0}, {2.3f, 0.1f, 0}, {2.0f, 0.9f, 0}, 14, 104),
+    };
+    TestScene scene = uploadScene(context(), organs);
+    draw::RenderSettings s = smallSettings(240, 120);
+    draw::Camera camera;
+    camera.azimuthDegrees = 0.0f;  // from +z, facing the leaf, disc and triangle
+    camera.elevationDegrees = 10.0f;
+    s.camera = camera;
+    Frame frame = renderer().render(scene.instances, scene.table, scene.bounds, s);
+    maybeSavePreview(frame, "ids");
+    draw::CameraView view = draw::frameCamera(scene.bounds, s);
+
+    const std::pair<glm::vec3, std::uint32_t> probes[] = {
+        {{-2, 0.5f, 0.15f}, 100}, {{-1, 0.5f, 0.3f}, 101}, {{0, 0.5f, 0}, 102}, {{1, 0.5f, 0}, 103}, {{2, 0.4f, 0}, 104}};
+    for (const auto& [point, module] : probes) {
+        glm::vec2 p = projectToPixel(view, point, frame.width, frame.height);
+        std::size_t i = frame.index(static_cast<std::uint32_t>(p.x), static_cast<std::uint32_t>(p.y));
+        EXPECT_EQ(frame.organ[i], module) << "at " << p.x << "," << p.y;
+        EXPECT_EQ(frame.plant[i], module - 90) << "at " << p.x << "," << p.y;
+        EXPECT_TRUE(std::isfinite(frame.depth[i]));
+        EXPECT_EQ(frame.rgba[4 * i + 3], 1.0f);
+    }
+    // Every id in the frame belongs to an instance, with its own plant; the sky has none and no depth.
+    std::set<std::uint32_t> seen;
+    for (std::size_t i = 0; i < frame.pixelCount(); ++i) {
+        if (frame.organ[i] == Frame::kNoId) {
+            EXPECT_EQ(frame.plant[i], Frame::kNoId);
+            continue;
+        }
+        seen.insert(frame.organ[i]);
+        EXPECT_EQ(frame.plant[i], frame.organ[i] - 90);
+    }
+    EXPECT_EQ(seen, (std::set<std::uint32_t>{100, 101, 102, 103, 104}));
+    std::size_t sky = frame.index(0, 0);
+    EXPECT_EQ(frame.organ[sky], Frame::kNoId);
+    EXPECT_EQ(frame.plant[sky], Frame::kNoId);
+    EXPECT_TRUE(std::isinf(frame.depth[sky]));
+    EXPECT_EQ(frame.rgba[4 * sky + 3], 0.0f);
+    // The ground has no ids but a depth.
+    std::size_t ground = frame.index(frame.width / 2, frame.height - 1);
+    EXPECT_EQ(frame.organ[ground], Frame::kNoId);
+    EXPECT_TRUE(std::isfinite(frame.depth[ground]));
+}
+
+TEST_F(RendererTest, LeafLiesInTheHeadingLeftPlane) {
+    // Heading +x and up +z: left = up x heading = +y, so the blade lies in the x-y plane.
+    OrganInstance leaf = makeLeaf({-0.5f, 0.5f, 0}, {1, 0, 0}, {0, 0, 1}, 1.0f, 0.5f, shared::kLeafLanceolate, 0, 5);
+    TestScene scene = uploadScene(context(), {leaf});
+    draw::RenderSettings s = smallSettings(160, 160);
+    s.ground = false;
+    draw::Camera camera;
+    camera.target = glm::vec3(0, 0.5f, 0);
+    camera.distance = 4.0f;
+
+    camera.azimuthDegrees = 0.0f;  // looking along -z: the blade face on
+    camera.elevationDegrees = 0.0f;
+    s.camera = camera;
+    Frame faceOn = renderer().render(scene.instances, scene.table, scene.bounds, s);
+    maybeSavePreview(faceOn, "leaf_face_on");
+    PixelBox blade = organPixels(faceOn, 5);
+    ASSERT_FALSE(blade.empty());
+    draw::CameraView view = draw::frameCamera(scene.bounds, s);
+    glm::vec2 base = projectToPixel(view, {-0.5f, 0.5f, 0}, s.width, s.height);
+    glm::vec2 tip = projectToPixel(view, {0.5f, 0.5f, 0}, s.width, s.height);
+    glm::vec2 side = projectToPixel(view, {-0.5f, 0.75f, 0}, s.width, s.height);
+    // Length along image x (heading), width along image y (left): a lanceolate blade is as wide as `width`.
+    EXPECT_NEAR(static_cast<float>(blade.maxX - blade.minX + 1), tip.x - base.x, 2.0f);
+    float widthPixels = 2.0f * (base.y - side.y);
+    EXPECT_NEAR(static_cast<float>(blade.maxY - blade.minY + 1), widthPixels, 2.5f);
+
+    camera.azimuthDegrees = 90.0f;  // looking along -x: edge on
+    s.camera = camera;
+    Frame edgeOn = renderer().render(scene.instances, scene.table, scene.bounds, s);
+    PixelBox edge = organPixels(edgeOn, 5);
+    EXPECT_LE(edge.maxX - edge.minX + 1, 2) << "seen along the heading, the blade is a line";
+
+    camera.azimuthDegrees = 0.0f;  // looking down -y: edge on across the width
+    camera.elevationDegrees = 89.0f;
+    s.camera = camera;
+    Frame fromAbove = renderer().render(scene.instances, scene.table, scene.bounds, s);
+    PixelBox above = organPixels(fromAbove, 5);
+    EXPECT_LE(above.maxY - above.minY + 1, 3) << "seen along left, the blade is a line";
+}
+
+TEST_F(RendererTest, DrawsFollowTheTableCounts) {
+    // Three spheres in the buffer, but the table says one: only the first is drawn.
+    std::vector<OrganInstance> organs{makeSphere({-1, 0.5f, 0}, 0.3f, 0, 1), makeSphere({0, 0.5f, 0}, 0.3f, 0, 2),
+                                      makeSphere({1, 0.5f, 0}, 0.3f, 0, 3)};
+    TestScene scene = uploadScene(context(), organs, std::vector<std::uint32_t>{0, 1, 0, 0, 0});
+    Frame frame = renderer().render(scene.instances, scene.table, scene.bounds, smallSettings());
+    EXPECT_FALSE(organPixels(frame, 1).empty());
+    EXPECT_TRUE(organPixels(frame, 2).empty());
+    EXPECT_TRUE(organPixels(frame, 3).empty());
+
+    TestScene none = uploadScene(context(), organs, std::vector<std::uint32_t>{0, 0, 0, 0, 0});
+    Frame empty = renderer().render(none.instances, none.table, none.bounds, smallSettings());
+    EXPECT_TRUE(organPixels(empty).empty());
+}
+
+TEST_F(RendererTest, EmptySceneShowsGroundAndSky) {
+    TestScene scene = uploadScene(context(), {});
+    ASSERT_TRUE(scene.bounds.empty());
+    for (draw::Shadows shadows : {draw::Shadows::None, draw::Shadows::Volume}) {
+        draw::RenderSettings s = smallSettings();
+        s.shadows = shadows;
+        Frame frame = renderer().render(scene.instances, scene.table, scene.bounds, s);
+        EXPECT_TRUE(organPixels(frame).empty());
+        EXPECT_TRUE(std::isinf(frame.depth[frame.index(0, 0)]));
+        EXPECT_TRUE(std::isfinite(frame.depth[frame.index(frame.width / 2, frame.height - 1)]));
+    }
+}
+
+TEST_F(RendererTest, ToonStyleOutlinesOrgansInDarkLines) {
+    TestScene scene = uploadScene(context(), {makeSphere({0, 0.5f, 0}, 0.5f, 0, 9)});
+    draw::RenderSettings s = smallSettings();
+    Frame lit = renderer().render(scene.instances, scene.table, scene.bounds, s);
+    s.style = draw::Style::Toon;
+    Frame toon = renderer().render(scene.instances, scene.table, scene.bounds, s);
+    maybeSavePreview(toon, "toon_sphere");
+    EXPECT_EQ(toon.organ, lit.organ);
+    // Along the middle row, the sphere's outermost pixels carry the line colour in toon style only.
+    std::uint32_t y = (static_cast<std::uint32_t>(organPixels(lit, 9).minY) + organPixels(lit, 9).maxY) / 2;
+    std::uint32_t left = 0;
+    while (left < toon.width && toon.organ[toon.index(left, y)] != 9) {
+        ++left;
+    }
+    ASSERT_LT(left, toon.width);
+    EXPECT_LT(luminance(toon, left, y), 0.05f);
+    EXPECT_GT(luminance(lit, left, y), 0.05f);
+    // Inside, colours come in bands: few distinct values across the row.
+    std::set<float> shades;
+    for (std::uint32_t x = left + 3; x < toon.width && toon.organ[toon.index(x + 3, y)] == 9; ++x) {
+        shades.insert(luminance(toon, x, y));
+    }
+    EXPECT_LE(shades.size(), 6u);
+}
+
+TEST_F(RendererTest, RejectsZeroSize) {
+    TestScene scene = uploadScene(context(), {});
+    draw::RenderSettings s = smallSettings(0, 10);
+    EXPECT_THROW(renderer().render(scene.instances, scene.table, scene.bounds, s), std::invalid_argument);
+}
+
+} // namespace
+} // namespace simeco::test

@@ -25,9 +25,13 @@ layout(location = 2) flat out vec3 outAlbedo;
 layout(location = 3) flat out uint outPlant;
 layout(location = 4) flat out uint outOrgan;
 
+// The sun pass redraws with depth test EQUAL, so positions must come out the same in every pass: no fused or
+// reordered arithmetic that one pipeline's compilation could choose differently from another's.
+precise gl_Position;
+
 
 void main() {
-    vec3 world;
+    precise vec3 world;
     if (push.kind == kDrawGround) {
         world = frame.groundPlane.xyz + frame.groundPlane.w * vec3(inPosition.x, 0.0, inPosition.z);
         outNormal = vec3(0.0, 1.0, 0.0);

@@ -218,8 +218,8 @@ void addCompound(MeshBuilder& b, float shape) {
         float width;
     };
     const Leaflet leaflets[] = {
-        {{0.22f, 0}, 0.95f, 0.36f, 0.38f},  {{0.22f, 0}, -0.95f, 0.36f, 0.38f},
-        {{0.45f, 0}, 0.85f, 0.36f, 0.38f},  {{0.45f, 0}, -0.85f, 0.36f, 0.38f},
+        {{0.20f, 0}, 1.0f, 0.45f, 0.30f},  {{0.20f, 0}, -1.0f, 0.45f, 0.30f},
+        {{0.42f, 0}, 0.8f, 0.45f, 0.30f},  {{0.42f, 0}, -0.8f, 0.45f, 0.30f},
         {{rachisEnd - 0.02f, 0}, 0.0f, 0.40f, 0.55f},
     };
     std::vector<glm::vec2> unit = bladeOutline(ovateHalfWidth, 6);

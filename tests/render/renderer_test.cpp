@@ -7,6 +7,7 @@
 #include <utility>
 
 #include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 #include <gtest/gtest.h>
 
 #include "draw/renderer.h"
@@ -270,6 +271,138 @@ TEST_F(RendererTest, RejectsZeroSize) {
     TestScene scene = uploadScene(context(), {});
     draw::RenderSettings s = smallSettings(0, 10);
     EXPECT_THROW(renderer().render(scene.instances, scene.table, scene.bounds, s), std::invalid_argument);
+}
+
+} // namespace
+} // namespace simeco::test
+
+namespace simeco::test {
+namespace {
+
+TEST_F(RendererTest, BentStemIsClosedOnTheOuterSideOfTheJoint) {
+    // Two segments bending 45 degrees towards +x; their ends are cut on the bisecting plane. Flat ends would
+    // leave a wedge open on the outer (-x) side of the joint.
+    glm::vec3 lower(0, 1, 0);
+    glm::vec3 upper = glm::normalize(glm::vec3(1, 1, 0));
+    float radius = 0.1f;
+    OrganInstance a = makeStem({0, 0, 0}, lower, {0, 0, 1}, 1.0f, radius, 0, 1);
+    OrganInstance b = makeStem({0, 1, 0}, upper, {0, 0, 1}, 1.0f, radius, 0, 2);
+    a.nextHeading = {upper.x, upper.y, upper.z, 0};
+    b.previousHeading = {lower.x, lower.y, lower.z, 0};
+    TestScene scene = uploadScene(context(), {a, b});
+    draw::RenderSettings s = smallSettings(200, 200);
+    s.ground = false;
+    draw::Camera camera;
+    camera.azimuthDegrees = 0.0f;
+    camera.elevationDegrees = 0.0f;
+    camera.distance = 3.0f;
+    camera.target = glm::vec3(0.2f, 1.0f, 0.0f);
+    s.camera = camera;
+    Frame frame = renderer().render(scene.instances, scene.table, scene.bounds, s);
+    maybeSavePreview(frame, "bent_stem");
+    draw::CameraView view = draw::frameCamera(scene.bounds, s);
+
+    glm::vec3 joint(0, 1, 0);
+    glm::vec3 outward(-0.924f, 0.383f, 0.0f);  // in the bisecting plane, away from the bend
+    float outerCorner = radius / std::cos(glm::radians(22.5f));
+    glm::vec2 inside = projectToPixel(view, joint + 0.85f * outerCorner * outward, s.width, s.height);
+    glm::vec2 outside = projectToPixel(view, joint + 1.3f * outerCorner * outward, s.width, s.height);
+    std::uint32_t covered = frame.organ[frame.index(static_cast<std::uint32_t>(inside.x), static_cast<std::uint32_t>(inside.y))];
+    EXPECT_TRUE(covered == 1u || covered == 2u) << "the outer side of the joint is open";
+    EXPECT_EQ(frame.organ[frame.index(static_cast<std::uint32_t>(outside.x), static_cast<std::uint32_t>(outside.y))],
+              Frame::kNoId);
+    // The segments meet on the bisecting plane: each covers only its own side of it.
+    glm::vec3 n = glm::normalize(lower + upper);
+    glm::vec2 belowPlane = projectToPixel(view, joint - 0.05f * n, s.width, s.height);
+    glm::vec2 abovePlane = projectToPixel(view, joint + 0.05f * n, s.width, s.height);
+    EXPECT_EQ(frame.organ[frame.index(static_cast<std::uint32_t>(belowPlane.x), static_cast<std::uint32_t>(belowPlane.y))], 1u);
+    EXPECT_EQ(frame.organ[frame.index(static_cast<std::uint32_t>(abovePlane.x), static_cast<std::uint32_t>(abovePlane.y))], 2u);
+}
+
+// A small hand-made plant with every organ kind and leaf shape, rendered in both styles with shadows.
+std::vector<OrganInstance> samplePlant() {
+    std::vector<OrganInstance> organs;
+    std::uint32_t module = 0;
+    glm::vec3 position(0, 0, 0);
+    glm::vec3 headings[] = {{0, 1, 0}, glm::normalize(glm::vec3(0.15f, 1, 0)), glm::normalize(glm::vec3(0.3f, 1, 0.1f)),
+                            glm::normalize(glm::vec3(0.3f, 1, 0.3f))};
+    for (int i = 0; i < 4; ++i) {
+        glm::vec3 h = headings[i];
+        glm::vec3 up = glm::normalize(glm::cross(h, glm::vec3(1, 0, 0)));
+        OrganInstance stem = makeStem(position, h, up, 0.6f, 0.05f - 0.008f * i, 0, module++);
+        stem.up.w = 0.05f - 0.008f * (i + 1);
+        if (i > 0) {
+            stem.previousHeading = {headings[i - 1].x, headings[i - 1].y, headings[i - 1].z, 0};
+        }
+        if (i < 3) {
+            stem.nextHeading = {headings[i + 1].x, headings[i + 1].y, headings[i + 1].z, 0};
+        }
+        organs.push_back(stem);
+        // A leaf to alternating sides, each of a different shape, tilted up from horizontal.
+        glm::vec3 side = (i % 2 == 0) ? glm::vec3(1, 0.4f, 0.3f) : glm::vec3(-1, 0.4f, -0.2f);
+        glm::vec3 leafHeading = glm::normalize(side);
+        glm::vec3 leafUp = glm::normalize(glm::cross(glm::cross(leafHeading, glm::vec3(0, 1, 0)), leafHeading));
+        organs.push_back(makeLeaf(position + 0.3f * h, leafHeading, leafUp, 0.55f, 0.3f,
+                                  static_cast<std::uint32_t>(i), 0, module++));
+        position += 0.6f * h;
+    }
+    organs.push_back(makeSphere(position, 0.09f, 0, module++));
+    OrganInstance flower = makeDisc(position + glm::vec3(0, 0.1f, 0), {0, 0, 1}, {0, 1, 0}, 0.16f, 0, module++);
+    flower.shape = shared::kDiscFacesViewer;
+    organs.push_back(flower);
+    organs.push_back(makeTriangle({0.5f, 0.02f, 0.4f}, {0.8f, 0.02f, 0.5f}, {0.6f, 0.3f, 0.6f}, 1, module++));
+    return organs;
+}
+
+TEST_F(RendererTest, SmallPlantShowsEveryOrganInBothStyles) {
+    std::vector<OrganInstance> organs = samplePlant();
+    TestScene scene = uploadScene(context(), organs);
+    for (draw::Style style : {draw::Style::Lit, draw::Style::Toon}) {
+        draw::RenderSettings s;
+        s.width = 320;
+        s.height = 320;
+        s.style = style;
+        Frame frame = renderer().render(scene.instances, scene.table, scene.bounds, s);
+        maybeSavePreview(frame, style == draw::Style::Lit ? "plant_lit" : "plant_toon");
+        std::set<std::uint32_t> seen(frame.organ.begin(), frame.organ.end());
+        for (const OrganInstance& o : organs) {
+            EXPECT_TRUE(seen.count(o.module)) << "organ " << o.module << " (kind " << o.kind << ") not visible";
+        }
+    }
+}
+
+} // namespace
+} // namespace simeco::test
+
+namespace simeco::test {
+namespace {
+
+TEST_F(RendererTest, EachLeafShapeDrawsItsOwnOutline) {
+    // The four shapes side by side, face on; each covers its own area, and a leaf shows nothing of the others.
+    std::vector<OrganInstance> organs;
+    for (std::uint32_t shape = 0; shape < 4; ++shape) {
+        organs.push_back(makeLeaf({1.2f * static_cast<float>(shape), 0.2f, 0}, {0, 1, 0}, {0, 0, 1}, 1.0f, 0.8f, shape,
+                                  shape, 20 + shape));
+    }
+    TestScene scene = uploadScene(context(), organs);
+    draw::RenderSettings s = smallSettings(400, 160);
+    draw::Camera camera;
+    camera.azimuthDegrees = 0.0f;
+    camera.elevationDegrees = 0.0f;
+    s.camera = camera;
+    Frame frame = renderer().render(scene.instances, scene.table, scene.bounds, s);
+    maybeSavePreview(frame, "leaf_shapes");
+    std::set<std::size_t> areas;
+    for (std::uint32_t shape = 0; shape < 4; ++shape) {
+        PixelBox leaf = organPixels(frame, 20 + shape);
+        ASSERT_FALSE(leaf.empty()) << "shape " << shape;
+        areas.insert(leaf.pixels);
+        // Nothing of this leaf strays towards its neighbours (the other shapes' vertices collapse).
+        glm::vec2 centre = projectToPixel(draw::frameCamera(scene.bounds, s), {1.2f * static_cast<float>(shape), 0.7f, 0},
+                                          s.width, s.height);
+        EXPECT_LT(std::abs(0.5f * (leaf.minX + leaf.maxX + 1) - centre.x), 0.2f * static_cast<float>(s.width) / 4.0f);
+    }
+    EXPECT_EQ(areas.size(), 4u) << "the shapes should differ in area";
 }
 
 } // namespace

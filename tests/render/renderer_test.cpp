@@ -2,6 +2,7 @@
 // the toon style.
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <set>
 #include <stdexcept>
 #include <utility>
@@ -21,24 +22,18 @@ using draw::Frame;
 
 class RendererTest : public GpuTest {
 protected:
-    static void SetUpTestSuite() {
-        GpuTest::SetUpTestSuite();
-    }
-    draw::Renderer& renderer() {
-        static draw::Renderer* instance = nullptr;
-        if (instance == nullptr) {
-            // Kept for the whole process: pipelines are built once, and released before the context in main's exit.
-            renderers_.push_back(std::make_unique<draw::Renderer>(context()));
-            instance = renderers_.back().get();
-        }
-        return *instance;
-    }
     static void TearDownTestSuite() {
-        renderers_.clear();
+        renderer_.reset();  // before the context goes
         GpuTest::TearDownTestSuite();
     }
-
-    static inline std::vector<std::unique_ptr<draw::Renderer>> renderers_;
+    // One renderer for the suite: pipelines are built once.
+    draw::Renderer& renderer() {
+        if (!renderer_) {
+            renderer_ = std::make_unique<draw::Renderer>(context());
+        }
+        return *renderer_;
+    }
+    static inline std::unique_ptr<draw::Renderer> renderer_;
 };
 
 draw::RenderSettings smallSettings(std::uint32_t width = 160, std::uint32_t height = 120) {

@@ -17,9 +17,10 @@ using draw::Frame;
 class ShadowTest : public GpuTest {
 protected:
     static void TearDownTestSuite() {
-        renderer_.reset();
+        renderer_.reset();  // before the context goes
         GpuTest::TearDownTestSuite();
     }
+    // One renderer for the suite: pipelines are built once.
     draw::Renderer& renderer() {
         if (!renderer_) {
             renderer_ = std::make_unique<draw::Renderer>(context());
@@ -116,6 +117,41 @@ TEST_F(ShadowTest, StemShadowsAnOrganInItsWayAndTheSunSideOfItselfIsLit) {
             EXPECT_NEAR(luminanceAt(frame, view, p), luminanceAt(unshadowed, view, p), 1e-3f);
         }
     }
+}
+
+} // namespace
+} // namespace simeco::test
+
+namespace simeco::test {
+namespace {
+
+TEST_F(ShadowTest, CameraInsideAShadowVolumeStillCountsRight) {
+    // A large sphere high above the ground with the sun straight overhead: its shadow is a disc of radius 1.5
+    // around the origin. The camera stands in that shadow, inside the volume, where counting volume faces in
+    // front of a surface (z-pass) would go wrong and counting those behind it (z-fail) does not.
+    std::vector<OrganInstance> organs{makeSphere({0, 3.0f, 0}, 1.5f, 0, 1), makeSphere({2.5f, 0.02f, 2.5f}, 0.02f, 0, 2)};
+    TestScene scene = uploadScene(context(), organs);
+    ASSERT_NEAR(scene.bounds.min.y, 0.0f, 1e-6f);
+    draw::RenderSettings s;
+    s.width = 160;
+    s.height = 120;
+    s.sunDirection = glm::vec3(0, 1, 0);
+    draw::Camera camera;
+    camera.target = glm::vec3(0, 0, 0);
+    camera.distance = 1.2f;
+    camera.azimuthDegrees = 0.0f;
+    camera.elevationDegrees = 25.0f;
+    s.camera = camera;
+    Frame frame = renderer().render(scene.instances, scene.table, scene.bounds, s);
+    maybeSavePreview(frame, "camera_in_shadow");
+    draw::CameraView view = draw::frameCamera(scene.bounds, s);
+    ASSERT_LT(glm::length(glm::vec2(view.position.x, view.position.z)), 1.4f) << "the camera should be in the shadow";
+
+    glm::vec3 shaded(0, 0, 0);
+    glm::vec3 sunny(0, 0, -1.9f);
+    ASSERT_EQ(organAt(frame, view, shaded), Frame::kNoId);
+    ASSERT_EQ(organAt(frame, view, sunny), Frame::kNoId);
+    EXPECT_LT(luminanceAt(frame, view, shaded), 0.6f * luminanceAt(frame, view, sunny));
 }
 
 } // namespace

@@ -81,7 +81,7 @@ CameraView cameraView(const Camera& camera, const Bounds& bounds, float aspect) 
     v.farPlane = distance + 8.0f * radius;
     v.view = glm::lookAtRH(v.position, v.target, v.up);
     v.projection = glm::perspectiveRH_ZO(fovY, aspect, v.nearPlane, v.farPlane);
-    v.projection[1][1] = -v.projection[1][1];  // Vulkan's image y runs downwards
+    v.projection[1][1] = -v.projection[1][1]; // Vulkan's image y runs downwards
     v.viewProj = v.projection * v.view;
     return v;
 }

@@ -13,10 +13,10 @@ namespace simeco::draw {
 struct CameraView {
     glm::vec3 position{0.0f};
     glm::vec3 target{0.0f};
-    glm::vec3 right{1, 0, 0};  // image x axis in the world
-    glm::vec3 up{0, 1, 0};     // image y axis (upwards) in the world
+    glm::vec3 right{1, 0, 0}; // image x axis in the world
+    glm::vec3 up{0, 1, 0};    // image y axis (upwards) in the world
     glm::mat4 view{1.0f};
-    glm::mat4 projection{1.0f};  // Vulkan clip space: depth in [0, 1], image y downwards
+    glm::mat4 projection{1.0f}; // Vulkan clip space: depth in [0, 1], image y downwards
     glm::mat4 viewProj{1.0f};
     float nearPlane = 0.1f;
     float farPlane = 100.0f;

@@ -37,7 +37,7 @@ vk::UniquePipeline createPipeline(VkDevice device, VkPipelineLayout layout, VkRe
     stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
     stages[0].module = vertex.get();
     stages[0].pName = "main";
-    if (!volume) {  // volumes only touch the stencil
+    if (!volume) { // volumes only touch the stencil
         fragment = shaderModule(device, "organ.frag");
         VkPipelineShaderStageCreateInfo stage = stages[0];
         stage.stage = VK_SHADER_STAGE_FRAGMENT_BIT;
@@ -91,10 +91,20 @@ vk::UniquePipeline createPipeline(VkDevice device, VkPipelineLayout layout, VkRe
     if (volume) {
         // Carmack's reverse: count the volume faces behind the visible surface, back faces up, front faces down.
         depth.stencilTestEnable = VK_TRUE;
-        depth.front = {VK_STENCIL_OP_KEEP, VK_STENCIL_OP_KEEP, VK_STENCIL_OP_DECREMENT_AND_WRAP,
-                       VK_COMPARE_OP_ALWAYS, 0xFF, 0xFF, 0};
-        depth.back = {VK_STENCIL_OP_KEEP, VK_STENCIL_OP_KEEP, VK_STENCIL_OP_INCREMENT_AND_WRAP,
-                      VK_COMPARE_OP_ALWAYS, 0xFF, 0xFF, 0};
+        depth.front = {VK_STENCIL_OP_KEEP,
+                       VK_STENCIL_OP_KEEP,
+                       VK_STENCIL_OP_DECREMENT_AND_WRAP,
+                       VK_COMPARE_OP_ALWAYS,
+                       0xFF,
+                       0xFF,
+                       0};
+        depth.back = {VK_STENCIL_OP_KEEP,
+                      VK_STENCIL_OP_KEEP,
+                      VK_STENCIL_OP_INCREMENT_AND_WRAP,
+                      VK_COMPARE_OP_ALWAYS,
+                      0xFF,
+                      0xFF,
+                      0};
     } else if (pass == PassKind::Sun) {
         depth.stencilTestEnable = VK_TRUE;
         depth.front = {VK_STENCIL_OP_KEEP, VK_STENCIL_OP_KEEP, VK_STENCIL_OP_KEEP, VK_COMPARE_OP_EQUAL, 0xFF, 0, 0};
@@ -187,7 +197,7 @@ DrawPipelines::DrawPipelines(const vk::Context& context, VkRenderPass renderPass
 }
 
 void DrawPipelines::pushDescriptors(VkCommandBuffer cmd, const vk::Buffer& instances,
-                                   const vk::Buffer& frameConstants) const {
+                                    const vk::Buffer& frameConstants) const {
     std::array<VkDescriptorBufferInfo, 2> infos{{
         {instances.handle(), 0, VK_WHOLE_SIZE},
         {frameConstants.handle(), 0, VK_WHOLE_SIZE},

@@ -15,13 +15,13 @@
 namespace simeco::vk {
 class Buffer;
 class Context;
-}
+} // namespace simeco::vk
 
 namespace simeco::draw {
 
 enum class Culling {
-    Back,  // closed meshes (stems, spheres)
-    None,  // single sheets (leaves, discs, triangles, the ground)
+    Back, // closed meshes (stems, spheres)
+    None, // single sheets (leaves, discs, triangles, the ground)
 };
 
 class DrawPipelines {

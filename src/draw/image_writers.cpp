@@ -82,12 +82,13 @@ void writeExr(const std::filesystem::path& path, const Frame& frame) {
         const std::size_t pixel = 4 * sizeof(Imath::half);
         const char* names[] = {"R", "G", "B", "A"};
         for (std::size_t c = 0; c < 4; ++c) {
-            buffer.insert(names[c], Imf::Slice(Imf::HALF, reinterpret_cast<char*>(rgba.data() + c), pixel,
-                                               pixel * frame.width));
+            buffer.insert(names[c],
+                          Imf::Slice(Imf::HALF, reinterpret_cast<char*>(rgba.data() + c), pixel, pixel * frame.width));
         }
         // OpenEXR's slices take writable pointers but only read from them when writing.
-        auto bytes = [](const auto& v) { return reinterpret_cast<char*>(const_cast<void*>(
-                                             static_cast<const void*>(v.data()))); };
+        auto bytes = [](const auto& v) {
+            return reinterpret_cast<char*>(const_cast<void*>(static_cast<const void*>(v.data())));
+        };
         buffer.insert("Z", Imf::Slice(Imf::FLOAT, bytes(frame.depth), sizeof(float), sizeof(float) * frame.width));
         buffer.insert("plant", Imf::Slice(Imf::UINT, bytes(frame.plant), sizeof(std::uint32_t),
                                           sizeof(std::uint32_t) * frame.width));

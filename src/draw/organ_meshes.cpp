@@ -70,8 +70,8 @@ MeshRange addStem(MeshBuilder& b, std::uint32_t sides) {
     std::uint32_t bottom = 0;
     for (std::uint32_t ring = 0; ring < 2; ++ring) {
         for (std::uint32_t i = 0; i < sides; ++i) {
-            std::uint32_t v = b.vertex(radial(i) + glm::vec3(static_cast<float>(ring), 0, 0), radial(i),
-                                       static_cast<float>(ring));
+            std::uint32_t v =
+                b.vertex(radial(i) + glm::vec3(static_cast<float>(ring), 0, 0), radial(i), static_cast<float>(ring));
             if (ring == 0 && i == 0) {
                 bottom = v;
             }
@@ -213,13 +213,15 @@ void addCompound(MeshBuilder& b, float shape) {
 
     struct Leaflet {
         glm::vec2 base;
-        float angle;  // from the midrib, counter-clockwise
+        float angle; // from the midrib, counter-clockwise
         float length;
         float width;
     };
     const Leaflet leaflets[] = {
-        {{0.20f, 0}, 1.0f, 0.45f, 0.30f},  {{0.20f, 0}, -1.0f, 0.45f, 0.30f},
-        {{0.42f, 0}, 0.8f, 0.45f, 0.30f},  {{0.42f, 0}, -0.8f, 0.45f, 0.30f},
+        {{0.20f, 0}, 1.0f, 0.45f, 0.30f},
+        {{0.20f, 0}, -1.0f, 0.45f, 0.30f},
+        {{0.42f, 0}, 0.8f, 0.45f, 0.30f},
+        {{0.42f, 0}, -0.8f, 0.45f, 0.30f},
         {{rachisEnd - 0.02f, 0}, 0.0f, 0.40f, 0.55f},
     };
     std::vector<glm::vec2> unit = bladeOutline(ovateHalfWidth, 6);
@@ -296,9 +298,8 @@ OrganMeshData buildOrganMeshes() {
 }
 
 OrganMeshes::OrganMeshes(const vk::Context& context)
-    : data_(buildOrganMeshes()),
-      vertices_(context, data_.vertices.size() * sizeof(shared::MeshVertex), vk::MemoryUsage::DeviceLocal,
-                VK_BUFFER_USAGE_VERTEX_BUFFER_BIT),
+    : data_(buildOrganMeshes()), vertices_(context, data_.vertices.size() * sizeof(shared::MeshVertex),
+                                           vk::MemoryUsage::DeviceLocal, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT),
       indices_(context, data_.indices.size() * sizeof(std::uint32_t), vk::MemoryUsage::DeviceLocal,
                VK_BUFFER_USAGE_INDEX_BUFFER_BIT) {
     vk::uploadSpan(context, vertices_, std::span<const shared::MeshVertex>(data_.vertices));

@@ -27,14 +27,14 @@ struct MeshRange {
 
 struct OrganMeshData {
     std::vector<shared::MeshVertex> vertices;
-    std::vector<std::uint32_t> indices;  // triangles wound counter-clockwise seen from outside (right-handed)
-    std::array<MeshRange, shared::kOrganKinds> organs;  // drawn, by kind (kOrgan*)
-    std::array<MeshRange, shared::kOrganKinds> hulls;   // cast shadows, by kind
+    std::vector<std::uint32_t> indices; // triangles wound counter-clockwise seen from outside (right-handed)
+    std::array<MeshRange, shared::kOrganKinds> organs; // drawn, by kind (kOrgan*)
+    std::array<MeshRange, shared::kOrganKinds> hulls;  // cast shadows, by kind
     // Whether a kind's hull is closed (casts from the faces turned away from the sun) or an open sheet.
     std::array<bool, shared::kOrganKinds> closedHull{};
     // Hull triangles one instance of a kind can cast at most (the leaf hull holds every shape, one is cast).
     std::array<std::uint32_t, shared::kOrganKinds> castingTriangles{};
-    MeshRange ground;  // the square [-1, 1]^2 in x and z at y = 0, facing +y
+    MeshRange ground; // the square [-1, 1]^2 in x and z at y = 0, facing +y
 };
 
 // Sides of the drawn stem and of its shadow hull; the hull's corners are corners of the drawn stem, so the

@@ -10,21 +10,21 @@
 namespace simeco::draw {
 
 struct Camera {
-    float azimuthDegrees = 30.0f;    // around +y, from +z towards +x
-    float elevationDegrees = 20.0f;  // above the horizon, within (-90, 90)
+    float azimuthDegrees = 30.0f;   // around +y, from +z towards +x
+    float elevationDegrees = 20.0f; // above the horizon, within (-90, 90)
     // From the target; 0 or less: as close as keeps the whole bounding box in the frame with a small margin.
     float distance = 0.0f;
-    std::optional<glm::vec3> target;  // what the camera looks at; default: the centre of the bounds
-    float fovYDegrees = 35.0f;        // vertical field of view of the perspective projection
+    std::optional<glm::vec3> target; // what the camera looks at; default: the centre of the bounds
+    float fovYDegrees = 35.0f;       // vertical field of view of the perspective projection
 };
 
 enum class Style {
-    Lit,   // Lambert sun and hemisphere sky light
-    Toon,  // the same light in colour bands, with dark outlines
+    Lit,  // Lambert sun and hemisphere sky light
+    Toon, // the same light in colour bands, with dark outlines
 };
 
 enum class Shadows {
-    Volume,  // stencil shadow volumes of the sun
+    Volume, // stencil shadow volumes of the sun
     None,
 };
 
@@ -35,11 +35,11 @@ struct RenderSettings {
     std::optional<Camera> camera;
     Style style = Style::Lit;
     Shadows shadows = Shadows::Volume;
-    glm::vec3 sunDirection{-0.45f, 0.80f, 0.40f};  // towards the sun; need not be unit length
-    glm::vec3 sunColor{1.00f, 0.95f, 0.88f};        // linear irradiance
-    glm::vec3 skyColor{0.30f, 0.36f, 0.45f};        // ambient from above
-    glm::vec3 groundBounce{0.10f, 0.09f, 0.07f};    // ambient from below
-    glm::vec3 background{0.62f, 0.74f, 0.88f};      // linear colour where nothing is drawn
+    glm::vec3 sunDirection{-0.45f, 0.80f, 0.40f}; // towards the sun; need not be unit length
+    glm::vec3 sunColor{1.00f, 0.95f, 0.88f};      // linear irradiance
+    glm::vec3 skyColor{0.30f, 0.36f, 0.45f};      // ambient from above
+    glm::vec3 groundBounce{0.10f, 0.09f, 0.07f};  // ambient from below
+    glm::vec3 background{0.62f, 0.74f, 0.88f};    // linear colour where nothing is drawn
     bool ground = true;
     glm::vec3 groundColor{0.36f, 0.31f, 0.23f};
     std::uint32_t toonBands = 3;

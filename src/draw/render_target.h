@@ -38,10 +38,10 @@ public:
     void cmdCopyToBuffers(VkCommandBuffer cmd) const;
 
     const vk::Buffer& color() const { return colorCopy_; }
-    const vk::Buffer& depth() const { return depthCopy_; }  // depth buffer values in [0, 1]
+    const vk::Buffer& depth() const { return depthCopy_; } // depth buffer values in [0, 1]
     const vk::Buffer& plant() const { return plantCopy_; }
     const vk::Buffer& organ() const { return organCopy_; }
-    const vk::Buffer& outlined() const { return outlined_; }  // toon outlines' output, same layout as color()
+    const vk::Buffer& outlined() const { return outlined_; } // toon outlines' output, same layout as color()
 
 private:
     std::uint32_t width_ = 0;

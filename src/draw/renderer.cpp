@@ -67,11 +67,8 @@ void requireFeatures(const vk::Context& context) {
 
 struct Renderer::Resources {
     explicit Resources(const vk::Context& context)
-        : meshes(context),
-          renderPass(createRenderPass(context)),
-          pipelines(context, renderPass.get()),
-          drawArgs(kernel(context, "draw_args.comp")),
-          shadowVolumes(kernel(context, "shadow_volumes.comp")),
+        : meshes(context), renderPass(createRenderPass(context)), pipelines(context, renderPass.get()),
+          drawArgs(kernel(context, "draw_args.comp")), shadowVolumes(kernel(context, "shadow_volumes.comp")),
           toonOutline(kernel(context, "toon_outline.comp")),
           frameConstants(context, sizeof(shared::DrawFrame), vk::MemoryUsage::Upload,
                          VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT),
@@ -90,7 +87,7 @@ struct Renderer::Resources {
     vk::Buffer drawCommands;
     vk::Buffer volumeDraw;
     vk::Buffer volumeVertices;
-    std::uint32_t volumeCapacity = 0;  // vertices
+    std::uint32_t volumeCapacity = 0; // vertices
     std::unique_ptr<RenderTarget> target;
 };
 
@@ -155,8 +152,8 @@ Frame Renderer::render(const vk::Buffer& instances, const vk::Buffer& table, con
         counts = vk::downloadVector<shared::OrganTable>(context_, table, 1)[0];
         std::uint64_t needed = 0;
         for (std::uint32_t kind = 0; kind < kOrganKinds; ++kind) {
-            needed += std::uint64_t{counts.count[kind]} * meshes.castingTriangles[kind] *
-                      shared::kVolumeVerticesPerTriangle;
+            needed +=
+                std::uint64_t{counts.count[kind]} * meshes.castingTriangles[kind] * shared::kVolumeVerticesPerTriangle;
         }
         std::uint64_t affordable = settings.maxShadowVolumeBytes / sizeof(shared::vec4);
         std::uint64_t limit = std::min<std::uint64_t>(affordable, std::numeric_limits<std::uint32_t>::max());
@@ -203,10 +200,9 @@ Frame Renderer::render(const vk::Buffer& instances, const vk::Buffer& table, con
                 push.vertexOffset = hull.vertexOffset;
                 push.capacity = r.volumeCapacity;
                 push.closedHull = meshes.closedHull[kind] ? 1u : 0u;
-                r.shadowVolumes.dispatch(cmd,
-                                         {instances, table, r.meshes.vertices(), r.meshes.indices(), r.volumeDraw,
-                                          r.volumeVertices},
-                                         push, r.shadowVolumes.groupsFor(counts.count[kind]));
+                r.shadowVolumes.dispatch(
+                    cmd, {instances, table, r.meshes.vertices(), r.meshes.indices(), r.volumeDraw, r.volumeVertices},
+                    push, r.shadowVolumes.groupsFor(counts.count[kind]));
             }
             memoryDependency(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
                              VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
@@ -263,8 +259,8 @@ Frame Renderer::render(const vk::Buffer& instances, const vk::Buffer& table, con
             }
             if (settings.ground) {
                 push(shared::kDrawGround);
-                vkCmdDrawIndexed(cmd, meshes.ground.indexCount, 1, meshes.ground.firstIndex,
-                                 meshes.ground.vertexOffset, 0);
+                vkCmdDrawIndexed(cmd, meshes.ground.indexCount, 1, meshes.ground.firstIndex, meshes.ground.vertexOffset,
+                                 0);
             }
         };
         if (shadows) {

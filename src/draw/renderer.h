@@ -19,7 +19,7 @@
 namespace simeco::vk {
 class Buffer;
 class Context;
-}
+} // namespace simeco::vk
 
 namespace simeco::draw {
 

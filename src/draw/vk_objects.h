@@ -24,7 +24,7 @@ struct Attachment {
     Attachment(const vk::Context& context, VkFormat format, VkImageAspectFlags aspect, VkImageUsageFlags usage,
                std::uint32_t width, std::uint32_t height);
 
-    vk::UniqueMemory memory;  // declared first so the image and view go before their memory
+    vk::UniqueMemory memory; // declared first so the image and view go before their memory
     UniqueImage image;
     UniqueImageView view;
     VkFormat format = VK_FORMAT_UNDEFINED;

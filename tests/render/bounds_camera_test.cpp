@@ -54,8 +54,8 @@ void expectFramed(const draw::Camera& camera, const draw::Bounds& box, float asp
 }
 
 TEST(CameraTest, FramesTheWholeBoxWithAMargin) {
-    expectFramed({}, {{-0.05f, 0.0f, -0.05f}, {0.05f, 1.0f, 0.05f}}, 4.0f / 3.0f);  // a thin stem
-    expectFramed({}, {{-5.0f, 0.0f, -5.0f}, {5.0f, 0.5f, 5.0f}}, 16.0f / 9.0f);     // a wide flat field
+    expectFramed({}, {{-0.05f, 0.0f, -0.05f}, {0.05f, 1.0f, 0.05f}}, 4.0f / 3.0f); // a thin stem
+    expectFramed({}, {{-5.0f, 0.0f, -5.0f}, {5.0f, 0.5f, 5.0f}}, 16.0f / 9.0f);    // a wide flat field
     draw::Camera above;
     above.azimuthDegrees = 200.0f;
     above.elevationDegrees = 70.0f;

@@ -48,8 +48,8 @@ draw::Frame sampleFrame() {
     draw::Frame f;
     f.width = 3;
     f.height = 2;
-    f.rgba = {0.0f, 0.0f, 0.0f, 1.0f,  1.0f, 0.5f, 0.25f, 1.0f,  4.0f, 0.1f, 0.01f, 1.0f,
-              0.2f, 0.4f, 0.6f, 0.0f,  0.9f, 0.9f, 0.9f, 1.0f,   0.05f, 0.5f, 2.0f, 1.0f};
+    f.rgba = {0.0f, 0.0f, 0.0f, 1.0f, 1.0f, 0.5f, 0.25f, 1.0f, 4.0f,  0.1f, 0.01f, 1.0f,
+              0.2f, 0.4f, 0.6f, 0.0f, 0.9f, 0.9f, 0.9f,  1.0f, 0.05f, 0.5f, 2.0f,  1.0f};
     f.depth = {1.0f, 2.5f, 3.75f, std::numeric_limits<float>::infinity(), 100.0f, 0.125f};
     f.plant = {0, 1, 2, draw::Frame::kNoId, 7, 123456};
     f.organ = {10, 11, 12, draw::Frame::kNoId, 70, 0xFFFFFFFEu};
@@ -67,7 +67,7 @@ TEST(PreviewByteTest, MapsDarkToZeroBrightToFullAndIsMonotone) {
         EXPECT_GE(b, previous);
         previous = b;
     }
-    EXPECT_GT(draw::previewByte(0.18f), 60);  // mid grey stays visible
+    EXPECT_GT(draw::previewByte(0.18f), 60); // mid grey stays visible
 }
 
 TEST_F(ImageWritersTest, PngReadsBackAsTheTonemappedFrame) {
@@ -116,7 +116,7 @@ TEST_F(ImageWritersTest, ExrHasEveryChannelWithItsTypeAndValues) {
     EXPECT_EQ(channels.findChannel("organ")->type, Imf::UINT);
 
     std::size_t n = f.pixelCount();
-    std::vector<float> rgba(4 * n);  // read back as float: OpenEXR converts the half channels
+    std::vector<float> rgba(4 * n); // read back as float: OpenEXR converts the half channels
     std::vector<float> z(n);
     std::vector<std::uint32_t> plant(n), organ(n);
     Imf::FrameBuffer buffer;

@@ -74,7 +74,8 @@ TEST(OrganMeshesTest, StemRingsAndCapsAreFlagged) {
     const MeshRange& stem = d.organs[shared::kOrganStem];
     int caps = 0;
     for (std::uint32_t i = 0; i < stem.indexCount; ++i) {
-        const shared::MeshVertex& v = d.vertices[static_cast<std::size_t>(stem.vertexOffset) + d.indices[stem.firstIndex + i]];
+        const shared::MeshVertex& v =
+            d.vertices[static_cast<std::size_t>(stem.vertexOffset) + d.indices[stem.firstIndex + i]];
         EXPECT_TRUE(v.position.w == 0.0f || v.position.w == 1.0f);
         EXPECT_EQ(v.position.x, v.position.w) << "the ring flag matches the end the vertex sits on";
         if (v.normal.w == 1.0f) {

@@ -23,7 +23,7 @@ using draw::Frame;
 class RendererTest : public GpuTest {
 protected:
     static void TearDownTestSuite() {
-        renderer_.reset();  // before the context goes
+        renderer_.reset(); // before the context goes
         GpuTest::TearDownTestSuite();
     }
     // One renderer for the suite: pipelines are built once.
@@ -87,8 +87,8 @@ TEST_F(RendererTest, VerticalStemIsFramedWhereItsBoundsProject) {
 TEST_F(RendererTest, SphereAppearsWhereTheCameraProjectsItWithItsFrontDepth) {
     glm::vec3 centre(2.0f, 1.0f, -1.0f);
     float radius = 0.3f;
-    TestScene scene = uploadScene(context(), {makeSphere(centre, radius, 3, 42),
-                                              makeStem({0, 0, 0}, {0, 1, 0}, {0, 0, 1}, 1.5f, 0.05f, 0, 1)});
+    TestScene scene = uploadScene(
+        context(), {makeSphere(centre, radius, 3, 42), makeStem({0, 0, 0}, {0, 1, 0}, {0, 0, 1}, 1.5f, 0.05f, 0, 1)});
     draw::RenderSettings s = smallSettings(200, 150);
     draw::Camera camera;
     camera.azimuthDegrees = -40.0f;
@@ -130,15 +130,18 @@ TEST_F(RendererTest, IdsAreThoseOfTheInstancesDrawnThereAndBackgroundHasNone) {
     TestScene scene = uploadScene(context(), organs);
     draw::RenderSettings s = smallSettings(240, 120);
     draw::Camera camera;
-    camera.azimuthDegrees = 0.0f;  // from +z, facing the leaf, disc and triangle
+    camera.azimuthDegrees = 0.0f; // from +z, facing the leaf, disc and triangle
     camera.elevationDegrees = 10.0f;
     s.camera = camera;
     Frame frame = renderer().render(scene.instances, scene.table, scene.bounds, s);
     maybeSavePreview(frame, "ids");
     draw::CameraView view = draw::frameCamera(scene.bounds, s);
 
-    const std::pair<glm::vec3, std::uint32_t> probes[] = {
-        {{-2, 0.5f, 0.15f}, 100}, {{-1, 0.5f, 0.3f}, 101}, {{0, 0.5f, 0}, 102}, {{1, 0.5f, 0}, 103}, {{2, 0.4f, 0}, 104}};
+    const std::pair<glm::vec3, std::uint32_t> probes[] = {{{-2, 0.5f, 0.15f}, 100},
+                                                          {{-1, 0.5f, 0.3f}, 101},
+                                                          {{0, 0.5f, 0}, 102},
+                                                          {{1, 0.5f, 0}, 103},
+                                                          {{2, 0.4f, 0}, 104}};
     for (const auto& [point, module] : probes) {
         glm::vec2 p = projectToPixel(view, point, frame.width, frame.height);
         std::size_t i = frame.index(static_cast<std::uint32_t>(p.x), static_cast<std::uint32_t>(p.y));
@@ -179,7 +182,7 @@ TEST_F(RendererTest, LeafLiesInTheHeadingLeftPlane) {
     camera.target = glm::vec3(0, 0.5f, 0);
     camera.distance = 4.0f;
 
-    camera.azimuthDegrees = 0.0f;  // looking along -z: the blade face on
+    camera.azimuthDegrees = 0.0f; // looking along -z: the blade face on
     camera.elevationDegrees = 0.0f;
     s.camera = camera;
     Frame faceOn = renderer().render(scene.instances, scene.table, scene.bounds, s);
@@ -195,13 +198,13 @@ TEST_F(RendererTest, LeafLiesInTheHeadingLeftPlane) {
     float widthPixels = 2.0f * (base.y - side.y);
     EXPECT_NEAR(static_cast<float>(blade.maxY - blade.minY + 1), widthPixels, 2.5f);
 
-    camera.azimuthDegrees = 90.0f;  // looking along -x: edge on
+    camera.azimuthDegrees = 90.0f; // looking along -x: edge on
     s.camera = camera;
     Frame edgeOn = renderer().render(scene.instances, scene.table, scene.bounds, s);
     PixelBox edge = organPixels(edgeOn, 5);
     EXPECT_LE(edge.maxX - edge.minX + 1, 2) << "seen along the heading, the blade is a line";
 
-    camera.azimuthDegrees = 0.0f;  // looking down -y: edge on across the width
+    camera.azimuthDegrees = 0.0f; // looking down -y: edge on across the width
     camera.elevationDegrees = 89.0f;
     s.camera = camera;
     Frame fromAbove = renderer().render(scene.instances, scene.table, scene.bounds, s);
@@ -298,11 +301,12 @@ TEST_F(RendererTest, BentStemIsClosedOnTheOuterSideOfTheJoint) {
     draw::CameraView view = draw::frameCamera(scene.bounds, s);
 
     glm::vec3 joint(0, 1, 0);
-    glm::vec3 outward(-0.924f, 0.383f, 0.0f);  // in the bisecting plane, away from the bend
+    glm::vec3 outward(-0.924f, 0.383f, 0.0f); // in the bisecting plane, away from the bend
     float outerCorner = radius / std::cos(glm::radians(22.5f));
     glm::vec2 inside = projectToPixel(view, joint + 0.85f * outerCorner * outward, s.width, s.height);
     glm::vec2 outside = projectToPixel(view, joint + 1.3f * outerCorner * outward, s.width, s.height);
-    std::uint32_t covered = frame.organ[frame.index(static_cast<std::uint32_t>(inside.x), static_cast<std::uint32_t>(inside.y))];
+    std::uint32_t covered =
+        frame.organ[frame.index(static_cast<std::uint32_t>(inside.x), static_cast<std::uint32_t>(inside.y))];
     EXPECT_TRUE(covered == 1u || covered == 2u) << "the outer side of the joint is open";
     EXPECT_EQ(frame.organ[frame.index(static_cast<std::uint32_t>(outside.x), static_cast<std::uint32_t>(outside.y))],
               Frame::kNoId);
@@ -310,8 +314,12 @@ TEST_F(RendererTest, BentStemIsClosedOnTheOuterSideOfTheJoint) {
     glm::vec3 n = glm::normalize(lower + upper);
     glm::vec2 belowPlane = projectToPixel(view, joint - 0.05f * n, s.width, s.height);
     glm::vec2 abovePlane = projectToPixel(view, joint + 0.05f * n, s.width, s.height);
-    EXPECT_EQ(frame.organ[frame.index(static_cast<std::uint32_t>(belowPlane.x), static_cast<std::uint32_t>(belowPlane.y))], 1u);
-    EXPECT_EQ(frame.organ[frame.index(static_cast<std::uint32_t>(abovePlane.x), static_cast<std::uint32_t>(abovePlane.y))], 2u);
+    EXPECT_EQ(
+        frame.organ[frame.index(static_cast<std::uint32_t>(belowPlane.x), static_cast<std::uint32_t>(belowPlane.y))],
+        1u);
+    EXPECT_EQ(
+        frame.organ[frame.index(static_cast<std::uint32_t>(abovePlane.x), static_cast<std::uint32_t>(abovePlane.y))],
+        2u);
 }
 
 // A small hand-made plant with every organ kind and leaf shape, rendered in both styles with shadows.
@@ -319,7 +327,9 @@ std::vector<OrganInstance> samplePlant() {
     std::vector<OrganInstance> organs;
     std::uint32_t module = 0;
     glm::vec3 position(0, 0, 0);
-    glm::vec3 headings[] = {{0, 1, 0}, glm::normalize(glm::vec3(0.15f, 1, 0)), glm::normalize(glm::vec3(0.3f, 1, 0.1f)),
+    glm::vec3 headings[] = {{0, 1, 0},
+                            glm::normalize(glm::vec3(0.15f, 1, 0)),
+                            glm::normalize(glm::vec3(0.3f, 1, 0.1f)),
                             glm::normalize(glm::vec3(0.3f, 1, 0.3f))};
     for (int i = 0; i < 4; ++i) {
         glm::vec3 h = headings[i];
@@ -337,8 +347,8 @@ std::vector<OrganInstance> samplePlant() {
         glm::vec3 side = (i % 2 == 0) ? glm::vec3(1, 0.4f, 0.3f) : glm::vec3(-1, 0.4f, -0.2f);
         glm::vec3 leafHeading = glm::normalize(side);
         glm::vec3 leafUp = glm::normalize(glm::cross(glm::cross(leafHeading, glm::vec3(0, 1, 0)), leafHeading));
-        organs.push_back(makeLeaf(position + 0.3f * h, leafHeading, leafUp, 0.55f, 0.3f,
-                                  static_cast<std::uint32_t>(i), 0, module++));
+        organs.push_back(makeLeaf(position + 0.3f * h, leafHeading, leafUp, 0.55f, 0.3f, static_cast<std::uint32_t>(i),
+                                  0, module++));
         position += 0.6f * h;
     }
     organs.push_back(makeSphere(position, 0.09f, 0, module++));
@@ -393,8 +403,8 @@ TEST_F(RendererTest, EachLeafShapeDrawsItsOwnOutline) {
         ASSERT_FALSE(leaf.empty()) << "shape " << shape;
         areas.insert(leaf.pixels);
         // Nothing of this leaf strays towards its neighbours (the other shapes' vertices collapse).
-        glm::vec2 centre = projectToPixel(draw::frameCamera(scene.bounds, s), {1.2f * static_cast<float>(shape), 0.7f, 0},
-                                          s.width, s.height);
+        glm::vec2 centre = projectToPixel(draw::frameCamera(scene.bounds, s),
+                                          {1.2f * static_cast<float>(shape), 0.7f, 0}, s.width, s.height);
         EXPECT_LT(std::abs(0.5f * (leaf.minX + leaf.maxX + 1) - centre.x), 0.2f * static_cast<float>(s.width) / 4.0f);
     }
     EXPECT_EQ(areas.size(), 4u) << "the shapes should differ in area";

@@ -17,7 +17,7 @@ using draw::Frame;
 class ShadowTest : public GpuTest {
 protected:
     static void TearDownTestSuite() {
-        renderer_.reset();  // before the context goes
+        renderer_.reset(); // before the context goes
         GpuTest::TearDownTestSuite();
     }
     // One renderer for the suite: pipelines are built once.
@@ -107,8 +107,8 @@ TEST_F(ShadowTest, StemShadowsAnOrganInItsWayAndTheSunSideOfItselfIsLit) {
     ASSERT_EQ(organAt(frame, view, underDisc), Frame::kNoId);
     EXPECT_LT(luminanceAt(frame, view, underDisc), 0.6f * luminanceAt(frame, view, open));
 
-    Frame unshadowed = renderer().render(scene.instances, scene.table, scene.bounds,
-                                         sideLitSettings(draw::Shadows::None));
+    Frame unshadowed =
+        renderer().render(scene.instances, scene.table, scene.bounds, sideLitSettings(draw::Shadows::None));
     // The stem's sunny side keeps its full light with shadows on (no self-shadowing acne).
     glm::vec3 stemSunSide(-0.1f, 1.0f, 0.0f);
     glm::vec3 stemFront(0.0f, 1.0f, 0.1f);
@@ -129,7 +129,8 @@ TEST_F(ShadowTest, CameraInsideAShadowVolumeStillCountsRight) {
     // A large sphere high above the ground with the sun straight overhead: its shadow is a disc of radius 1.5
     // around the origin. The camera stands in that shadow, inside the volume, where counting volume faces in
     // front of a surface (z-pass) would go wrong and counting those behind it (z-fail) does not.
-    std::vector<OrganInstance> organs{makeSphere({0, 3.0f, 0}, 1.5f, 0, 1), makeSphere({2.5f, 0.02f, 2.5f}, 0.02f, 0, 2)};
+    std::vector<OrganInstance> organs{makeSphere({0, 3.0f, 0}, 1.5f, 0, 1),
+                                      makeSphere({2.5f, 0.02f, 2.5f}, 0.02f, 0, 2)};
     TestScene scene = uploadScene(context(), organs);
     ASSERT_NEAR(scene.bounds.min.y, 0.0f, 1e-6f);
     draw::RenderSettings s;

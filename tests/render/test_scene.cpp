@@ -31,8 +31,8 @@ glm::vec3 xyz(const shared::vec4& v) {
 
 } // namespace
 
-OrganInstance makeStem(glm::vec3 base, glm::vec3 heading, glm::vec3 up, float length, float radius,
-                       std::uint32_t plant, std::uint32_t module) {
+OrganInstance makeStem(glm::vec3 base, glm::vec3 heading, glm::vec3 up, float length, float radius, std::uint32_t plant,
+                       std::uint32_t module) {
     OrganInstance o = organ(shared::kOrganStem, plant, module);
     o.position = v4(base, length);
     o.heading = v4(glm::normalize(heading), radius);
@@ -50,8 +50,8 @@ OrganInstance makeSphere(glm::vec3 centre, float radius, std::uint32_t plant, st
     return o;
 }
 
-OrganInstance makeLeaf(glm::vec3 base, glm::vec3 heading, glm::vec3 up, float length, float width,
-                       std::uint32_t shape, std::uint32_t plant, std::uint32_t module) {
+OrganInstance makeLeaf(glm::vec3 base, glm::vec3 heading, glm::vec3 up, float length, float width, std::uint32_t shape,
+                       std::uint32_t plant, std::uint32_t module) {
     OrganInstance o = organ(shared::kOrganLeaf, plant, module);
     o.position = v4(base, length);
     o.heading = v4(glm::normalize(heading), width);

@@ -21,11 +21,11 @@ namespace simeco::test {
 
 using shared::OrganInstance;
 
-OrganInstance makeStem(glm::vec3 base, glm::vec3 heading, glm::vec3 up, float length, float radius,
-                       std::uint32_t plant, std::uint32_t module);
+OrganInstance makeStem(glm::vec3 base, glm::vec3 heading, glm::vec3 up, float length, float radius, std::uint32_t plant,
+                       std::uint32_t module);
 OrganInstance makeSphere(glm::vec3 centre, float radius, std::uint32_t plant, std::uint32_t module);
-OrganInstance makeLeaf(glm::vec3 base, glm::vec3 heading, glm::vec3 up, float length, float width,
-                       std::uint32_t shape, std::uint32_t plant, std::uint32_t module);
+OrganInstance makeLeaf(glm::vec3 base, glm::vec3 heading, glm::vec3 up, float length, float width, std::uint32_t shape,
+                       std::uint32_t plant, std::uint32_t module);
 OrganInstance makeDisc(glm::vec3 centre, glm::vec3 heading, glm::vec3 up, float radius, std::uint32_t plant,
                        std::uint32_t module);
 OrganInstance makeTriangle(glm::vec3 a, glm::vec3 b, glm::vec3 c, std::uint32_t plant, std::uint32_t module);

@@ -8,12 +8,11 @@
 
 #include "app/commands.h"
 #include "app/error_report.h"
+#include "app/load_species.h"
 #include "cpu/derive.h"
 #include "cpu/statistics.h"
 #include "gpu/derive_gpu.h"
 #include "ir/species.h"
-#include "lang/eco_parser.h"
-#include "lang/load_grammar.h"
 #include "vk/context.h"
 
 namespace simeco::app {
@@ -31,22 +30,6 @@ struct DeriveArgs {
     std::string device;
     std::string strategy = "auto";
 };
-
-// The grammars a file holds: one for `.l` and `.lsys`, one per plant (species) of an `.eco` scene.
-std::vector<ir::Grammar> loadGrammars(const std::string& path) {
-    std::vector<ir::Grammar> grammars;
-    if (path.size() > 4 && path.compare(path.size() - 4, 4, ".eco") == 0) {
-        ir::EcoScene scene = lang::parseEcoFile(path);
-        for (const ir::EcoWarning& w : scene.warnings)
-            std::fprintf(stderr, "%s:%d:%d: warning: %s\n", w.loc.file.c_str(), w.loc.line, w.loc.col,
-                         w.message.c_str());
-        if (scene.plants.empty()) throw ir::InputError(scene.loc, "the scene has no plant");
-        for (size_t i = 0; i < scene.plants.size(); ++i) grammars.push_back(lang::compileEcoPlant(scene, i));
-    } else {
-        grammars.push_back(lang::loadGrammarFile(path));
-    }
-    return grammars;
-}
 
 void runDerive(const DeriveArgs& args) {
     std::vector<ir::Grammar> species = ir::unifySpecies(loadGrammars(args.file));

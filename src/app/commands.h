@@ -13,5 +13,6 @@ struct CommandContext {
 void registerDeriveCommand(CLI::App& app, CommandContext& ctx);
 void registerDevicesCommand(CLI::App& app, CommandContext& ctx);
 void registerBenchCommand(CLI::App& app, CommandContext& ctx);
+void registerRenderCommand(CLI::App& app, CommandContext& ctx);
 
 } // namespace simeco::app

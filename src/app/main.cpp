@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
     simeco::app::registerDeriveCommand(app, ctx);
     simeco::app::registerDevicesCommand(app, ctx);
     simeco::app::registerBenchCommand(app, ctx);
+    simeco::app::registerRenderCommand(app, ctx);
 
     try {
         app.parse(argc, argv);

@@ -93,5 +93,17 @@ check "bad option exits 2" $?
 "$simeco" devices >"$work/devices.txt" 2>&1
 check "devices lists Vulkan devices ($(head -c 300 "$work/devices.txt"))" $?
 
+"$simeco" render "$source_dir/grammars/abop/fig1.24d.l" -n 4 --plants 4 --size 160x120 -o "$work/field.exr" \
+  --png "$work/field.png" >"$work/render.txt" 2>&1
+[ -s "$work/field.exr" ] && [ -s "$work/field.png" ] && grep -q "4 plants" "$work/render.txt" &&
+  [ "$(head -c 4 "$work/field.exr" | od -An -tx1 | tr -d ' ')" = "762f3101" ] &&
+  [ "$(head -c 8 "$work/field.png" | od -An -tx1 | tr -d ' ')" = "89504e470d0a1a0a" ]
+check "render writes the EXR and the PNG of a field ($(head -c 300 "$work/render.txt"))" $?
+
+"$simeco" render "$source_dir/grammars/abop/fig1.24d.l" --size 0x5 -o "$work/bad.png" >/dev/null 2>&1
+code=$?
+[ $code -ne 0 ] && [ ! -e "$work/bad.png" ] && [ -z "$(ls "$work" | grep -i 'bad.*tmp')" ]
+check "render refuses a bad size and writes nothing (code $code)" $?
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -10,7 +10,7 @@
 #include "draw/renderer.h"
 #include "lang/load_grammar.h"
 #include "test_scene.h"
-#include "tests/gpu/gpu_fixture.h"
+#include "gpu_fixture.h"
 #include "turtle/turtle_commands.h"
 #include "turtle/turtle_cpu.h"
 

@@ -20,21 +20,7 @@ namespace {
 
 using draw::Frame;
 
-class RendererTest : public GpuTest {
-protected:
-    static void TearDownTestSuite() {
-        renderer_.reset(); // before the context goes
-        GpuTest::TearDownTestSuite();
-    }
-    // One renderer for the suite: pipelines are built once.
-    draw::Renderer& renderer() {
-        if (!renderer_) {
-            renderer_ = std::make_unique<draw::Renderer>(context());
-        }
-        return *renderer_;
-    }
-    static inline std::unique_ptr<draw::Renderer> renderer_;
-};
+class RendererTest : public RenderTest {};
 
 draw::RenderSettings smallSettings(std::uint32_t width = 160, std::uint32_t height = 120) {
     draw::RenderSettings s;

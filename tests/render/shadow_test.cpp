@@ -14,21 +14,7 @@ namespace {
 
 using draw::Frame;
 
-class ShadowTest : public GpuTest {
-protected:
-    static void TearDownTestSuite() {
-        renderer_.reset(); // before the context goes
-        GpuTest::TearDownTestSuite();
-    }
-    // One renderer for the suite: pipelines are built once.
-    draw::Renderer& renderer() {
-        if (!renderer_) {
-            renderer_ = std::make_unique<draw::Renderer>(context());
-        }
-        return *renderer_;
-    }
-    static inline std::unique_ptr<draw::Renderer> renderer_;
-};
+class ShadowTest : public RenderTest {};
 
 // A 2-unit stem at the origin, the sun low in the -x sky: its shadow runs along +x on the ground.
 draw::RenderSettings sideLitSettings(draw::Shadows shadows) {

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -15,11 +16,30 @@
 #include "draw/bounds.h"
 #include "draw/camera.h"
 #include "draw/frame.h"
+#include "draw/renderer.h"
+#include "gpu_fixture.h"
 #include "vk/buffer.h"
 
 namespace simeco::test {
 
 using shared::OrganInstance;
+
+// A GPU test with one renderer per suite (its pipelines are built once), destroyed before the context.
+class RenderTest : public GpuTest {
+protected:
+    static void TearDownTestSuite() {
+        renderer_.reset(); // before the context goes
+        GpuTest::TearDownTestSuite();
+    }
+    // One renderer for the suite: pipelines are built once.
+    draw::Renderer& renderer() {
+        if (!renderer_) {
+            renderer_ = std::make_unique<draw::Renderer>(context());
+        }
+        return *renderer_;
+    }
+    static inline std::unique_ptr<draw::Renderer> renderer_;
+};
 
 OrganInstance makeStem(glm::vec3 base, glm::vec3 heading, glm::vec3 up, float length, float radius, std::uint32_t plant,
                        std::uint32_t module);

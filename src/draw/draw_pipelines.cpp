@@ -9,6 +9,7 @@
 #include "render/render_shaders.h"
 #include "vk/buffer.h"
 #include "vk/context.h"
+#include "vk/layouts.h"
 #include "vk/vk_error.h"
 
 namespace simeco::draw {
@@ -168,26 +169,11 @@ DrawPipelines::DrawPipelines(const vk::Context& context, VkRenderPass renderPass
         {0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr},
         {1, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
     }};
-    VkDescriptorSetLayoutCreateInfo setInfo{};
-    setInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO;
-    setInfo.flags = VK_DESCRIPTOR_SET_LAYOUT_CREATE_PUSH_DESCRIPTOR_BIT_KHR;
-    setInfo.bindingCount = static_cast<std::uint32_t>(bindings.size());
-    setInfo.pBindings = bindings.data();
-    VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
-    VK_CHECK(vkCreateDescriptorSetLayout(device, &setInfo, nullptr, &setLayout));
-    setLayout_ = vk::UniqueDescriptorSetLayout(device, setLayout);
-
-    VkPushConstantRange pushRange{VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
-                                  sizeof(shared::DrawPush)};
-    VkPipelineLayoutCreateInfo layoutInfo{};
-    layoutInfo.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO;
-    layoutInfo.setLayoutCount = 1;
-    layoutInfo.pSetLayouts = &setLayout;
-    layoutInfo.pushConstantRangeCount = 1;
-    layoutInfo.pPushConstantRanges = &pushRange;
-    VkPipelineLayout layout = VK_NULL_HANDLE;
-    VK_CHECK(vkCreatePipelineLayout(device, &layoutInfo, nullptr, &layout));
-    layout_ = vk::UniquePipelineLayout(device, layout);
+    setLayout_ = vk::createPushDescriptorSetLayout(device, bindings);
+    layout_ = vk::createPipelineLayout(device, setLayout_.get(),
+                                       VkPushConstantRange{VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT,
+                                                           0, sizeof(shared::DrawPush)});
+    VkPipelineLayout layout = layout_.get();
 
     base_ = createPipeline(device, layout, renderPass, PassKind::Base, Culling::None);
     baseCulled_ = createPipeline(device, layout, renderPass, PassKind::Base, Culling::Back);

@@ -7,6 +7,7 @@
 #include "compute/shaders.h"
 #include "vk/buffer.h"
 #include "vk/context.h"
+#include "vk/layouts.h"
 #include "vk/vk_error.h"
 
 namespace simeco::vk {
@@ -37,25 +38,10 @@ ComputePipeline::ComputePipeline(const Context& context, std::span<const std::ui
         }
         bindings.push_back({b.binding, b.type, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr});
     }
-    VkDescriptorSetLayoutCreateInfo setInfo{};
-    setInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO;
-    setInfo.flags = VK_DESCRIPTOR_SET_LAYOUT_CREATE_PUSH_DESCRIPTOR_BIT_KHR;
-    setInfo.bindingCount = static_cast<std::uint32_t>(bindings.size());
-    setInfo.pBindings = bindings.data();
-    VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
-    VK_CHECK(vkCreateDescriptorSetLayout(device, &setInfo, nullptr, &setLayout));
-    setLayout_ = UniqueDescriptorSetLayout(device, setLayout);
-
-    VkPushConstantRange pushRange{VK_SHADER_STAGE_COMPUTE_BIT, 0, reflection_.pushConstantSize};
-    VkPipelineLayoutCreateInfo layoutInfo{};
-    layoutInfo.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO;
-    layoutInfo.setLayoutCount = 1;
-    layoutInfo.pSetLayouts = &setLayout;
-    layoutInfo.pushConstantRangeCount = reflection_.pushConstantSize > 0 ? 1 : 0;
-    layoutInfo.pPushConstantRanges = &pushRange;
-    VkPipelineLayout layout = VK_NULL_HANDLE;
-    VK_CHECK(vkCreatePipelineLayout(device, &layoutInfo, nullptr, &layout));
-    layout_ = UniquePipelineLayout(device, layout);
+    setLayout_ = createPushDescriptorSetLayout(device, bindings);
+    std::optional<VkPushConstantRange> pushRange;
+    if (reflection_.pushConstantSize > 0) pushRange = {VK_SHADER_STAGE_COMPUTE_BIT, 0, reflection_.pushConstantSize};
+    layout_ = createPipelineLayout(device, setLayout_.get(), pushRange);
 
     VkShaderModuleCreateInfo moduleInfo{};
 
@@ -73,7 +59,7 @@ ComputePipeline::ComputePipeline(const Context& context, std::span<const std::ui
     pipelineInfo.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
     pipelineInfo.stage.module = rawModule;
     pipelineInfo.stage.pName = reflection_.entryPoint.c_str();
-    pipelineInfo.layout = layout;
+    pipelineInfo.layout = layout_.get();
     VkPipeline pipeline = VK_NULL_HANDLE;
     VK_CHECK(vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &pipelineInfo, nullptr, &pipeline));
     pipeline_ = UniquePipeline(device, pipeline);

@@ -43,7 +43,7 @@ glm::vec3 perpendicularUp(glm::vec3 heading, const Frame& f) {
     return glm::normalize(u);
 }
 
-// Walks one plant's modules [begin, end) and calls visit(i, state before, state after) for each; organs go
+// Walks one plant's modules [begin, end) and calls visit(i, command, state after it) for each; organs go
 // to `organs` (plant-local positions).
 class PlantTurtle {
 public:
@@ -60,7 +60,6 @@ public:
         std::vector<TurtleState> stack;
         for (size_t i = begin; i < end; ++i) {
             uint32_t command = commands_.commandAt(s_, begin, end, i);
-            TurtleState before = state;
             if (command == kTurtleBranchOpen) {
                 stack.push_back(state);
                 state.lastStem = -1;
@@ -73,7 +72,7 @@ public:
             } else {
                 apply(state, command, i);
             }
-            visit(i, command, before, state);
+            visit(i, command, state);
         }
     }
 
@@ -284,7 +283,7 @@ Interpretation interpretCpu(const cpu::ModuleString& string, const TurtleCommand
     std::vector<Bounds> plantBounds(plants);
     for (uint32_t p = 0; p < plants; ++p) {
         PlantTurtle turtle(string, commands, species[p % species.size()], p, perPlant[p]);
-        turtle.walk(string.plantStart[p], string.plantStart[p + 1], [](size_t, uint32_t, const TurtleState&, const TurtleState&) {});
+        turtle.walk(string.plantStart[p], string.plantStart[p + 1], [](size_t, uint32_t, const TurtleState&) {});
         for (const OrganInstance& o : perPlant[p]) plantBounds[p].add(organBounds(o));
     }
     float spacing = fieldSpacing(field, plantBounds);
@@ -311,7 +310,7 @@ void fillQueries(cpu::ModuleString& string, const TurtleCommands& commands, cons
     for (uint32_t p = 0; p < string.plants(); ++p) {
         PlantTurtle turtle(string, commands, species[p % species.size()], p, unused);
         turtle.walk(string.plantStart[p], string.plantStart[p + 1],
-                    [&](size_t i, uint32_t command, const TurtleState&, const TurtleState& st) {
+                    [&](size_t i, uint32_t command, const TurtleState& st) {
                         glm::vec3 v;
                         switch (command) {
                         case kTurtleQueryPosition: v = st.position; break;

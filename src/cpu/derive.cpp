@@ -288,7 +288,12 @@ private:
         float values[64];
         for (const ir::SuccessorModule& m : alt->modules) {
             size_t count = std::min<size_t>(m.args.size(), 64);
-            for (size_t a = 0; a < count; ++a) values[a] = static_cast<float>(evaluator_.eval(m.args[a], frame.data()));
+            // A string argument (a label's text, `@L("%.f", x)`) is not kept: modules carry numbers, and the
+            // turtle draws no labels. Its slot holds 0, as on the GPU.
+            for (size_t a = 0; a < count; ++a)
+                values[a] = m.args[a].op == ir::Op::String
+                                ? 0.0f
+                                : static_cast<float>(evaluator_.eval(m.args[a], frame.data()));
             out.push(m.sym, values, count);
         }
     }

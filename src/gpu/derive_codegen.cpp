@@ -6,7 +6,6 @@
 
 #include <fmt/format.h>
 
-#include "compute/shaders.h"
 #include "gpu/production_codegen.h"
 
 namespace simeco::gpu {
@@ -146,7 +145,7 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species) 
     GeneratedKernels k = codegen::speciesTraits(species);
 
     std::string prelude = codegen::kernelPrelude(species.size()) + "uint currentPass() { return pc.pass; }\n";
-    std::string library(shaders::glslSource("derive/derive_lib.glsl"));
+    std::string library = codegen::deriveLibrary();
     std::string functions, stepFunctions, decompositionFunctions;
     for (size_t sp = 0; sp < species.size(); ++sp) {
         const ir::Grammar& g = species[sp];

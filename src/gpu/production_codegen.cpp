@@ -537,6 +537,11 @@ GeneratedKernels speciesTraits(const std::vector<ir::Grammar>& species) {
     return k;
 }
 
+std::string deriveLibrary() {
+    return std::string(shaders::glslSource("derive/depth_tree.glsl")) +
+           std::string(shaders::glslSource("derive/derive_lib.glsl"));
+}
+
 std::string kernelPrelude(size_t speciesCount) {
     std::string s = "#version 460\n"
                     "#extension GL_EXT_shader_explicit_arithmetic_types_float64 : require\n";

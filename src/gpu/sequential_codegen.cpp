@@ -8,7 +8,6 @@
 
 #include <fmt/format.h>
 
-#include "compute/shaders.h"
 #include "gpu/derive_codegen.h"
 #include "gpu/production_codegen.h"
 
@@ -282,7 +281,7 @@ GeneratedKernels generateSequentialKernel(const std::vector<ir::Grammar>& specie
     s += fmt::format("const uint kFrameSlots = {}u;\nconst uint kStackWidth = {}u;\n", std::max(k.frameSlots, 1u),
                      k.stackWidth);
     s += declarations();
-    s += shaders::glslSource("derive/derive_lib.glsl");
+    s += codegen::deriveLibrary();
     s += kMachinery;
     std::string productions;
     for (size_t sp = 0; sp < species.size(); ++sp) {

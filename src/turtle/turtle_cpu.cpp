@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 
 #include "compute/shared/turtle_layout.h"
+#include "compute/shared/turtle_state_layout.h"
 #include "turtle/frame.h"
 #include "turtle/turtle_commands.h"
 
@@ -129,7 +130,7 @@ private:
         if (!st.cylinderOpen) return;
         glm::vec3 d = st.position - st.anchor;
         float length = glm::length(d);
-        if (length > 1e-6f) {
+        if (length > kTubeEpsilon * (1.0f + glm::length(st.anchor))) {
             glm::vec3 heading = d / length;
             OrganInstance& o = emit(kOrganStem, module, st);
             o.position = v4(st.anchor, length);

@@ -1,0 +1,105 @@
+// The parallel turtle's data, shared by C++ and GLSL (kernels in compute/turtle, host in gpu/turtle_gpu).
+//
+// Every module has a parent: the module whose state it continues (the one before it, or for `]` the one before
+// its matching `[`), so a plant's modules form a tree whose root is the plant's initial state. A module's
+// command is a TurtleStep relative to its parent's state; steps compose (TurtleStep is a monoid), so states are
+// found by composing steps up the tree with pointer jumping. Commands that depend on the absolute state (`$`,
+// `@R`, `@M`, world rotations, tropism after a segment) cannot be steps: they are resolved one level at a time
+// (their level is how many of them lie on the path from the root), each from the state the steps lead to.
+#ifndef SIMECO_SHARED_TURTLE_STATE_LAYOUT_H
+#define SIMECO_SHARED_TURTLE_STATE_LAYOUT_H
+
+#include "shared/organ_layout.h"
+
+#ifdef __cplusplus
+namespace simeco::shared {
+#define SIMECO_CONST inline constexpr uint
+#else
+#define SIMECO_CONST const uint
+#endif
+
+SIMECO_CONST kTurtleWorkgroupSize = 64u;
+SIMECO_CONST kPaletteEntries = 256u;
+
+// The turtle after a module: its frame (heading, left, up), position and scalars.
+struct TurtleState {
+    vec4 heading;  // w: width
+    vec4 left;     // w: colour index
+    vec4 up;       // w: scale
+    vec4 position; // w: elasticity
+};
+
+// A module's effect relative to the state before it: the frame turns by the rotation whose columns are
+// heading, left and up (in the turtle's own coordinates); the position moves by translation + scale *
+// scaledTranslation (turtle coordinates, the scale before the module); each scalar x becomes a x + b.
+struct TurtleStep {
+    vec4 heading;           // xyz: the rotation's first column
+    vec4 left;              // xyz: second column
+    vec4 up;                // xyz: third column
+    vec4 translation;       // xyz
+    vec4 scaledTranslation; // xyz
+    vec4 widthColor;        // width a, b; colour a, b
+    vec4 scaleElasticity;   // scale a, b; elasticity a, b
+};
+
+// A species' turtle settings (turtle/turtle_settings.h).
+struct TurtleSpecies {
+    float angleDegrees;
+    float step;
+    float width;
+    float widthIncrement;
+    float colorIncrement;
+    float initialColor;
+    float elasticity;
+    float elasticityIncrement;
+    vec4 tropism; // xyz: unit direction; w: 1 when segments may bend (elasticity can be non-zero)
+};
+
+// Per-module marks that the searches up the tree stop at (TurtlePush hitMask and stopMask).
+SIMECO_CONST kMarkNonlinear = 1u;      // resolved by levels, not composed
+SIMECO_CONST kMarkStem = 2u;           // draws a stem segment (F outside polygons)
+SIMECO_CONST kMarkStemBreak = 4u;      // the next segment does not continue the last one: `[`, f, @M
+SIMECO_CONST kMarkCylinderStart = 8u;  // @Gs, `{(n)`
+SIMECO_CONST kMarkCylinderPoint = 16u; // @Gc, @Ge, `}(n)`
+SIMECO_CONST kMarkTube = 32u;          // a cylinder point that drew a tube segment
+SIMECO_CONST kMarkTubeBreak = 64u;     // `[`, @Gs: the next tube segment does not continue the last one
+SIMECO_CONST kMarkPolygon = 128u;      // `{`: a polygon's first module
+
+// A cylinder point draws a tube segment from the last one when they lie further apart than this times one
+// plus the last point's distance from the plant's root: shorter segments' directions are rounding noise.
+#ifdef __cplusplus
+inline constexpr float kTubeEpsilon = 1e-5f;
+#else
+const float kTubeEpsilon = 1e-5;
+#endif
+
+// Push constants of every turtle kernel.
+struct TurtlePush {
+    uint count;       // modules
+    uint plants;
+    uint stride;      // parameter slots per module
+    uint species;
+    uint symbols;     // alphabet size: the command tables' row length
+    uint atSymbol;    // `@`, `~`, `?` (kNoModule when the alphabet lacks them)
+    uint tildeSymbol;
+    uint querySymbol;
+    uint first;       // levels: the first entry of the level's slice; jumps: the round
+    uint items;       // invocations that have work (a level's modules, instances)
+    uint hitMask;     // searches: marks that end the search with a result
+    uint stopMask;    // searches: marks that end it without one
+    float spacing;    // field: distance between plants (0: from the widest plant)
+    uint pad0;
+    uint pad1;
+    uint pad2;
+};
+
+#ifdef __cplusplus
+static_assert(sizeof(TurtleState) == 64);
+static_assert(sizeof(TurtleStep) == 112);
+static_assert(sizeof(TurtleSpecies) == 48);
+static_assert(sizeof(TurtlePush) == 64);
+} // namespace simeco::shared
+#endif
+#undef SIMECO_CONST
+
+#endif

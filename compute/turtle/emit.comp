@@ -1,0 +1,109 @@
+// Turtle: writes each organ instance at its place (plant-local positions) and grows its plant's bounds.
+// Mirrors the organs turtle/turtle_cpu.cpp emits: stems and tubes, spheres, discs, leaves and fan triangles.
+#version 450
+#extension GL_GOOGLE_include_directive : require
+#include "shared/derive_layout.h"
+#include "shared/turtle_layout.h"
+#include "shared/turtle_state_layout.h"
+#include "turtle/turtle_buffers.glsl"
+layout(set = 0, binding = 5, std430) readonly buffer Commands { uint commands[]; };
+layout(set = 0, binding = 6, std430) readonly buffer Parents { uint parents[]; };
+layout(set = 0, binding = 7, std430) readonly buffer Plants { uint plantOfModule[]; };
+layout(set = 0, binding = 8, std430) readonly buffer States { TurtleState states[]; };
+layout(set = 0, binding = 9, std430) readonly buffer Kinds { uint kinds[]; };
+layout(set = 0, binding = 10, std430) readonly buffer Offsets { uint offsets[]; };
+layout(set = 0, binding = 11, std430) readonly buffer TriangleFirst { uint triangleFirst[]; };
+layout(set = 0, binding = 12, std430) readonly buffer TrianglePrevious { uint trianglePrevious[]; };
+layout(set = 0, binding = 13, std430) readonly buffer CylinderAnchors { uint cylinderAnchors[]; };
+layout(set = 0, binding = 14, std430) readonly buffer Palettes { vec4 palettes[]; };
+layout(set = 0, binding = 15, std430) readonly buffer SurfaceScales { float surfaceScales[]; };
+layout(set = 0, binding = 16, std430) readonly buffer SurfaceShapes { uint surfaceShapes[]; };
+layout(set = 0, binding = 17, std430) writeonly buffer Instances { OrganInstance instances[]; };
+layout(set = 0, binding = 18, std430) writeonly buffer Slots { uint slots[]; };
+// Each plant's box in plant-local coordinates: minima of plant p at 4p, maxima at 4 (plants + p).
+layout(set = 0, binding = 19, std430) buffer PlantBounds { int plantBounds[]; };
+
+#include "turtle/turtle_math.glsl"
+#include "turtle/turtle_modules.glsl"
+#include "turtle/organ_bounds.glsl"
+
+const uint kNoOrgan = 0xFFFFFFFFu;
+
+// An up vector for a segment along `heading`: the turtle's up with its heading component removed.
+vec3 perpendicularUp(vec3 heading, TurtleState s) {
+    vec3 u = s.up.xyz - heading * dot(s.up.xyz, heading);
+    if (length(u) < 1e-6) u = s.left.xyz - heading * dot(s.left.xyz, heading);
+    return normalize(u);
+}
+
+void main() {
+    uint i = invocationIndex();
+    if (i >= pc.count) return;
+    uint kind = kinds[i];
+    if (kind == kNoOrgan) return;
+    uint plant = plantOfModule[i];
+    uint species = speciesOf(plant);
+    TurtleSpecies sp = speciesTable[species];
+    uint parent = parents[i];
+    TurtleState after = states[i];
+    TurtleState before;
+    if (parent == kNoModule) before = initialState(sp);
+    else before = states[parent];
+    uint command = commands[i];
+    float scale = before.up.w;
+
+    OrganInstance o;
+    o.position = vec4(0);
+    o.heading = vec4(0);
+    o.up = vec4(0);
+    o.previousHeading = vec4(0);
+    o.nextHeading = vec4(0);
+    o.plant = plant;
+    o.kind = kind;
+    o.shape = 0u;
+    o.module = i;
+    // No organ-drawing command changes the colour, so the state after it has the colour it is drawn in.
+    float colorIndex = clamp(after.left.w, -1.0, float(kPaletteEntries));
+    o.color = palettes[species * kPaletteEntries + uint(clamp(int(floor(colorIndex + 0.5)), 0, int(kPaletteEntries) - 1))];
+
+    if (kind == kOrganTriangle) {
+        o.position = vec4(states[triangleFirst[i]].position.xyz, 0);
+        o.heading = vec4(states[trianglePrevious[i]].position.xyz, 0);
+        o.up = vec4(after.position.xyz, 0);
+    } else if (command == kTurtleCylinderPoint) {
+        TurtleState anchor = states[cylinderAnchors[i]];
+        vec3 d = after.position.xyz - anchor.position.xyz;
+        float len = length(d);
+        vec3 heading = d / len;
+        o.position = vec4(anchor.position.xyz, len);
+        o.heading = vec4(heading, 0.5 * anchor.heading.w * after.up.w);
+        o.up = vec4(perpendicularUp(heading, after), 0.5 * after.heading.w * after.up.w);
+    } else if (kind == kOrganStem) {
+        float radius = 0.5 * before.heading.w * scale;
+        o.position = vec4(before.position.xyz, paramAt(i, 0u, sp.step) * scale);
+        o.heading = vec4(before.heading.xyz, radius);
+        o.up = vec4(before.up.xyz, radius);
+    } else if (kind == kOrganSphere || kind == kOrganDisc) {
+        float radius = 0.5 * paramAt(i, 0u, before.heading.w) * scale;
+        o.position = vec4(before.position.xyz, 0);
+        o.heading = vec4(before.heading.xyz, radius);
+        o.up = vec4(before.up.xyz, radius);
+        o.shape = command == kTurtleDiscFacing ? kDiscFacesViewer : 0u;
+    } else { // leaf
+        uint sym = symbolAt(i);
+        float len = surfaceScales[species * pc.symbols + sym] * paramAt(i, 0u, 1.0) * scale;
+        o.position = vec4(before.position.xyz, len);
+        o.heading = vec4(before.heading.xyz, len);
+        o.up = vec4(before.up.xyz, 0);
+        o.shape = surfaceShapes[species * pc.symbols + sym];
+    }
+
+    uint slot = offsets[kind * pc.count + i];
+    instances[slot] = o;
+    slots[i] = slot;
+    Box b = organBox(o);
+    for (uint axis = 0u; axis < 3u; ++axis) {
+        atomicMin(plantBounds[plant * 4u + axis], boundsKey(b.lo[axis]));
+        atomicMax(plantBounds[(pc.plants + plant) * 4u + axis], boundsKey(b.hi[axis]));
+    }
+}

@@ -1,0 +1,28 @@
+// Turtle, pass 3 (rounds of pointer jumping): each module's step becomes the composition of the steps from
+// its anchor (the nearest non-linear ancestor, or the plant's root) down to it. A round composes with what the
+// pointed-at module has composed so far and takes over its pointer, doubling the path each round covers.
+#version 450
+#extension GL_GOOGLE_include_directive : require
+#include "shared/derive_layout.h"
+#include "shared/turtle_state_layout.h"
+layout(local_size_x = kTurtleWorkgroupSize) in;
+layout(set = 0, binding = 0, std430) readonly buffer Marks { uint marks[]; };
+layout(set = 0, binding = 1, std430) readonly buffer StepsIn { TurtleStep stepsIn[]; };
+layout(set = 0, binding = 2, std430) readonly buffer PointersIn { uint pointersIn[]; };
+layout(set = 0, binding = 3, std430) writeonly buffer StepsOut { TurtleStep stepsOut[]; };
+layout(set = 0, binding = 4, std430) writeonly buffer PointersOut { uint pointersOut[]; };
+layout(push_constant) uniform Push { TurtlePush pc; };
+#include "turtle/turtle_math.glsl"
+
+void main() {
+    uint i = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * gl_WorkGroupSize.x + gl_LocalInvocationID.x;
+    if (i >= pc.count) return;
+    uint p = pointersIn[i];
+    if (p == kNoModule || p == i || (marks[p] & kMarkNonlinear) != 0u) {
+        stepsOut[i] = stepsIn[i];
+        pointersOut[i] = p;
+        return;
+    }
+    stepsOut[i] = composeSteps(stepsIn[p], stepsIn[i]);
+    pointersOut[i] = pointersIn[p];
+}

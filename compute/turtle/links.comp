@@ -1,0 +1,30 @@
+// Turtle: joins each stem or tube segment to the one it continues (found by the searches up the tree), so the
+// renderer mitres their common end: this segment learns the heading below it, the one below learns this one's.
+// A segment is continued by at most one other (a branch starts afresh), so no two invocations write the same
+// field.
+#version 450
+#extension GL_GOOGLE_include_directive : require
+#include "shared/derive_layout.h"
+#include "shared/turtle_layout.h"
+#include "shared/turtle_state_layout.h"
+layout(local_size_x = kTurtleWorkgroupSize) in;
+layout(set = 0, binding = 0, std430) readonly buffer Commands { uint commands[]; };
+layout(set = 0, binding = 1, std430) readonly buffer Marks { uint marks[]; };
+layout(set = 0, binding = 2, std430) readonly buffer Kinds { uint kinds[]; };
+layout(set = 0, binding = 3, std430) readonly buffer Slots { uint slots[]; };
+layout(set = 0, binding = 4, std430) readonly buffer StemBelow { uint stemBelow[]; };
+layout(set = 0, binding = 5, std430) readonly buffer TubeBelow { uint tubeBelow[]; };
+layout(set = 0, binding = 6, std430) buffer Instances { OrganInstance instances[]; };
+layout(push_constant) uniform Push { TurtlePush pc; };
+
+void main() {
+    uint i = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * gl_WorkGroupSize.x + gl_LocalInvocationID.x;
+    if (i >= pc.count || kinds[i] != kOrganStem) return;
+    bool tube = commands[i] == kTurtleCylinderPoint;
+    uint below = tube ? tubeBelow[i] : stemBelow[i];
+    uint joined = tube ? kMarkTube : kMarkStem;
+    if (below == kNoModule || (marks[below] & joined) == 0u) return;
+    uint self = slots[i], other = slots[below];
+    instances[self].previousHeading = vec4(instances[other].heading.xyz, 0);
+    instances[other].nextHeading = vec4(instances[self].heading.xyz, 0);
+}

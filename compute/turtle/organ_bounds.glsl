@@ -1,0 +1,49 @@
+// An organ instance's bounding box (turtle/turtle_cpu.cpp's organBounds) and where plant p stands in the
+// field (turtle/interpretation.cpp's fieldCell). Needs shared/organ_layout.h.
+
+struct Box {
+    vec3 lo;
+    vec3 hi;
+};
+
+void addPoint(inout Box b, vec3 p, float radius) {
+    b.lo = min(b.lo, p - radius);
+    b.hi = max(b.hi, p + radius);
+}
+
+Box organBox(OrganInstance o) {
+    Box b = Box(vec3(1e30), vec3(-1e30));
+    vec3 p = o.position.xyz, h = o.heading.xyz;
+    if (o.kind == kOrganStem) {
+        float r = max(o.heading.w, o.up.w);
+        addPoint(b, p, r);
+        addPoint(b, p + h * o.position.w, r);
+    } else if (o.kind == kOrganLeaf) {
+        addPoint(b, p, 0.5 * o.heading.w);
+        addPoint(b, p + h * o.position.w, 0.5 * o.heading.w);
+    } else if (o.kind == kOrganTriangle) {
+        addPoint(b, p, 0.0);
+        addPoint(b, h, 0.0);
+        addPoint(b, o.up.xyz, 0.0);
+    } else {
+        addPoint(b, p, o.heading.w);
+    }
+    return b;
+}
+
+// Columns of the field's grid: the smallest c with c * c >= plants, in integers so every device agrees.
+uint fieldColumns(uint plants) {
+    uint p = max(plants, 1u);
+    uint c = uint(sqrt(float(p)));
+    while (c * c < p) ++c;
+    while (c > 1u && (c - 1u) * (c - 1u) >= p) --c;
+    return c;
+}
+
+vec3 fieldCell(uint plant, uint plants) {
+    uint columns = fieldColumns(plants);
+    uint rows = (max(plants, 1u) + columns - 1u) / columns;
+    float x = float(plant % columns) - 0.5 * float(columns - 1u);
+    float z = float(plant / columns) - 0.5 * float(rows - 1u);
+    return vec3(x, 0.0, z);
+}

@@ -1,0 +1,31 @@
+// Turtle, last pass: moves each instance to its plant's place in the field and grows the table's bounds.
+#version 450
+#extension GL_GOOGLE_include_directive : require
+#include "shared/derive_layout.h"
+#include "shared/turtle_state_layout.h"
+layout(local_size_x = kTurtleWorkgroupSize) in;
+layout(set = 0, binding = 0, std430) readonly buffer Total { uint total; };
+layout(set = 0, binding = 1, std430) readonly buffer Field { float spacing; };
+layout(set = 0, binding = 2, std430) buffer Instances { OrganInstance instances[]; };
+layout(set = 0, binding = 3, std430) buffer Table { OrganTable table; };
+layout(push_constant) uniform Push { TurtlePush pc; };
+#include "turtle/turtle_math.glsl"
+#include "turtle/organ_bounds.glsl"
+
+void main() {
+    uint s = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * gl_WorkGroupSize.x + gl_LocalInvocationID.x;
+    if (s >= total) return;
+    OrganInstance o = instances[s];
+    vec3 d = fieldCell(o.plant, pc.plants) * spacing;
+    o.position.xyz += d;
+    if (o.kind == kOrganTriangle) {
+        o.heading.xyz += d;
+        o.up.xyz += d;
+    }
+    instances[s] = o;
+    Box b = organBox(o);
+    for (uint axis = 0u; axis < 3u; ++axis) {
+        atomicMin(table.boundsMin[axis], boundsKey(b.lo[axis]));
+        atomicMax(table.boundsMax[axis], boundsKey(b.hi[axis]));
+    }
+}

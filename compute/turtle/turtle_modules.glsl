@@ -1,0 +1,153 @@
+// Reading modules as the turtle sees them: their commands (turtle/turtle_commands.cpp's commandAt, from the
+// same tables), parameters, plants and species, and each command's step or absolute effect on the state
+// (turtle/turtle_cpu.cpp's apply). Needs shared/turtle_layout.h, shared/turtle_state_layout.h,
+// turtle/turtle_math.glsl, push constants `pc` (TurtlePush) and these buffers declared before it:
+// symbols (uint: symbol | count << 24), params (float, pc.stride per module), plantStarts (uint, plants + 1),
+// commandTable (uint: plain, afterAt, afterQuery, pairPrefix rows of pc.symbols, then kPairPrefixes rows of
+// pairs) and speciesTable (TurtleSpecies).
+
+const float kDegrees = 3.14159265358979 / 180.0;
+
+uint symbolAt(uint i) { return symbols[i] & 0xFFFFFFu; }
+uint paramCountAt(uint i) { return symbols[i] >> 24u; }
+bool hasParam(uint i) { return paramCountAt(i) > 0u; }
+float paramAt(uint i, uint k, float otherwise) { return paramCountAt(i) > k ? params[i * pc.stride + k] : otherwise; }
+
+uint plainCommand(uint sym) { return commandTable[sym]; }
+uint afterAtCommand(uint sym) { return commandTable[pc.symbols + sym]; }
+uint afterQueryCommand(uint sym) { return commandTable[2u * pc.symbols + sym]; }
+uint pairPrefixOf(uint sym) { return commandTable[3u * pc.symbols + sym]; }
+uint pairCommand(uint prefix, uint sym) { return commandTable[(4u + prefix) * pc.symbols + sym]; }
+
+// The plant whose modules contain i: the last plant starting at or before it.
+uint plantOf(uint i) {
+    uint lo = 0u, hi = pc.plants; // plantStarts[lo] <= i < plantStarts[hi]
+    while (hi - lo > 1u) {
+        uint mid = (lo + hi) / 2u;
+        if (plantStarts[mid] <= i) lo = mid;
+        else hi = mid;
+    }
+    return lo;
+}
+
+uint speciesOf(uint plant) { return plant % pc.species; }
+
+uint commandAt(uint i, uint begin, uint end) {
+    uint sym = symbolAt(i);
+    if (sym >= pc.symbols) return kTurtleNone;
+    if (i == begin) return plainCommand(sym);
+    uint previous = symbolAt(i - 1u);
+    if (previous == pc.atSymbol) {
+        uint prefix = pairPrefixOf(sym);
+        if (prefix != kPairNone && paramCountAt(i) == 0u && i + 1u < end && symbolAt(i + 1u) < pc.symbols &&
+            pairCommand(prefix, symbolAt(i + 1u)) != kTurtleNone)
+            return kTurtleNone; // the first letter of a two-letter command
+        return afterAtCommand(sym);
+    }
+    if (i >= begin + 2u && symbolAt(i - 2u) == pc.atSymbol && previous < pc.symbols &&
+        pairPrefixOf(previous) != kPairNone && paramCountAt(i - 1u) == 0u) {
+        uint pair = pairCommand(pairPrefixOf(previous), sym);
+        if (pair != kTurtleNone) return pair;
+    }
+    if (previous == pc.tildeSymbol) return kTurtleSurface;
+    if (previous == pc.querySymbol) return afterQueryCommand(sym);
+    return plainCommand(sym);
+}
+
+TurtleState initialState(TurtleSpecies sp) {
+    TurtleState s;
+    s.heading = vec4(0, 1, 0, sp.width);
+    s.left = vec4(-1, 0, 0, sp.initialColor);
+    s.up = vec4(0, 0, 1, 1.0);
+    s.position = vec4(0, 0, 0, sp.elasticity);
+    return s;
+}
+
+// Whether a command needs the absolute state before it (and so cannot be a step).
+bool isNonlinear(uint command, TurtleSpecies sp) {
+    switch (command) {
+    case kTurtleRollLevel:
+    case kTurtleSetPosition:
+    case kTurtleSetHeading:
+    case kTurtleRotateWorldX:
+    case kTurtleRotateWorldY:
+    case kTurtleRotateWorldZ: return true;
+    case kTurtleDraw: return sp.tropism.w != 0.0; // tropism bends the heading after each segment
+    default: return false;
+    }
+}
+
+// x -> x + delta, or x -> the module's first parameter when it has one.
+vec2 addOrSet(uint i, float delta) { return hasParam(i) ? vec2(0.0, paramAt(i, 0u, 0.0)) : vec2(1.0, delta); }
+
+// The step of a command that does not need the absolute state (identity for those that draw only).
+TurtleStep commandStep(uint command, uint i, TurtleSpecies sp) {
+    TurtleStep t = identityStep();
+    float angle = paramAt(i, 0u, sp.angleDegrees) * kDegrees;
+    switch (command) {
+    case kTurtleDraw:
+    case kTurtleMove: t.scaledTranslation.x = paramAt(i, 0u, sp.step); break;
+    case kTurtleTurnLeft: t = turnStep(0, 1, angle); break;
+    case kTurtleTurnRight: t = turnStep(0, 1, -angle); break;
+    case kTurtlePitchDown: t = turnStep(0, 2, -angle); break;
+    case kTurtlePitchUp: t = turnStep(0, 2, angle); break;
+    case kTurtleRollLeft: t = turnStep(2, 1, angle); break;
+    case kTurtleRollRight: t = turnStep(2, 1, -angle); break;
+    case kTurtleTurnAround:
+        t.heading.x = -1.0;
+        t.left.y = -1.0;
+        break;
+    case kTurtlePitchRadians: t = turnStep(0, 2, -paramAt(i, 0u, 0.0)); break;
+    case kTurtleRollRadians: t = turnStep(2, 1, paramAt(i, 0u, 0.0)); break;
+    case kTurtleWidthUp: t.widthColor.xy = addOrSet(i, sp.widthIncrement); break;
+    case kTurtleWidthDown: t.widthColor.xy = addOrSet(i, -sp.widthIncrement); break;
+    case kTurtleColorUp: t.widthColor.zw = addOrSet(i, sp.colorIncrement); break;
+    case kTurtleColorDown: t.widthColor.zw = addOrSet(i, -sp.colorIncrement); break;
+    case kTurtleScaleSet:
+        if (hasParam(i)) t.scaleElasticity.xy = vec2(0.0, paramAt(i, 0u, 0.0));
+        break;
+    case kTurtleScaleUp: t.scaleElasticity.x = paramAt(i, 0u, 1.0); break;
+    case kTurtleScaleDown: {
+        float d = paramAt(i, 0u, 1.0);
+        t.scaleElasticity.x = 1.0 / (d != 0.0 ? d : 1.0);
+        break;
+    }
+    case kTurtleElasticitySet:
+        if (paramCountAt(i) > 1u) t.scaleElasticity.zw = vec2(0.0, paramAt(i, 1u, 0.0));
+        break;
+    case kTurtleElasticityUp: t.scaleElasticity.w = paramAt(i, 1u, sp.elasticityIncrement); break;
+    case kTurtleElasticityDown: t.scaleElasticity.w = -paramAt(i, 1u, sp.elasticityIncrement); break;
+    default: break;
+    }
+    return t;
+}
+
+// The state after a non-linear command, from the state before it.
+TurtleState applyNonlinear(TurtleState s, uint command, uint i, TurtleSpecies sp) {
+    Frame f = frameOf(s);
+    switch (command) {
+    case kTurtleDraw:
+        s = applyStep(s, commandStep(command, i, sp));
+        f = frameOf(s);
+        bend(f, sp.tropism.xyz, s.position.w);
+        break;
+    case kTurtleRollLevel: rollLevel(f); break;
+    case kTurtleRotateWorldX: rotateFrame(f, vec3(1, 0, 0), paramAt(i, 0u, 0.0)); break;
+    case kTurtleRotateWorldY: rotateFrame(f, vec3(0, 1, 0), paramAt(i, 0u, 0.0)); break;
+    case kTurtleRotateWorldZ: rotateFrame(f, vec3(0, 0, 1), paramAt(i, 0u, 0.0)); break;
+    case kTurtleSetPosition:
+        s.position.xyz = vec3(paramAt(i, 0u, s.position.x), paramAt(i, 1u, s.position.y), paramAt(i, 2u, s.position.z));
+        break;
+    case kTurtleSetHeading: {
+        vec3 h = vec3(paramAt(i, 0u, 0.0), paramAt(i, 1u, 0.0), paramAt(i, 2u, 0.0));
+        if (paramCountAt(i) >= 6u)
+            setHeadingAndUp(f, h, vec3(paramAt(i, 3u, 0.0), paramAt(i, 4u, 0.0), paramAt(i, 5u, 0.0)));
+        else if (paramCountAt(i) >= 3u)
+            setHeading(f, h);
+        break;
+    }
+    default: break;
+    }
+    setFrame(s, f);
+    return s;
+}

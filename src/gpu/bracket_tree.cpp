@@ -1,0 +1,58 @@
+#include "gpu/bracket_tree.h"
+
+#include <algorithm>
+#include <cstring>
+
+#include "compute/shared/derive_layout.h"
+#include "gpu/scan.h"
+#include "vk/barriers.h"
+#include "vk/context.h"
+
+namespace simeco::gpu {
+
+using shared::kMaxDepthLevels;
+
+BracketTree::BracketTree(const vk::Context& context, GpuScan& scan)
+    : context_(context),
+      scan_(scan),
+      bracketDepth_(vk::ComputePipeline::embedded(context, "derive/bracket_depth")),
+      depthLeaves_(vk::ComputePipeline::embedded(context, "derive/depth_leaves")),
+      depthLevel_(vk::ComputePipeline::embedded(context, "derive/depth_level")),
+      levelInfo_(context, 2 * kMaxDepthLevels * 4, vk::MemoryUsage::Upload) {}
+
+void BracketTree::record(VkCommandBuffer cmd, const vk::Buffer& symbols, std::uint32_t count) {
+    // Level k holds ceil(n / 2^k) minima; levelInfo gives each level's offset and size.
+    std::uint32_t info[2 * kMaxDepthLevels] = {};
+    std::uint64_t offset = 0;
+    std::uint32_t levels = 0;
+    for (std::uint32_t size = std::max(count, 1u);; size = (size + 1) / 2) {
+        info[levels] = static_cast<std::uint32_t>(offset);
+        info[kMaxDepthLevels + levels] = size;
+        offset += size;
+        ++levels;
+        if (size == 1 || levels == kMaxDepthLevels) break;
+    }
+    std::memcpy(levelInfo_.mapped(), info, sizeof info);
+    std::uint64_t elements = std::max(count, 1u);
+    if (!deltas_ || deltas_.size() < elements * 4) {
+        deltas_ = vk::Buffer(context_, elements * 4, vk::MemoryUsage::DeviceLocal);
+        before_ = vk::Buffer(context_, elements * 4, vk::MemoryUsage::DeviceLocal);
+    }
+    if (!tree_ || tree_.size() < offset * 4) tree_ = vk::Buffer(context_, offset * 4, vk::MemoryUsage::DeviceLocal);
+    if (scan_.capacity() < count) scan_.reserve(count);
+
+    shared::DeriveHelperPush push{count, 0, 0, 0};
+    bracketDepth_.dispatch(cmd, {symbols, deltas_}, push, bracketDepth_.groupsFor(count));
+    vk::memoryBarrier(cmd, vk::Hazard::ComputeToCompute);
+    scan_.record(cmd, deltas_, before_, count);
+    vk::memoryBarrier(cmd, vk::Hazard::ComputeToCompute);
+    depthLeaves_.dispatch(cmd, {deltas_, before_, tree_}, push, depthLeaves_.groupsFor(count));
+    vk::memoryBarrier(cmd, vk::Hazard::ComputeToCompute);
+    for (std::uint32_t level = 1; level < levels; ++level) {
+        shared::DeriveHelperPush levelPush{info[kMaxDepthLevels + level], level, 0, 0};
+        depthLevel_.dispatch(cmd, {tree_, levelInfo_}, levelPush, depthLevel_.groupsFor(levelPush.count));
+        vk::memoryBarrier(cmd, vk::Hazard::ComputeToCompute);
+    }
+}
+
+} // namespace simeco::gpu

@@ -1,0 +1,39 @@
+// The bracket-depth min tree of a module stream on the device: the inclusive bracket depth of every module and
+// the minima of ever larger blocks above it, which kernels match brackets with in O(log n)
+// (compute/derive/depth_tree.glsl).
+#pragma once
+
+#include <cstdint>
+
+#include <vulkan/vulkan.h>
+
+#include "vk/buffer.h"
+#include "vk/pipeline.h"
+
+namespace simeco::vk {
+class Context;
+}
+
+namespace simeco::gpu {
+
+class GpuScan;
+
+class BracketTree {
+public:
+    BracketTree(const vk::Context& context, GpuScan& scan);
+
+    // Records building the tree over the first `count` symbols (uint: symbol | parameter count << 24), sizing
+    // the buffers first. Ends with the tree written for compute kernels to read.
+    void record(VkCommandBuffer cmd, const vk::Buffer& symbols, std::uint32_t count);
+
+    const vk::Buffer& tree() const { return tree_; }
+    const vk::Buffer& levelInfo() const { return levelInfo_; }
+
+private:
+    const vk::Context& context_;
+    GpuScan& scan_;
+    vk::ComputePipeline bracketDepth_, depthLeaves_, depthLevel_;
+    vk::Buffer deltas_, before_, tree_, levelInfo_;
+};
+
+} // namespace simeco::gpu

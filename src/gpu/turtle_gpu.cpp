@@ -1,0 +1,351 @@
+#include "gpu/turtle_gpu.h"
+
+#include <algorithm>
+#include <bit>
+#include <span>
+#include <utility>
+
+#include <fmt/format.h>
+
+#include "compute/shared/derive_layout.h"
+#include "compute/shared/turtle_layout.h"
+#include "compute/shared/turtle_state_layout.h"
+#include "draw/bounds.h"
+#include "gpu/bracket_tree.h"
+#include "gpu/scan.h"
+#include "ir/source_loc.h"
+#include "vk/barriers.h"
+#include "vk/context.h"
+#include "vk/pipeline.h"
+
+namespace simeco::gpu {
+
+using namespace shared;
+using vk::Hazard;
+
+namespace {
+
+VkDeviceSize bytes(std::uint64_t count, std::uint64_t size) { return std::max<VkDeviceSize>(count * size, 4); }
+
+// Whether the alphabet can spell an elasticity command: then a segment may bend even where the view file
+// gives no elasticity.
+bool hasElasticityCommands(const turtle::TurtleCommands& c) {
+    auto elastic = [](std::uint32_t command) {
+        return command == kTurtleElasticitySet || command == kTurtleElasticityUp || command == kTurtleElasticityDown;
+    };
+    if (c.at == turtle::kNoSymbol) return false;
+    return std::any_of(c.afterAt.begin(), c.afterAt.end(), elastic) ||
+           std::any_of(c.pairs.begin(), c.pairs.end(), elastic);
+}
+
+std::vector<std::uint32_t> commandTableOf(const turtle::TurtleCommands& c) {
+    std::vector<std::uint32_t> table;
+    for (const auto* row : {&c.plain, &c.afterAt, &c.afterQuery, &c.pairPrefix, &c.pairs})
+        table.insert(table.end(), row->begin(), row->end());
+    return table;
+}
+
+TurtleSpecies speciesOf(const turtle::TurtleSettings& t, bool elasticityCommands) {
+    TurtleSpecies s{};
+    s.angleDegrees = t.angleDegrees;
+    s.step = t.step;
+    s.width = t.width;
+    s.widthIncrement = t.widthIncrement;
+    s.colorIncrement = t.colorIncrement;
+    s.initialColor = t.initialColor;
+    s.elasticity = t.elasticity;
+    s.elasticityIncrement = t.elasticityIncrement;
+    bool mayBend = t.elasticity != 0.0f || elasticityCommands;
+    s.tropism = {t.tropism.x, t.tropism.y, t.tropism.z, mayBend ? 1.0f : 0.0f};
+    return s;
+}
+
+template <typename T>
+vk::Buffer deviceBufferWith(const vk::Context& ctx, std::span<const T> values) {
+    vk::Buffer buffer(ctx, bytes(values.size(), sizeof(T)), vk::MemoryUsage::DeviceLocal);
+    if (!values.empty()) vk::upload(ctx, buffer, std::as_bytes(values));
+    return buffer;
+}
+
+// Rounds of pointer jumping that resolve any path of up to `count` modules (each round doubles the reach),
+// made odd so that a ping-pong starting in the first buffer ends there.
+std::uint32_t jumpRounds(std::uint32_t count) {
+    std::uint32_t rounds = std::bit_width(std::max(count, 1u)) + 1;
+    return rounds | 1u;
+}
+
+} // namespace
+
+UploadedModules::UploadedModules(const vk::Context& context, const cpu::ModuleString& s)
+    : count_(static_cast<std::uint32_t>(s.size())),
+      plants_(static_cast<std::uint32_t>(s.plants())),
+      stride_(static_cast<std::uint32_t>(s.stride)) {
+    std::vector<std::uint32_t> words(s.size());
+    for (size_t i = 0; i < s.size(); ++i) words[i] = s.sym[i] | (std::uint32_t(s.paramCount[i]) << kSymbolBits);
+    std::vector<std::uint32_t> starts(s.plantStart.begin(), s.plantStart.end());
+    symbols_ = deviceBufferWith(context, std::span<const std::uint32_t>(words));
+    params_ = deviceBufferWith(context, std::span<const float>(s.params));
+    plantStarts_ = deviceBufferWith(context, std::span<const std::uint32_t>(starts));
+}
+
+DeviceModules UploadedModules::view() const {
+    return DeviceModules{&symbols_, &params_, &plantStarts_, count_, plants_, stride_};
+}
+
+struct GpuTurtle::Impl {
+    const vk::Context& ctx;
+    GpuScan scan;
+    BracketTree brackets;
+    vk::ComputePipeline setup, polygons, jumpSteps, jumpSearch, jumpLevels, levelCount, levelScatter, resolveLevel,
+        states, classify, emit, links, field, place;
+    vk::Buffer commandTable, speciesTable, palettes, surfaceScales, surfaceShapes;
+    TurtlePush base{};
+    std::uint32_t levels = 0;
+
+    Impl(const vk::Context& c, const turtle::TurtleCommands& commands, const std::vector<turtle::TurtleSettings>& species)
+        : ctx(c),
+          scan(c),
+          brackets(c, scan),
+          setup(vk::ComputePipeline::embedded(c, "turtle/setup")),
+          polygons(vk::ComputePipeline::embedded(c, "turtle/polygons")),
+          jumpSteps(vk::ComputePipeline::embedded(c, "turtle/jump_steps")),
+          jumpSearch(vk::ComputePipeline::embedded(c, "turtle/jump_search")),
+          jumpLevels(vk::ComputePipeline::embedded(c, "turtle/jump_levels")),
+          levelCount(vk::ComputePipeline::embedded(c, "turtle/level_count")),
+          levelScatter(vk::ComputePipeline::embedded(c, "turtle/level_scatter")),
+          resolveLevel(vk::ComputePipeline::embedded(c, "turtle/resolve_level")),
+          states(vk::ComputePipeline::embedded(c, "turtle/states")),
+          classify(vk::ComputePipeline::embedded(c, "turtle/classify")),
+          emit(vk::ComputePipeline::embedded(c, "turtle/emit")),
+          links(vk::ComputePipeline::embedded(c, "turtle/links")),
+          field(vk::ComputePipeline::embedded(c, "turtle/field")),
+          place(vk::ComputePipeline::embedded(c, "turtle/place")) {
+        bool elastic = hasElasticityCommands(commands);
+        std::vector<TurtleSpecies> table;
+        std::vector<float> scales;
+        std::vector<std::uint32_t> shapes;
+        std::vector<shared::vec4> colors;
+        for (const turtle::TurtleSettings& t : species) {
+            table.push_back(speciesOf(t, elastic));
+            std::vector<float> s = t.surfaceScale;
+            std::vector<std::uint32_t> k = t.surfaceShape;
+            s.resize(commands.symbols, 1.0f);
+            k.resize(commands.symbols, 0u);
+            scales.insert(scales.end(), s.begin(), s.end());
+            shapes.insert(shapes.end(), k.begin(), k.end());
+            for (std::uint32_t e = 0; e < kPaletteEntries; ++e) {
+                glm::vec4 v = e < t.palette.size() ? t.palette[e] : glm::vec4(1.0f);
+                colors.push_back({v.r, v.g, v.b, v.a});
+            }
+        }
+        std::vector<std::uint32_t> commandWords = commandTableOf(commands);
+        commandTable = deviceBufferWith(c, std::span<const std::uint32_t>(commandWords));
+        speciesTable = deviceBufferWith(c, std::span<const TurtleSpecies>(table));
+        palettes = deviceBufferWith(c, std::span<const shared::vec4>(colors));
+        surfaceScales = deviceBufferWith(c, std::span<const float>(scales));
+        surfaceShapes = deviceBufferWith(c, std::span<const std::uint32_t>(shapes));
+        base.species = static_cast<std::uint32_t>(species.size());
+        base.symbols = commands.symbols;
+        base.atSymbol = commands.at;
+        base.tildeSymbol = commands.tilde;
+        base.querySymbol = commands.query;
+    }
+
+    void checkRange(std::uint64_t count, std::uint64_t size, const char* what) const {
+        std::uint64_t limit = ctx.limits().maxStorageBufferRange;
+        if (count * size > limit)
+            throw ir::LimitError(fmt::format("the device binds at most {} MiB per buffer; the turtle's {} for {} "
+                                             "modules need {} MiB (interpret fewer steps or plants)",
+                                             limit >> 20, what, count, (count * size) >> 20));
+    }
+
+    vk::Buffer deviceBuffer(std::uint64_t count, std::uint64_t size) const {
+        return vk::Buffer(ctx, bytes(count, size), vk::MemoryUsage::DeviceLocal);
+    }
+
+    DeviceOrgans interpret(const DeviceModules& m, const turtle::FieldOptions& options);
+};
+
+DeviceOrgans GpuTurtle::Impl::interpret(const DeviceModules& m, const turtle::FieldOptions& options) {
+    const std::uint32_t n = m.count;
+    checkRange(n, sizeof(TurtleStep), "steps");
+    checkRange(n, sizeof(OrganInstance), "organ instances");
+    checkRange(std::uint64_t(n) * kOrganKinds, 4, "organ flags");
+    TurtlePush push = base;
+    push.count = n;
+    push.plants = m.plants;
+    push.stride = m.stride;
+    push.spacing = options.spacing;
+
+    vk::Buffer commands = deviceBuffer(n, 4), parents = deviceBuffer(n, 4), plantOf = deviceBuffer(n, 4),
+               marks = deviceBuffer(n, 4), kinds = deviceBuffer(n, 4), slots = deviceBuffer(n, 4);
+    vk::Buffer steps[2] = {deviceBuffer(n, sizeof(TurtleStep)), deviceBuffer(n, sizeof(TurtleStep))};
+    vk::Buffer pointers[2] = {deviceBuffer(n, 4), deviceBuffer(n, 4)};
+    vk::Buffer statesBuffer = deviceBuffer(n, sizeof(TurtleState));
+    vk::Buffer triangleFirst = deviceBuffer(n, 4), trianglePrevious = deviceBuffer(n, 4);
+    vk::Buffer stemBelow = deviceBuffer(n, 4), tubeBelow = deviceBuffer(n, 4), cylinderAnchors = deviceBuffer(n, 4),
+               cylinderStarts = deviceBuffer(n, 4), searchScratch = deviceBuffer(n, 4);
+    vk::Buffer levelsBuffers[2] = {deviceBuffer(n, 8), deviceBuffer(n, 8)};
+    vk::Buffer counts = deviceBuffer(std::uint64_t(n) + 1, 4), order = deviceBuffer(n, 4);
+    vk::Buffer flags = deviceBuffer(std::uint64_t(n) * kOrganKinds, 4),
+               offsets = deviceBuffer(std::uint64_t(n) * kOrganKinds, 4);
+    vk::Buffer plantBounds = deviceBuffer(std::uint64_t(m.plants) * 8, 4);
+    DeviceOrgans out;
+    out.capacity = n;
+    out.instances = vk::Buffer(ctx, bytes(n, sizeof(OrganInstance)), vk::MemoryUsage::DeviceLocal);
+    out.table = vk::Buffer(ctx, sizeof(OrganTable), vk::MemoryUsage::DeviceLocal);
+    out.field = vk::Buffer(ctx, 4, vk::MemoryUsage::DeviceLocal);
+    if (scan.capacity() < n * kOrganKinds) scan.reserve(n * kOrganKinds);
+
+    const vk::Buffer& symbols = *m.symbols;
+    const vk::Buffer& params = *m.params;
+    const vk::Buffer& starts = *m.plantStarts;
+    const std::uint64_t groups = setup.groupsFor(n);
+    const std::uint32_t rounds = jumpRounds(n);
+
+    // Nearest strict ancestor with a hit or stop mark, into `result`.
+    auto search = [&](VkCommandBuffer cmd, std::uint32_t hit, std::uint32_t stop, const vk::Buffer& result) {
+        TurtlePush p = push;
+        p.hitMask = hit;
+        p.stopMask = stop;
+        const vk::Buffer* ping[2] = {&result, &searchScratch};
+        for (std::uint32_t r = 0; r < rounds; ++r) {
+            const vk::Buffer& in = r == 0 ? parents : *ping[(r - 1) % 2];
+            jumpSearch.dispatch(cmd, {marks, in, *ping[r % 2]}, p, groups);
+            vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+        }
+    };
+
+    // Pass 1: commands, parents, steps, marks; polygons; steps composed up to the anchors; the searches that
+    // need only marks; levels of the non-linear modules and their counts.
+    ctx.submitAndWait([&](VkCommandBuffer cmd) {
+        vkCmdFillBuffer(cmd, triangleFirst.handle(), 0, VK_WHOLE_SIZE, kNoModule);
+        vkCmdFillBuffer(cmd, counts.handle(), 0, VK_WHOLE_SIZE, 0);
+        VkDeviceSize half = std::uint64_t(m.plants) * 16;
+        if (m.plants > 0) {
+            vkCmdFillBuffer(cmd, plantBounds.handle(), 0, half, 0x7FFFFFFFu);
+            vkCmdFillBuffer(cmd, plantBounds.handle(), half, half, 0x80000000u);
+        }
+        vk::memoryBarrier(cmd, Hazard::TransferToCompute);
+        brackets.record(cmd, symbols, n);
+        setup.dispatch(cmd, {symbols, params, starts, commandTable, speciesTable, brackets.tree(), brackets.levelInfo(),
+                             commands, parents, steps[0], pointers[0], marks, plantOf},
+                       push, groups);
+        vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+        polygons.dispatch(cmd, {commands, plantOf, marks, triangleFirst, trianglePrevious}, push, groups);
+        vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+        for (std::uint32_t r = 0; r < rounds; ++r) {
+            std::uint32_t from = r % 2, to = 1 - from;
+            jumpSteps.dispatch(cmd, {marks, steps[from], pointers[from], steps[to], pointers[to]}, push, groups);
+            vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+        }
+        search(cmd, kMarkStem, kMarkStemBreak, stemBelow);
+        search(cmd, kMarkCylinderStart | kMarkCylinderPoint, 0, cylinderAnchors);
+        search(cmd, kMarkCylinderStart, 0, cylinderStarts);
+        // After an odd number of rounds the composed steps and the anchors are in the second buffers.
+        for (std::uint32_t r = 0; r < rounds; ++r) {
+            TurtlePush p = push;
+            p.first = r;
+            jumpLevels.dispatch(cmd, {marks, levelsBuffers[(r + 1) % 2], levelsBuffers[r % 2], parents, pointers[1]}, p,
+                                groups);
+            vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+        }
+        levelCount.dispatch(cmd, {marks, levelsBuffers[0], counts}, push, groups);
+        vk::memoryBarrier(cmd, Hazard::ComputeToHost);
+    });
+    const vk::Buffer& composed = steps[1];
+    const vk::Buffer& anchors = pointers[1];
+    const vk::Buffer& levelsOf = levelsBuffers[0];
+
+    // The levels' sizes: the only thing the host reads, to lay the levels out and dispatch them in turn.
+    std::uint32_t deepest = vk::downloadVector<std::uint32_t>(ctx, counts, 1)[0];
+    levels = deepest;
+    std::vector<std::uint32_t> levelStarts(std::size_t(deepest) + 1, 0), levelSizes(std::size_t(deepest) + 1, 0);
+    vk::Buffer cursors = deviceBuffer(std::uint64_t(deepest) + 1, 4);
+    if (deepest > 0) {
+        std::vector<std::uint32_t> sizes(std::size_t(deepest) + 1);
+        vk::download(ctx, counts, std::as_writable_bytes(std::span(sizes)));
+        std::uint32_t next = 0;
+        for (std::uint32_t level = 1; level <= deepest; ++level) {
+            levelStarts[level] = next;
+            levelSizes[level] = sizes[level];
+            next += sizes[level];
+        }
+        vk::uploadSpan(ctx, cursors, std::span<const std::uint32_t>(levelStarts));
+    }
+
+    // Pass 2: non-linear modules level by level, then every state; organs classified, placed by a scan,
+    // written, joined, and moved to their plants' places in the field.
+    ctx.submitAndWait([&](VkCommandBuffer cmd) {
+        if (deepest > 0) {
+            levelScatter.dispatch(cmd, {marks, levelsOf, cursors, order}, push, groups);
+            vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+            for (std::uint32_t level = 1; level <= deepest; ++level) {
+                if (levelSizes[level] == 0) continue;
+                TurtlePush p = push;
+                p.first = levelStarts[level];
+                p.items = levelSizes[level];
+                resolveLevel.dispatch(cmd, {symbols, params, starts, commandTable, speciesTable, commands, parents,
+                                            composed, anchors, plantOf, order, statesBuffer},
+                                      p, resolveLevel.groupsFor(p.items));
+                vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+            }
+        }
+        states.dispatch(cmd, {symbols, params, starts, commandTable, speciesTable, marks, composed, anchors, plantOf,
+                              statesBuffer},
+                        push, groups);
+        vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+        classify.dispatch(cmd, {commands, marks, triangleFirst, cylinderAnchors, cylinderStarts, statesBuffer, kinds,
+                                flags},
+                          push, groups);
+        vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+        search(cmd, kMarkTube, kMarkTubeBreak, tubeBelow);
+        scan.record(cmd, flags, offsets, n * kOrganKinds);
+        vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+        emit.dispatch(cmd, {symbols, params, starts, commandTable, speciesTable, commands, parents, plantOf,
+                            statesBuffer, kinds, offsets, triangleFirst, trianglePrevious, cylinderAnchors, palettes,
+                            surfaceScales, surfaceShapes, out.instances, slots, plantBounds},
+                      push, groups);
+        vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+        links.dispatch(cmd, {commands, marks, kinds, slots, stemBelow, tubeBelow, out.instances}, push, groups);
+        field.dispatch(cmd, {offsets, scan.totalBuffer(), plantBounds, out.table, out.field}, push, 1);
+        vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+        place.dispatch(cmd, {scan.totalBuffer(), out.field, out.instances, out.table}, push, groups);
+        vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+    });
+    return out;
+}
+
+GpuTurtle::GpuTurtle(const vk::Context& context, const turtle::TurtleCommands& commands,
+                     const std::vector<turtle::TurtleSettings>& species)
+    : impl_(std::make_unique<Impl>(context, commands, species)) {}
+
+GpuTurtle::~GpuTurtle() = default;
+
+DeviceOrgans GpuTurtle::interpret(const DeviceModules& modules, const turtle::FieldOptions& field) {
+    return impl_->interpret(modules, field);
+}
+
+std::uint32_t GpuTurtle::lastLevels() const { return impl_->levels; }
+
+turtle::Interpretation readBack(const vk::Context& context, const DeviceOrgans& organs, std::uint32_t plants) {
+    OrganTable table = vk::downloadVector<OrganTable>(context, organs.table, 1)[0];
+    float spacing = vk::downloadVector<float>(context, organs.field, 1)[0];
+    turtle::Interpretation result;
+    std::uint32_t total = 0;
+    for (std::uint32_t k = 0; k < kOrganKinds; ++k) {
+        result.count[k] = table.count[k];
+        result.first[k] = table.first[k];
+        total += table.count[k];
+    }
+    result.organs = vk::downloadVector<OrganInstance>(context, organs.instances, total);
+    if (total > 0) {
+        draw::Bounds b = draw::decodeBounds(table);
+        result.bounds.add(b.min);
+        result.bounds.add(b.max);
+    }
+    for (std::uint32_t p = 0; p < plants; ++p) result.plantOrigins.push_back(turtle::fieldCell(p, plants) * spacing);
+    return result;
+}
+
+} // namespace simeco::gpu

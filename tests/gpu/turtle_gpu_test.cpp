@@ -1,0 +1,206 @@
+// The turtle kernels against the CPU reference turtle: every example grammar and every corpus model is derived
+// on the CPU (under its homomorphism) and interpreted by both turtles; the instance buffers must hold the same
+// organs in the same order, with positions and directions within a tolerance relative to the plant's size.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <fmt/format.h>
+#include <glm/geometric.hpp>
+
+#include "compute/shared/organ_layout.h"
+#include "cpu/derive.h"
+#include "gpu/turtle_gpu.h"
+#include "gpu_fixture.h"
+#include "lang/load_grammar.h"
+#include "turtle/turtle_commands.h"
+#include "turtle/turtle_cpu.h"
+
+namespace simeco::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kGrammars = fs::path(SIMECO_SOURCE_DIR) / "grammars";
+const fs::path kCorpus = fs::path(SIMECO_SHARED_DIR) / "corpus" / "cpfg-vlab";
+
+// Strings longer than this are not interpreted here (lavapipe's time, not correctness, is the limit).
+constexpr uint64_t kModuleBudget = 400'000;
+
+glm::vec3 v3(const shared::vec4& v) { return {v.x, v.y, v.z}; }
+std::string text(const shared::vec4& v) { return fmt::format("({:.5g}, {:.5g}, {:.5g}; {:.5g})", v.x, v.y, v.z, v.w); }
+
+// The first organ where the two interpretations differ, or "".
+std::string firstDifference(const turtle::Interpretation& want, const turtle::Interpretation& got) {
+    for (uint32_t k = 0; k < shared::kOrganKinds; ++k)
+        if (want.count[k] != got.count[k] || want.first[k] != got.first[k]) {
+            // The first module whose organ only one side drew.
+            uint32_t i = 0;
+            while (i < std::min(want.count[k], got.count[k]) &&
+                   want.organs[want.first[k] + i].module == got.organs[got.first[k] + i].module)
+                ++i;
+            auto moduleAt = [&](const turtle::Interpretation& t) {
+                return i < t.count[k] ? int64_t(t.organs[t.first[k] + i].module) : int64_t(-1);
+            };
+            return fmt::format("organ kind {}: {} at {} on the CPU, {} at {} on the GPU; the first organ "
+                               "only one drew: CPU at module {}, GPU at module {}",
+                               k, want.count[k], want.first[k], got.count[k], got.first[k], moduleAt(want), moduleAt(got));
+        }
+    if (want.organs.size() != got.organs.size()) return "instance counts differ";
+    // Positions are compared relative to the field's size: long strings accumulate float rounding in
+    // different orders (a sequential walk against composed steps).
+    glm::vec3 extent = want.bounds.empty() ? glm::vec3(1.0f) : want.bounds.max - want.bounds.min;
+    float size = std::max({1.0f, extent.x, extent.y, extent.z});
+    float positionTolerance = 2e-3f * size, directionTolerance = 2e-3f;
+    for (size_t i = 0; i < want.organs.size(); ++i) {
+        const shared::OrganInstance &a = want.organs[i], &b = got.organs[i];
+        auto differ = [&](const char* what, auto x, auto y) {
+            return fmt::format("organ {} (kind {}, module {}): {} differ: CPU {} GPU {}", i, a.kind, a.module, what, x, y);
+        };
+        if (a.kind != b.kind || a.module != b.module || a.plant != b.plant || a.shape != b.shape)
+            return differ("identities", fmt::format("{}/{}/{}/{}", a.kind, a.module, a.plant, a.shape),
+                          fmt::format("{}/{}/{}/{}", b.kind, b.module, b.plant, b.shape));
+        bool triangle = a.kind == shared::kOrganTriangle;
+        float along = triangle ? positionTolerance : directionTolerance;
+        auto far = [](glm::vec3 x, glm::vec3 y, float tolerance) { return glm::length(x - y) > tolerance; };
+        if (far(v3(a.position), v3(b.position), positionTolerance))
+            return differ("positions", text(a.position), text(b.position));
+        if (far(v3(a.heading), v3(b.heading), along)) return differ("headings", text(a.heading), text(b.heading));
+        if (far(v3(a.up), v3(b.up), along)) return differ("ups", text(a.up), text(b.up));
+        float sizeTolerance = 1e-3f * std::max(1.0f, std::abs(a.position.w));
+        if (std::abs(a.position.w - b.position.w) > sizeTolerance || std::abs(a.heading.w - b.heading.w) > sizeTolerance ||
+            std::abs(a.up.w - b.up.w) > sizeTolerance)
+            return differ("sizes", fmt::format("{} {} {}", a.position.w, a.heading.w, a.up.w),
+                          fmt::format("{} {} {}", b.position.w, b.heading.w, b.up.w));
+        if (far(v3(a.previousHeading), v3(b.previousHeading), directionTolerance) ||
+            far(v3(a.nextHeading), v3(b.nextHeading), directionTolerance))
+            return differ("joints", text(a.previousHeading) + text(a.nextHeading),
+                          text(b.previousHeading) + text(b.nextHeading));
+        if (a.color.x != b.color.x || a.color.y != b.color.y || a.color.z != b.color.z)
+            return differ("colours", text(a.color), text(b.color));
+    }
+    for (int axis = 0; axis < 3; ++axis)
+        if (std::abs(want.bounds.min[axis] - got.bounds.min[axis]) > positionTolerance ||
+            std::abs(want.bounds.max[axis] - got.bounds.max[axis]) > positionTolerance)
+            return fmt::format("bounds differ on axis {}", axis);
+    return "";
+}
+
+struct Tally {
+    int compared = 0, organs = 0;
+    int nonlinear = 0; // strings with commands resolved level by level (tropism, `$`, @R, @M, world rotations)
+    std::vector<std::string> skipped;
+};
+
+// Interprets a grammar's derived string with both turtles; fails the test on a difference.
+void compareTurtles(const vk::Context& context, const fs::path& file, const std::string& name, uint32_t plants,
+                    Tally& tally) {
+    SCOPED_TRACE(name);
+    ir::Grammar g = lang::loadGrammarFile(file.string());
+    cpu::DeriveOptions options;
+    options.homomorphism = true;
+    options.plants = plants;
+    options.maxModules = kModuleBudget;
+    cpu::ModuleString string;
+    try {
+        string = cpu::deriveCpu(g, options).string;
+    } catch (const ir::LimitError&) {
+        tally.skipped.push_back(name);
+        return;
+    }
+    turtle::TurtleCommands commands = turtle::turtleCommands(g.alphabet);
+    std::vector<turtle::TurtleSettings> species{turtle::turtleSettings(g, g.alphabet)};
+    turtle::Interpretation want = turtle::interpretCpu(string, commands, species, {});
+    if (string.size() == 0) return;
+
+    gpu::GpuTurtle turtle(context, commands, species);
+    gpu::UploadedModules modules(context, string);
+    gpu::DeviceOrgans organs = turtle.interpret(modules.view(), {});
+    turtle::Interpretation got = gpu::readBack(context, organs, uint32_t(string.plants()));
+    std::string difference = firstDifference(want, got);
+    if (size_t at = difference.rfind("module "); at != std::string::npos) {
+        // The modules around the first difference, to see which commands are involved.
+        size_t module = std::strtoull(difference.c_str() + at + 7, nullptr, 10);
+        size_t from = module >= 8 ? module - 8 : 0, to = std::min(string.size(), module + 4);
+        difference += fmt::format("; modules {}..{}: {}", from, to, cpu::formatModules(string, g.alphabet, from, to));
+    }
+    EXPECT_EQ(difference, "") << name << " (" << string.size() << " modules, " << turtle.lastLevels()
+                              << " levels of non-linear commands)";
+    if (!difference.empty()) return;
+    ++tally.compared;
+    if (turtle.lastLevels() > 0) ++tally.nonlinear;
+    tally.organs += int(want.organs.size());
+}
+
+using TurtleGpuTest = GpuTest;
+
+TEST_F(TurtleGpuTest, ExampleGrammarsMatchTheCpuTurtle) {
+    std::vector<fs::path> files;
+    for (const auto& entry : fs::recursive_directory_iterator(kGrammars)) {
+        std::string ext = entry.path().extension().string();
+        if (ext == ".l" || ext == ".lsys") files.push_back(entry.path());
+    }
+    std::sort(files.begin(), files.end());
+    ASSERT_GE(files.size(), 15u) << "example grammars not found under " << kGrammars;
+    Tally tally;
+    for (const fs::path& f : files) compareTurtles(context(), f, fs::relative(f, kGrammars).string(), 1, tally);
+    std::printf("example grammars: %d interpreted alike (%d organs, %d with non-linear commands), %zu over %llu "
+                "modules\n",
+                tally.compared, tally.organs, tally.nonlinear, tally.skipped.size(),
+                static_cast<unsigned long long>(kModuleBudget));
+    EXPECT_EQ(tally.compared + int(tally.skipped.size()), int(files.size()));
+    EXPECT_LE(tally.skipped.size(), 2u);
+    EXPECT_GT(tally.organs, 1000);
+}
+
+TEST_F(TurtleGpuTest, CorpusModelsMatchTheCpuTurtle) {
+    std::ifstream in(kCorpus / "MANIFEST.tsv");
+    std::string line;
+    std::getline(in, line); // header
+    Tally tally;
+    int models = 0;
+    char scratch[] = "/tmp/simeco-gpu-turtle-XXXXXX"; // models may write files relative to the working directory
+    ASSERT_NE(mkdtemp(scratch), nullptr);
+    fs::path previous = fs::current_path();
+    fs::current_path(scratch);
+    while (std::getline(in, line)) {
+        std::stringstream row(line);
+        std::string folder, file;
+        std::getline(row, folder, '\t');
+        std::getline(row, file, '\t');
+        if (folder.empty() || file.empty()) continue;
+        ++models;
+        try {
+            compareTurtles(context(), kCorpus / "models" / folder / file, folder, 1, tally);
+        } catch (const std::exception& e) {
+            ADD_FAILURE() << folder << ": " << e.what();
+        }
+    }
+    fs::current_path(previous);
+    fs::remove_all(scratch);
+    ASSERT_GE(models, 60) << "the corpus manifest was not found or is incomplete at " << kCorpus;
+    std::printf("corpus models: %d interpreted alike (%d organs, %d with non-linear commands), %zu over %llu "
+                "modules:",
+                tally.compared, tally.organs, tally.nonlinear, tally.skipped.size(),
+                static_cast<unsigned long long>(kModuleBudget));
+    for (const std::string& s : tally.skipped) std::printf(" %s", s.c_str());
+    std::printf("\n");
+    EXPECT_EQ(tally.compared + int(tally.skipped.size()), models);
+    EXPECT_LE(tally.skipped.size(), 6u);
+    EXPECT_GE(tally.nonlinear, 5) << "the corpus should exercise tropism and absolute commands";
+}
+
+// Many plants in one stream: each plant keeps its own root and the field places them as the CPU does.
+TEST_F(TurtleGpuTest, AFieldOfPlantsMatchesTheCpuTurtle) {
+    Tally tally;
+    compareTurtles(context(), kGrammars / "abop" / "fig2.8-ternary.l", "ternary field", 16, tally);
+    compareTurtles(context(), kGrammars / "abop" / "fig1.24d.l", "plant field", 7, tally);
+    EXPECT_EQ(tally.compared, 2);
+}
+
+} // namespace
+} // namespace simeco::test

@@ -16,6 +16,7 @@
 #include "draw/image_writers.h"
 #include "draw/renderer.h"
 #include "gpu/derive_gpu.h"
+#include "gpu/turtle_gpu.h"
 #include "ir/species.h"
 #include "turtle/turtle_commands.h"
 #include "turtle/turtle_cpu.h"
@@ -104,33 +105,34 @@ void runRender(const RenderArgs& args) {
 
     std::vector<turtle::TurtleSettings> turtles;
     for (const ir::Grammar& g : species) turtles.push_back(turtle::turtleSettings(g, species.front().alphabet));
+    turtle::TurtleCommands commands = turtle::turtleCommands(species.front().alphabet);
     turtle::FieldOptions field;
     field.spacing = args.spacing;
-    turtle::Interpretation interp =
-        turtle::interpretCpu(string, turtle::turtleCommands(species.front().alphabet), turtles, field);
-    if (interp.organs.empty()) throw std::runtime_error(fmt::format("{}: the plants draw nothing", args.file));
 
-    // The instances and their table go to the device as the turtle kernels would leave them.
-    shared::OrganTable table{};
-    for (uint32_t k = 0; k < shared::kOrganKinds; ++k) {
-        table.count[k] = interp.count[k];
-        table.first[k] = interp.first[k];
+    // The organs on the device, written by the turtle kernels (or, with the CPU backend, uploaded from the
+    // reference turtle); only the table (counts and bounds) comes back for framing.
+    gpu::DeviceOrgans organs;
+    if (args.backend == "cpu") {
+        organs = gpu::uploadOrgans(context, turtle::interpretCpu(string, commands, turtles, field));
+    } else {
+        gpu::GpuTurtle turtle(context, commands, turtles);
+        gpu::UploadedModules modules(context, string);
+        organs = turtle.interpret(modules.view(), field);
     }
-    draw::Bounds bounds{interp.bounds.min, interp.bounds.max};
-    draw::encodeBounds(bounds, table);
-    vk::Buffer instances(context, interp.organs.size() * sizeof(shared::OrganInstance), vk::MemoryUsage::DeviceLocal);
-    vk::uploadSpan(context, instances, std::span<const shared::OrganInstance>(interp.organs));
-    vk::Buffer tableBuffer(context, sizeof(table), vk::MemoryUsage::DeviceLocal);
-    vk::uploadSpan(context, tableBuffer, std::span<const shared::OrganTable>(&table, 1));
+    shared::OrganTable table = vk::downloadVector<shared::OrganTable>(context, organs.table, 1)[0];
+    uint32_t organCount = 0;
+    for (uint32_t k = 0; k < shared::kOrganKinds; ++k) organCount += table.count[k];
+    if (organCount == 0) throw std::runtime_error(fmt::format("{}: the plants draw nothing", args.file));
+    draw::Bounds bounds = draw::decodeBounds(table);
 
     draw::Renderer renderer(context);
-    draw::Frame frame = renderer.render(instances, tableBuffer, bounds, settings);
+    draw::Frame frame = renderer.render(organs.instances, organs.table, bounds, settings);
     if (exr) draw::writeExr(args.output, frame);
     else draw::writePng(args.output, frame);
     if (!args.png.empty()) draw::writePng(args.png, frame);
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::printf("%s: %zu plants, %zu modules, %zu organs, %ux%u, %.2f s -> %s%s%s\n", args.file.c_str(),
-                string.plants(), string.size(), interp.organs.size(), settings.width, settings.height, seconds,
+                string.plants(), string.size(), size_t(organCount), settings.width, settings.height, seconds,
                 args.output.c_str(), args.png.empty() ? "" : ", ", args.png.c_str());
 }
 
@@ -155,7 +157,7 @@ void registerRenderCommand(CLI::App& app, CommandContext& ctx) {
     cmd->add_option("--camera", args->camera, "azimuth,elevation[,distance] in degrees (default: framed on the plants)");
     cmd->add_option("--style", args->style, "lit or toon")->check(CLI::IsMember({"lit", "toon"}));
     cmd->add_option("--shadows", args->shadows, "volume or none")->check(CLI::IsMember({"volume", "none"}));
-    cmd->add_option("--backend", args->backend, "derivation backend: gpu or cpu")->check(CLI::IsMember({"cpu", "gpu"}));
+    cmd->add_option("--backend", args->backend, "derivation and turtle: gpu (compute kernels) or cpu (reference)")->check(CLI::IsMember({"cpu", "gpu"}));
     cmd->add_option("--max-modules", args->maxModules, "module budget (default: sized to this machine's memory)");
     cmd->add_option("--device", args->device, "Vulkan device: an index or a name part (see `simeco devices`)");
     cmd->callback([args, &ctx] { ctx.exitCode = runReportingErrors([&] { runRender(*args); }); });

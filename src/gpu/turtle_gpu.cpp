@@ -328,6 +328,22 @@ DeviceOrgans GpuTurtle::interpret(const DeviceModules& modules, const turtle::Fi
 
 std::uint32_t GpuTurtle::lastLevels() const { return impl_->levels; }
 
+DeviceOrgans uploadOrgans(const vk::Context& context, const turtle::Interpretation& interpretation) {
+    OrganTable table{};
+    for (std::uint32_t k = 0; k < kOrganKinds; ++k) {
+        table.count[k] = interpretation.count[k];
+        table.first[k] = interpretation.first[k];
+    }
+    draw::encodeBounds(draw::Bounds{interpretation.bounds.min, interpretation.bounds.max}, table);
+    float spacing = interpretation.spacing;
+    DeviceOrgans organs;
+    organs.capacity = static_cast<std::uint32_t>(interpretation.organs.size());
+    organs.instances = deviceBufferWith(context, std::span<const OrganInstance>(interpretation.organs));
+    organs.table = deviceBufferWith(context, std::span<const OrganTable>(&table, 1));
+    organs.field = deviceBufferWith(context, std::span<const float>(&spacing, 1));
+    return organs;
+}
+
 turtle::Interpretation readBack(const vk::Context& context, const DeviceOrgans& organs, std::uint32_t plants) {
     OrganTable table = vk::downloadVector<OrganTable>(context, organs.table, 1)[0];
     float spacing = vk::downloadVector<float>(context, organs.field, 1)[0];
@@ -344,6 +360,7 @@ turtle::Interpretation readBack(const vk::Context& context, const DeviceOrgans& 
         result.bounds.add(b.min);
         result.bounds.add(b.max);
     }
+    result.spacing = spacing;
     for (std::uint32_t p = 0; p < plants; ++p) result.plantOrigins.push_back(turtle::fieldCell(p, plants) * spacing);
     return result;
 }

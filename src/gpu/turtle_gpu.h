@@ -72,6 +72,9 @@ private:
     std::unique_ptr<Impl> impl_;
 };
 
+// The CPU turtle's organs on the device in the layout the turtle kernels leave.
+DeviceOrgans uploadOrgans(const vk::Context& context, const turtle::Interpretation& interpretation);
+
 // The instances and table read back, in the CPU turtle's form (for tests and tools).
 turtle::Interpretation readBack(const vk::Context& context, const DeviceOrgans& organs, std::uint32_t plants);
 

@@ -35,6 +35,7 @@ struct Interpretation {
     std::array<uint32_t, shared::kOrganKinds> first{}; // where each kind starts
     Bounds bounds;                                     // of everything drawn, in the field
     std::vector<glm::vec3> plantOrigins;               // where each plant stands
+    float spacing = 1.0f;                              // between neighbouring plants of the field's grid
 };
 
 // How plants stand: in rows and columns on the ground (y = 0), `spacing` apart; 0 spaces them by the widest

@@ -288,6 +288,7 @@ Interpretation interpretCpu(const cpu::ModuleString& string, const TurtleCommand
         for (const OrganInstance& o : perPlant[p]) plantBounds[p].add(organBounds(o));
     }
     float spacing = fieldSpacing(field, plantBounds);
+    result.spacing = spacing;
     for (uint32_t p = 0; p < plants; ++p) {
         glm::vec3 origin = fieldCell(p, plants) * spacing;
         result.plantOrigins.push_back(origin);

@@ -83,6 +83,8 @@ std::string firstDifference(const turtle::Interpretation& want, const turtle::In
         if (a.color.x != b.color.x || a.color.y != b.color.y || a.color.z != b.color.z)
             return differ("colours", text(a.color), text(b.color));
     }
+    if (std::abs(want.spacing - got.spacing) > 1e-3f * want.spacing)
+        return fmt::format("field spacing differs: CPU {} GPU {}", want.spacing, got.spacing);
     for (int axis = 0; axis < 3; ++axis)
         if (std::abs(want.bounds.min[axis] - got.bounds.min[axis]) > positionTolerance ||
             std::abs(want.bounds.max[axis] - got.bounds.max[axis]) > positionTolerance)

@@ -1,5 +1,6 @@
 // From an organ mesh vertex (organ-local, see MeshVertex) to the world, for every organ kind. organ.vert draws
 // with it and shadow_volumes.comp casts with it, so a shadow's caster is exactly the geometry on screen.
+// src/export/organ_geometry.cpp does the same on the CPU for mesh files: change both together.
 //
 // Frame: H = heading, U = up, L = cross(U, H) (left); local x runs along H, y along L, z along U.
 

@@ -14,5 +14,6 @@ void registerDeriveCommand(CLI::App& app, CommandContext& ctx);
 void registerDevicesCommand(CLI::App& app, CommandContext& ctx);
 void registerBenchCommand(CLI::App& app, CommandContext& ctx);
 void registerRenderCommand(CLI::App& app, CommandContext& ctx);
+void registerExportCommand(CLI::App& app, CommandContext& ctx);
 
 } // namespace simeco::app

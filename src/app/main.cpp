@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
     simeco::app::registerDevicesCommand(app, ctx);
     simeco::app::registerBenchCommand(app, ctx);
     simeco::app::registerRenderCommand(app, ctx);
+    simeco::app::registerExportCommand(app, ctx);
 
     try {
         app.parse(argc, argv);

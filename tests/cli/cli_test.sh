@@ -105,5 +105,20 @@ code=$?
 [ $code -ne 0 ] && [ ! -e "$work/bad.png" ] && [ -z "$(ls "$work" | grep -i 'bad.*tmp')" ]
 check "render refuses a bad size and writes nothing (code $code)" $?
 
+# fig. 1.24a at two steps: 25 stems a plant, 50 vertices a stem.
+"$simeco" export "$source_dir/grammars/abop/fig1.24a.l" -n 2 --plants 2 -o "$work/plants.obj" >"$work/export.txt" 2>&1
+[ "$(grep -c '^v ' "$work/plants.obj")" -eq 2500 ] && [ "$(grep -c '^vn ' "$work/plants.obj")" -eq 2500 ] &&
+  [ "$(grep -c '^o plant_' "$work/plants.obj")" -eq 2 ] && grep -q "2 plants" "$work/export.txt"
+check "export writes the OBJ of a field, one object per plant ($(head -c 300 "$work/export.txt"))" $?
+
+"$simeco" export "$source_dir/grammars/abop/fig1.24a.l" -o "$work/plants.stl" >/dev/null 2>"$work/err.txt"
+code=$?
+[ $code -eq 2 ] && [ ! -e "$work/plants.stl" ] && grep -q "obj, .ply or .gltf" "$work/err.txt"
+check "export refuses another extension and writes nothing (code $code)" $?
+
+"$simeco" export "$source_dir/grammars/clouds/oriental-clouds.l" --backend cpu -o "$work/clouds.gltf" >/dev/null 2>&1
+python3 -c "import json,sys; d=json.load(open('$work/clouds.gltf')); sys.exit(0 if d['asset']['version']=='2.0' and d['meshes'] else 1)"
+check "export writes a glTF with its meshes" $?
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Plots a `simeco bench --json` report: modules per second against string size (modules after the last step),
-# one line per backend, log-log. Usage: tools/plot_bench.sh BENCH.json OUT.png
+# one line per backend, log-log. A `simeco bench --render --json` report: organ instances per second against
+# the number of plants, for the turtle kernels, the CPU turtle and frames with and without shadow volumes.
+# Usage: tools/plot_bench.sh BENCH.json OUT.png
 # Needs gnuplot (Debian package gnuplot-nox, installed here with apt-get when missing) and python3.
 set -euo pipefail
 if [ $# -ne 2 ]; then
@@ -22,13 +24,38 @@ fi
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
-# One data file per backend (string size, modules/s, grammar index), sorted by size; the title names the device;
-# the key lists which point shape stands for which grammar.
+# The render report: one data file per series (plants, instances/s), the plot command and the axis labels.
 python3 - "$report" "$work" <<'PY'
 import json, sys
 
 report = json.load(open(sys.argv[1]))
 work = sys.argv[2]
+if report.get("tool") == "simeco bench --render":
+    series = [("gpu_turtle", "turtle kernels", "#d62728"), ("cpu_turtle", "CPU turtle (1 thread)", "#1f77b4"),
+              ("frame_shadow_volumes", "frame, shadow volumes", "#2ca02c"), ("frame_no_shadows", "frame, no shadows", "#9467bd")]
+    plots = []
+    for key, title, color in series:
+        rows = [(e["plants"], e[key]["instances_per_second"]) for e in report["entries"]
+                if e.get("status") == "ok" and e.get(key, {}).get("instances_per_second", 0) > 0]
+        if not rows:
+            continue
+        with open(f"{work}/{key}.dat", "w") as f:
+            for plants, rate in rows:
+                f.write(f"{plants} {rate}\n")
+        plots.append(f"'{work}/{key}.dat' using 1:2 with linespoints lw 2 pt 7 lc rgb '{color}' title '{title}'")
+    with open(f"{work}/render.gp", "w") as f:
+        f.write(", ".join(plots))
+    device = report.get("device", {}).get("name") or "no GPU"
+    copy = report.get("copy_bandwidth") or {}
+    title = f"simeco bench --render on {device}"
+    if copy:
+        title += f" (copy bandwidth {copy['bytes_per_second'] / 1e9:.2f} GB/s)"
+    with open(f"{work}/title.txt", "w") as f:
+        f.write(title.replace('"', "'"))
+    sys.exit(0)
+
+# The derivation report: one data file per backend (string size, modules/s, grammar index), sorted by size; the
+# title names the device; the key lists which point shape stands for which grammar.
 grammars = []
 for e in report["entries"]:
     if e["name"] not in grammars:
@@ -55,6 +82,27 @@ if copy:
 with open(f"{work}/title.txt", "w") as f:
     f.write(title.replace('"', "'"))
 PY
+
+if [ -f "$work/render.gp" ]; then
+  if [ ! -s "$work/render.gp" ]; then
+    echo "$0: $report has no successful runs to plot" >&2
+    exit 1
+  fi
+  gnuplot <<GP
+set terminal pngcairo size 1000,650 font ",11"
+set output "$out"
+set title "$(cat "$work/title.txt")"
+set logscale xy
+set xlabel "plants in the field"
+set ylabel "organ instances per second (median)"
+set format y "10^{%L}"
+set grid
+set key outside right top
+plot $(cat "$work/render.gp")
+GP
+  echo "plot_bench: wrote $out"
+  exit 0
+fi
 
 series=()
 if [ -s "$work/cpu.dat" ]; then

@@ -3,7 +3,8 @@
 // Every module has a parent: the module whose state it continues (the one before it, or for `]` the one before
 // its matching `[`), so a plant's modules form a tree whose root is the plant's initial state. A module's
 // command is a TurtleStep relative to its parent's state; steps compose (TurtleStep is a monoid), so states are
-// found by composing steps up the tree with pointer jumping. Commands that depend on the absolute state (`$`,
+// found by composing steps up the tree: first within chunks of kTurtleChunk modules by one invocation each,
+// then by pointer jumping among the modules that chunks point at (the work stays near linear). Commands that depend on the absolute state (`$`,
 // `@R`, `@M`, world rotations, tropism after a segment) cannot be steps: they are resolved one level at a time
 // (their level is how many of them lie on the path from the root), each from the state the steps lead to.
 #ifndef SIMECO_SHARED_TURTLE_STATE_LAYOUT_H
@@ -19,6 +20,9 @@ namespace simeco::shared {
 #endif
 
 SIMECO_CONST kTurtleWorkgroupSize = 64u;
+// Modules one invocation composes in order before the pointer jumping, which then runs only over the modules
+// that other chunks point at (see chunk_steps.comp).
+SIMECO_CONST kTurtleChunk = 32u;
 SIMECO_CONST kPaletteEntries = 256u;
 
 // The turtle after a module: its frame (heading, left, up), position and scalars.

@@ -5,21 +5,31 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 #include "shared/derive_layout.h"
+#include "shared/turtle_layout.h"
 #include "shared/turtle_state_layout.h"
-layout(local_size_x = kTurtleWorkgroupSize) in;
-layout(set = 0, binding = 0, std430) readonly buffer Marks { uint marks[]; };
-layout(set = 0, binding = 1, std430) readonly buffer LevelsIn { uvec2 levelsIn[]; };
-layout(set = 0, binding = 2, std430) writeonly buffer LevelsOut { uvec2 levelsOut[]; };
-layout(set = 0, binding = 3, std430) readonly buffer Parents { uint parents[]; };
-layout(set = 0, binding = 4, std430) readonly buffer Anchors { uint anchors[]; };
-layout(push_constant) uniform Push { TurtlePush pc; };
+#include "turtle/turtle_buffers.glsl"
+layout(set = 0, binding = 5, std430) readonly buffer Marks { uint marks[]; };
+layout(set = 0, binding = 6, std430) readonly buffer Parents { uint parents[]; };
+layout(set = 0, binding = 7, std430) readonly buffer Targets { uint targets[]; };
+layout(set = 0, binding = 8, std430) readonly buffer ChunkSteps { TurtleStep chunkSteps[]; };
+layout(set = 0, binding = 9, std430) readonly buffer ChunkPointers { uint chunkPointers[]; };
+layout(set = 0, binding = 10, std430) readonly buffer JumpedSteps { TurtleStep jumpedSteps[]; };
+layout(set = 0, binding = 11, std430) readonly buffer JumpedPointers { uint jumpedPointers[]; };
+layout(set = 0, binding = 12, std430) readonly buffer Plants { uint plantOfModule[]; };
+layout(set = 0, binding = 13, std430) readonly buffer States { TurtleState states[]; };
+layout(set = 0, binding = 14, std430) readonly buffer LevelsIn { uvec2 levelsIn[]; };
+layout(set = 0, binding = 15, std430) writeonly buffer LevelsOut { uvec2 levelsOut[]; };
+
+#include "turtle/turtle_math.glsl"
+#include "turtle/turtle_modules.glsl"
+#include "turtle/turtle_anchors.glsl"
 
 void main() {
-    uint i = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * gl_WorkGroupSize.x + gl_LocalInvocationID.x;
+    uint i = invocationIndex();
     if (i >= pc.count || (marks[i] & kMarkNonlinear) == 0u) return;
     if (pc.first == 0u) { // round 0: the anchors of the modules' parents
         uint parent = parents[i];
-        levelsOut[i] = uvec2(1u, parent == kNoModule ? kNoModule : anchors[parent]);
+        levelsOut[i] = uvec2(1u, parent == kNoModule ? kNoModule : anchorOf(parent));
         return;
     }
     uvec2 own = levelsIn[i];

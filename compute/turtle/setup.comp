@@ -3,6 +3,7 @@
 // step composition (its parent; a non-linear module points at itself, its state comes from the levels).
 #version 450
 #extension GL_GOOGLE_include_directive : require
+#extension GL_KHR_shader_subgroup_arithmetic : require
 #include "shared/derive_layout.h"
 #include "shared/turtle_layout.h"
 #include "shared/turtle_state_layout.h"
@@ -15,15 +16,16 @@ layout(set = 0, binding = 9, std430) writeonly buffer Steps { TurtleStep steps[]
 layout(set = 0, binding = 10, std430) writeonly buffer Pointers { uint pointers[]; };
 layout(set = 0, binding = 11, std430) writeonly buffer Marks { uint marks[]; };
 layout(set = 0, binding = 12, std430) writeonly buffer Plants { uint plantOfModule[]; };
+// Every mark some module carries, so the host runs only the searches and levels the string needs.
+layout(set = 0, binding = 13, std430) buffer Present { uint presentMarks; };
 
 #include "turtle/turtle_math.glsl"
 #include "turtle/turtle_modules.glsl"
 uint symOf(uint i) { return symbolAt(i); }
 #include "derive/depth_tree.glsl"
 
-void main() {
-    uint i = invocationIndex();
-    if (i >= pc.count) return;
+// Writes module i's command, parent, plant, marks, step and first pointer; returns its marks.
+uint setUpModule(uint i) {
     uint plant = plantOf(i);
     uint begin = plantStarts[plant], end = plantStarts[plant + 1u];
     TurtleSpecies sp = speciesTable[speciesOf(plant)];
@@ -54,4 +56,12 @@ void main() {
     marks[i] = mark;
     steps[i] = nonlinear ? identityStep() : commandStep(command, i, sp);
     pointers[i] = nonlinear ? i : parent;
+    return mark;
+}
+
+void main() {
+    uint i = invocationIndex();
+    uint mark = i < pc.count ? setUpModule(i) : 0u;
+    uint marked = subgroupOr(mark);
+    if (subgroupElect() && marked != 0u) atomicOr(presentMarks, marked);
 }

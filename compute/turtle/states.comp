@@ -1,5 +1,5 @@
-// Turtle: every linear module's state, its anchor's state (or the plant's initial one) advanced by its
-// composed step. The non-linear modules' states are already there.
+// Turtle: every linear module's state, from its anchor's state (or the plant's initial one) and the composed
+// steps. The non-linear modules' states are already there.
 #version 450
 #extension GL_GOOGLE_include_directive : require
 #include "shared/derive_layout.h"
@@ -7,21 +7,20 @@
 #include "shared/turtle_state_layout.h"
 #include "turtle/turtle_buffers.glsl"
 layout(set = 0, binding = 5, std430) readonly buffer Marks { uint marks[]; };
-layout(set = 0, binding = 6, std430) readonly buffer Steps { TurtleStep steps[]; };
-layout(set = 0, binding = 7, std430) readonly buffer Anchors { uint anchors[]; };
-layout(set = 0, binding = 8, std430) readonly buffer Plants { uint plantOfModule[]; };
-layout(set = 0, binding = 9, std430) buffer States { TurtleState states[]; };
+layout(set = 0, binding = 6, std430) readonly buffer Targets { uint targets[]; };
+layout(set = 0, binding = 7, std430) readonly buffer ChunkSteps { TurtleStep chunkSteps[]; };
+layout(set = 0, binding = 8, std430) readonly buffer ChunkPointers { uint chunkPointers[]; };
+layout(set = 0, binding = 9, std430) readonly buffer JumpedSteps { TurtleStep jumpedSteps[]; };
+layout(set = 0, binding = 10, std430) readonly buffer JumpedPointers { uint jumpedPointers[]; };
+layout(set = 0, binding = 11, std430) readonly buffer Plants { uint plantOfModule[]; };
+layout(set = 0, binding = 12, std430) buffer States { TurtleState states[]; };
 
 #include "turtle/turtle_math.glsl"
 #include "turtle/turtle_modules.glsl"
+#include "turtle/turtle_anchors.glsl"
 
 void main() {
     uint i = invocationIndex();
     if (i >= pc.count || (marks[i] & kMarkNonlinear) != 0u) return;
-    uint anchor = anchors[i];
-    // (if/else, not ?:, which glslang compiles to a store of mismatched struct types)
-    TurtleState base;
-    if (anchor == kNoModule) base = initialState(speciesTable[speciesOf(plantOfModule[i])]);
-    else base = states[anchor];
-    states[i] = applyStep(base, steps[i]);
+    states[i] = linearState(i);
 }

@@ -1,11 +1,15 @@
 // `simeco bench`: derivation throughput of the GPU backend and the CPU reference on a fixed suite, with the
-// device's copy bandwidth measured in the same run (see docs/BENCHMARKS.md).
+// device's copy bandwidth measured in the same run; `--render`: the turtle and frame times (docs/BENCHMARKS.md).
 #include <cstdio>
+#include <stdexcept>
+
+#include <fmt/format.h>
 #include <memory>
 #include <string>
 
 #include "app/commands.h"
 #include "app/error_report.h"
+#include "bench/render_bench.h"
 #include "bench/report.h"
 #include "bench/runner.h"
 
@@ -17,9 +21,34 @@ struct BenchArgs {
     std::string json;
     bool noCpu = false;
     bool noGpu = false;
+    bool render = false;
+    std::string size = "640x480";
 };
 
+void runRenderBench(const BenchArgs& args) {
+    bench::RenderBenchOptions o;
+    o.root = args.options.root;
+    o.quick = args.options.quick;
+    o.repeat = args.options.repeat;
+    o.warmUp = args.options.warmUp;
+    o.maxModules = args.options.maxModules;
+    o.device = args.options.device;
+    o.runCpu = !args.noCpu;
+    char x = 0;
+    if (std::sscanf(args.size.c_str(), "%u%c%u", &o.width, &x, &o.height) != 3 || x != 'x' || o.width == 0 ||
+        o.height == 0 || o.width > 16384 || o.height > 16384)
+        throw std::invalid_argument(fmt::format("--size '{}': expected WIDTHxHEIGHT, each 1 to 16384", args.size));
+    bench::RenderBenchReport report = bench::runRenderBenchmark(
+        o, [](const std::string& line) { std::fprintf(stderr, "bench: %s\n", line.c_str()); });
+    if (!args.json.empty()) bench::writeJsonAtomically(args.json, bench::renderReportJson(report));
+    std::fputs(bench::formatRenderTable(report).c_str(), stdout);
+}
+
 void runBench(BenchArgs args) {
+    if (args.render) {
+        if (args.noGpu) throw std::invalid_argument("--render measures the device: it cannot run with --no-gpu");
+        return runRenderBench(args);
+    }
     if (args.options.root.empty()) {
         args.options.root = bench::defaultSuiteRoot();
     }
@@ -55,6 +84,10 @@ void registerBenchCommand(CLI::App& app, CommandContext& ctx) {
     cmd->add_option("--device", args->options.device, "Vulkan device: an index or a name part (see `simeco devices`)");
     cmd->add_flag("--no-cpu", args->noCpu, "skip the CPU reference");
     cmd->add_flag("--no-gpu", args->noGpu, "skip the GPU backend and the copy bandwidth");
+    cmd->add_flag("--render", args->render,
+                  "benchmark the turtle (kernels and CPU reference) and frames with and without shadow volumes on "
+                  "fields of 1 to 10,000 plants instead of derivation");
+    cmd->add_option("--size", args->size, "--render: frame size WIDTHxHEIGHT (default 640x480)");
     cmd->callback([args, &ctx] { ctx.exitCode = runReportingErrors([&] { runBench(*args); }); });
 }
 

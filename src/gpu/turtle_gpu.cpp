@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <cstring>
 #include <span>
 #include <utility>
 
@@ -96,11 +97,12 @@ struct GpuTurtle::Impl {
     const vk::Context& ctx;
     GpuScan scan;
     BracketTree brackets;
-    vk::ComputePipeline setup, polygons, jumpSteps, jumpSearch, jumpLevels, levelCount, levelScatter, resolveLevel,
-        states, classify, emit, links, field, place;
+    vk::ComputePipeline setup, polygons, chunkSteps, jumpSteps, chunkSearch, jumpSearch, searchFinish, jumpLevels,
+        levelCount, levelScatter, resolveLevel, states, classify, emit, links, field, place;
     vk::Buffer commandTable, speciesTable, palettes, surfaceScales, surfaceShapes;
     TurtlePush base{};
     std::uint32_t levels = 0;
+    std::uint64_t bytesMoved = 0;
 
     Impl(const vk::Context& c, const turtle::TurtleCommands& commands, const std::vector<turtle::TurtleSettings>& species)
         : ctx(c),
@@ -108,8 +110,11 @@ struct GpuTurtle::Impl {
           brackets(c, scan),
           setup(vk::ComputePipeline::embedded(c, "turtle/setup")),
           polygons(vk::ComputePipeline::embedded(c, "turtle/polygons")),
+          chunkSteps(vk::ComputePipeline::embedded(c, "turtle/chunk_steps")),
           jumpSteps(vk::ComputePipeline::embedded(c, "turtle/jump_steps")),
+          chunkSearch(vk::ComputePipeline::embedded(c, "turtle/chunk_search")),
           jumpSearch(vk::ComputePipeline::embedded(c, "turtle/jump_search")),
+          searchFinish(vk::ComputePipeline::embedded(c, "turtle/search_finish")),
           jumpLevels(vk::ComputePipeline::embedded(c, "turtle/jump_levels")),
           levelCount(vk::ComputePipeline::embedded(c, "turtle/level_count")),
           levelScatter(vk::ComputePipeline::embedded(c, "turtle/level_scatter")),
@@ -164,6 +169,34 @@ struct GpuTurtle::Impl {
     }
 
     DeviceOrgans interpret(const DeviceModules& m, const turtle::FieldOptions& options);
+
+    // The main arrays each pass reads and writes, per module (organs counted as if every module drew one, the
+    // buffers' capacity): a model of the traffic, not a measurement.
+    static std::uint64_t trafficOf(std::uint64_t n, std::uint64_t stride, std::uint64_t rounds,
+                                   std::uint64_t nonlinear) {
+        const std::uint64_t step = sizeof(TurtleStep), state = sizeof(TurtleState), organ = sizeof(OrganInstance);
+        std::uint64_t perModule = 0;
+        perModule += 4 * 9;                                 // bracket depths: deltas, scan, leaves, levels
+        perModule += 4 + 4 * stride + 4 * 5 + step;         // setup: module in; command, parent, plant, marks,
+                                                            // pointer and step out
+        perModule += 4;                                     // polygons: commands
+        // Chunk passes (step composition and four searches) and the jumps among their targets, counted as one
+        // target per chunk (the chunk boundary); every round reads each module's target flag.
+        perModule += 2 * (step + 4) + 4 * 4 * 4;
+        perModule += rounds * 5 * 4 + rounds * (3 * (step + 4) + 4 * 3 * 4) / kTurtleChunk;
+        perModule += 4 * 4 * 3;                             // searches' final answers
+        perModule += rounds * 4 + 2 * 4;                    // levels: marks; counting and scattering
+        perModule += 4 + step + 4 + 2 * state;              // states: marks, step, anchor, anchor's and own state
+        perModule += 4 * 4 + state + 4 * kOrganKinds;       // classify: commands, marks, polygon, cylinders; flags
+        perModule += 3 * 4 * kOrganKinds;                   // scan of the flags
+        perModule += 4 * 3 + 2 * state + 4 + organ + 4;     // emit: kinds, commands, parents; states; offset,
+                                                            // instance and slot
+        perModule += 4 * 4 + organ;                         // links: kinds, commands, marks, slots; instance
+        perModule += 2 * organ;                             // place: instance read and written
+        std::uint64_t perNonlinear = 4 * 3 + step + 4 + 2 * state; // resolve: order, parent, command, step,
+                                                                   // anchor, anchor's and own state
+        return n * perModule + nonlinear * perNonlinear;
+    }
 };
 
 DeviceOrgans GpuTurtle::Impl::interpret(const DeviceModules& m, const turtle::FieldOptions& options) {
@@ -184,7 +217,9 @@ DeviceOrgans GpuTurtle::Impl::interpret(const DeviceModules& m, const turtle::Fi
     vk::Buffer statesBuffer = deviceBuffer(n, sizeof(TurtleState));
     vk::Buffer triangleFirst = deviceBuffer(n, 4), trianglePrevious = deviceBuffer(n, 4);
     vk::Buffer stemBelow = deviceBuffer(n, 4), tubeBelow = deviceBuffer(n, 4), cylinderAnchors = deviceBuffer(n, 4),
-               cylinderStarts = deviceBuffer(n, 4), searchScratch = deviceBuffer(n, 4);
+               cylinderStarts = deviceBuffer(n, 4);
+    vk::Buffer stepTargets = deviceBuffer(n, 4), searchTargets = deviceBuffer(n, 4), searchChunk = deviceBuffer(n, 4);
+    vk::Buffer searchJumps[2] = {deviceBuffer(n, 4), deviceBuffer(n, 4)};
     vk::Buffer levelsBuffers[2] = {deviceBuffer(n, 8), deviceBuffer(n, 8)};
     vk::Buffer counts = deviceBuffer(std::uint64_t(n) + 1, 4), order = deviceBuffer(n, 4);
     vk::Buffer flags = deviceBuffer(std::uint64_t(n) * kOrganKinds, 4),
@@ -201,25 +236,36 @@ DeviceOrgans GpuTurtle::Impl::interpret(const DeviceModules& m, const turtle::Fi
     const vk::Buffer& params = *m.params;
     const vk::Buffer& starts = *m.plantStarts;
     const std::uint64_t groups = setup.groupsFor(n);
+    const std::uint64_t chunkGroups = setup.groupsFor((std::uint64_t(n) + kTurtleChunk - 1) / kTurtleChunk);
+    // Chains of targets are at most n long; odd, so that the jumps end in the second buffer of each pair.
     const std::uint32_t rounds = jumpRounds(n);
 
-    // Nearest strict ancestor with a hit or stop mark, into `result`.
+    // Nearest strict ancestor with a hit or stop mark, into `result`: within chunks, then among the targets the
+    // chunks point at (searchChunk -> searchJumps[0] -> [1] -> [0] ...; the last round writes [0]), then for all.
     auto search = [&](VkCommandBuffer cmd, std::uint32_t hit, std::uint32_t stop, const vk::Buffer& result) {
         TurtlePush p = push;
         p.hitMask = hit;
         p.stopMask = stop;
-        const vk::Buffer* ping[2] = {&result, &searchScratch};
+        vk::memoryBarrier(cmd, Hazard::ComputeToTransfer);
+        vkCmdFillBuffer(cmd, searchTargets.handle(), 0, VK_WHOLE_SIZE, 0);
+        vk::memoryBarrier(cmd, Hazard::TransferToCompute);
+        chunkSearch.dispatch(cmd, {marks, parents, searchChunk, searchTargets}, p, chunkGroups);
+        vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
         for (std::uint32_t r = 0; r < rounds; ++r) {
-            const vk::Buffer& in = r == 0 ? parents : *ping[(r - 1) % 2];
-            jumpSearch.dispatch(cmd, {marks, in, *ping[r % 2]}, p, groups);
+            const vk::Buffer& in = r == 0 ? searchChunk : searchJumps[r % 2 == 1 ? 0 : 1];
+            jumpSearch.dispatch(cmd, {marks, searchTargets, in, searchJumps[r % 2 == 1 ? 1 : 0]}, p, groups);
             vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
         }
+        searchFinish.dispatch(cmd, {marks, searchChunk, searchJumps[0], result}, p, groups);
+        vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
     };
 
-    // Pass 1: commands, parents, steps, marks; polygons; steps composed up to the anchors; the searches that
-    // need only marks; levels of the non-linear modules and their counts.
+    // Pass 1: commands, parents, steps and marks; polygons; which marks occur at all.
+    vk::Buffer present(ctx, 4, vk::MemoryUsage::Readback);
     ctx.submitAndWait([&](VkCommandBuffer cmd) {
+        vkCmdFillBuffer(cmd, present.handle(), 0, VK_WHOLE_SIZE, 0);
         vkCmdFillBuffer(cmd, triangleFirst.handle(), 0, VK_WHOLE_SIZE, kNoModule);
+        vkCmdFillBuffer(cmd, stepTargets.handle(), 0, VK_WHOLE_SIZE, 0);
         vkCmdFillBuffer(cmd, counts.handle(), 0, VK_WHOLE_SIZE, 0);
         VkDeviceSize half = std::uint64_t(m.plants) * 16;
         if (m.plants > 0) {
@@ -229,36 +275,52 @@ DeviceOrgans GpuTurtle::Impl::interpret(const DeviceModules& m, const turtle::Fi
         vk::memoryBarrier(cmd, Hazard::TransferToCompute);
         brackets.record(cmd, symbols, n);
         setup.dispatch(cmd, {symbols, params, starts, commandTable, speciesTable, brackets.tree(), brackets.levelInfo(),
-                             commands, parents, steps[0], pointers[0], marks, plantOf},
+                             commands, parents, steps[0], pointers[0], marks, plantOf, present},
                        push, groups);
         vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
         polygons.dispatch(cmd, {commands, plantOf, marks, triangleFirst, trianglePrevious}, push, groups);
-        vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
-        for (std::uint32_t r = 0; r < rounds; ++r) {
-            std::uint32_t from = r % 2, to = 1 - from;
-            jumpSteps.dispatch(cmd, {marks, steps[from], pointers[from], steps[to], pointers[to]}, push, groups);
-            vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
-        }
-        search(cmd, kMarkStem, kMarkStemBreak, stemBelow);
-        search(cmd, kMarkCylinderStart | kMarkCylinderPoint, 0, cylinderAnchors);
-        search(cmd, kMarkCylinderStart, 0, cylinderStarts);
-        // After an odd number of rounds the composed steps and the anchors are in the second buffers.
-        for (std::uint32_t r = 0; r < rounds; ++r) {
-            TurtlePush p = push;
-            p.first = r;
-            jumpLevels.dispatch(cmd, {marks, levelsBuffers[(r + 1) % 2], levelsBuffers[r % 2], parents, pointers[1]}, p,
-                                groups);
-            vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
-        }
-        levelCount.dispatch(cmd, {marks, levelsBuffers[0], counts}, push, groups);
         vk::memoryBarrier(cmd, Hazard::ComputeToHost);
     });
-    const vk::Buffer& composed = steps[1];
-    const vk::Buffer& anchors = pointers[1];
+    std::uint32_t marked = 0;
+    std::memcpy(&marked, present.mapped(), sizeof marked);
+    const bool nonlinear = (marked & kMarkNonlinear) != 0;
+    const bool cylinders = (marked & (kMarkCylinderStart | kMarkCylinderPoint)) != 0;
+
+    // Pass 2: steps composed up to the anchors; the searches that need only marks; the levels of the non-linear
+    // modules and their counts. Searches for marks no module carries are skipped (their readers never look).
+    ctx.submitAndWait([&](VkCommandBuffer cmd) {
+        chunkSteps.dispatch(cmd, {marks, parents, steps[0], pointers[0], stepTargets}, push, chunkGroups);
+        vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+        // The targets' entries alternate between the buffers; the other modules' stay in the first (chunks).
+        for (std::uint32_t r = 0; r < rounds; ++r) {
+            std::uint32_t from = r % 2, to = 1 - from;
+            jumpSteps.dispatch(cmd, {marks, stepTargets, steps[from], pointers[from], steps[to], pointers[to]}, push,
+                               groups);
+            vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+        }
+        if (marked & kMarkStem) search(cmd, kMarkStem, kMarkStemBreak, stemBelow);
+        if (cylinders) {
+            search(cmd, kMarkCylinderStart | kMarkCylinderPoint, 0, cylinderAnchors);
+            search(cmd, kMarkCylinderStart, 0, cylinderStarts);
+        }
+        if (nonlinear) {
+            for (std::uint32_t r = 0; r < rounds; ++r) {
+                TurtlePush p = push;
+                p.first = r;
+                jumpLevels.dispatch(cmd, {symbols, params, starts, commandTable, speciesTable, marks, parents,
+                                          stepTargets, steps[0], pointers[0], steps[1], pointers[1], plantOf,
+                                          statesBuffer, levelsBuffers[(r + 1) % 2], levelsBuffers[r % 2]},
+                                    p, groups);
+                vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+            }
+            levelCount.dispatch(cmd, {marks, levelsBuffers[0], counts}, push, groups);
+        }
+        vk::memoryBarrier(cmd, Hazard::ComputeToHost);
+    });
     const vk::Buffer& levelsOf = levelsBuffers[0];
 
     // The levels' sizes: the only thing the host reads, to lay the levels out and dispatch them in turn.
-    std::uint32_t deepest = vk::downloadVector<std::uint32_t>(ctx, counts, 1)[0];
+    std::uint32_t deepest = nonlinear ? vk::downloadVector<std::uint32_t>(ctx, counts, 1)[0] : 0;
     levels = deepest;
     std::vector<std::uint32_t> levelStarts(std::size_t(deepest) + 1, 0), levelSizes(std::size_t(deepest) + 1, 0);
     vk::Buffer cursors = deviceBuffer(std::uint64_t(deepest) + 1, 4);
@@ -274,7 +336,9 @@ DeviceOrgans GpuTurtle::Impl::interpret(const DeviceModules& m, const turtle::Fi
         vk::uploadSpan(ctx, cursors, std::span<const std::uint32_t>(levelStarts));
     }
 
-    // Pass 2: non-linear modules level by level, then every state; organs classified, placed by a scan,
+    bytesMoved = trafficOf(n, m.stride, rounds, levelStarts.empty() ? 0 : levelStarts.back() + levelSizes.back());
+
+    // Pass 3: non-linear modules level by level, then every state; organs classified, placed by a scan,
     // written, joined, and moved to their plants' places in the field.
     ctx.submitAndWait([&](VkCommandBuffer cmd) {
         if (deepest > 0) {
@@ -285,21 +349,22 @@ DeviceOrgans GpuTurtle::Impl::interpret(const DeviceModules& m, const turtle::Fi
                 TurtlePush p = push;
                 p.first = levelStarts[level];
                 p.items = levelSizes[level];
-                resolveLevel.dispatch(cmd, {symbols, params, starts, commandTable, speciesTable, commands, parents,
-                                            composed, anchors, plantOf, order, statesBuffer},
+                resolveLevel.dispatch(cmd, {symbols, params, starts, commandTable, speciesTable, marks, parents,
+                                            stepTargets, steps[0], pointers[0], steps[1], pointers[1], plantOf,
+                                            statesBuffer, commands, order},
                                       p, resolveLevel.groupsFor(p.items));
                 vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
             }
         }
-        states.dispatch(cmd, {symbols, params, starts, commandTable, speciesTable, marks, composed, anchors, plantOf,
-                              statesBuffer},
+        states.dispatch(cmd, {symbols, params, starts, commandTable, speciesTable, marks, stepTargets, steps[0],
+                              pointers[0], steps[1], pointers[1], plantOf, statesBuffer},
                         push, groups);
         vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
         classify.dispatch(cmd, {commands, marks, triangleFirst, cylinderAnchors, cylinderStarts, statesBuffer, kinds,
                                 flags},
                           push, groups);
         vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
-        search(cmd, kMarkTube, kMarkTubeBreak, tubeBelow);
+        if (marked & kMarkCylinderStart) search(cmd, kMarkTube, kMarkTubeBreak, tubeBelow);
         scan.record(cmd, flags, offsets, n * kOrganKinds);
         vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
         emit.dispatch(cmd, {symbols, params, starts, commandTable, speciesTable, commands, parents, plantOf,
@@ -327,6 +392,8 @@ DeviceOrgans GpuTurtle::interpret(const DeviceModules& modules, const turtle::Fi
 }
 
 std::uint32_t GpuTurtle::lastLevels() const { return impl_->levels; }
+
+std::uint64_t GpuTurtle::lastBytesMoved() const { return impl_->bytesMoved; }
 
 DeviceOrgans uploadOrgans(const vk::Context& context, const turtle::Interpretation& interpretation) {
     OrganTable table{};

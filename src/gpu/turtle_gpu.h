@@ -1,7 +1,8 @@
 // The turtle on the device: organ instances and their table (compute/shared/organ_layout.h) written by compute
 // passes over the module stream, the same organs, in the same order, as the CPU reference turtle
 // (turtle/turtle_cpu.h). The kernels are in compute/turtle; the method is described in
-// compute/shared/turtle_state_layout.h. The host reads back only the number of levels of non-linear commands.
+// compute/shared/turtle_state_layout.h. The host reads back only which marks occur (to skip searches nothing
+// needs) and the sizes of the levels of non-linear commands.
 #pragma once
 
 #include <cstdint>
@@ -66,6 +67,9 @@ public:
 
     // Levels of non-linear commands the last interpretation resolved one after another.
     std::uint32_t lastLevels() const;
+    // Bytes the last interpretation's passes read and wrote in their per-module and per-organ arrays, as the
+    // host counts them (for the benchmark's comparison with the copy bandwidth).
+    std::uint64_t lastBytesMoved() const;
 
 private:
     struct Impl;

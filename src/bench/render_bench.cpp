@@ -1,0 +1,141 @@
+#include "bench/render_bench.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <memory>
+
+#include <fmt/format.h>
+
+#include "bench/suite.h"
+#include "bench/timing.h"
+#include "compute/shared/organ_layout.h"
+#include "compute/shared/turtle_state_layout.h"
+#include "cpu/derive.h"
+#include "draw/bounds.h"
+#include "draw/renderer.h"
+#include "gpu/turtle_gpu.h"
+#include "ir/source_loc.h"
+#include "lang/load_grammar.h"
+#include "turtle/turtle_cpu.h"
+#include "vk/buffer.h"
+#include "vk/context.h"
+#include "vk/device_info.h"
+
+namespace simeco::bench {
+namespace {
+
+// The README's tree: branching, tapering stems with joints, leaves of every segment's colour.
+constexpr const char* kRenderGrammar = "grammars/abop/fig2.8-ternary.l";
+constexpr int kMaxSteps = 8;
+
+Timed timed(const RenderBenchOptions& o, std::uint64_t organs, const std::function<void()>& run) {
+    Timed t;
+    t.runSeconds = repeatRuns(o.warmUp, o.repeat, [&] {
+        Clock::time_point start = Clock::now();
+        run();
+        return secondsSince(start);
+    });
+    t.medianSeconds = median(t.runSeconds);
+    if (t.medianSeconds > 0) t.instancesPerSecond = static_cast<double>(organs) / t.medianSeconds;
+    return t;
+}
+
+// The most steps (up to kMaxSteps) whose string for `plants` plants stays within `cap` modules.
+cpu::ModuleString deriveField(const ir::Grammar& g, std::uint32_t plants, std::uint64_t cap, int& steps) {
+    cpu::ModuleString best;
+    steps = 0;
+    for (int k = 0; k <= kMaxSteps; ++k) {
+        cpu::DeriveOptions options;
+        options.steps = k;
+        options.plants = plants;
+        options.homomorphism = true;
+        options.maxModules = cap;
+        try {
+            best = cpu::deriveCpu(g, options).string;
+            steps = k;
+        } catch (const ir::LimitError&) {
+            break;
+        }
+    }
+    return best;
+}
+
+} // namespace
+
+RenderBenchReport runRenderBenchmark(const RenderBenchOptions& options,
+                                     const std::function<void(const std::string&)>& progress) {
+    RenderBenchReport report;
+    report.options = options;
+    report.grammar = kRenderGrammar;
+    std::string root = options.root.empty() ? defaultSuiteRoot() : options.root;
+    ir::Grammar g = lang::loadGrammarFile((std::filesystem::path(root) / kRenderGrammar).string());
+
+    vk::ContextOptions contextOptions;
+    contextOptions.device = options.device;
+    vk::Context context(contextOptions);
+    const vk::PhysicalDeviceInfo& info = context.deviceInfo();
+    report.deviceName = info.name;
+    report.deviceType = std::string(vk::deviceTypeName(info.type));
+    report.driver = info.driverName;
+    progress(fmt::format("device: {} ({}); measuring copy bandwidth", report.deviceName, report.deviceType));
+    report.copy = measureCopyBandwidth(context, options.warmUp, options.repeat);
+
+    // The turtle keeps a step per module in one buffer: the device's largest binding bounds a field.
+    std::uint64_t cap = context.limits().maxStorageBufferRange / sizeof(shared::TurtleStep);
+    if (options.maxModules > 0) cap = std::min(cap, options.maxModules);
+    if (options.quick) cap = std::min<std::uint64_t>(cap, 20'000);
+
+    turtle::TurtleCommands commands = turtle::turtleCommands(g.alphabet);
+    std::vector<turtle::TurtleSettings> species{turtle::turtleSettings(g, g.alphabet)};
+    gpu::GpuTurtle gpuTurtle(context, commands, species);
+    draw::Renderer renderer(context);
+
+    std::vector<std::uint32_t> plantCounts =
+        options.quick ? std::vector<std::uint32_t>{1, 10} : std::vector<std::uint32_t>{1, 10, 100, 1000, 10000};
+    for (std::uint32_t plants : plantCounts) {
+        RenderEntry e;
+        e.plants = plants;
+        try {
+            cpu::ModuleString string = deriveField(g, plants, cap, e.steps);
+            e.modules = string.size();
+            progress(fmt::format("{} plants: {} steps, {} modules", plants, e.steps, e.modules));
+            gpu::UploadedModules modules(context, string);
+            gpu::DeviceOrgans organs;
+            // The first run's organs are kept for the frames; every run writes the same ones.
+            bool kept = false;
+            e.gpuTurtle = timed(options, 0, [&] {
+                gpu::DeviceOrgans written = gpuTurtle.interpret(modules.view(), {});
+                if (!kept) organs = std::move(written), kept = true;
+            });
+            e.levels = gpuTurtle.lastLevels();
+            e.bytesMoved = gpuTurtle.lastBytesMoved();
+            shared::OrganTable table = vk::downloadVector<shared::OrganTable>(context, organs.table, 1)[0];
+            for (std::uint32_t k = 0; k < shared::kOrganKinds; ++k) e.organs += table.count[k];
+            if (e.gpuTurtle.medianSeconds > 0) {
+                e.gpuTurtle.instancesPerSecond = double(e.organs) / e.gpuTurtle.medianSeconds;
+                if (report.copy && report.copy->bytesPerSecond > 0)
+                    e.copyFraction = double(e.bytesMoved) / e.gpuTurtle.medianSeconds / report.copy->bytesPerSecond;
+            }
+            if (options.runCpu)
+                e.cpuTurtle = timed(options, e.organs, [&] { turtle::interpretCpu(string, commands, species, {}); });
+
+            draw::Bounds bounds = draw::decodeBounds(table);
+            draw::RenderSettings settings;
+            settings.width = options.width;
+            settings.height = options.height;
+            for (draw::Shadows shadows : {draw::Shadows::Volume, draw::Shadows::None}) {
+                settings.shadows = shadows;
+                Timed t = timed(options, e.organs,
+                                [&] { renderer.render(organs.instances, organs.table, bounds, settings); });
+                (shadows == draw::Shadows::Volume ? e.frameWithShadows : e.frameWithoutShadows) = t;
+            }
+        } catch (const std::exception& error) {
+            e.status = "failed";
+            e.reason = error.what();
+        }
+        report.entries.push_back(std::move(e));
+    }
+    return report;
+}
+
+} // namespace simeco::bench

@@ -10,13 +10,9 @@
 
 namespace simeco::lang {
 
-namespace {
-
 float srgbToLinear(float c) {
     return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
 }
-
-} // namespace
 
 std::vector<std::array<float, 3>> readColorMap(const std::string& path) {
     constexpr size_t kColors = 256;

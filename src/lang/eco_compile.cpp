@@ -12,10 +12,17 @@
 // - Rotations are modules named rotr, rotu, rotx, roty, rotz with one argument in radians. They describe
 //   how a segment is attached rather than being plant parts, so context matching skips them: in
 //   `S(4) < S(10)` the S(10) of `S(4)[rotr(0.78)S(10)]` has S(4) as its left context.
-// - Symbols are interned in a fixed order (brackets, A S L F T R, then the rotations), so every SimEco
-//   plant of a scene numbers its symbols alike.
+// - `rotu` turns about the parent's growth direction, `rotr` away from it: in a run of rotations the turtle
+//   rolls by every rotu before it pitches by the rotr (`rotr(a) rotu(b)` spins the tilted branch about the
+//   parent axis, as the thesis draws its phyllotaxis).
+// - The organs are drawn by a homomorphism from their stages (lang/eco_geometry.h).
+// - Symbols are interned in a fixed order (brackets, A S L F T R, the rotations, then the drawing modules), so
+//   every SimEco plant of a scene numbers its symbols alike.
+#include <algorithm>
+
 #include <fmt/format.h>
 
+#include "lang/eco_geometry.h"
 #include "lang/eco_parser.h"
 
 namespace simeco::lang {
@@ -61,9 +68,10 @@ public:
         for (const char* rotation : kRotationNames) symbol(rotation);
 
         grammar_.axiomLoc = plant.grow.axiomLoc;
-        for (const ir::EcoModule& m : plant.grow.axiom) grammar_.axiom.push_back(successorModule(m));
+        grammar_.axiom = successorModules(plant.grow.axiom);
         for (const ir::EcoRule& rule : plant.grow.rules) lowerRule(rule);
         grammar_.productions.present = !plant.grow.rules.empty();
+        addEcoOrganGeometry(plant, grammar_);
 
         grammar_.contextSkip.resize(grammar_.alphabet.size(), false);
         for (const char* rotation : kRotationNames) grammar_.contextSkip[symbol(rotation)] = true;
@@ -90,6 +98,24 @@ private:
         return module;
     }
 
+    // The modules of a successor or axiom, with rotu moved before rotr within each run of the two.
+    std::vector<ir::SuccessorModule> successorModules(const std::vector<ir::EcoModule>& modules) {
+        std::vector<ir::EcoModule> ordered = modules;
+        auto isTilt = [](const ir::EcoModule& m) { return m.name == "rotr" || m.name == "rotu"; };
+        for (auto run = ordered.begin(); run != ordered.end();) {
+            if (!isTilt(*run)) {
+                ++run;
+                continue;
+            }
+            auto end = std::find_if_not(run, ordered.end(), isTilt);
+            std::stable_partition(run, end, [](const ir::EcoModule& m) { return m.name == "rotu"; });
+            run = end;
+        }
+        std::vector<ir::SuccessorModule> out;
+        for (const ir::EcoModule& m : ordered) out.push_back(successorModule(m));
+        return out;
+    }
+
     ir::PatternModule pattern(const ir::EcoPatternSegment& seg) {
         return {symbol(std::string(1, seg.letter)), {seg.slot}, seg.loc};
     }
@@ -112,7 +138,7 @@ private:
     ir::Alternative alternative(const ir::EcoAlternative& alt) {
         ir::Alternative out;
         out.probability = alt.probability.value_or(1.0f);
-        for (const ir::EcoModule& m : alt.modules) out.modules.push_back(successorModule(m));
+        out.modules = successorModules(alt.modules);
         return out;
     }
 

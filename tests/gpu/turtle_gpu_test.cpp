@@ -27,6 +27,7 @@ namespace fs = std::filesystem;
 
 const fs::path kGrammars = fs::path(SIMECO_SOURCE_DIR) / "grammars";
 const fs::path kCorpus = fs::path(SIMECO_SHARED_DIR) / "corpus" / "cpfg-vlab";
+const fs::path kSeedScripts = fs::path(SIMECO_SHARED_DIR) / "seed-scripts";
 
 // Strings longer than this are not interpreted here (lavapipe's time, not correctness, is the limit).
 constexpr uint64_t kModuleBudget = 400'000;
@@ -140,16 +141,28 @@ void compareTurtles(const vk::Context& context, const fs::path& file, const std:
 
 using TurtleGpuTest = GpuTest;
 
+// The example grammars, the example scenes and the seed documents' SimEco scripts (their organs drawn by the
+// stage homomorphism, their branches by rotr and rotu).
 TEST_F(TurtleGpuTest, ExampleGrammarsMatchTheCpuTurtle) {
     std::vector<fs::path> files;
-    for (const auto& entry : fs::recursive_directory_iterator(kGrammars)) {
-        std::string ext = entry.path().extension().string();
-        if (ext == ".l" || ext == ".lsys") files.push_back(entry.path());
-    }
+    auto collect = [&](const fs::path& folder, std::initializer_list<const char*> extensions) {
+        for (const auto& entry : fs::recursive_directory_iterator(folder))
+            for (const char* ext : extensions)
+                if (entry.path().extension() == ext) files.push_back(entry.path());
+    };
+    collect(kGrammars, {".l", ".lsys"});
+    collect(kGrammars.parent_path() / "scenes", {".eco"});
+    collect(kSeedScripts, {".eco"});
     std::sort(files.begin(), files.end());
-    ASSERT_GE(files.size(), 15u) << "example grammars not found under " << kGrammars;
+    ASSERT_GE(files.size(), 24u) << "example grammars not found under " << kGrammars;
     Tally tally;
-    for (const fs::path& f : files) compareTurtles(context(), f, fs::relative(f, kGrammars).string(), 1, tally);
+    for (const fs::path& f : files) {
+        try {
+            compareTurtles(context(), f, f.filename().string(), 1, tally);
+        } catch (const std::exception& e) {
+            ADD_FAILURE() << f << ": " << e.what();
+        }
+    }
     std::printf("example grammars: %d interpreted alike (%d organs, %d with non-linear commands), %zu over %llu "
                 "modules\n",
                 tally.compared, tally.organs, tally.nonlinear, tally.skipped.size(),

@@ -178,10 +178,11 @@ TEST(EcoParser, LantanaGrammar) {
     EXPECT_FLOAT_EQ(s1->alternatives[0].probability, 0.7f);
     EXPECT_FLOAT_EQ(s1->alternatives[1].probability, 1.0f);
     EXPECT_EQ(s1->alternatives[0].modules.size(), 26u);
-    EXPECT_EQ(spelled(g, s1->alternatives[0]).substr(0, 22), "S [ rotr rotu S L ] [ ");
+    // rotu turns about the parent's axis: lowered before the rotr it follows (eco_compile.cpp).
+    EXPECT_EQ(spelled(g, s1->alternatives[0]).substr(0, 22), "S [ rotu rotr S L ] [ ");
     EXPECT_EQ(spelled(g, s1->alternatives[1]), "S");
     EXPECT_FLOAT_EQ(s1->alternatives[1].modules[0].args[0].value, 99.0f);
-    const ir::SuccessorModule& rotu = s1->alternatives[0].modules[3];
+    const ir::SuccessorModule& rotu = s1->alternatives[0].modules[2];
     EXPECT_EQ(g.alphabet.name(rotu.sym), "rotu");
     ASSERT_TRUE(rotu.args[0].isConst());
     EXPECT_FLOAT_EQ(rotu.args[0].value, 1.5708f);
@@ -266,13 +267,13 @@ TEST(EcoParser, RosaAlternativesAndRandomAngles) {
     EXPECT_FLOAT_EQ(s10->alternatives[0].probability, 0.5f);
     EXPECT_FLOAT_EQ(s10->alternatives[1].probability, 0.5f);
     EXPECT_FLOAT_EQ(s10->alternatives[2].probability, 1.0f);
-    EXPECT_EQ(spelled(g, s10->alternatives[2]), "S [ rotr S L ] [ rotr rotu S L ]");
+    EXPECT_EQ(spelled(g, s10->alternatives[2]), "S [ rotr S L ] [ rotu rotr S L ]");
 
     // S(6) -> prob(0.8) S(7)[rotr(1.2472) rotu(rand(0.0, 6.2832)) S(20) S(21)] | S(7);
     const ir::Production* s6 = firstMatch(g, "S", {6.0f});
     ASSERT_NE(s6, nullptr);
-    const ir::Expr& angle = s6->alternatives[0].modules[3].args[0];
-    EXPECT_EQ(g.alphabet.name(s6->alternatives[0].modules[3].sym), "rotu");
+    const ir::Expr& angle = s6->alternatives[0].modules[2].args[0];
+    EXPECT_EQ(g.alphabet.name(s6->alternatives[0].modules[2].sym), "rotu");
     ASSERT_EQ(angle.op, ir::Op::Add);
     EXPECT_FLOAT_EQ(angle.args[0].value, 0.0f);
     ASSERT_EQ(angle.args[1].op, ir::Op::Call);
@@ -308,7 +309,7 @@ TEST(EcoParser, OxalisRandomRotationWithNegativeBound) {
     ASSERT_EQ(angle.op, ir::Op::Add);
     EXPECT_FLOAT_EQ(angle.args[0].value, -1.2f);
     EXPECT_FLOAT_EQ(angle.args[1].args[0].value, 2.4f);
-    EXPECT_EQ(spelled(g, s0->alternatives[0]), "rotr S [ rotr rotu A ] S");
+    EXPECT_EQ(spelled(g, s0->alternatives[0]), "rotr S [ rotu rotr A ] S");
 }
 
 TEST(EcoParser, GeneratorScriptWithPageBreakBraces) {
@@ -341,8 +342,8 @@ TEST(EcoParser, GeneratorScriptWithPageBreakBraces) {
     // S(4) -> S(0) [rotr rotu S(9)] [rotr rotu S(12)] rotr rotu S(5);
     const ir::Production* s4 = firstMatch(g, "S", {4.0f});
     ASSERT_NE(s4, nullptr);
-    EXPECT_EQ(spelled(g, s4->alternatives[0]), "S [ rotr rotu S ] [ rotr rotu S ] rotr rotu S");
-    EXPECT_FLOAT_EQ(s4->alternatives[0].modules[3].args[0].value, -2.102210f);
+    EXPECT_EQ(spelled(g, s4->alternatives[0]), "S [ rotu rotr S ] [ rotu rotr S ] rotu rotr S");
+    EXPECT_FLOAT_EQ(s4->alternatives[0].modules[2].args[0].value, -2.102210f);
 }
 
 const char* kMiniScript = R"(ecosystem 2.0 "two" {

@@ -1,0 +1,160 @@
+#include "lang/eco_geometry.h"
+
+#include <algorithm>
+#include <array>
+#include <map>
+#include <set>
+
+#include "lang/color_map.h"
+
+namespace simeco::lang {
+
+namespace {
+
+using ir::EcoOrganKind;
+
+// A stage's property, else the organ's Default stage's, else nothing.
+template <typename Member>
+std::optional<float> property(const ir::EcoOrgan& organ, const ir::EcoStage* stage, Member member) {
+    if (stage && stage->*member) return (stage->*member)->typical();
+    if (organ.defaultStage && (*organ.defaultStage).*member) return ((*organ.defaultStage).*member)->typical();
+    return std::nullopt;
+}
+
+// How much the organ grows during a stage: GrowRate x GrowTime (0 when the stage sets no growth).
+float growth(const ir::EcoOrgan& organ, const ir::EcoStage* stage) {
+    std::optional<float> rate = property(organ, stage, &ir::EcoStage::growRate);
+    if (!rate) return 0.0f;
+    return *rate * property(organ, stage, &ir::EcoStage::growTime).value_or(kEcoDefaultGrowTime);
+}
+
+class GeometryBuilder {
+public:
+    GeometryBuilder(const ir::EcoPlant& plant, ir::Grammar& g) : plant_(plant), g_(g) {
+        // Index 0 stays black and 1 bark-brown, as in simeco's default palette; stage colours follow.
+        g_.view.palette = {{0.0f, 0.0f, 0.0f}, {0.20f, 0.11f, 0.05f}, {0.09f, 0.30f, 0.05f}};
+    }
+
+    void build() {
+        addOrgan(EcoOrganKind::Stem);
+        addOrgan(EcoOrganKind::Root);
+        addOrgan(EcoOrganKind::Leaf);
+        addOrgan(EcoOrganKind::Flower);
+        addOrgan(EcoOrganKind::Fruit);
+        addOrgan(EcoOrganKind::Apex);
+        g_.homomorphism.present = true;
+        g_.homomorphism.maxDepth = 1;
+        // The leaf surface takes its shape from the plant's name (a rose's leaves are compound, an oxalis's
+        // cordate: turtle::leafShapeOf).
+        g_.view.surfaces.push_back({"leaf", plant_.name, 1.0f});
+    }
+
+private:
+    const ir::EcoPlant& plant_;
+    ir::Grammar& g_;
+    std::map<std::array<float, 3>, int> colorIndex_;
+
+    int colorOf(const ir::EcoOrgan& organ, const ir::EcoStage* stage, EcoOrganKind kind) {
+        const ir::EcoColor* c = nullptr;
+        if (stage && stage->color) c = &*stage->color;
+        else if (organ.defaultStage && organ.defaultStage->color) c = &*organ.defaultStage->color;
+        if (!c) return kind == EcoOrganKind::Stem || kind == EcoOrganKind::Root ? 1 : 2;
+        std::array<float, 3> rgb = {srgbToLinear(std::clamp(c->r.typical(), 0.0f, 1.0f)),
+                                     srgbToLinear(std::clamp(c->g.typical(), 0.0f, 1.0f)),
+                                     srgbToLinear(std::clamp(c->b.typical(), 0.0f, 1.0f))};
+        auto it = colorIndex_.find(rgb);
+        if (it != colorIndex_.end()) return it->second;
+        if (g_.view.palette.size() >= 256) return 2; // a palette holds 256 colours
+        int index = static_cast<int>(g_.view.palette.size());
+        g_.view.palette.push_back(rgb);
+        colorIndex_[rgb] = index;
+        return index;
+    }
+
+    ir::SuccessorModule module(const std::string& name, std::vector<float> args, const ir::SourceLoc& loc) {
+        ir::SuccessorModule m;
+        m.sym = g_.symbol(name);
+        for (float a : args) m.args.push_back(ir::Expr::constant(a, loc));
+        m.loc = loc;
+        return m;
+    }
+
+    // The modules that draw the organ at `stage` (nullptr: a stage the script does not describe).
+    std::vector<ir::SuccessorModule> drawing(EcoOrganKind kind, const ir::EcoOrgan& organ, const ir::EcoStage* stage,
+                                             int stageNumber, const ir::SourceLoc& loc) {
+        std::vector<ir::SuccessorModule> out;
+        if (kind == EcoOrganKind::Apex) return out;
+        out.push_back(module(";", {float(colorOf(organ, stage, kind))}, loc));
+        float grown = growth(organ, stage);
+        switch (kind) {
+        case EcoOrganKind::Stem:
+        case EcoOrganKind::Root: {
+            float time = property(organ, stage, &ir::EcoStage::growTime).value_or(kEcoDefaultGrowTime);
+            std::optional<float> broaden = property(organ, stage, &ir::EcoStage::broadenRate);
+            float width = broaden ? *broaden * time : kEcoDefaultStemWidth;
+            out.push_back(module("!", {width}, loc));
+            out.push_back(module("G", {grown > 0 ? grown : kEcoDefaultStemLength}, loc));
+            break;
+        }
+        case EcoOrganKind::Leaf: {
+            // A leaf particle scales a leaf model up from its initial size; leaves step through their stages in
+            // order, so a leaf at stage s has grown in every stage up to s.
+            float grownSince = 0;
+            for (int k = 0; k <= std::max(stageNumber, 0); ++k) grownSince += growth(organ, organ.stageFor(k));
+            out.push_back(module("~", {}, loc));
+            out.push_back(module("leaf", {kEcoLeafModelSize * (1.0f + grownSince)}, loc));
+            break;
+        }
+        case EcoOrganKind::Flower:
+        case EcoOrganKind::Fruit:
+            out.push_back(module("@", {}, loc));
+            out.push_back(module(kind == EcoOrganKind::Flower ? "c" : "O", {grown > 0 ? grown : kEcoDefaultFlowerSize},
+                                 loc));
+            break;
+        default: break;
+        }
+        return out;
+    }
+
+    // `X(s) : s == stage --> drawing` for each described stage, then `X(s) --> default drawing`.
+    void addOrgan(EcoOrganKind kind) {
+        const ir::EcoOrgan& organ = plant_.organ(kind);
+        ir::SymbolId sym = g_.symbol(std::string(1, ir::kEcoSegmentLetters[static_cast<int>(kind)]));
+        ir::SourceLoc loc = organ.present ? organ.loc : plant_.loc;
+        auto production = [&](std::optional<int> stage) {
+            ir::Production p;
+            p.strict.push_back({sym, {0}, loc});
+            p.frameSize = 1;
+            p.slotNames = {"stage"};
+            p.loc = loc;
+            if (stage) {
+                ir::Expr slot;
+                slot.op = ir::Op::Local;
+                slot.slot = 0;
+                slot.loc = loc;
+                ir::Expr test;
+                test.op = ir::Op::Eq;
+                test.args = {slot, ir::Expr::constant(*stage, loc)};
+                test.loc = loc;
+                p.condition = test;
+            }
+            // The default production stands for stages past the described ones: a leaf there has grown through
+            // all of them.
+            const ir::EcoStage* settings = stage ? organ.stageFor(*stage)
+                                                 : (organ.defaultStage ? &*organ.defaultStage : nullptr);
+            int lastDescribed = organ.stages.empty() ? 0 : organ.stages.rbegin()->first;
+            ir::Alternative alt;
+            alt.modules = drawing(kind, organ, settings, stage.value_or(lastDescribed), loc);
+            p.alternatives.push_back(std::move(alt));
+            g_.homomorphism.productions.push_back(std::move(p));
+        };
+        for (const auto& [stage, settings] : organ.stages) production(stage);
+        production(std::nullopt);
+    }
+};
+
+} // namespace
+
+void addEcoOrganGeometry(const ir::EcoPlant& plant, ir::Grammar& g) { GeometryBuilder(plant, g).build(); }
+
+} // namespace simeco::lang

@@ -1,0 +1,32 @@
+// What a SimEco plant's organs look like to the turtle, until the particle simulation grows them: a
+// homomorphism that draws each segment by its organ and stage (lang/eco_compile lowers the Grow block; this
+// adds the drawing).
+#pragma once
+
+#include "ir/eco_scene.h"
+#include "ir/grammar.h"
+
+namespace simeco::lang {
+
+// Adds to `g` (the plant's compiled grammar) one homomorphism production per organ stage the script
+// describes and one per organ for every other stage, a colour palette with the stages' colours, and the leaf
+// surface:
+//   stem S, root R:  ;(colour) !(width) G(length)   length = GrowRate x GrowTime, width = BroadenRate x GrowTime
+//   leaf L:          ;(colour) ~ leaf(size)          size = the leaf model's, scaled by 1 + the growth of
+//                                                    stages 0 to its own (leaves pass through their stages
+//                                                    in order)
+//   flower F:        ;(colour) @ c(diameter)         a disc, diameter = GrowRate x GrowTime
+//   fruit T:         ;(colour) @ O(diameter)         a sphere
+//   apex A:          nothing
+// A stage's unset properties come from the organ's Default stage, then from simeco's defaults below. These are
+// the sizes the stage's growth reaches at the end of its GrowTime; the particle simulation will replace them
+// with each module's own age.
+void addEcoOrganGeometry(const ir::EcoPlant& plant, ir::Grammar& g);
+
+inline constexpr float kEcoDefaultGrowTime = 1.0f;
+inline constexpr float kEcoDefaultStemLength = 1.0f;
+inline constexpr float kEcoDefaultStemWidth = 0.1f;
+inline constexpr float kEcoLeafModelSize = 1.0f;
+inline constexpr float kEcoDefaultFlowerSize = 0.3f;
+
+} // namespace simeco::lang

@@ -9,17 +9,12 @@
 
 #include "app/commands.h"
 #include "app/error_report.h"
-#include "app/load_species.h"
+#include "app/field_pipeline.h"
 #include "compute/shared/organ_layout.h"
-#include "cpu/derive.h"
 #include "draw/bounds.h"
 #include "draw/image_writers.h"
 #include "draw/renderer.h"
-#include "gpu/derive_gpu.h"
 #include "gpu/turtle_gpu.h"
-#include "ir/species.h"
-#include "turtle/turtle_commands.h"
-#include "turtle/turtle_cpu.h"
 #include "vk/buffer.h"
 #include "vk/context.h"
 
@@ -28,20 +23,13 @@ namespace simeco::app {
 namespace {
 
 struct RenderArgs {
-    std::string file;
-    int steps = -1;
-    int64_t seed = -1;
-    uint32_t plants = 0;
-    float spacing = 0;
-    std::string backend = "gpu";
+    FieldSource source;
     std::string output;
     std::string png;
     std::string size = "960x720";
     std::string camera;
     std::string style = "lit";
     std::string shadows = "volume";
-    uint64_t maxModules = 0;
-    std::string device;
 };
 
 bool hasExtension(const std::string& path, const char* ext) {
@@ -71,23 +59,6 @@ draw::RenderSettings renderSettings(const RenderArgs& args) {
     return s;
 }
 
-// The derived strings of all plants under their homomorphisms: what the turtle reads.
-cpu::ModuleString deriveForTurtle(const RenderArgs& args, const std::vector<ir::Grammar>& species,
-                                  const vk::Context& context) {
-    cpu::DeriveOptions options;
-    options.steps = args.steps;
-    options.seed = args.seed;
-    options.plants = args.plants ? args.plants : static_cast<uint32_t>(species.size());
-    options.maxModules = args.maxModules;
-    if (args.backend == "cpu") {
-        options.homomorphism = true;
-        return cpu::deriveSpeciesCpu(species, options).string;
-    }
-    gpu::GpuDeriver deriver(context, species);
-    cpu::DeriveResult derived = deriver.derive(options, true);
-    return cpu::applyHomomorphismCpu(species, derived.string, options);
-}
-
 void runRender(const RenderArgs& args) {
     bool exr = hasExtension(args.output, ".exr");
     if (!exr && !hasExtension(args.output, ".png"))
@@ -96,33 +67,20 @@ void runRender(const RenderArgs& args) {
         throw std::invalid_argument(fmt::format("--png '{}': expected a .png file name", args.png));
     draw::RenderSettings settings = renderSettings(args);
 
-    std::vector<ir::Grammar> species = ir::unifySpecies(loadGrammars(args.file));
+    // Rendering needs the device whichever backend derives and interprets.
+    const FieldSource& source = args.source;
     vk::ContextOptions contextOptions;
-    contextOptions.device = args.device;
+    contextOptions.device = source.device;
     vk::Context context(contextOptions);
     auto start = std::chrono::steady_clock::now();
-    cpu::ModuleString string = deriveForTurtle(args, species, context);
-
-    std::vector<turtle::TurtleSettings> turtles;
-    for (const ir::Grammar& g : species) turtles.push_back(turtle::turtleSettings(g, species.front().alphabet));
-    turtle::TurtleCommands commands = turtle::turtleCommands(species.front().alphabet);
-    turtle::FieldOptions field;
-    field.spacing = args.spacing;
-
-    // The organs on the device, written by the turtle kernels (or, with the CPU backend, uploaded from the
-    // reference turtle); only the table (counts and bounds) comes back for framing.
-    gpu::DeviceOrgans organs;
-    if (args.backend == "cpu") {
-        organs = gpu::uploadOrgans(context, turtle::interpretCpu(string, commands, turtles, field));
-    } else {
-        gpu::GpuTurtle turtle(context, commands, turtles);
-        gpu::UploadedModules modules(context, string);
-        organs = turtle.interpret(modules.view(), field);
-    }
+    Field field = deriveField(source, &context);
+    const cpu::ModuleString& string = field.string;
+    gpu::DeviceOrgans organs = interpretOnDevice(source, field, context);
+    // Only the table (counts and bounds) comes back, for framing; the instances stay on the device.
     shared::OrganTable table = vk::downloadVector<shared::OrganTable>(context, organs.table, 1)[0];
     uint32_t organCount = 0;
     for (uint32_t k = 0; k < shared::kOrganKinds; ++k) organCount += table.count[k];
-    if (organCount == 0) throw std::runtime_error(fmt::format("{}: the plants draw nothing", args.file));
+    if (organCount == 0) throw std::runtime_error(fmt::format("{}: the plants draw nothing", source.file));
     draw::Bounds bounds = draw::decodeBounds(table);
 
     draw::Renderer renderer(context);
@@ -131,7 +89,7 @@ void runRender(const RenderArgs& args) {
     else draw::writePng(args.output, frame);
     if (!args.png.empty()) draw::writePng(args.png, frame);
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::printf("%s: %zu plants, %zu modules, %zu organs, %ux%u, %.2f s -> %s%s%s\n", args.file.c_str(),
+    std::printf("%s: %zu plants, %zu modules, %zu organs, %ux%u, %.2f s -> %s%s%s\n", source.file.c_str(),
                 string.plants(), string.size(), size_t(organCount), settings.width, settings.height, seconds,
                 args.output.c_str(), args.png.empty() ? "" : ", ", args.png.c_str());
 }
@@ -141,15 +99,7 @@ void runRender(const RenderArgs& args) {
 void registerRenderCommand(CLI::App& app, CommandContext& ctx) {
     auto args = std::make_shared<RenderArgs>();
     CLI::App* cmd = app.add_subcommand("render", "Derive, interpret and render a field of plants to OpenEXR or PNG");
-    cmd->add_option("file", args->file, "grammar (.l, .lsys) or scene (.eco)")->required();
-    cmd->add_option("-n,--steps", args->steps, "derivation steps (default: the file's derivation length)")
-        ->check(CLI::Range(0, 1000000));
-    cmd->add_option("--seed", args->seed, "seed of the random streams (default: the file's seed, else 0)")
-        ->check(CLI::Range(int64_t(0), int64_t(UINT32_MAX)));
-    cmd->add_option("--plants", args->plants, "plants in the field; a scene's species take turns (default: one of each)")
-        ->check(CLI::Range(1u, 1000000u));
-    cmd->add_option("--spacing", args->spacing, "distance between plants (default: from the widest plant)")
-        ->check(CLI::Range(0.0f, 1e6f));
+    addFieldOptions(*cmd, args->source);
     cmd->add_option("-o,--output", args->output, "image file: .exr (RGBA, depth, plant and organ ids) or .png")
         ->required();
     cmd->add_option("--png", args->png, "also write a PNG preview");
@@ -157,9 +107,6 @@ void registerRenderCommand(CLI::App& app, CommandContext& ctx) {
     cmd->add_option("--camera", args->camera, "azimuth,elevation[,distance] in degrees (default: framed on the plants)");
     cmd->add_option("--style", args->style, "lit or toon")->check(CLI::IsMember({"lit", "toon"}));
     cmd->add_option("--shadows", args->shadows, "volume or none")->check(CLI::IsMember({"volume", "none"}));
-    cmd->add_option("--backend", args->backend, "derivation and turtle: gpu (compute kernels) or cpu (reference)")->check(CLI::IsMember({"cpu", "gpu"}));
-    cmd->add_option("--max-modules", args->maxModules, "module budget (default: sized to this machine's memory)");
-    cmd->add_option("--device", args->device, "Vulkan device: an index or a name part (see `simeco devices`)");
     cmd->callback([args, &ctx] { ctx.exitCode = runReportingErrors([&] { runRender(*args); }); });
 }
 

@@ -36,7 +36,6 @@ void runExport(const ExportArgs& args) {
     std::unique_ptr<vk::Context> context = contextFor(source);
     auto start = std::chrono::steady_clock::now();
     Field field = deriveField(source, context.get());
-    const cpu::ModuleString& string = field.string;
     turtle::Interpretation interp = interpretOnHost(source, field, context.get());
     if (interp.organs.empty()) throw std::runtime_error(fmt::format("{}: the plants draw nothing", source.file));
 
@@ -46,13 +45,13 @@ void runExport(const ExportArgs& args) {
         exporter::GltfOptions options;
         options.instancing = !args.noInstancing;
         options.source = source.file;
-        options.plants = static_cast<uint32_t>(string.plants());
+        options.plants = field.plants;
         exporter::writeGltf(args.output, interp.organs, meshes, options);
     } else {
         std::vector<uint32_t> order = exporter::plantOrder(interp.organs);
         exporter::WorldMesh mesh = exporter::placeOrgans(interp.organs, order, meshes);
         std::string comment =
-            fmt::format("simeco export of {}: {} plants, {} organs", source.file, string.plants(), interp.organs.size());
+            fmt::format("simeco export of {}: {} plants, {} organs", source.file, field.plants, interp.organs.size());
         if (*format == exporter::MeshFormat::Obj)
             exporter::writeObj(args.output, mesh, comment);
         else
@@ -60,8 +59,8 @@ void runExport(const ExportArgs& args) {
         counts = fmt::format(", {} vertices, {} triangles", mesh.positions.size(), mesh.triangleCount());
     }
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::printf("%s: %zu plants, %zu modules, %zu organs%s, %.2f s -> %s\n", source.file.c_str(), string.plants(),
-                string.size(), interp.organs.size(), counts.c_str(), seconds, args.output.c_str());
+    std::printf("%s: %zu plants, %zu modules, %zu organs%s, %.2f s -> %s\n", source.file.c_str(), size_t(field.plants),
+                size_t(field.modules), interp.organs.size(), counts.c_str(), seconds, args.output.c_str());
 }
 
 } // namespace

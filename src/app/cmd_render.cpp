@@ -74,7 +74,6 @@ void runRender(const RenderArgs& args) {
     vk::Context context(contextOptions);
     auto start = std::chrono::steady_clock::now();
     Field field = deriveField(source, &context);
-    const cpu::ModuleString& string = field.string;
     gpu::DeviceOrgans organs = interpretOnDevice(source, field, context);
     // Only the table (counts and bounds) comes back, for framing; the instances stay on the device.
     shared::OrganTable table = vk::downloadVector<shared::OrganTable>(context, organs.table, 1)[0];
@@ -90,7 +89,7 @@ void runRender(const RenderArgs& args) {
     if (!args.png.empty()) draw::writePng(args.png, frame);
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::printf("%s: %zu plants, %zu modules, %zu organs, %ux%u, %.2f s -> %s%s%s\n", source.file.c_str(),
-                string.plants(), string.size(), size_t(organCount), settings.width, settings.height, seconds,
+                size_t(field.plants), size_t(field.modules), size_t(organCount), settings.width, settings.height, seconds,
                 args.output.c_str(), args.png.empty() ? "" : ", ", args.png.c_str());
 }
 

@@ -34,6 +34,21 @@ std::unique_ptr<vk::Context> contextFor(const FieldSource& source) {
     return std::make_unique<vk::Context>(options);
 }
 
+Field::Field() = default;
+Field::~Field() = default;
+Field::Field(Field&&) noexcept = default;
+Field& Field::operator=(Field&&) noexcept = default;
+
+namespace {
+
+bool hasHomomorphism(const std::vector<ir::Grammar>& species) {
+    for (const ir::Grammar& g : species)
+        if (g.homomorphism.present && !g.homomorphism.productions.empty()) return true;
+    return false;
+}
+
+} // namespace
+
 Field deriveField(const FieldSource& source, const vk::Context* context) {
     Field field;
     field.species = ir::unifySpecies(loadGrammars(source.file));
@@ -44,12 +59,25 @@ Field deriveField(const FieldSource& source, const vk::Context* context) {
     options.maxModules = source.maxModules;
     if (source.onDevice()) {
         if (!context) throw std::logic_error("the GPU backend derives on a Vulkan device");
-        gpu::GpuDeriver deriver(*context, field.species);
-        cpu::DeriveResult derived = deriver.derive(options, true);
-        field.string = cpu::applyHomomorphismCpu(field.species, derived.string, options);
+        field.deriver = std::make_unique<gpu::GpuDeriver>(*context, field.species);
+        // The string goes through the host only when a homomorphism must be applied to it (on the CPU).
+        bool homomorphism = hasHomomorphism(field.species);
+        cpu::DeriveResult derived = field.deriver->derive(options, homomorphism);
+        if (homomorphism) {
+            field.string = cpu::applyHomomorphismCpu(field.species, derived.string, options);
+            field.deriver.reset();
+        }
     } else {
         options.homomorphism = true;
         field.string = cpu::deriveSpeciesCpu(field.species, options).string;
+    }
+    if (field.deriver) {
+        gpu::DeviceModules modules = field.deriver->lastString();
+        field.modules = modules.count;
+        field.plants = modules.plants;
+    } else {
+        field.modules = field.string.size();
+        field.plants = static_cast<uint32_t>(field.string.plants());
     }
     const ir::Alphabet& alphabet = field.species.front().alphabet;
     field.commands = turtle::turtleCommands(alphabet);
@@ -62,6 +90,7 @@ gpu::DeviceOrgans interpretOnDevice(const FieldSource& source, const Field& fiel
     if (!source.onDevice())
         return gpu::uploadOrgans(context, turtle::interpretCpu(field.string, field.commands, field.turtles, field.options));
     gpu::GpuTurtle turtle(context, field.commands, field.turtles);
+    if (field.deriver) return turtle.interpret(field.deriver->lastString(), field.options);
     gpu::UploadedModules modules(context, field.string);
     return turtle.interpret(modules.view(), field.options);
 }
@@ -70,7 +99,7 @@ turtle::Interpretation interpretOnHost(const FieldSource& source, const Field& f
     if (!source.onDevice() || !context)
         return turtle::interpretCpu(field.string, field.commands, field.turtles, field.options);
     gpu::DeviceOrgans organs = interpretOnDevice(source, field, *context);
-    return gpu::readBack(*context, organs, static_cast<uint32_t>(field.string.plants()));
+    return gpu::readBack(*context, organs, field.plants);
 }
 
 } // namespace simeco::app

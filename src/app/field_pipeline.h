@@ -10,6 +10,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cpu/module_string.h"
+#include "gpu/derive_gpu.h"
 #include "gpu/turtle_gpu.h"
 #include "ir/grammar.h"
 #include "turtle/interpretation.h"
@@ -42,10 +43,20 @@ void addFieldOptions(CLI::App& cmd, FieldSource& source);
 // A field derived and ready for the turtle.
 struct Field {
     std::vector<ir::Grammar> species; // one alphabet (ir::unifySpecies)
-    cpu::ModuleString string;         // every plant, under its homomorphism
+    // Every plant, under its homomorphism: on the host, or with the GPU backend and no homomorphism to
+    // apply, left on the device by `deriver` (then `string` stays empty).
+    cpu::ModuleString string;
+    std::unique_ptr<gpu::GpuDeriver> deriver;
+    uint64_t modules = 0;
+    uint32_t plants = 0;
     turtle::TurtleCommands commands;
     std::vector<turtle::TurtleSettings> turtles;
     turtle::FieldOptions options;
+
+    Field();
+    ~Field();
+    Field(Field&&) noexcept;
+    Field& operator=(Field&&) noexcept;
 };
 
 // Loads and derives the source's file; `context` is used by the GPU backend (may be null for the CPU one).

@@ -49,6 +49,7 @@ struct GpuDeriver::Impl {
     std::vector<ir::Grammar> species;
     GpuStrategy strategy;
     int stride;
+    int lastStream = -1; // the stream the last derive() ended in
     uint32_t globalStride = 0, arrayStride = 0; // globals and array elements per plant (the most of any species)
     GeneratedKernels kernels;
     std::optional<vk::ComputePipeline> match, write, decompositionMatch, decompositionWrite, sequential;
@@ -696,6 +697,7 @@ cpu::DeriveResult GpuDeriver::derive(const cpu::DeriveOptions& options, bool rea
     cpu::DeriveResult result;
     result.steps = *std::max_element(derived.begin(), derived.end());
     Stream& final = m.streams[cur];
+    m.lastStream = cur;
     stats.modules = final.count;
     result.string.stride = m.stride;
     std::vector<uint32_t> table = vk::downloadVector<uint32_t>(m.ctx, final.plantStart, m.plants + 1);
@@ -717,6 +719,13 @@ cpu::DeriveResult GpuDeriver::derive(const cpu::DeriveOptions& options, bool rea
     stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (statsOut) *statsOut = stats;
     return result;
+}
+
+DeviceModules GpuDeriver::lastString() const {
+    const Impl& m = *impl_;
+    if (m.lastStream < 0) throw std::logic_error("lastString() before derive()");
+    const Stream& s = m.streams[m.lastStream];
+    return DeviceModules{&s.sym, &s.par, &s.plantStart, s.count, m.plants, static_cast<uint32_t>(m.stride)};
 }
 
 } // namespace simeco::gpu

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "cpu/derive.h"
+#include "gpu/device_modules.h"
 #include "ir/grammar.h"
 
 namespace simeco::vk {
@@ -52,6 +53,10 @@ public:
     // Derives options.plants plants in one buffer (copies of the grammar, or the species in turn). The string is read back only when
     // `readBack`; otherwise the result's string is empty and `stats` tells the sizes.
     cpu::DeriveResult derive(const cpu::DeriveOptions& options, bool readBack = true, GpuDeriveStats* stats = nullptr);
+
+    // The string the last derive() left on the device (read back or not), valid until the next derive() or the
+    // deriver's end: what the turtle kernels interpret without a round trip through the host.
+    DeviceModules lastString() const;
 
     // Parallel or Sequential: the strategy this deriver uses.
     GpuStrategy strategy() const;

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "cpu/module_string.h"
+#include "gpu/device_modules.h"
 #include "turtle/interpretation.h"
 #include "turtle/turtle_commands.h"
 #include "turtle/turtle_settings.h"
@@ -20,17 +21,6 @@ class Context;
 }
 
 namespace simeco::gpu {
-
-// A module stream on the device, laid out as the derivation kernels leave it: symbols (symbol | parameter
-// count << 24), `stride` floats of parameters per module, and plants + 1 plant starts.
-struct DeviceModules {
-    const vk::Buffer* symbols = nullptr;
-    const vk::Buffer* params = nullptr;
-    const vk::Buffer* plantStarts = nullptr;
-    std::uint32_t count = 0;
-    std::uint32_t plants = 0;
-    std::uint32_t stride = 1;
-};
 
 // A host string copied to the device in that layout.
 class UploadedModules {

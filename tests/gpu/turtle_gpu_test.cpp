@@ -14,6 +14,7 @@
 
 #include "compute/shared/organ_layout.h"
 #include "cpu/derive.h"
+#include "gpu/derive_gpu.h"
 #include "gpu/turtle_gpu.h"
 #include "gpu_fixture.h"
 #include "lang/load_grammar.h"
@@ -215,6 +216,34 @@ TEST_F(TurtleGpuTest, AFieldOfPlantsMatchesTheCpuTurtle) {
     compareTurtles(context(), kGrammars / "abop" / "fig2.8-ternary.l", "ternary field", 16, tally);
     compareTurtles(context(), kGrammars / "abop" / "fig1.24d.l", "plant field", 7, tally);
     EXPECT_EQ(tally.compared, 2);
+}
+
+// Derivation and turtle without the host in between: the turtle kernels read the string the derivation
+// kernels left on the device (what `simeco render` does when there is no homomorphism to apply).
+TEST_F(TurtleGpuTest, TheDerivedStringOnTheDeviceMatchesTheCpuTurtle) {
+    int compared = 0;
+    for (const char* file : {"abop/fig2.8-ternary.l", "abop/fig1.27-stochastic.l", "abop/fig1.31b.l", "abop/fig2.6-monopodial.l"}) {
+        SCOPED_TRACE(file);
+        ir::Grammar g = lang::loadGrammarFile((kGrammars / file).string());
+        ASSERT_FALSE(g.homomorphism.present && !g.homomorphism.productions.empty());
+        cpu::DeriveOptions options;
+        options.plants = 5;
+        cpu::ModuleString string = cpu::deriveCpu(g, options).string;
+        turtle::TurtleCommands commands = turtle::turtleCommands(g.alphabet);
+        std::vector<turtle::TurtleSettings> species{turtle::turtleSettings(g, g.alphabet)};
+        turtle::Interpretation want = turtle::interpretCpu(string, commands, species, {});
+
+        gpu::GpuDeriver deriver(context(), g);
+        deriver.derive(options, /*readBack=*/false);
+        gpu::DeviceModules modules = deriver.lastString();
+        ASSERT_EQ(modules.count, string.size());
+        gpu::GpuTurtle turtle(context(), commands, species);
+        turtle::Interpretation got = gpu::readBack(context(), turtle.interpret(modules, {}), modules.plants);
+        EXPECT_EQ(firstDifference(want, got), "");
+        EXPECT_GT(want.organs.size(), 100u);
+        ++compared;
+    }
+    EXPECT_EQ(compared, 4);
 }
 
 } // namespace

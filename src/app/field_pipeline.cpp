@@ -39,16 +39,6 @@ Field::~Field() = default;
 Field::Field(Field&&) noexcept = default;
 Field& Field::operator=(Field&&) noexcept = default;
 
-namespace {
-
-bool hasHomomorphism(const std::vector<ir::Grammar>& species) {
-    for (const ir::Grammar& g : species)
-        if (g.homomorphism.present && !g.homomorphism.productions.empty()) return true;
-    return false;
-}
-
-} // namespace
-
 Field deriveField(const FieldSource& source, const vk::Context* context) {
     Field field;
     field.species = ir::unifySpecies(loadGrammars(source.file));
@@ -60,10 +50,14 @@ Field deriveField(const FieldSource& source, const vk::Context* context) {
     if (source.onDevice()) {
         if (!context) throw std::logic_error("the GPU backend derives on a Vulkan device");
         field.deriver = std::make_unique<gpu::GpuDeriver>(*context, field.species);
-        // The string goes through the host only when a homomorphism must be applied to it (on the CPU).
-        bool homomorphism = hasHomomorphism(field.species);
-        cpu::DeriveResult derived = field.deriver->derive(options, homomorphism);
-        if (homomorphism) {
+        options.homomorphism = true;
+        if (field.deriver->appliesHomomorphism()) {
+            field.deriver->derive(options, false); // the string stays on the device for the turtle kernels
+        } else {
+            // A homomorphism the parallel passes cannot run goes through the host.
+            options.homomorphism = false;
+            cpu::DeriveResult derived = field.deriver->derive(options, true);
+            options.homomorphism = true;
             field.string = cpu::applyHomomorphismCpu(field.species, derived.string, options);
             field.deriver.reset();
         }

@@ -43,8 +43,8 @@ void addFieldOptions(CLI::App& cmd, FieldSource& source);
 // A field derived and ready for the turtle.
 struct Field {
     std::vector<ir::Grammar> species; // one alphabet (ir::unifySpecies)
-    // Every plant, under its homomorphism: on the host, or with the GPU backend and no homomorphism to
-    // apply, left on the device by `deriver` (then `string` stays empty).
+    // Every plant, under its homomorphism: with the GPU backend left on the device by `deriver` (then `string`
+    // stays empty), else on the host.
     cpu::ModuleString string;
     std::unique_ptr<gpu::GpuDeriver> deriver;
     uint64_t modules = 0;

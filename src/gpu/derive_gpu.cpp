@@ -53,8 +53,15 @@ struct GpuDeriver::Impl {
     uint32_t globalStride = 0, arrayStride = 0; // globals and array elements per plant (the most of any species)
     GeneratedKernels kernels;
     std::optional<vk::ComputePipeline> match, write, decompositionMatch, decompositionWrite, sequential;
+    // The homomorphism, generated as the decomposition of grammars whose decomposition is their homomorphism;
+    // empty when no species has one, or when its productions need the host (homomorphismHostReason).
+    GeneratedKernels homomorphismKernels;
+    std::optional<vk::ComputePipeline> homomorphismMatch, homomorphismWrite;
+    std::optional<std::string> homomorphismHostReason;
+    // The error sites of the kernels being run (the homomorphism's while it runs).
+    const std::vector<ErrorSite>* activeErrors = nullptr;
     vk::ComputePipeline bracketDepth, depthLeaves, depthLevel, plantStarts, cutApply;
-    vk::ComputePipeline greedyReduce, greedyScan, greedyMark;
+    vk::ComputePipeline greedyReduce, greedyScan, greedyMark, homomorphismStart;
     GpuScan scan;
     vk::Buffer contextSkip, funcTables, errors, levelInfo, readback;
     vk::Buffer globals, arrays, plantFrozen;
@@ -84,7 +91,8 @@ struct GpuDeriver::Impl {
           cutApply(vk::ComputePipeline::embedded(c, "derive/cut_apply")),
           greedyReduce(vk::ComputePipeline::embedded(c, "derive/greedy_reduce")),
           greedyScan(vk::ComputePipeline::embedded(c, "derive/greedy_scan")),
-          greedyMark(vk::ComputePipeline::embedded(c, "derive/greedy_mark")), scan(c) {
+          greedyMark(vk::ComputePipeline::embedded(c, "derive/greedy_mark")),
+          homomorphismStart(vk::ComputePipeline::embedded(c, "derive/homomorphism_start")), scan(c) {
         if (species.empty()) throw std::invalid_argument("GpuDeriver: no species");
         for (const ir::Grammar& g : species) {
             if (std::optional<std::string> reason = gpuUnsupportedReason(g))
@@ -118,6 +126,8 @@ struct GpuDeriver::Impl {
             decompositionMatch.emplace(build(kernels.decompositionMatch, "derive/decomposition_match"));
             decompositionWrite.emplace(build(kernels.decompositionWrite, "derive/decomposition_write"));
         }
+        activeErrors = &kernels.errors;
+        buildHomomorphism(build);
         compileSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
         // One row of bits per species (derive_lib.glsl's skipped()).
@@ -142,6 +152,29 @@ struct GpuDeriver::Impl {
         vk::Buffer buffer(ctx, bytes(values.size(), sizeof(T)), vk::MemoryUsage::DeviceLocal);
         if (!values.empty()) vk::upload(ctx, buffer, std::as_bytes(values));
         return buffer;
+    }
+
+    // The homomorphism's kernels: the decomposition passes of copies of the species whose decomposition is
+    // their homomorphism (one pass per depth, contexts in the derived string, no cuts).
+    template <typename Build>
+    void buildHomomorphism(Build& build) {
+        bool any = false;
+        std::vector<ir::Grammar> images = species;
+        for (ir::Grammar& g : images) {
+            any = any || !g.homomorphism.productions.empty();
+            g.decomposition = g.homomorphism;
+            g.productions = ir::RuleSet{};
+            if (!homomorphismHostReason) homomorphismHostReason = gpuUnsupportedReason(g);
+            if (!homomorphismHostReason) homomorphismHostReason = gpuParallelUnsupportedReason(g);
+        }
+        if (!any) {
+            homomorphismHostReason.reset(); // nothing to apply, on the device or elsewhere
+            return;
+        }
+        if (homomorphismHostReason) return;
+        homomorphismKernels = generateDeriveKernels(images);
+        homomorphismMatch.emplace(build(homomorphismKernels.decompositionMatch, "derive/homomorphism_match"));
+        homomorphismWrite.emplace(build(homomorphismKernels.decompositionWrite, "derive/homomorphism_write"));
     }
 
     void checkRange(uint64_t count, uint64_t size, const char* what) const {
@@ -239,7 +272,8 @@ struct GpuDeriver::Impl {
         lastFlags = words[2];
         if (words[1] != 0) {
             uint32_t site = words[1] - 1;
-            if (site < kernels.errors.size()) throw ir::InputError(kernels.errors[site].loc, kernels.errors[site].message);
+            const std::vector<ErrorSite>& sites = *activeErrors;
+            if (site < sites.size()) throw ir::InputError(sites[site].loc, sites[site].message);
             throw std::runtime_error("a derivation kernel reported an unknown error");
         }
         return words[0];
@@ -359,17 +393,29 @@ struct GpuDeriver::Impl {
         out.count = total;
         stats.bytesMoved += uint64_t(n) * (4 + 4ull * uint64_t(stride) + 12 + 12 + 12) +
                             uint64_t(total) * (4 + 4ull * uint64_t(stride) + 8);
-        if (kernels.hasDecomposition) outIndex = decompose(cur, outIndex, stepIndex, seed, budget, timer, millis, stats);
+        if (kernels.hasDecomposition)
+            outIndex = decompose(cur, outIndex, stepIndex, seed, budget, timer, millis, stats, decompositionPasses());
         if (timer) stats.stepMillis.push_back(millis);
         return outIndex;
     }
 
+    // Recursive rewriting by depth: the decomposition's kernels, or the homomorphism's.
+    struct RecursivePasses {
+        const vk::ComputePipeline* match;
+        const vk::ComputePipeline* write;
+        int maxDepth;
+    };
+
+    RecursivePasses decompositionPasses() const {
+        return {&*decompositionMatch, &*decompositionWrite, kernels.maxDecompositionDepth};
+    }
+
     // Decomposition depth by depth, from streams[x]; the string being rewritten (contexts) is streams[old].
     int decompose(int old, int x, uint32_t stepIndex, uint32_t seed, uint64_t budget, vk::Timestamps* timer,
-                  double& millis, GpuDeriveStats& stats) {
+                  double& millis, GpuDeriveStats& stats, const RecursivePasses& passes) {
         Stream& oldStream = streams[old];
         int y = 3 - old - x;
-        for (int depth = 0; depth < kernels.maxDecompositionDepth; ++depth) {
+        for (int depth = 0; depth < passes.maxDepth; ++depth) {
             Stream& X = streams[x];
             uint32_t n = X.count;
             if (n == 0) break;
@@ -387,7 +433,7 @@ struct GpuDeriver::Impl {
                 [&](VkCommandBuffer cmd) {
                     vk::cmdFill(cmd, errors, 0);
                     vk::memoryBarrier(cmd, Hazard::TransferToCompute);
-                    dispatchDerive(cmd, *decompositionMatch, oldStream,
+                    dispatchDerive(cmd, *passes.match, oldStream,
                                    {X.sym, X.par, plantTable(X), X.live, X.origin, examined, counts, choices, drawStarts},
                                    p, n);
                     vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
@@ -402,7 +448,7 @@ struct GpuDeriver::Impl {
                 [&](VkCommandBuffer cmd) {
                     vk::cmdFill(cmd, errors, 0);
                     vk::memoryBarrier(cmd, Hazard::TransferToCompute);
-                    dispatchDerive(cmd, *decompositionWrite, oldStream,
+                    dispatchDerive(cmd, *passes.write, oldStream,
                                    {X.sym, X.par, plantTable(X), X.live, X.origin, examined, offsets, choices, drawStarts,
                                     Y.sym, Y.par, Y.origin, Y.live},
                                    p, n);
@@ -415,6 +461,41 @@ struct GpuDeriver::Impl {
             std::swap(x, y);
         }
         return x;
+    }
+
+    // The homomorphism of the derived string streams[cur], into another stream; returns its index. Every
+    // module is examined at depth 0 with its contexts around itself, and the passes draw from step 0's.
+    int applyHomomorphism(int cur, uint32_t seed, uint64_t budget, vk::Timestamps* timer, GpuDeriveStats& stats) {
+        Stream& derived = streams[cur];
+        uint32_t n = derived.count;
+        if (n == 0) return cur;
+        int x = (cur + 1) % 3;
+        Stream& X = streams[x];
+        ensureStream(X, n);
+        ensureScratch(n);
+        if (homomorphismKernels.needsBrackets) layoutTree(n);
+        double millis = 0;
+        submit(
+            [&](VkCommandBuffer cmd) {
+                VkBufferCopy symbols{0, 0, bytes(n, 4)}, parameters{0, 0, bytes(n, 4ull * uint64_t(stride))},
+                    table{0, 0, bytes(plants + 1, 4)};
+                vkCmdCopyBuffer(cmd, derived.sym.handle(), X.sym.handle(), 1, &symbols);
+                vkCmdCopyBuffer(cmd, derived.par.handle(), X.par.handle(), 1, &parameters);
+                vkCmdCopyBuffer(cmd, derived.plantStart.handle(), X.plantStart.handle(), 1, &table);
+                vk::cmdFill(cmd, errors, 0);
+                vk::memoryBarrier(cmd, Hazard::TransferToCompute);
+                DeriveHelperPush hp{n, 0, 0, plants};
+                homomorphismStart.dispatch(cmd, {X.live, X.origin}, hp, homomorphismStart.groupsFor(n));
+                if (homomorphismKernels.needsBrackets) recordBracketDepth(cmd, derived);
+                vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+            },
+            timer, millis);
+        X.count = n;
+        activeErrors = &homomorphismKernels.errors;
+        RecursivePasses passes{&*homomorphismMatch, &*homomorphismWrite, homomorphismKernels.maxDecompositionDepth};
+        int result = decompose(cur, x, 0, seed, budget, timer, millis, stats, passes);
+        activeErrors = &kernels.errors;
+        return result;
     }
 
     // ---- the sequential strategy ----
@@ -694,6 +775,22 @@ cpu::DeriveResult GpuDeriver::derive(const cpu::DeriveOptions& options, bool rea
     for (uint32_t plant = 0; plant < m.plants; ++plant)
         runBlock(plant, speciesOf(plant).endBlock, 0, cpu::ControlBlock::End);
 
+    if (options.homomorphism && m.homomorphismMatch) {
+        // As the CPU reference: the homomorphism sees the globals as the Start block sets them, in every plant.
+        for (uint32_t plant = 0; plant < m.plants; ++plant) {
+            const ir::Grammar& g = speciesOf(plant);
+            states[plant].reset(g);
+            cpu::Evaluator evaluator(g, states[plant]);
+            evaluator.key = cpu::controlBlockKey(seed, plant, 0, cpu::ControlBlock::Start);
+            evaluator.exec(g.startBlock, nullptr);
+            growing[plant] = 1;
+        }
+        uploadState();
+        cur = m.applyHomomorphism(cur, seed, budget, timer ? &*timer : nullptr, stats);
+    } else if (options.homomorphism && m.homomorphismHostReason) {
+        throw std::logic_error("the homomorphism cannot run on the device: " + *m.homomorphismHostReason);
+    }
+
     cpu::DeriveResult result;
     result.steps = *std::max_element(derived.begin(), derived.end());
     Stream& final = m.streams[cur];
@@ -720,6 +817,8 @@ cpu::DeriveResult GpuDeriver::derive(const cpu::DeriveOptions& options, bool rea
     if (statsOut) *statsOut = stats;
     return result;
 }
+
+bool GpuDeriver::appliesHomomorphism() const { return !impl_->homomorphismHostReason; }
 
 DeviceModules GpuDeriver::lastString() const {
     const Impl& m = *impl_;

@@ -50,6 +50,11 @@ public:
     GpuDeriver(const GpuDeriver&) = delete;
     GpuDeriver& operator=(const GpuDeriver&) = delete;
 
+    // Whether derive() gives the string under the homomorphism when options.homomorphism asks for it: the
+    // parallel passes can run every species' homomorphism (or none has one). Otherwise derive() throws when
+    // asked; callers read the string back and apply cpu::applyHomomorphismCpu instead.
+    bool appliesHomomorphism() const;
+
     // Derives options.plants plants in one buffer (copies of the grammar, or the species in turn). The string is read back only when
     // `readBack`; otherwise the result's string is empty and `stats` tells the sizes.
     cpu::DeriveResult derive(const cpu::DeriveOptions& options, bool readBack = true, GpuDeriveStats* stats = nullptr);

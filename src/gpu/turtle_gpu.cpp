@@ -201,6 +201,13 @@ struct GpuTurtle::Impl {
 
 DeviceOrgans GpuTurtle::Impl::interpret(const DeviceModules& m, const turtle::FieldOptions& options) {
     const std::uint32_t n = m.count;
+    levels = 0;
+    bytesMoved = 0;
+    if (n == 0) { // nothing to interpret: an empty table, as the CPU turtle leaves
+        turtle::Interpretation empty;
+        empty.spacing = options.spacing > 0 ? options.spacing : 1.0f;
+        return uploadOrgans(ctx, empty);
+    }
     checkRange(n, sizeof(TurtleStep), "steps");
     checkRange(n, sizeof(OrganInstance), "organ instances");
     checkRange(std::uint64_t(n) * kOrganKinds, 4, "organ flags");

@@ -246,5 +246,19 @@ TEST_F(TurtleGpuTest, TheDerivedStringOnTheDeviceMatchesTheCpuTurtle) {
     EXPECT_EQ(compared, 4);
 }
 
+// Plants without modules: an empty table, no instances, nothing dispatched over nothing.
+TEST_F(TurtleGpuTest, EmptyPlantsDrawNothing) {
+    ir::Grammar g = lang::loadGrammarFile((kGrammars / "abop" / "fig1.24a.l").string());
+    cpu::ModuleString empty;
+    empty.plantStart = {0, 0, 0};
+    turtle::TurtleCommands commands = turtle::turtleCommands(g.alphabet);
+    gpu::GpuTurtle turtle(context(), commands, {turtle::turtleSettings(g, g.alphabet)});
+    gpu::UploadedModules modules(context(), empty);
+    turtle::Interpretation got = gpu::readBack(context(), turtle.interpret(modules.view(), {}), 2);
+    EXPECT_TRUE(got.organs.empty());
+    for (uint32_t k = 0; k < shared::kOrganKinds; ++k) EXPECT_EQ(got.count[k], 0u);
+    EXPECT_TRUE(got.bounds.empty());
+}
+
 } // namespace
 } // namespace simeco::test

@@ -54,14 +54,28 @@ private:
     ir::Grammar& g_;
     std::map<std::array<float, 3>, int> colorIndex_;
 
+    // The stage's Color, tinted by its Material's diffuse factor (MTRL's first three numbers, scaled so that
+    // the largest is 1: the tint changes the hue, the Color keeps its brightness).
     int colorOf(const ir::EcoOrgan& organ, const ir::EcoStage* stage, EcoOrganKind kind) {
         const ir::EcoColor* c = nullptr;
         if (stage && stage->color) c = &*stage->color;
         else if (organ.defaultStage && organ.defaultStage->color) c = &*organ.defaultStage->color;
         if (!c) return kind == EcoOrganKind::Stem || kind == EcoOrganKind::Root ? 1 : 2;
-        std::array<float, 3> rgb = {srgbToLinear(std::clamp(c->r.typical(), 0.0f, 1.0f)),
-                                     srgbToLinear(std::clamp(c->g.typical(), 0.0f, 1.0f)),
-                                     srgbToLinear(std::clamp(c->b.typical(), 0.0f, 1.0f))};
+        std::array<float, 3> tint = {1.0f, 1.0f, 1.0f};
+        const ir::EcoMaterial* material = nullptr;
+        if (stage && stage->material) material = &*stage->material;
+        else if (organ.defaultStage && organ.defaultStage->material) material = &*organ.defaultStage->material;
+        if (material) {
+            for (size_t k = 0; k < 3; ++k) tint[k] = std::max(material->values[k].typical(), 0.0f);
+            float largest = std::max({tint[0], tint[1], tint[2]});
+            if (largest > 0.0f)
+                for (float& t : tint) t /= largest;
+            else
+                tint = {1.0f, 1.0f, 1.0f};
+        }
+        std::array<float, 3> rgb = {srgbToLinear(std::clamp(c->r.typical() * tint[0], 0.0f, 1.0f)),
+                                     srgbToLinear(std::clamp(c->g.typical() * tint[1], 0.0f, 1.0f)),
+                                     srgbToLinear(std::clamp(c->b.typical() * tint[2], 0.0f, 1.0f))};
         auto it = colorIndex_.find(rgb);
         if (it != colorIndex_.end()) return it->second;
         if (g_.view.palette.size() >= 256) return 2; // a palette holds 256 colours

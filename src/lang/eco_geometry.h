@@ -9,8 +9,8 @@
 namespace simeco::lang {
 
 // Adds to `g` (the plant's compiled grammar) one homomorphism production per organ stage the script
-// describes and one per organ for every other stage, a colour palette with the stages' colours, and the leaf
-// surface:
+// describes and one per organ for every other stage, a colour palette with the stages' colours (tinted by
+// their materials' diffuse factors), and the leaf surface:
 //   stem S, root R:  ;(colour) !(width) G(length)   length = GrowRate x GrowTime, width = BroadenRate x GrowTime
 //   leaf L:          ;(colour) ~ leaf(size)          size = the leaf model's, scaled by 1 + the growth of
 //                                                    stages 0 to its own (leaves pass through their stages

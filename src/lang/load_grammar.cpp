@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "lang/color_map.h"
+#include "lang/material_file.h"
 #include "lang/cpfg_parser.h"
 #include "lang/cpfg_preprocessor.h"
 #include "lang/cpfg_view.h"
@@ -52,7 +53,9 @@ ir::Grammar loadGrammarFile(const std::string& path) {
     ir::Grammar g = parseCpfg(preprocessFile(path, view.macros), std::move(view.functions));
     g.view = view.view;
     g.curves = std::move(view.curves);
+    // A model is coloured by its colour map (`cpfg -m`) or, without one, by its materials (`cpfg -M`).
     if (std::string map = findModelFile(path, ".map"); !map.empty()) g.view.palette = readColorMap(map);
+    else if (std::string mat = findModelFile(path, ".mat"); !mat.empty()) g.view.palette = readMaterialColors(mat);
     return g;
 }
 

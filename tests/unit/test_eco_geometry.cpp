@@ -70,6 +70,21 @@ TEST(EcoGeometry, RotuSpinsTheTiltedBranchAboutTheParentAxis) {
     EXPECT_NEAR(glm::length(b - c), 0.0f, 1e-5f); // the order the script writes them in does not matter
 }
 
+// MTRL's diffuse factor tints the Color: (0.5, 1.0, 0.0) keeps green, drops red and blue.
+TEST(EcoGeometry, MaterialTintsTheColour) {
+    turtle::Interpretation r = interpretEco(R"(EcoSystem 1.0 "t" { Plant "p" {
+        DerivationLength = 0;
+        Stem { Default { GrowRate = 1.0; GrowTime = 1.0; Color = RGBA(1.0, 1.0, 1.0, 1.0);
+                         Material = MTRL(0.5, 1.0, 0.0, 0.1, 0.1, 0.1); } }
+        Grow { w = S(0); }
+    } })");
+    ASSERT_EQ(r.count[shared::kOrganStem], 1u);
+    const shared::OrganInstance& stem = r.organs[0];
+    EXPECT_NEAR(stem.color.x, 0.2140f, 1e-3f); // sRGB 0.5 as linear
+    EXPECT_FLOAT_EQ(stem.color.y, 1.0f);
+    EXPECT_FLOAT_EQ(stem.color.z, 0.0f);
+}
+
 TEST(EcoGeometry, SeedScenesDrawStemsAndLeaves) {
     for (const char* scene : {"lantana-camara.eco", "garden.eco"}) {
         SCOPED_TRACE(scene);

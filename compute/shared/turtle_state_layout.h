@@ -69,6 +69,10 @@ SIMECO_CONST kMarkTube = 32u;          // a cylinder point that drew a tube segm
 SIMECO_CONST kMarkTubeBreak = 64u;     // `[`, @Gs: the next tube segment does not continue the last one
 SIMECO_CONST kMarkPolygon = 128u;      // `{`: a polygon's first module
 
+// A cylinder point `@Gc(n)` draws the tube from the last one as n segments (at most this many) along the
+// Hermite curve whose tangents are the turtle's headings at the two points, each as long as the chord.
+SIMECO_CONST kTubeMaxSegments = 64u;
+
 // A cylinder point draws a tube segment from the last one when they lie further apart than this times one
 // plus the last point's distance from the plant's root: shorter segments' directions are rounding noise.
 #ifdef __cplusplus

@@ -1,29 +1,31 @@
-// Turtle: which organ each module draws, if any, as one flag per organ kind (flags[kind * count + module]);
-// their exclusive scan is every organ's place in the instance buffer, grouped by kind and in module order
-// within a kind. Cylinder points that draw a tube segment are marked, so the next one can join it.
+// Turtle: which organ each module draws, if any, as a count per organ kind (flags[kind * count + module]: 1,
+// or a tube's segments); their exclusive scan is every organ's place in the instance buffer, grouped by kind
+// and in module order within a kind. Cylinder points that draw a tube are marked, so the next one can join it.
 #version 450
 #extension GL_GOOGLE_include_directive : require
 #include "shared/derive_layout.h"
 #include "shared/turtle_layout.h"
 #include "shared/turtle_state_layout.h"
-layout(local_size_x = kTurtleWorkgroupSize) in;
-layout(set = 0, binding = 0, std430) readonly buffer Commands { uint commands[]; };
-layout(set = 0, binding = 1, std430) buffer Marks { uint marks[]; };
-layout(set = 0, binding = 2, std430) readonly buffer TriangleFirst { uint triangleFirst[]; };
-layout(set = 0, binding = 3, std430) readonly buffer CylinderAnchors { uint cylinderAnchors[]; };
-layout(set = 0, binding = 4, std430) readonly buffer CylinderStarts { uint cylinderStarts[]; };
-layout(set = 0, binding = 5, std430) readonly buffer States { TurtleState states[]; };
-layout(set = 0, binding = 6, std430) writeonly buffer Kinds { uint kinds[]; };
-layout(set = 0, binding = 7, std430) writeonly buffer Flags { uint flags[]; };
-layout(push_constant) uniform Push { TurtlePush pc; };
+#include "turtle/turtle_buffers.glsl"
+layout(set = 0, binding = 5, std430) readonly buffer Commands { uint commands[]; };
+layout(set = 0, binding = 6, std430) buffer Marks { uint marks[]; };
+layout(set = 0, binding = 7, std430) readonly buffer TriangleFirst { uint triangleFirst[]; };
+layout(set = 0, binding = 8, std430) readonly buffer CylinderAnchors { uint cylinderAnchors[]; };
+layout(set = 0, binding = 9, std430) readonly buffer CylinderStarts { uint cylinderStarts[]; };
+layout(set = 0, binding = 10, std430) readonly buffer States { TurtleState states[]; };
+layout(set = 0, binding = 11, std430) writeonly buffer Kinds { uint kinds[]; };
+layout(set = 0, binding = 12, std430) writeonly buffer Flags { uint flags[]; };
+
+#include "turtle/turtle_math.glsl"
+#include "turtle/turtle_modules.glsl"
 
 const uint kNoOrgan = 0xFFFFFFFFu;
 
 void main() {
-    uint i = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * gl_WorkGroupSize.x + gl_LocalInvocationID.x;
+    uint i = invocationIndex();
     if (i >= pc.count) return;
     uint command = commands[i];
-    uint kind = kNoOrgan;
+    uint kind = kNoOrgan, organs = 1u;
     if (command == kTurtleDraw && (marks[i] & kMarkStem) != 0u) kind = kOrganStem;
     else if (command == kTurtleSphere) kind = kOrganSphere;
     else if (command == kTurtleDisc || command == kTurtleDiscFacing) kind = kOrganDisc;
@@ -34,9 +36,10 @@ void main() {
         vec3 from = states[cylinderAnchors[i]].position.xyz;
         if (length(states[i].position.xyz - from) > kTubeEpsilon * (1.0 + length(from))) {
             kind = kOrganStem;
+            organs = tubeSegments(paramAt(i, 0u, 1.0));
             marks[i] |= kMarkTube;
         }
     }
     kinds[i] = kind;
-    for (uint k = 0u; k < kOrganKinds; ++k) flags[k * pc.count + i] = k == kind ? 1u : 0u;
+    for (uint k = 0u; k < kOrganKinds; ++k) flags[k * pc.count + i] = k == kind ? organs : 0u;
 }

@@ -18,22 +18,65 @@ layout(set = 0, binding = 13, std430) readonly buffer CylinderAnchors { uint cyl
 layout(set = 0, binding = 14, std430) readonly buffer Palettes { vec4 palettes[]; };
 layout(set = 0, binding = 15, std430) readonly buffer SurfaceScales { float surfaceScales[]; };
 layout(set = 0, binding = 16, std430) readonly buffer SurfaceShapes { uint surfaceShapes[]; };
-layout(set = 0, binding = 17, std430) writeonly buffer Instances { OrganInstance instances[]; };
+layout(set = 0, binding = 17, std430) buffer Instances { OrganInstance instances[]; };
 layout(set = 0, binding = 18, std430) writeonly buffer Slots { uint slots[]; };
 // Each plant's box in plant-local coordinates: minima of plant p at 4p, maxima at 4 (plants + p).
 layout(set = 0, binding = 19, std430) buffer PlantBounds { int plantBounds[]; };
+// The last instance each module wrote (its first is in slots): a tube's last segment, which the next joins.
+layout(set = 0, binding = 20, std430) writeonly buffer LastSlots { uint lastSlots[]; };
 
 #include "turtle/turtle_math.glsl"
 #include "turtle/turtle_modules.glsl"
 #include "turtle/organ_bounds.glsl"
-
-const uint kNoOrgan = 0xFFFFFFFFu;
 
 // An up vector for a segment along `heading`: the turtle's up with its heading component removed.
 vec3 perpendicularUp(vec3 heading, TurtleState s) {
     vec3 u = s.up.xyz - heading * dot(s.up.xyz, heading);
     if (length(u) < 1e-6) u = s.left.xyz - heading * dot(s.left.xyz, heading);
     return normalize(u);
+}
+
+const uint kNoOrgan = 0xFFFFFFFFu;
+
+void growPlantBounds(uint plant, OrganInstance o) {
+    Box b = organBox(o);
+    for (uint axis = 0u; axis < 3u; ++axis) {
+        atomicMin(plantBounds[plant * 4u + axis], boundsKey(b.lo[axis]));
+        atomicMax(plantBounds[(pc.plants + plant) * 4u + axis], boundsKey(b.hi[axis]));
+    }
+}
+
+// A tube from the last control point along the curve the headings there and here describe (tubeCurve), in
+// the segments the point asks for, joined to each other; the join to the tube before is links.comp's.
+void emitTube(OrganInstance o, uint i, uint slot, TurtleState after) {
+    TurtleState anchor = states[cylinderAnchors[i]];
+    vec3 chord = after.position.xyz - anchor.position.xyz;
+    float len = length(chord);
+    uint segments = tubeSegments(paramAt(i, 0u, 1.0));
+    float r0 = 0.5 * anchor.heading.w * after.up.w, r1 = 0.5 * after.heading.w * after.up.w;
+    vec3 from = anchor.position.xyz;
+    vec3 previous = vec3(0);
+    for (uint k = 0u; k < segments; ++k) {
+        float t0 = float(k) / float(segments), t1 = float(k + 1u) / float(segments);
+        vec3 to = k + 1u == segments
+                      ? after.position.xyz
+                      : tubeCurve(anchor.position.xyz, anchor.heading.xyz, after.position.xyz, after.heading.xyz, len, t1);
+        vec3 d = to - from;
+        float l = length(d);
+        vec3 heading = l > 0.0 ? d / l : chord / len;
+        o.position = vec4(from, l);
+        o.heading = vec4(heading, r0 + (r1 - r0) * t0);
+        o.up = vec4(perpendicularUp(heading, after), r0 + (r1 - r0) * t1);
+        o.previousHeading = vec4(previous, 0);
+        o.nextHeading = vec4(0);
+        if (k > 0u) instances[slot + k - 1u].nextHeading = vec4(heading, 0);
+        instances[slot + k] = o;
+        growPlantBounds(o.plant, o);
+        previous = heading;
+        from = to;
+    }
+    slots[i] = slot;
+    lastSlots[i] = slot + segments - 1u;
 }
 
 void main() {
@@ -71,13 +114,8 @@ void main() {
         o.heading = vec4(states[trianglePrevious[i]].position.xyz, 0);
         o.up = vec4(after.position.xyz, 0);
     } else if (command == kTurtleCylinderPoint) {
-        TurtleState anchor = states[cylinderAnchors[i]];
-        vec3 d = after.position.xyz - anchor.position.xyz;
-        float len = length(d);
-        vec3 heading = d / len;
-        o.position = vec4(anchor.position.xyz, len);
-        o.heading = vec4(heading, 0.5 * anchor.heading.w * after.up.w);
-        o.up = vec4(perpendicularUp(heading, after), 0.5 * after.heading.w * after.up.w);
+        emitTube(o, i, offsets[kind * pc.count + i], after);
+        return;
     } else if (kind == kOrganStem) {
         float radius = 0.5 * before.heading.w * scale;
         o.position = vec4(before.position.xyz, paramAt(i, 0u, sp.step) * scale);
@@ -101,9 +139,6 @@ void main() {
     uint slot = offsets[kind * pc.count + i];
     instances[slot] = o;
     slots[i] = slot;
-    Box b = organBox(o);
-    for (uint axis = 0u; axis < 3u; ++axis) {
-        atomicMin(plantBounds[plant * 4u + axis], boundsKey(b.lo[axis]));
-        atomicMax(plantBounds[(pc.plants + plant) * 4u + axis], boundsKey(b.hi[axis]));
-    }
+    lastSlots[i] = slot;
+    growPlantBounds(plant, o);
 }

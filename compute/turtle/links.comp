@@ -1,5 +1,6 @@
-// Turtle: joins each stem or tube segment to the one it continues (found by the searches up the tree), so the
-// renderer mitres their common end: this segment learns the heading below it, the one below learns this one's.
+// Turtle: joins each stem segment or tube to the one it continues (found by the searches up the tree), so the
+// renderer mitres their common end: this segment (a tube's first) learns the heading below it, the one below
+// (a tube's last) learns this one's.
 // A segment is continued by at most one other (a branch starts afresh), so no two invocations write the same
 // field.
 #version 450
@@ -15,6 +16,7 @@ layout(set = 0, binding = 3, std430) readonly buffer Slots { uint slots[]; };
 layout(set = 0, binding = 4, std430) readonly buffer StemBelow { uint stemBelow[]; };
 layout(set = 0, binding = 5, std430) readonly buffer TubeBelow { uint tubeBelow[]; };
 layout(set = 0, binding = 6, std430) buffer Instances { OrganInstance instances[]; };
+layout(set = 0, binding = 7, std430) readonly buffer LastSlots { uint lastSlots[]; };
 layout(push_constant) uniform Push { TurtlePush pc; };
 
 void main() {
@@ -24,7 +26,7 @@ void main() {
     uint below = tube ? tubeBelow[i] : stemBelow[i];
     uint joined = tube ? kMarkTube : kMarkStem;
     if (below == kNoModule || (marks[below] & joined) == 0u) return;
-    uint self = slots[i], other = slots[below];
+    uint self = slots[i], other = lastSlots[below]; // a tube's first segment joins the last one before
     instances[self].previousHeading = vec4(instances[other].heading.xyz, 0);
     instances[other].nextHeading = vec4(instances[self].heading.xyz, 0);
 }

@@ -69,6 +69,15 @@ void setHeadingAndUp(inout Frame f, vec3 h, vec3 u) {
     f.up = cross(h, f.left);
 }
 
+vec3 tubeCurve(vec3 p0, vec3 h0, vec3 p1, vec3 h1, float chord, float t) {
+    float t2 = t * t, t3 = t2 * t;
+    return p0 * (2.0 * t3 - 3.0 * t2 + 1.0) + h0 * (chord * (t3 - 2.0 * t2 + t)) + p1 * (-2.0 * t3 + 3.0 * t2) +
+           h1 * (chord * (t3 - t2));
+}
+
+// Segments of the tube a cylinder point with parameter `requested` draws.
+uint tubeSegments(float requested) { return uint(clamp(floor(requested + 0.5), 1.0, float(kTubeMaxSegments))); }
+
 Frame frameOf(TurtleState s) { return Frame(s.heading.xyz, s.left.xyz, s.up.xyz); }
 
 void setFrame(inout TurtleState s, Frame f) {

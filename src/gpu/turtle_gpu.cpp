@@ -69,7 +69,7 @@ vk::Buffer deviceBufferWith(const vk::Context& ctx, std::span<const T> values) {
 }
 
 // Rounds of pointer jumping that resolve any path of up to `count` modules (each round doubles the reach),
-// made odd so that a ping-pong starting in the first buffer ends there.
+// made odd so that a ping-pong starting in the first buffer ends in the second.
 std::uint32_t jumpRounds(std::uint32_t count) {
     std::uint32_t rounds = std::bit_width(std::max(count, 1u)) + 1;
     return rounds | 1u;
@@ -209,7 +209,6 @@ DeviceOrgans GpuTurtle::Impl::interpret(const DeviceModules& m, const turtle::Fi
         return uploadOrgans(ctx, empty);
     }
     checkRange(n, sizeof(TurtleStep), "steps");
-    checkRange(n, sizeof(OrganInstance), "organ instances");
     checkRange(std::uint64_t(n) * kOrganKinds, 4, "organ flags");
     TurtlePush push = base;
     push.count = n;
@@ -218,7 +217,8 @@ DeviceOrgans GpuTurtle::Impl::interpret(const DeviceModules& m, const turtle::Fi
     push.spacing = options.spacing;
 
     vk::Buffer commands = deviceBuffer(n, 4), parents = deviceBuffer(n, 4), plantOf = deviceBuffer(n, 4),
-               marks = deviceBuffer(n, 4), kinds = deviceBuffer(n, 4), slots = deviceBuffer(n, 4);
+               marks = deviceBuffer(n, 4), kinds = deviceBuffer(n, 4), slots = deviceBuffer(n, 4),
+               lastSlots = deviceBuffer(n, 4);
     vk::Buffer steps[2] = {deviceBuffer(n, sizeof(TurtleStep)), deviceBuffer(n, sizeof(TurtleStep))};
     vk::Buffer pointers[2] = {deviceBuffer(n, 4), deviceBuffer(n, 4)};
     vk::Buffer statesBuffer = deviceBuffer(n, sizeof(TurtleState));
@@ -233,8 +233,6 @@ DeviceOrgans GpuTurtle::Impl::interpret(const DeviceModules& m, const turtle::Fi
                offsets = deviceBuffer(std::uint64_t(n) * kOrganKinds, 4);
     vk::Buffer plantBounds = deviceBuffer(std::uint64_t(m.plants) * 8, 4);
     DeviceOrgans out;
-    out.capacity = n;
-    out.instances = vk::Buffer(ctx, bytes(n, sizeof(OrganInstance)), vk::MemoryUsage::DeviceLocal);
     out.table = vk::Buffer(ctx, sizeof(OrganTable), vk::MemoryUsage::DeviceLocal);
     out.field = vk::Buffer(ctx, 4, vk::MemoryUsage::DeviceLocal);
     if (scan.capacity() < n * kOrganKinds) scan.reserve(n * kOrganKinds);
@@ -345,8 +343,8 @@ DeviceOrgans GpuTurtle::Impl::interpret(const DeviceModules& m, const turtle::Fi
 
     bytesMoved = trafficOf(n, m.stride, rounds, levelStarts.empty() ? 0 : levelStarts.back() + levelSizes.back());
 
-    // Pass 3: non-linear modules level by level, then every state; organs classified, placed by a scan,
-    // written, joined, and moved to their plants' places in the field.
+    // Pass 3: non-linear modules level by level, then every state; organs classified and counted (a tube
+    // may draw several segments) and placed by a scan, whose total sizes the instance buffer.
     ctx.submitAndWait([&](VkCommandBuffer cmd) {
         if (deepest > 0) {
             levelScatter.dispatch(cmd, {marks, levelsOf, cursors, order}, push, groups);
@@ -367,19 +365,28 @@ DeviceOrgans GpuTurtle::Impl::interpret(const DeviceModules& m, const turtle::Fi
                               pointers[0], steps[1], pointers[1], plantOf, statesBuffer},
                         push, groups);
         vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
-        classify.dispatch(cmd, {commands, marks, triangleFirst, cylinderAnchors, cylinderStarts, statesBuffer, kinds,
-                                flags},
+        classify.dispatch(cmd, {symbols, params, starts, commandTable, speciesTable, commands, marks, triangleFirst,
+                                cylinderAnchors, cylinderStarts, statesBuffer, kinds, flags},
                           push, groups);
         vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
         if (marked & kMarkCylinderStart) search(cmd, kMarkTube, kMarkTubeBreak, tubeBelow);
         scan.record(cmd, flags, offsets, n * kOrganKinds);
-        vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+        vk::memoryBarrier(cmd, Hazard::ComputeToHost);
+    });
+    std::uint32_t organs = vk::downloadVector<std::uint32_t>(ctx, scan.totalBuffer(), 1)[0];
+    out.capacity = organs;
+    checkRange(organs, sizeof(OrganInstance), "organ instances");
+    out.instances = vk::Buffer(ctx, bytes(organs, sizeof(OrganInstance)), vk::MemoryUsage::DeviceLocal);
+
+    // Pass 4: organs written, joined, and moved to their plants' places in the field.
+    ctx.submitAndWait([&](VkCommandBuffer cmd) {
         emit.dispatch(cmd, {symbols, params, starts, commandTable, speciesTable, commands, parents, plantOf,
                             statesBuffer, kinds, offsets, triangleFirst, trianglePrevious, cylinderAnchors, palettes,
-                            surfaceScales, surfaceShapes, out.instances, slots, plantBounds},
+                            surfaceScales, surfaceShapes, out.instances, slots, plantBounds, lastSlots},
                       push, groups);
         vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
-        links.dispatch(cmd, {commands, marks, kinds, slots, stemBelow, tubeBelow, out.instances}, push, groups);
+        links.dispatch(cmd, {commands, marks, kinds, slots, stemBelow, tubeBelow, out.instances, lastSlots}, push,
+                       groups);
         field.dispatch(cmd, {offsets, scan.totalBuffer(), plantBounds, out.table, out.field}, push, 1);
         vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
         place.dispatch(cmd, {scan.totalBuffer(), out.field, out.instances, out.table}, push, groups);

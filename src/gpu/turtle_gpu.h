@@ -2,7 +2,7 @@
 // passes over the module stream, the same organs, in the same order, as the CPU reference turtle
 // (turtle/turtle_cpu.h). The kernels are in compute/turtle; the method is described in
 // compute/shared/turtle_state_layout.h. The host reads back only which marks occur (to skip searches nothing
-// needs) and the sizes of the levels of non-linear commands.
+// needs), the sizes of the levels of non-linear commands, and the number of organs (to size their buffer).
 #pragma once
 
 #include <cstdint>
@@ -33,8 +33,8 @@ private:
     std::uint32_t count_ = 0, plants_ = 0, stride_ = 1;
 };
 
-// What the turtle leaves on the device: room for one instance per module, and the table that says how many
-// of each kind were written, where they start and their bounds.
+// What the turtle leaves on the device: the instances, and the table that says how many of each kind were
+// written, where they start and their bounds.
 struct DeviceOrgans {
     vk::Buffer instances;
     vk::Buffer table;

@@ -30,11 +30,16 @@ struct TurtleState {
     // The generalized cylinder's last control point, when one is open.
     bool cylinderOpen = false;
     glm::vec3 anchor{0.0f};
+    glm::vec3 anchorHeading{0.0f, 1.0f, 0.0f};
     float anchorWidth = 0.0f;
     int64_t lastTube = -1;
 };
 
 shared::vec4 v4(glm::vec3 v, float w) { return {v.x, v.y, v.z, w}; }
+
+uint32_t tubeSegments(float requested) {
+    return uint32_t(std::clamp(std::floor(requested + 0.5f), 1.0f, float(kTubeMaxSegments)));
+}
 glm::vec3 v3(const shared::vec4& v) { return {v.x, v.y, v.z}; }
 
 // An up vector for a segment along `heading`: the turtle's up with its heading component removed.
@@ -126,24 +131,39 @@ private:
         st.lastStem = index;
     }
 
+    // A tube from the last control point along the curve the headings there and here describe, in as many
+    // segments as the point asks for, each joined to the one before.
     void cylinderPoint(TurtleState& st, size_t module) {
         if (!st.cylinderOpen) return;
-        glm::vec3 d = st.position - st.anchor;
-        float length = glm::length(d);
+        glm::vec3 chord = st.position - st.anchor;
+        float length = glm::length(chord);
         if (length > kTubeEpsilon * (1.0f + glm::length(st.anchor))) {
-            glm::vec3 heading = d / length;
-            OrganInstance& o = emit(kOrganStem, module, st);
-            o.position = v4(st.anchor, length);
-            o.heading = v4(heading, 0.5f * st.anchorWidth * st.scale);
-            o.up = v4(perpendicularUp(heading, st.frame), 0.5f * st.width * st.scale);
-            int64_t index = int64_t(organs_.size()) - 1;
-            if (st.lastTube >= 0) {
-                o.previousHeading = v4(v3(organs_[size_t(st.lastTube)].heading), 0);
-                organs_[size_t(st.lastTube)].nextHeading = v4(heading, 0);
+            uint32_t segments = tubeSegments(param(module, 0, 1.0f));
+            float r0 = 0.5f * st.anchorWidth * st.scale, r1 = 0.5f * st.width * st.scale;
+            glm::vec3 from = st.anchor;
+            for (uint32_t k = 0; k < segments; ++k) {
+                float t0 = float(k) / float(segments), t1 = float(k + 1) / float(segments);
+                glm::vec3 to = k + 1 == segments
+                                   ? st.position
+                                   : tubeCurve(st.anchor, st.anchorHeading, st.position, st.frame.heading, length, t1);
+                glm::vec3 d = to - from;
+                float l = glm::length(d);
+                glm::vec3 heading = l > 0.0f ? d / l : chord / length;
+                OrganInstance& o = emit(kOrganStem, module, st);
+                o.position = v4(from, l);
+                o.heading = v4(heading, r0 + (r1 - r0) * t0);
+                o.up = v4(perpendicularUp(heading, st.frame), r0 + (r1 - r0) * t1);
+                int64_t index = int64_t(organs_.size()) - 1;
+                if (st.lastTube >= 0) {
+                    o.previousHeading = v4(v3(organs_[size_t(st.lastTube)].heading), 0);
+                    organs_[size_t(st.lastTube)].nextHeading = v4(heading, 0);
+                }
+                st.lastTube = index;
+                from = to;
             }
-            st.lastTube = index;
         }
         st.anchor = st.position;
+        st.anchorHeading = st.frame.heading;
         st.anchorWidth = st.width;
     }
 
@@ -233,6 +253,7 @@ private:
         case kTurtleCylinderStart:
             st.cylinderOpen = true;
             st.anchor = st.position;
+            st.anchorHeading = st.frame.heading;
             st.anchorWidth = st.width;
             st.lastTube = -1;
             break;

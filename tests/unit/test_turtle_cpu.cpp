@@ -1,6 +1,8 @@
 // The reference turtle, case by case, with geometry worked out by hand.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "compute/shared/organ_layout.h"
 #include "grammar_text.h"
 #include "turtle/turtle_commands.h"
@@ -90,6 +92,27 @@ TEST(TurtleCpu, PlantsStandInAGridSpacedByTheWidestPlant) {
     expectNear(r.plantOrigins[0], {-3, 0, -3});
     expectNear(r.plantOrigins[3], {3, 0, 3});
     EXPECT_EQ(r.organs[3].plant, 3u);
+}
+
+// A generalized cylinder bends along the Hermite curve of the headings at its control points: from the
+// origin heading up to (-1, 1, 0) heading -x, in the four segments @Gc(4) asks for, joined end to end.
+TEST(TurtleCpu, GeneralizedCylindersFollowTheHeadingsInSegments) {
+    turtle::Interpretation r = interpret(lsystem("@GsF(1)+(90)F(1)@Gc(4)", "", 0));
+    ASSERT_EQ(r.count[shared::kOrganStem], 6u); // two F segments, four tube segments
+    const shared::OrganInstance* tube = &r.organs[r.first[shared::kOrganStem] + 2];
+    expectNear(xyz(tube[0].position), {0, 0, 0});
+    float chord = std::sqrt(2.0f);
+    glm::vec3 middle = glm::vec3(-0.5f, 0.5f, 0.0f) + 0.125f * chord * glm::vec3(1.0f, 1.0f, 0.0f);
+    expectNear(xyz(tube[2].position), middle); // the curve at t = 1/2, off the chord
+    glm::vec3 end = xyz(tube[3].position) + xyz(tube[3].heading) * tube[3].position.w;
+    expectNear(end, {-1, 1, 0});
+    EXPECT_GT(tube[0].heading.y, 0.8f);  // leaves the origin about upward
+    EXPECT_LT(tube[3].heading.x, -0.8f); // arrives about along -x
+    for (int k = 1; k < 4; ++k) {
+        expectNear(xyz(tube[k].previousHeading), xyz(tube[k - 1].heading));
+        expectNear(xyz(tube[k - 1].nextHeading), xyz(tube[k].heading));
+        expectNear(xyz(tube[k].position), xyz(tube[k - 1].position) + xyz(tube[k - 1].heading) * tube[k - 1].position.w);
+    }
 }
 
 TEST(TurtleCpu, TropismBendsTheNextSegmentTowardTheDirection) {

@@ -18,6 +18,8 @@ BracketTree::BracketTree(const vk::Context& context, GpuScan& scan)
       bracketDepth_(vk::ComputePipeline::embedded(context, "derive/bracket_depth")),
       depthLeaves_(vk::ComputePipeline::embedded(context, "derive/depth_leaves")),
       depthLevel_(vk::ComputePipeline::embedded(context, "derive/depth_level")),
+      // Kernels that may match brackets bind the tree even when a pass needs none: it always exists.
+      tree_(context, 4, vk::MemoryUsage::DeviceLocal),
       levelInfo_(context, 2 * kMaxDepthLevels * 4, vk::MemoryUsage::Upload) {}
 
 void BracketTree::record(VkCommandBuffer cmd, const vk::Buffer& symbols, std::uint32_t count) {
@@ -35,10 +37,11 @@ void BracketTree::record(VkCommandBuffer cmd, const vk::Buffer& symbols, std::ui
     std::memcpy(levelInfo_.mapped(), info, sizeof info);
     std::uint64_t elements = std::max(count, 1u);
     if (!deltas_ || deltas_.size() < elements * 4) {
-        deltas_ = vk::Buffer(context_, elements * 4, vk::MemoryUsage::DeviceLocal);
-        before_ = vk::Buffer(context_, elements * 4, vk::MemoryUsage::DeviceLocal);
+        deltas_ = vk::Buffer(context_, (elements + elements / 2) * 4, vk::MemoryUsage::DeviceLocal);
+        before_ = vk::Buffer(context_, (elements + elements / 2) * 4, vk::MemoryUsage::DeviceLocal);
     }
-    if (!tree_ || tree_.size() < offset * 4) tree_ = vk::Buffer(context_, offset * 4, vk::MemoryUsage::DeviceLocal);
+    // Grown with room to spare, as strings grow step after step.
+    if (tree_.size() < offset * 4) tree_ = vk::Buffer(context_, (offset + offset / 2) * 4, vk::MemoryUsage::DeviceLocal);
     if (scan_.capacity() < count) scan_.reserve(count);
 
     shared::DeriveHelperPush push{count, 0, 0, 0};

@@ -23,7 +23,8 @@ public:
     BracketTree(const vk::Context& context, GpuScan& scan);
 
     // Records building the tree over the first `count` symbols (uint: symbol | parameter count << 24), sizing
-    // the buffers first. Ends with the tree written for compute kernels to read.
+    // the buffers first (no earlier recording that uses them may still be pending). Ends with the tree written
+    // for compute kernels to read.
     void record(VkCommandBuffer cmd, const vk::Buffer& symbols, std::uint32_t count);
 
     const vk::Buffer& tree() const { return tree_; }

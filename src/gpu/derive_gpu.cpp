@@ -12,6 +12,7 @@
 
 #include "compute/shared/derive_layout.h"
 #include "cpu/evaluator.h"
+#include "gpu/bracket_tree.h"
 #include "gpu/derive_codegen.h"
 #include "gpu/glsl_compiler.h"
 #include "gpu/scan.h"
@@ -60,12 +61,13 @@ struct GpuDeriver::Impl {
     std::optional<std::string> homomorphismHostReason;
     // The error sites of the kernels being run (the homomorphism's while it runs).
     const std::vector<ErrorSite>* activeErrors = nullptr;
-    vk::ComputePipeline bracketDepth, depthLeaves, depthLevel, plantStarts, cutApply;
+    vk::ComputePipeline plantStarts, cutApply;
     vk::ComputePipeline greedyReduce, greedyScan, greedyMark, homomorphismStart;
     GpuScan scan;
-    vk::Buffer contextSkip, funcTables, errors, levelInfo, readback;
+    BracketTree brackets; // after scan, which it uses
+    vk::Buffer contextSkip, funcTables, errors, readback;
     vk::Buffer globals, arrays, plantFrozen;
-    vk::Buffer deltas, before, tree, counts, choices, drawStarts, offsets, cutDelta, cutBefore, examined;
+    vk::Buffer counts, choices, drawStarts, offsets, cutDelta, cutBefore, examined;
     vk::Buffer chunkFunctions, chunkEntries; // the greedy walk over predecessors of several modules
     // The sequential strategy: persistent locals, copies of the state for the counting pass, the decomposition
     // stack, and each plant's module count.
@@ -77,22 +79,19 @@ struct GpuDeriver::Impl {
     std::vector<uint32_t> hostPlantTable; // the current stream's plant table, kept on the host
     uint32_t lastFlags = 0; // errors[1] of the last submit
     uint64_t scratchCapacity = 0;
-    uint64_t treeCapacity = 0;
     Stream streams[3];
     uint32_t plants = 1;
     double compileSeconds = 0;
 
     Impl(const vk::Context& c, std::vector<ir::Grammar> grammars, GpuStrategy requested)
         : ctx(c), species(std::move(grammars)), strategy(requested), stride(1),
-          bracketDepth(vk::ComputePipeline::embedded(c, "derive/bracket_depth")),
-          depthLeaves(vk::ComputePipeline::embedded(c, "derive/depth_leaves")),
-          depthLevel(vk::ComputePipeline::embedded(c, "derive/depth_level")),
           plantStarts(vk::ComputePipeline::embedded(c, "derive/plant_starts")),
           cutApply(vk::ComputePipeline::embedded(c, "derive/cut_apply")),
           greedyReduce(vk::ComputePipeline::embedded(c, "derive/greedy_reduce")),
           greedyScan(vk::ComputePipeline::embedded(c, "derive/greedy_scan")),
           greedyMark(vk::ComputePipeline::embedded(c, "derive/greedy_mark")),
-          homomorphismStart(vk::ComputePipeline::embedded(c, "derive/homomorphism_start")), scan(c) {
+          homomorphismStart(vk::ComputePipeline::embedded(c, "derive/homomorphism_start")), scan(c),
+          brackets(c, scan) {
         if (species.empty()) throw std::invalid_argument("GpuDeriver: no species");
         for (const ir::Grammar& g : species) {
             if (std::optional<std::string> reason = gpuUnsupportedReason(g))
@@ -138,21 +137,14 @@ struct GpuDeriver::Impl {
             for (size_t s = 0; s < symbols; ++s)
                 if (species[sp].skippedInContext(static_cast<ir::SymbolId>(s)))
                     skipBits[sp * rowWords + s / 32] |= 1u << (s % 32);
-        contextSkip = deviceBufferWith(std::span<const uint32_t>(skipBits));
+        contextSkip = vk::deviceBufferWith(ctx, std::span<const uint32_t>(skipBits));
         std::vector<double> tables = kernels.functionTables;
         if (tables.empty()) tables.push_back(0.0);
-        funcTables = deviceBufferWith(std::span<const double>(tables));
+        funcTables = vk::deviceBufferWith(ctx, std::span<const double>(tables));
         errors = vk::Buffer(ctx, 16, vk::MemoryUsage::DeviceLocal);
-        levelInfo = vk::Buffer(ctx, 2 * shared::kMaxDepthLevels * 4, vk::MemoryUsage::Upload);
         readback = vk::Buffer(ctx, 16, vk::MemoryUsage::Readback);
     }
 
-    template <typename T>
-    vk::Buffer deviceBufferWith(std::span<const T> values) {
-        vk::Buffer buffer(ctx, bytes(values.size(), sizeof(T)), vk::MemoryUsage::DeviceLocal);
-        if (!values.empty()) vk::upload(ctx, buffer, std::as_bytes(values));
-        return buffer;
-    }
 
     // The homomorphism's kernels: the decomposition passes of copies of the species whose decomposition is
     // their homomorphism (one pass per depth, contexts in the derived string, no cuts).
@@ -207,32 +199,11 @@ struct GpuDeriver::Impl {
         capacity = std::min<uint64_t>(capacity, ctx.limits().maxStorageBufferRange / 4);
         capacity = std::max<uint64_t>(capacity, count + 1);
         checkRange(count + 1, 4, "per-module scratch");
-        for (vk::Buffer* b : {&deltas, &before, &counts, &choices, &drawStarts, &offsets, &cutDelta, &cutBefore, &examined})
+        for (vk::Buffer* b : {&counts, &choices, &drawStarts, &offsets, &cutDelta, &cutBefore, &examined})
             *b = vk::Buffer(ctx, bytes(capacity, 4), vk::MemoryUsage::DeviceLocal);
         chunkFunctions = vk::Buffer(ctx, bytes(capacity / kGreedyChunk + 1, 4), vk::MemoryUsage::DeviceLocal);
         chunkEntries = vk::Buffer(ctx, bytes(capacity / kGreedyChunk + 1, 4), vk::MemoryUsage::DeviceLocal);
         scratchCapacity = capacity;
-    }
-
-    // The levels of the bracket-depth min tree over `count` leaves: offsets and sizes for levelInfo.
-    uint32_t layoutTree(uint32_t count) {
-        uint32_t info[2 * shared::kMaxDepthLevels] = {};
-        uint64_t offset = 0;
-        uint32_t levels = 0;
-        for (uint32_t size = std::max(count, 1u);; size = (size + 1) / 2) {
-            info[levels] = static_cast<uint32_t>(offset);
-            info[shared::kMaxDepthLevels + levels] = size;
-            offset += size;
-            ++levels;
-            if (size == 1 || levels == shared::kMaxDepthLevels) break;
-        }
-        std::memcpy(levelInfo.mapped(), info, sizeof info);
-        if (treeCapacity < offset) {
-            checkRange(offset, 4, "bracket depths");
-            tree = vk::Buffer(ctx, bytes(offset + offset / 2, 4), vk::MemoryUsage::DeviceLocal);
-            treeCapacity = offset + offset / 2;
-        }
-        return levels;
     }
 
     DerivePush push(uint32_t count, uint32_t step, uint32_t seed, uint32_t pass, uint32_t oldCount, uint32_t depth) const {
@@ -292,26 +263,6 @@ struct GpuDeriver::Impl {
         vkCmdCopyBuffer(cmd, scan.totalBuffer().handle(), readback.handle(), 1, &total);
     }
 
-    void recordBracketDepth(VkCommandBuffer cmd, const Stream& cur) {
-        uint32_t n = cur.count;
-        DeriveHelperPush hp{n, 0, 0, plants};
-        bracketDepth.dispatch(cmd, {cur.sym, deltas}, hp, bracketDepth.groupsFor(n));
-        vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
-        scan.record(cmd, deltas, before, n);
-        vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
-        depthLeaves.dispatch(cmd, {deltas, before, tree}, hp, depthLeaves.groupsFor(n));
-        vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
-        uint32_t levels = 0;
-        const uint32_t* info = reinterpret_cast<const uint32_t*>(levelInfo.mapped());
-        while (levels < shared::kMaxDepthLevels && (levels == 0 || info[shared::kMaxDepthLevels + levels - 1] > 1)) ++levels;
-        for (uint32_t level = 1; level < levels; ++level) {
-            uint32_t size = info[shared::kMaxDepthLevels + level];
-            DeriveHelperPush lp{size, level, 0, plants};
-            depthLevel.dispatch(cmd, {tree, levelInfo}, lp, depthLevel.groupsFor(size));
-            vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
-        }
-    }
-
     // Which modules start a rewrite when predecessors of several modules consume their neighbours.
     void recordGreedyWalk(VkCommandBuffer cmd, const Stream& in) {
         uint32_t n = in.count;
@@ -331,8 +282,8 @@ struct GpuDeriver::Impl {
     // filter and the error word; `rest` follows them.
     void dispatchDerive(VkCommandBuffer cmd, const vk::ComputePipeline& kernel, const Stream& strings,
                         std::initializer_list<vk::BufferRange> rest, const DerivePush& p, uint32_t n) {
-        std::vector<vk::BufferRange> buffers{strings.sym, strings.par, plantTable(strings), tree ? tree : deltas,
-                                             levelInfo, globals, arrays, funcTables, contextSkip, errors,
+        std::vector<vk::BufferRange> buffers{strings.sym, strings.par, plantTable(strings), brackets.tree(),
+                                             brackets.levelInfo(), globals, arrays, funcTables, contextSkip, errors,
                                              plantFrozen};
         buffers.insert(buffers.end(), rest.begin(), rest.end());
         kernel.dispatchBytes(cmd, buffers, std::as_bytes(std::span(&p, 1)), kernel.groupsFor(n));
@@ -354,14 +305,13 @@ struct GpuDeriver::Impl {
         uint32_t n = in.count;
         double millis = 0;
         ensureScratch(n);
-        if (kernels.needsBrackets) layoutTree(n);
         uint32_t pass = stepIndex * shared::kPassesPerStep;
         uint32_t total = submit(
             [&](VkCommandBuffer cmd) {
                 vk::cmdFill(cmd, errors, 0);
                 if (kernels.mayCut) vk::cmdFill(cmd, cutDelta, 0);
                 vk::memoryBarrier(cmd, Hazard::TransferToCompute);
-                if (kernels.needsBrackets && n > 0) recordBracketDepth(cmd, in);
+                if (kernels.needsBrackets && n > 0) brackets.record(cmd, in.sym, n);
                 DerivePush p = push(n, stepIndex, seed, pass, n, 0);
                 dispatchDerive(cmd, *match, in, {counts, choices, drawStarts, cutDelta}, p, n);
                 vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
@@ -473,7 +423,6 @@ struct GpuDeriver::Impl {
         Stream& X = streams[x];
         ensureStream(X, n);
         ensureScratch(n);
-        if (homomorphismKernels.needsBrackets) layoutTree(n);
         double millis = 0;
         submit(
             [&](VkCommandBuffer cmd) {
@@ -486,7 +435,7 @@ struct GpuDeriver::Impl {
                 vk::memoryBarrier(cmd, Hazard::TransferToCompute);
                 DeriveHelperPush hp{n, 0, 0, plants};
                 homomorphismStart.dispatch(cmd, {X.live, X.origin}, hp, homomorphismStart.groupsFor(n));
-                if (homomorphismKernels.needsBrackets) recordBracketDepth(cmd, derived);
+                if (homomorphismKernels.needsBrackets) brackets.record(cmd, derived.sym, n);
                 vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
             },
             timer, millis);
@@ -543,7 +492,7 @@ struct GpuDeriver::Impl {
         uint32_t dispatches = std::max<uint32_t>(1, (longest + chunk - 1) / chunk);
         bool counting = mode == 0;
         // The counting pass runs on copies of the state, so that the writing pass starts from the same one.
-        std::vector<vk::BufferRange> buffers{in.sym, in.par, plantTable(in), tree ? tree : deltas, levelInfo,
+        std::vector<vk::BufferRange> buffers{in.sym, in.par, plantTable(in), brackets.tree(), brackets.levelInfo(),
                                              counting ? globalsCopy : globals, counting ? arraysCopy : arrays,
                                              funcTables, contextSkip, errors, plantFrozen,
                                              counting ? framesCopy : frames, stackSym, stackPar, stackState,
@@ -563,7 +512,6 @@ struct GpuDeriver::Impl {
         uint32_t n = in.count;
         double millis = 0;
         ensureScratch(n);
-        if (kernels.needsBrackets) layoutTree(n);
         ensureStream(out, 1); // bound (unused) while counting
         DerivePush p = push(n, stepIndex, seed, stepIndex * shared::kPassesPerStep, n, 0);
         p.moduleLimit = static_cast<uint32_t>(std::min<uint64_t>(budget, UINT32_MAX - 1));
@@ -576,7 +524,7 @@ struct GpuDeriver::Impl {
                         vkCmdCopyBuffer(cmd, from->handle(), to->handle(), 1, &all);
                     }
                     vk::memoryBarrier(cmd, Hazard::TransferToCompute);
-                    if (kernels.needsBrackets && n > 0) recordBracketDepth(cmd, in);
+                    if (kernels.needsBrackets && n > 0) brackets.record(cmd, in.sym, n);
                     dispatchSequential(cmd, 0, in, out, p, hostPlantTable);
                     vk::memoryBarrier(cmd, Hazard::ComputeToTransfer);
                     VkBufferCopy countsCopy{0, 0, plantCounts.size()};

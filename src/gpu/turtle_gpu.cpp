@@ -61,12 +61,6 @@ TurtleSpecies speciesOf(const turtle::TurtleSettings& t, bool elasticityCommands
     return s;
 }
 
-template <typename T>
-vk::Buffer deviceBufferWith(const vk::Context& ctx, std::span<const T> values) {
-    vk::Buffer buffer(ctx, bytes(values.size(), sizeof(T)), vk::MemoryUsage::DeviceLocal);
-    if (!values.empty()) vk::upload(ctx, buffer, std::as_bytes(values));
-    return buffer;
-}
 
 // Rounds of pointer jumping that resolve any path of up to `count` modules (each round doubles the reach),
 // made odd so that a ping-pong starting in the first buffer ends in the second.
@@ -84,9 +78,9 @@ UploadedModules::UploadedModules(const vk::Context& context, const cpu::ModuleSt
     std::vector<std::uint32_t> words(s.size());
     for (size_t i = 0; i < s.size(); ++i) words[i] = s.sym[i] | (std::uint32_t(s.paramCount[i]) << kSymbolBits);
     std::vector<std::uint32_t> starts(s.plantStart.begin(), s.plantStart.end());
-    symbols_ = deviceBufferWith(context, std::span<const std::uint32_t>(words));
-    params_ = deviceBufferWith(context, std::span<const float>(s.params));
-    plantStarts_ = deviceBufferWith(context, std::span<const std::uint32_t>(starts));
+    symbols_ = vk::deviceBufferWith(context, std::span<const std::uint32_t>(words));
+    params_ = vk::deviceBufferWith(context, std::span<const float>(s.params));
+    plantStarts_ = vk::deviceBufferWith(context, std::span<const std::uint32_t>(starts));
 }
 
 DeviceModules UploadedModules::view() const {
@@ -144,11 +138,11 @@ struct GpuTurtle::Impl {
             }
         }
         std::vector<std::uint32_t> commandWords = commandTableOf(commands);
-        commandTable = deviceBufferWith(c, std::span<const std::uint32_t>(commandWords));
-        speciesTable = deviceBufferWith(c, std::span<const TurtleSpecies>(table));
-        palettes = deviceBufferWith(c, std::span<const shared::vec4>(colors));
-        surfaceScales = deviceBufferWith(c, std::span<const float>(scales));
-        surfaceShapes = deviceBufferWith(c, std::span<const std::uint32_t>(shapes));
+        commandTable = vk::deviceBufferWith(c, std::span<const std::uint32_t>(commandWords));
+        speciesTable = vk::deviceBufferWith(c, std::span<const TurtleSpecies>(table));
+        palettes = vk::deviceBufferWith(c, std::span<const shared::vec4>(colors));
+        surfaceScales = vk::deviceBufferWith(c, std::span<const float>(scales));
+        surfaceShapes = vk::deviceBufferWith(c, std::span<const std::uint32_t>(shapes));
         base.species = static_cast<std::uint32_t>(species.size());
         base.symbols = commands.symbols;
         base.atSymbol = commands.at;
@@ -419,9 +413,9 @@ DeviceOrgans uploadOrgans(const vk::Context& context, const turtle::Interpretati
     float spacing = interpretation.spacing;
     DeviceOrgans organs;
     organs.capacity = static_cast<std::uint32_t>(interpretation.organs.size());
-    organs.instances = deviceBufferWith(context, std::span<const OrganInstance>(interpretation.organs));
-    organs.table = deviceBufferWith(context, std::span<const OrganTable>(&table, 1));
-    organs.field = deviceBufferWith(context, std::span<const float>(&spacing, 1));
+    organs.instances = vk::deviceBufferWith(context, std::span<const OrganInstance>(interpretation.organs));
+    organs.table = vk::deviceBufferWith(context, std::span<const OrganTable>(&table, 1));
+    organs.field = vk::deviceBufferWith(context, std::span<const float>(&spacing, 1));
     return organs;
 }
 

@@ -1,6 +1,7 @@
 // Move-only buffers with their own memory, and the copies between host and device.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -57,6 +58,14 @@ void download(const Context& context, const Buffer& source, std::span<std::byte>
 template <typename T>
 void uploadSpan(const Context& context, const Buffer& destination, std::span<const T> values) {
     upload(context, destination, std::as_bytes(values));
+}
+
+// A device-local buffer holding `values` (at least 4 bytes, so that even an empty one can be bound).
+template <typename T>
+Buffer deviceBufferWith(const Context& context, std::span<const T> values) {
+    Buffer buffer(context, std::max<VkDeviceSize>(values.size_bytes(), 4), MemoryUsage::DeviceLocal);
+    if (!values.empty()) upload(context, buffer, std::as_bytes(values));
+    return buffer;
 }
 
 template <typename T>

@@ -7,37 +7,16 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 export SIMECO_KERNEL_CACHE="$work/kernels" # generated kernels stay out of the user's cache
 
-"$simeco" bench --quick --repeat 2 --warm-up 1 --json "$work/bench.json" >"$work/table.txt" 2>"$work/err.txt"
-code=$?
-if [ $code -ne 0 ]; then
-  echo "FAILED: simeco bench --quick exited $code"
-  cat "$work/err.txt"
-  exit 1
-fi
-if grep -q "vulkan validation" "$work/err.txt"; then
-  echo "FAILED: validation messages"
-  grep "vulkan validation" "$work/err.txt"
-  exit 1
-fi
-if ls "$work"/bench.json.tmp* >/dev/null 2>&1; then
-  echo "FAILED: the temporary JSON file was left behind"
-  exit 1
-fi
-grep -q "GPU modules/s" "$work/table.txt" || { echo "FAILED: no table on stdout"; cat "$work/table.txt"; exit 1; }
+. "$(dirname "$0")/report_checks.sh"
+run_report "simeco bench --quick" "$work/bench.json" "GPU modules/s" \
+  "$simeco" bench --quick --repeat 2 --warm-up 1 --json "$work/bench.json"
 
-python3 - "$work/bench.json" <<'PY'
+PYTHONPATH="$(dirname "$0")" python3 - "$work/bench.json" <<'PY'
 import json, sys
 
+from report_checks import check, finish, positive
+
 report = json.load(open(sys.argv[1]))
-errors = []
-
-def check(condition, message):
-    if not condition:
-        errors.append(message)
-
-def positive(obj, key, where):
-    value = obj.get(key)
-    check(isinstance(value, (int, float)) and value > 0, f"{where}: {key} = {value!r}, expected a positive number")
 
 for key in ("tool", "settings", "device", "copy_bandwidth", "scaled_down", "notes", "entries"):
     check(key in report, f"missing top-level field {key}")
@@ -81,8 +60,5 @@ for e in entries:
         check("gpu_speedup_vs_cpu" in e, f"{where}: no gpu_speedup_vs_cpu")
 check(gpu_ok > 0, "no entry ran on the GPU")
 
-if errors:
-    print("FAILED:\n  " + "\n  ".join(errors))
-    sys.exit(1)
-print(f"bench smoke test: {len(entries)} entries, {gpu_ok} on the GPU")
+finish(f"bench smoke test: {len(entries)} entries, {gpu_ok} on the GPU")
 PY

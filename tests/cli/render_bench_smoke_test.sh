@@ -7,34 +7,16 @@ simeco=$1
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
-"$simeco" bench --render --quick --repeat 2 --warm-up 1 --size 160x120 --json "$work/render.json" \
-  >"$work/table.txt" 2>"$work/err.txt"
-code=$?
-if [ $code -ne 0 ]; then
-  echo "FAILED: simeco bench --render --quick exited $code"
-  cat "$work/err.txt"
-  exit 1
-fi
-if grep -q "vulkan validation" "$work/err.txt"; then
-  echo "FAILED: validation messages"
-  grep "vulkan validation" "$work/err.txt"
-  exit 1
-fi
-grep -q "GPU turtle/s" "$work/table.txt" || { echo "FAILED: no table on stdout"; cat "$work/table.txt"; exit 1; }
+. "$(dirname "$0")/report_checks.sh"
+run_report "simeco bench --render --quick" "$work/render.json" "GPU turtle/s" \
+  "$simeco" bench --render --quick --repeat 2 --warm-up 1 --size 160x120 --json "$work/render.json"
 
-python3 - "$work/render.json" <<'PY'
+PYTHONPATH="$(dirname "$0")" python3 - "$work/render.json" <<'PY'
 import json, sys
 
+from report_checks import check, finish, positive
+
 report = json.load(open(sys.argv[1]))
-errors = []
-
-def check(condition, message):
-    if not condition:
-        errors.append(message)
-
-def positive(obj, key, where):
-    value = obj.get(key)
-    check(isinstance(value, (int, float)) and value > 0, f"{where}: {key} = {value!r}, expected a positive number")
 
 check(report.get("tool") == "simeco bench --render", "tool is not 'simeco bench --render'")
 check(report.get("settings", {}).get("width") == 160, "settings.width is not 160")
@@ -54,7 +36,5 @@ for e in entries:
     positive(e.get("gpu_turtle", {}), "bytes_moved", where)
     positive(e.get("gpu_turtle", {}), "copy_bandwidth_fraction", where)
     positive(e, "gpu_turtle_speedup_vs_cpu", where)
-for message in errors:
-    print("FAILED:", message)
-sys.exit(1 if errors else 0)
+finish(f"render bench smoke test: {len(entries)} fields")
 PY

@@ -14,6 +14,7 @@
 #include "gpu/derive_gpu.h"
 #include "ir/species.h"
 #include "vk/context.h"
+#include "vk/kernel_profile.h"
 
 namespace simeco::app {
 
@@ -29,6 +30,7 @@ struct DeriveArgs {
     uint64_t maxModules = 0;
     std::string device;
     std::string strategy = "auto";
+    bool profile = false;
 };
 
 void runDerive(const DeriveArgs& args) {
@@ -46,6 +48,7 @@ void runDerive(const DeriveArgs& args) {
         vk::ContextOptions contextOptions;
         contextOptions.device = args.device;
         vk::Context context(contextOptions);
+        if (args.profile) context.enableKernelProfile();
         gpu::GpuStrategy strategy = args.strategy == "parallel"     ? gpu::GpuStrategy::Parallel
                                     : args.strategy == "sequential" ? gpu::GpuStrategy::Sequential
                                                                     : gpu::GpuStrategy::Auto;
@@ -53,6 +56,7 @@ void runDerive(const DeriveArgs& args) {
         gpu::GpuDeriveStats stats;
         result = deriver.derive(options, true, &stats);
         seconds = stats.seconds;
+        if (args.profile) std::fputs(context.kernelProfile()->table().c_str(), stderr);
     } else {
         result = cpu::deriveSpeciesCpu(species, options);
         seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -114,6 +118,8 @@ void registerDeriveCommand(CLI::App& app, CommandContext& ctx) {
                     "parallel (every module at once), sequential (one invocation per plant, for grammars whose "
                     "productions write globals) or auto")
         ->check(CLI::IsMember({"auto", "parallel", "sequential"}));
+    cmd->add_flag("--profile", args->profile,
+                  "--backend gpu: print the GPU time of every kernel, summed over the derivation, to stderr");
     cmd->callback([args, &ctx] { ctx.exitCode = runReportingErrors([&] { runDerive(*args); }); });
 }
 

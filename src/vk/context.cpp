@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "vk/kernel_profile.h"
 #include "vk/vk_error.h"
 
 namespace simeco::vk {
@@ -111,6 +112,7 @@ Context::Context(const ContextOptions& options) : instance_(options.validation, 
 Context::~Context() {
     // Objects made from the device must go before it; the instance member goes last on its own.
     vkDeviceWaitIdle(device_);
+    profile_.reset();
     commandPool_.reset();
     vkDestroyDevice(device_, nullptr);
 }
@@ -136,6 +138,7 @@ void Context::submitAndWait(const std::function<void(VkCommandBuffer)>& record, 
     beginInfo.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO;
     beginInfo.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
     VK_CHECK(vkBeginCommandBuffer(cmd, &beginInfo));
+    if (profile_) profile_->begin(cmd);
     record(cmd);
     VK_CHECK(vkEndCommandBuffer(cmd));
 
@@ -161,6 +164,11 @@ void Context::submitAndWait(const std::function<void(VkCommandBuffer)>& record, 
         throw VulkanError(fmt::format("GPU work did not finish within {} s", timeout.count()), VK_TIMEOUT);
     }
     VK_CHECK(waited);
+    if (profile_) profile_->finish();
+}
+
+void Context::enableKernelProfile() {
+    if (!profile_) profile_ = std::make_unique<KernelProfile>(*this);
 }
 
 } // namespace simeco::vk

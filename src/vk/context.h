@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <string>
 
 #include <vulkan/vulkan.h>
@@ -14,6 +15,8 @@
 #include "vk/instance.h"
 
 namespace simeco::vk {
+
+class KernelProfile;
 
 struct ContextOptions {
     // `--device`: an index or a name substring; empty picks the best device (a real GPU, else lavapipe).
@@ -56,6 +59,11 @@ public:
     void submitAndWait(const std::function<void(VkCommandBuffer)>& record,
                        std::chrono::seconds timeout = std::chrono::seconds(120)) const;
 
+    // From now on, time every dispatch of submitAndWait's submissions per kernel (see KernelProfile).
+    void enableKernelProfile();
+    // The profile, or null when it is not enabled.
+    KernelProfile* kernelProfile() const { return profile_.get(); }
+
 private:
     Instance instance_;
     PhysicalDeviceInfo info_;
@@ -67,6 +75,7 @@ private:
     VkQueue queue_ = VK_NULL_HANDLE;
     UniqueCommandPool commandPool_;
     PFN_vkCmdPushDescriptorSetKHR cmdPushDescriptorSet_ = nullptr;
+    std::unique_ptr<KernelProfile> profile_;
 };
 
 } // namespace simeco::vk

@@ -7,6 +7,7 @@
 #include "compute/shaders.h"
 #include "vk/buffer.h"
 #include "vk/context.h"
+#include "vk/kernel_profile.h"
 #include "vk/layouts.h"
 #include "vk/vk_error.h"
 
@@ -18,7 +19,8 @@ BufferRange::BufferRange(const Buffer& source, VkDeviceSize first, VkDeviceSize 
     : buffer(source.handle()), offset(first), size(bytes) {}
 
 ComputePipeline::ComputePipeline(const Context& context, std::span<const std::uint32_t> spirv, std::string name)
-    : name_(std::move(name)),
+    : context_(&context),
+      name_(std::move(name)),
       reflection_(reflectComputeShader(spirv)),
       maxGroupsX_(context.limits().maxComputeWorkGroupCount[0]),
       maxGroupsY_(context.limits().maxComputeWorkGroupCount[1]),
@@ -126,6 +128,7 @@ void ComputePipeline::dispatchBytes(VkCommandBuffer cmd, std::span<const BufferR
                            push.data());
     }
     vkCmdDispatch(cmd, static_cast<std::uint32_t>(groupsX), static_cast<std::uint32_t>(groupsY), 1);
+    if (KernelProfile* profile = context_->kernelProfile()) profile->afterDispatch(cmd, name_);
 }
 
 } // namespace simeco::vk

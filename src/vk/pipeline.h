@@ -75,6 +75,7 @@ public:
                        std::uint64_t groups) const;
 
 private:
+    const Context* context_ = nullptr; // for its kernel profile
     std::string name_;
     ShaderReflection reflection_;
     std::uint32_t maxGroupsX_ = 0;

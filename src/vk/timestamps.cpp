@@ -33,12 +33,12 @@ void Timestamps::cmdWrite(VkCommandBuffer cmd, std::uint32_t index, VkPipelineSt
     vkCmdWriteTimestamp(cmd, stage, pool_.get(), index);
 }
 
-std::vector<double> Timestamps::readNs() const {
-    std::vector<std::uint64_t> raw(count_);
-    VK_CHECK(vkGetQueryPoolResults(device_, pool_.get(), 0, count_, raw.size() * sizeof(std::uint64_t), raw.data(),
+std::vector<double> Timestamps::readNs(std::uint32_t count) const {
+    std::vector<std::uint64_t> raw(count);
+    VK_CHECK(vkGetQueryPoolResults(device_, pool_.get(), 0, count, raw.size() * sizeof(std::uint64_t), raw.data(),
                                    sizeof(std::uint64_t), VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
-    std::vector<double> ns(count_);
-    for (std::uint32_t i = 0; i < count_; ++i) {
+    std::vector<double> ns(count);
+    for (std::uint32_t i = 0; i < count; ++i) {
         ns[i] = static_cast<double>(raw[i] & validMask_) * periodNs_;
     }
     return ns;

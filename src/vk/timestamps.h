@@ -26,7 +26,9 @@ public:
     // Nanoseconds between queries `from` and `to`; waits for both results.
     double elapsedNs(std::uint32_t from, std::uint32_t to) const;
     // All raw results converted to nanoseconds since an arbitrary origin.
-    std::vector<double> readNs() const;
+    std::vector<double> readNs() const { return readNs(count_); }
+    // The first `count` results; waits for them.
+    std::vector<double> readNs(std::uint32_t count) const;
 
 private:
     VkDevice device_ = VK_NULL_HANDLE;

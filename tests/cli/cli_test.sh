@@ -60,6 +60,13 @@ check "a scene of three species derives one distinct plant of each" $?
 [ -s "$work/garden-gpu.txt" ] && cmp -s "$work/garden-gpu.txt" "$work/garden-cpu6.txt"
 check "the GPU derives the scene's species in one pass as the CPU does" $?
 
+out=$("$simeco" derive "$work/algae.l" --backend gpu --profile 2>"$work/profile.txt")
+[ "$out" = "ABAABABAABAAB" ]
+check "--profile leaves the string on stdout (got '$out')" $?
+awk '$1 == "derive/match" && $2 == 5 { m = 1 } $1 == "derive/write" && $2 == 5 { w = 1 } $1 == "total" && $2 > 0 { t = 1 }
+     END { exit !(m && w && t) }' "$work/profile.txt"
+check "--profile times each kernel once per step ($(tr '\n' ' ' <"$work/profile.txt"))" $?
+
 printf 'Lsystem: 1\nderivation length: 1\nAxiom: A(1)\nA(x) --> A(y)\nendlsystem\n' >"$work/bad.l"
 "$simeco" derive "$work/bad.l" >"$work/out.txt" 2>"$work/err.txt"
 code=$?

@@ -57,12 +57,21 @@ SIMECO_CONST kFlagOverLimit = 2u;    // a plant counted more than moduleLimit mo
 // all loops of an invocation after 65535 iterations in total). Retry with smaller chunks.
 SIMECO_CONST kFlagLoopCut = 4u;
 
+// Modules per entry of the plant hints (derive/plant_hints.comp); a stream of n modules has
+// plantHintBlocks(n) + 1 hints.
+SIMECO_CONST kPlantHintBlock = 64u;
+#ifdef __cplusplus
+inline constexpr uint plantHintBlocks(uint count) { return (count + kPlantHintBlock - 1u) / kPlantHintBlock; }
+#else
+uint plantHintBlocks(uint count) { return (count + kPlantHintBlock - 1u) / kPlantHintBlock; }
+#endif
+
 // Push constants of the fixed helper kernels.
 struct DeriveHelperPush {
     uint count;   // elements
     uint level;   // depth tree: the level being built
     uint total;   // plant starts: modules of the new stream
-    uint plants;  // plant starts: plants
+    uint plants;  // plant starts and hints: plants
 };
 
 #ifdef __cplusplus

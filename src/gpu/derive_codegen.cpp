@@ -43,6 +43,7 @@ std::string declarations(bool decomposition, bool write) {
         b.add("writeonly", "uint", "originOut");
         b.add("writeonly", "uint", "liveOut");
     }
+    b.add("readonly", "uint", "plantHints"); // of the stream plantOf() searches (derive/plant_hints.comp)
     return b.text();
 }
 
@@ -170,9 +171,11 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species) 
     const std::string globalIndex =
         "    uint i = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * gl_WorkGroupSize.x + "
         "gl_LocalInvocationID.x;\n    if (i >= pc.count) return;\n";
+    // A binary search of the plant table between the hints of i's block and the next block.
     auto findPlant = [](const char* table, const char* name) {
         return fmt::format("uint {}(uint i) {{\n"
-                           "    uint low = 0u, high = pc.plants - 1u;\n"
+                           "    uint block = i / kPlantHintBlock;\n"
+                           "    uint low = plantHints[block], high = plantHints[block + 1u];\n"
                            "    while (low < high) {{\n"
                            "        uint mid = (low + high + 1u) / 2u;\n"
                            "        if ({}[mid] <= i) low = mid; else high = mid - 1u;\n"

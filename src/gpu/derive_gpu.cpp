@@ -61,7 +61,7 @@ struct GpuDeriver::Impl {
     std::optional<std::string> homomorphismHostReason;
     // The error sites of the kernels being run (the homomorphism's while it runs).
     const std::vector<ErrorSite>* activeErrors = nullptr;
-    vk::ComputePipeline plantStarts, cutApply;
+    vk::ComputePipeline plantStarts, plantHintsKernel, cutApply;
     vk::ComputePipeline greedyReduce, greedyScan, greedyMark, homomorphismStart;
     GpuScan scan;
     BracketTree brackets; // after scan, which it uses
@@ -69,6 +69,7 @@ struct GpuDeriver::Impl {
     vk::Buffer globals, arrays, plantFrozen;
     vk::Buffer counts, choices, drawStarts, offsets, cutDelta, cutBefore, examined;
     vk::Buffer chunkFunctions, chunkEntries; // the greedy walk over predecessors of several modules
+    vk::Buffer plantHints; // of the stream the running kernels find plants in (recordPlantHints)
     // The sequential strategy: persistent locals, copies of the state for the counting pass, the decomposition
     // stack, and each plant's module count.
     vk::Buffer frames, framesCopy, globalsCopy, arraysCopy, stackSym, stackPar, stackState, plantCounts, countsReadback;
@@ -86,6 +87,7 @@ struct GpuDeriver::Impl {
     Impl(const vk::Context& c, std::vector<ir::Grammar> grammars, GpuStrategy requested)
         : ctx(c), species(std::move(grammars)), strategy(requested), stride(1),
           plantStarts(vk::ComputePipeline::embedded(c, "derive/plant_starts")),
+          plantHintsKernel(vk::ComputePipeline::embedded(c, "derive/plant_hints")),
           cutApply(vk::ComputePipeline::embedded(c, "derive/cut_apply")),
           greedyReduce(vk::ComputePipeline::embedded(c, "derive/greedy_reduce")),
           greedyScan(vk::ComputePipeline::embedded(c, "derive/greedy_scan")),
@@ -203,6 +205,8 @@ struct GpuDeriver::Impl {
             *b = vk::Buffer(ctx, bytes(capacity, 4), vk::MemoryUsage::DeviceLocal);
         chunkFunctions = vk::Buffer(ctx, bytes(capacity / kGreedyChunk + 1, 4), vk::MemoryUsage::DeviceLocal);
         chunkEntries = vk::Buffer(ctx, bytes(capacity / kGreedyChunk + 1, 4), vk::MemoryUsage::DeviceLocal);
+        plantHints = vk::Buffer(ctx, bytes(shared::plantHintBlocks(static_cast<uint32_t>(capacity)) + 1, 4),
+                                vk::MemoryUsage::DeviceLocal);
         scratchCapacity = capacity;
     }
 
@@ -286,6 +290,7 @@ struct GpuDeriver::Impl {
                                              brackets.levelInfo(), globals, arrays, funcTables, contextSkip, errors,
                                              plantFrozen};
         buffers.insert(buffers.end(), rest.begin(), rest.end());
+        buffers.push_back(plantHints);
         kernel.dispatchBytes(cmd, buffers, std::as_bytes(std::span(&p, 1)), kernel.groupsFor(n));
     }
 
@@ -293,6 +298,13 @@ struct GpuDeriver::Impl {
     void recordPlantStarts(VkCommandBuffer cmd, const Stream& from, const Stream& to, uint32_t n, uint32_t total) {
         DeriveHelperPush hp{n, 0, total, plants};
         plantStarts.dispatch(cmd, {plantTable(from), offsets, plantTable(to)}, hp, plantStarts.groupsFor(plants + 1));
+    }
+
+    // The hints the next derivation kernels find plants of `s` with; they stay valid until the next call.
+    void recordPlantHints(VkCommandBuffer cmd, const Stream& s) {
+        DeriveHelperPush hp{s.count, 0, 0, plants};
+        plantHintsKernel.dispatch(cmd, {plantTable(s), plantHints}, hp,
+                                  plantHintsKernel.groupsFor(shared::plantHintBlocks(s.count) + 1));
     }
 
     vk::BufferRange plantTable(const Stream& s) const { return vk::BufferRange(s.plantStart, 0, bytes(plants + 1, 4)); }
@@ -311,6 +323,8 @@ struct GpuDeriver::Impl {
                 vk::cmdFill(cmd, errors, 0);
                 if (kernels.mayCut) vk::cmdFill(cmd, cutDelta, 0);
                 vk::memoryBarrier(cmd, Hazard::TransferToCompute);
+                recordPlantHints(cmd, in);
+                vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
                 if (kernels.needsBrackets && n > 0) brackets.record(cmd, in.sym, n);
                 DerivePush p = push(n, stepIndex, seed, pass, n, 0);
                 dispatchDerive(cmd, *match, in, {counts, choices, drawStarts, cutDelta}, p, n);
@@ -372,6 +386,8 @@ struct GpuDeriver::Impl {
             ensureScratch(n);
             uint32_t live = submit(
                 [&](VkCommandBuffer cmd) {
+                    recordPlantHints(cmd, X);
+                    vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
                     scan.record(cmd, X.live, examined, n);
                     copyTotal(cmd);
                 },

@@ -2,7 +2,7 @@
 // (brackets matched by derive/depth_tree.glsl, which comes before this file), error reports, and
 // double-precision elementary functions.
 //
-// Expects before it: the buffers symIn, parIn, depthTree, levelInfo, contextSkip, errors and the push
+// Expects before it: the buffers symIn, parIn, depthTree, levelInfo, bracketPartners, contextSkip, errors and the push
 // constants `pc` (DerivePush), and shared/random.h, shared/derive_layout.h and derive/depth_tree.glsl.
 
 uint symOf(uint i) { return symIn[i] & kSymbolMask; }
@@ -10,6 +10,16 @@ uint countOf(uint i) { return symIn[i] >> kSymbolBits; }
 double paramOf(uint i, uint k) { return double(parIn[i * pc.stride + k]); }
 // contextSkip holds one row of bits per species; `row` is the first word of the species' row.
 bool skipped(uint sym, uint row) { return ((contextSkip[row + (sym >> 5u)] >> (sym & 31u)) & 1u) != 0u; }
+
+// matchOpen and matchClose by the partners found once per string (derive/bracket_partners.comp).
+uint closingBracket(uint s, uint pEnd) {
+    uint j = bracketPartners[s];
+    return j < pEnd ? j : kNoModule;
+}
+uint openingBracket(uint j, uint pBegin) {
+    uint open = bracketPartners[j];
+    return (open == kNoModule || open < pBegin || open >= j || symOf(open) != kOpen) ? kNoModule : open;
+}
 
 // The `]` that closes the branch containing position s (or pEnd at the top level or when unmatched).
 uint endOfBranch(uint s, uint pBegin, uint pEnd) {
@@ -20,20 +30,20 @@ uint endOfBranch(uint s, uint pBegin, uint pEnd) {
     if (k == kNoneBelow) return pEnd;
     uint open = uint(k + 1);
     if (open < pBegin || open >= s || symOf(open) != kOpen) return pEnd;
-    uint close = matchOpen(open, pEnd);
+    uint close = closingBracket(open, pEnd);
     return close == kNoModule ? pEnd : close;
 }
 
 // Right context: moves s to the module the pattern symbol `want` is compared with. Skipped symbols pass,
 // closed branches pass unless the pattern enters one with `[`; false at the end of the plant.
-bool rightAdvance(inout uint s, uint want, uint pEnd, uint skipRow) {
+bool rightWalk(inout uint s, uint want, uint pEnd, uint skipRow) {
     for (;;) {
         if (s >= pEnd) return false;
         uint sym = symOf(s);
         if (skipped(sym, skipRow)) {
             ++s;
         } else if (want != kOpen && sym == kOpen) {
-            uint close = matchOpen(s, pEnd);
+            uint close = closingBracket(s, pEnd);
             if (close == kNoModule) return false;
             s = close + 1u;
         } else {
@@ -44,12 +54,12 @@ bool rightAdvance(inout uint s, uint want, uint pEnd, uint skipRow) {
 }
 
 // Left context: moves s to the next module to compare, skipping branches to the left and passing `[`.
-bool leftAdvance(inout int s, uint pBegin, uint skipRow) {
+bool leftWalk(inout int s, uint pBegin, uint skipRow) {
     for (;;) {
         if (s < int(pBegin)) return false;
         uint sym = symOf(uint(s));
         if (sym == kClose) {
-            uint open = matchClose(uint(s), pBegin);
+            uint open = openingBracket(uint(s), pBegin);
             if (open == kNoModule) return false;
             s = int(open) - 1;
         } else if (sym == kOpen || skipped(sym, skipRow)) {
@@ -59,6 +69,35 @@ bool leftAdvance(inout int s, uint pBegin, uint skipRow) {
         }
     }
     return false;
+}
+
+// A module's productions mostly start their context walks at the same place, so each invocation remembers its
+// last walk in each direction and repeats none. Within one invocation pBegin, pEnd and skipRow stay the same
+// for a given start (one plant at a time), so the start and whether the pattern enters branches are the key.
+uint rightMemoStart = kNoModule, rightMemoEnd = 0u;
+bool rightMemoEnters = false, rightMemoFound = false;
+bool rightAdvance(inout uint s, uint want, uint pEnd, uint skipRow) {
+    bool enters = want == kOpen;
+    if (s != rightMemoStart || enters != rightMemoEnters) {
+        rightMemoStart = s;
+        rightMemoEnters = enters;
+        rightMemoEnd = s;
+        rightMemoFound = rightWalk(rightMemoEnd, want, pEnd, skipRow);
+    }
+    s = rightMemoEnd;
+    return rightMemoFound;
+}
+
+int leftMemoStart = -2, leftMemoEnd = 0;
+bool leftMemoFound = false;
+bool leftAdvance(inout int s, uint pBegin, uint skipRow) {
+    if (s != leftMemoStart) {
+        leftMemoStart = s;
+        leftMemoEnd = s;
+        leftMemoFound = leftWalk(leftMemoEnd, pBegin, skipRow);
+    }
+    s = leftMemoEnd;
+    return leftMemoFound;
 }
 
 // The first evaluation error of the pass wins; the host turns the code into a located message.

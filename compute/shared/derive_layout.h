@@ -69,7 +69,7 @@ uint plantHintBlocks(uint count) { return (count + kPlantHintBlock - 1u) / kPlan
 // Push constants of the fixed helper kernels.
 struct DeriveHelperPush {
     uint count;   // elements
-    uint level;   // depth tree: the level being built
+    uint level;   // depth tree: the level being built; tiled plant starts: the tile size
     uint total;   // plant starts: modules of the new stream
     uint plants;  // plant starts and hints: plants
 };

@@ -18,9 +18,11 @@ BracketTree::BracketTree(const vk::Context& context, GpuScan& scan)
       bracketDepth_(vk::ComputePipeline::embedded(context, "derive/bracket_depth")),
       depthLeaves_(vk::ComputePipeline::embedded(context, "derive/depth_leaves")),
       depthLevel_(vk::ComputePipeline::embedded(context, "derive/depth_level")),
+      bracketPartners_(vk::ComputePipeline::embedded(context, "derive/bracket_partners")),
       // Kernels that may match brackets bind the tree even when a pass needs none: it always exists.
       tree_(context, 4, vk::MemoryUsage::DeviceLocal),
-      levelInfo_(context, 2 * kMaxDepthLevels * 4, vk::MemoryUsage::Upload) {}
+      levelInfo_(context, 2 * kMaxDepthLevels * 4, vk::MemoryUsage::Upload),
+      partners_(context, 4, vk::MemoryUsage::DeviceLocal) {}
 
 void BracketTree::record(VkCommandBuffer cmd, const vk::Buffer& symbols, std::uint32_t count) {
     // Level k holds ceil(n / 2^k) minima; levelInfo gives each level's offset and size.
@@ -40,6 +42,8 @@ void BracketTree::record(VkCommandBuffer cmd, const vk::Buffer& symbols, std::ui
         deltas_ = vk::Buffer(context_, (elements + elements / 2) * 4, vk::MemoryUsage::DeviceLocal);
         before_ = vk::Buffer(context_, (elements + elements / 2) * 4, vk::MemoryUsage::DeviceLocal);
     }
+    if (partners_.size() < elements * 4)
+        partners_ = vk::Buffer(context_, (elements + elements / 2) * 4, vk::MemoryUsage::DeviceLocal);
     // Grown with room to spare, as strings grow step after step.
     if (tree_.size() < offset * 4) tree_ = vk::Buffer(context_, (offset + offset / 2) * 4, vk::MemoryUsage::DeviceLocal);
     if (scan_.capacity() < count) scan_.reserve(count);
@@ -56,6 +60,8 @@ void BracketTree::record(VkCommandBuffer cmd, const vk::Buffer& symbols, std::ui
         depthLevel_.dispatch(cmd, {tree_, levelInfo_}, levelPush, depthLevel_.groupsFor(levelPush.count));
         vk::memoryBarrier(cmd, vk::Hazard::ComputeToCompute);
     }
+    bracketPartners_.dispatch(cmd, {symbols, tree_, levelInfo_, partners_}, push, bracketPartners_.groupsFor(count));
+    vk::memoryBarrier(cmd, vk::Hazard::ComputeToCompute);
 }
 
 } // namespace simeco::gpu

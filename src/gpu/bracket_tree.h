@@ -1,6 +1,7 @@
 // The bracket-depth min tree of a module stream on the device: the inclusive bracket depth of every module and
 // the minima of ever larger blocks above it, which kernels match brackets with in O(log n)
-// (compute/derive/depth_tree.glsl).
+// (compute/derive/depth_tree.glsl); and every bracket's partner found on it, for kernels that jump over
+// branches often (compute/derive/bracket_partners.comp).
 #pragma once
 
 #include <cstdint>
@@ -29,12 +30,13 @@ public:
 
     const vk::Buffer& tree() const { return tree_; }
     const vk::Buffer& levelInfo() const { return levelInfo_; }
+    const vk::Buffer& partners() const { return partners_; }
 
 private:
     const vk::Context& context_;
     GpuScan& scan_;
-    vk::ComputePipeline bracketDepth_, depthLeaves_, depthLevel_;
-    vk::Buffer deltas_, before_, tree_, levelInfo_;
+    vk::ComputePipeline bracketDepth_, depthLeaves_, depthLevel_, bracketPartners_;
+    vk::Buffer deltas_, before_, tree_, levelInfo_, partners_;
 };
 
 } // namespace simeco::gpu

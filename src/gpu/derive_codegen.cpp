@@ -18,7 +18,7 @@ using codegen::literal;
 using codegen::RuleKind;
 
 // The buffers of each kernel. Contexts always read the string being rewritten (symIn, parIn).
-std::string declarations(bool decomposition, bool write) {
+std::string declarations(bool decomposition, bool write, bool fusedScan = false) {
     codegen::Bindings b;
     b.addShared(false);
     if (decomposition) {
@@ -30,12 +30,18 @@ std::string declarations(bool decomposition, bool write) {
         b.add("readonly", "uint", "examined");
     }
     if (!write) {
-        b.add("writeonly", "uint", "counts");
+        b.add(fusedScan ? "" : "writeonly", "uint", "counts"); // a fused match reads its own count back
         b.add("writeonly", "uint", "choices");
         b.add("writeonly", "uint", "drawStarts");
         if (!decomposition) b.add("", "uint", "cutDelta");
+        if (fusedScan) b.add("writeonly", "uint", "tileSums");
     } else {
-        b.add("readonly", "uint", "offsets");
+        if (fusedScan) {
+            b.add("readonly", "uint", "counts");
+            b.add("readonly", "uint", "tileOffsets");
+        } else {
+            b.add("readonly", "uint", "offsets");
+        }
         b.add("readonly", "uint", "choices");
         b.add("readonly", "uint", "drawStarts");
         b.add("writeonly", "uint", "symOut");
@@ -168,9 +174,9 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species) 
                            selection(rules, sp, RuleKind::Decomposition, codegen::isStochastic(rules)));
     };
 
-    const std::string globalIndex =
-        "    uint i = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * gl_WorkGroupSize.x + "
-        "gl_LocalInvocationID.x;\n    if (i >= pc.count) return;\n";
+    const std::string moduleIndex =
+        "(gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * gl_WorkGroupSize.x + gl_LocalInvocationID.x";
+    const std::string globalIndex = "    uint i = " + moduleIndex + ";\n    if (i >= pc.count) return;\n";
     // A binary search of the plant table between the hints of i's block and the next block.
     auto findPlant = [](const char* table, const char* name) {
         return fmt::format("uint {}(uint i) {{\n"
@@ -187,13 +193,24 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species) 
     const std::string frozenCopy =
         "    if (plantFrozen[plant] == kPlantFrozen) { counts[i] = 1u; choices[i] = kChoiceCopy; drawStarts[i] = 0u; return; }\n";
 
+    // The step's scan fused into its two passes: match also sums the successor counts of each subgroup's modules
+    // (a tile of gl_SubgroupSize consecutive modules: invocations fill subgroups in order), the host scans those
+    // sums, and write adds the subgroup's exclusive scan of the counts to its tile's offset. Subgroup operations
+    // need no barrier, and the counts are read once more instead of scanned in two more passes over the string.
+    // Cuts and predecessors of several modules change counts after the match, so they keep the separate scan.
+    k.fusedScan = !k.mayCut && k.longestPredecessor <= 1;
+    // The bodies below are main() for a separate scan, or a function of i that main() calls for a fused one.
+    auto bodyStart = [&](const char* fusedSignature) {
+        return k.fusedScan ? std::string(fusedSignature) + " {\n" : "void main() {\n" + globalIndex;
+    };
+
     // ---- derivation step: match ----
     {
-        std::string s = prelude + declarations(false, false) + library + functions;
+        std::string s = prelude + declarations(false, false, k.fusedScan) + library + functions;
         s += emitters(false, false);
         s += findPlant("plantStart", "plantOf");
         s += stepFunctions;
-        s += "void main() {\n" + globalIndex;
+        s += bodyStart("void matchModule(uint i)");
         s += "    uint plant = plantOf(i);\n" + frozenCopy;
         s += "    uint species = plant % kSpeciesCount;\n"
              "    uint pBegin = plantStart[plant], pEnd = plantStart[plant + 1u];\n"
@@ -211,20 +228,27 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species) 
                  "    }\n";
         }
         s += recordChoice();
+        if (k.fusedScan)
+            s += "void main() {\n"
+                 "    uint i = " + moduleIndex + ";\n"
+                 "    if (i < pc.count) matchModule(i);\n"
+                 "    uint tileSum = subgroupAdd(i < pc.count ? counts[i] : 0u);\n"
+                 "    if (subgroupElect() && i < pc.count) tileSums[i / gl_SubgroupSize] = tileSum;\n"
+                 "}\n";
         k.match = std::move(s);
     }
     // ---- derivation step: write ----
     {
-        std::string s = prelude + declarations(false, true) + library + functions;
+        std::string s = prelude + declarations(false, true, k.fusedScan) + library + functions;
         s += emitters(true, k.hasDecomposition);
         s += findPlant("plantStart", "plantOf");
         s += stepFunctions;
-        s += "void main() {\n" + globalIndex;
+        s += bodyStart("void writeModule(uint i, uint pos)");
         s += "    uint choice = choices[i];\n"
              "    if (choice == kChoiceDropped) return;\n"
-             "    choice &= kSymbolMask;\n"
-             "    uint pos = offsets[i];\n"
-             "    uint origin = i;\n"
+             "    choice &= kSymbolMask;\n";
+        if (!k.fusedScan) s += "    uint pos = offsets[i];\n";
+        s += "    uint origin = i;\n"
              "    if (choice == kChoiceCopy) {\n"
              "        uint count = countOf(i);\n"
              "        emitModule(pos, symOf(i), count, origin);\n"
@@ -240,6 +264,12 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species) 
              "    uint draw = drawStarts[i];\n";
         s += codegen::perSpecies(species.size(), [&](size_t sp) { return writeDispatch(species[sp].productions, sp, RuleKind::Step); });
         s += "}\n";
+        if (k.fusedScan)
+            s += "void main() {\n"
+                 "    uint i = " + moduleIndex + ";\n"
+                 "    uint before = subgroupExclusiveAdd(i < pc.count ? counts[i] : 0u);\n"
+                 "    if (i < pc.count) writeModule(i, tileOffsets[i / gl_SubgroupSize] + before);\n"
+                 "}\n";
         k.write = std::move(s);
     }
     if (k.hasDecomposition) {

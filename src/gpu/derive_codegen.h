@@ -36,6 +36,9 @@ struct GeneratedKernels {
     bool hasDecomposition = false;
     int maxDecompositionDepth = 0;  // the deepest of the species' decompositions
     uint32_t longestPredecessor = 1; // > 1: the greedy walk decides which modules start a rewrite
+    // The step's scan is fused into match and write (see generateDeriveKernels): match also writes each
+    // workgroup's sum of counts, and write takes the scanned sums and counts instead of offsets.
+    bool fusedScan = false;
     std::vector<double> functionTables; // the sampled func() tables, concatenated
 };
 

@@ -61,7 +61,7 @@ struct GpuDeriver::Impl {
     std::optional<std::string> homomorphismHostReason;
     // The error sites of the kernels being run (the homomorphism's while it runs).
     const std::vector<ErrorSite>* activeErrors = nullptr;
-    vk::ComputePipeline plantStarts, plantHintsKernel, cutApply;
+    vk::ComputePipeline plantStarts, plantStartsTiled, plantHintsKernel, cutApply;
     vk::ComputePipeline greedyReduce, greedyScan, greedyMark, homomorphismStart;
     GpuScan scan;
     BracketTree brackets; // after scan, which it uses
@@ -70,6 +70,8 @@ struct GpuDeriver::Impl {
     vk::Buffer counts, choices, drawStarts, offsets, cutDelta, cutBefore, examined;
     vk::Buffer chunkFunctions, chunkEntries; // the greedy walk over predecessors of several modules
     vk::Buffer plantHints; // of the stream the running kernels find plants in (recordPlantHints)
+    vk::Buffer tileSums, tileOffsets; // a fused scan's sums of counts per subgroup, and their scan
+    uint32_t tileSize = 1;            // a fused scan's tile: the device's subgroup size
     // The sequential strategy: persistent locals, copies of the state for the counting pass, the decomposition
     // stack, and each plant's module count.
     vk::Buffer frames, framesCopy, globalsCopy, arraysCopy, stackSym, stackPar, stackState, plantCounts, countsReadback;
@@ -87,6 +89,7 @@ struct GpuDeriver::Impl {
     Impl(const vk::Context& c, std::vector<ir::Grammar> grammars, GpuStrategy requested)
         : ctx(c), species(std::move(grammars)), strategy(requested), stride(1),
           plantStarts(vk::ComputePipeline::embedded(c, "derive/plant_starts")),
+          plantStartsTiled(vk::ComputePipeline::embedded(c, "derive/plant_starts_tiled")),
           plantHintsKernel(vk::ComputePipeline::embedded(c, "derive/plant_hints")),
           cutApply(vk::ComputePipeline::embedded(c, "derive/cut_apply")),
           greedyReduce(vk::ComputePipeline::embedded(c, "derive/greedy_reduce")),
@@ -126,6 +129,13 @@ struct GpuDeriver::Impl {
         if (kernels.hasDecomposition && strategy == GpuStrategy::Parallel) {
             decompositionMatch.emplace(build(kernels.decompositionMatch, "derive/decomposition_match"));
             decompositionWrite.emplace(build(kernels.decompositionWrite, "derive/decomposition_write"));
+        }
+        if (kernels.fusedScan) {
+            tileSize = ctx.deviceInfo().subgroupSize;
+            if (tileSize == 0 || shared::kDeriveWorkgroupSize % tileSize != 0)
+                throw std::runtime_error(fmt::format("the GPU backend needs subgroups that divide its workgroups of {} "
+                                                     "invocations; device {} has subgroups of {}",
+                                                     shared::kDeriveWorkgroupSize, ctx.deviceInfo().name, tileSize));
         }
         activeErrors = &kernels.errors;
         buildHomomorphism(build);
@@ -207,8 +217,13 @@ struct GpuDeriver::Impl {
         chunkEntries = vk::Buffer(ctx, bytes(capacity / kGreedyChunk + 1, 4), vk::MemoryUsage::DeviceLocal);
         plantHints = vk::Buffer(ctx, bytes(shared::plantHintBlocks(static_cast<uint32_t>(capacity)) + 1, 4),
                                 vk::MemoryUsage::DeviceLocal);
+        if (kernels.fusedScan)
+            for (vk::Buffer* b : {&tileSums, &tileOffsets})
+                *b = vk::Buffer(ctx, bytes(tilesFor(capacity) + 1, 4), vk::MemoryUsage::DeviceLocal);
         scratchCapacity = capacity;
     }
+
+    uint64_t tilesFor(uint64_t count) const { return (count + tileSize - 1) / tileSize; }
 
     DerivePush push(uint32_t count, uint32_t step, uint32_t seed, uint32_t pass, uint32_t oldCount, uint32_t depth) const {
         DerivePush p{};
@@ -287,7 +302,7 @@ struct GpuDeriver::Impl {
     void dispatchDerive(VkCommandBuffer cmd, const vk::ComputePipeline& kernel, const Stream& strings,
                         std::initializer_list<vk::BufferRange> rest, const DerivePush& p, uint32_t n) {
         std::vector<vk::BufferRange> buffers{strings.sym, strings.par, plantTable(strings), brackets.tree(),
-                                             brackets.levelInfo(), globals, arrays, funcTables, contextSkip, errors,
+                                             brackets.levelInfo(), brackets.partners(), globals, arrays, funcTables, contextSkip, errors,
                                              plantFrozen};
         buffers.insert(buffers.end(), rest.begin(), rest.end());
         buffers.push_back(plantHints);
@@ -317,7 +332,25 @@ struct GpuDeriver::Impl {
         uint32_t n = in.count;
         double millis = 0;
         ensureScratch(n);
-        uint32_t pass = stepIndex * shared::kPassesPerStep;
+        if (kernels.fusedScan)
+            fusedStep(in, out, stepIndex, seed, budget, timer, millis);
+        else
+            separateScanStep(in, out, stepIndex, seed, budget, timer, millis);
+        // Match writes counts, choices and draw starts, and write reads them; a separate scan reads the counts
+        // twice and writes offsets, which write reads.
+        uint64_t perModule = kernels.fusedScan ? 4 + 4ull * uint64_t(stride) + 12 + 12
+                                               : 4 + 4ull * uint64_t(stride) + 12 + 12 + 12;
+        stats.bytesMoved += uint64_t(n) * perModule + uint64_t(out.count) * (4 + 4ull * uint64_t(stride) + 8);
+        if (kernels.hasDecomposition)
+            outIndex = decompose(cur, outIndex, stepIndex, seed, budget, timer, millis, stats, decompositionPasses());
+        if (timer) stats.stepMillis.push_back(millis);
+        return outIndex;
+    }
+
+    // A step with its own scan of the counts, which cuts and the greedy walk change after the match.
+    void separateScanStep(const Stream& in, Stream& out, uint32_t stepIndex, uint32_t seed, uint64_t budget,
+                          vk::Timestamps* timer, double& millis) {
+        uint32_t n = in.count;
         uint32_t total = submit(
             [&](VkCommandBuffer cmd) {
                 vk::cmdFill(cmd, errors, 0);
@@ -326,7 +359,7 @@ struct GpuDeriver::Impl {
                 recordPlantHints(cmd, in);
                 vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
                 if (kernels.needsBrackets && n > 0) brackets.record(cmd, in.sym, n);
-                DerivePush p = push(n, stepIndex, seed, pass, n, 0);
+                DerivePush p = push(n, stepIndex, seed, stepIndex * shared::kPassesPerStep, n, 0);
                 dispatchDerive(cmd, *match, in, {counts, choices, drawStarts, cutDelta}, p, n);
                 vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
                 if (kernels.mayCut && n > 0) {
@@ -347,7 +380,7 @@ struct GpuDeriver::Impl {
             [&](VkCommandBuffer cmd) {
                 vk::cmdFill(cmd, errors, 0);
                 vk::memoryBarrier(cmd, Hazard::TransferToCompute);
-                DerivePush p = push(n, stepIndex, seed, pass, n, 0);
+                DerivePush p = push(n, stepIndex, seed, stepIndex * shared::kPassesPerStep, n, 0);
                 dispatchDerive(cmd, *write, in,
                                {offsets, choices, drawStarts, out.sym, out.par, out.origin, out.live}, p, n);
                 recordPlantStarts(cmd, in, out, n, total);
@@ -355,12 +388,43 @@ struct GpuDeriver::Impl {
             },
             timer, millis);
         out.count = total;
-        stats.bytesMoved += uint64_t(n) * (4 + 4ull * uint64_t(stride) + 12 + 12 + 12) +
-                            uint64_t(total) * (4 + 4ull * uint64_t(stride) + 8);
-        if (kernels.hasDecomposition)
-            outIndex = decompose(cur, outIndex, stepIndex, seed, budget, timer, millis, stats, decompositionPasses());
-        if (timer) stats.stepMillis.push_back(millis);
-        return outIndex;
+    }
+
+    // A step whose scan is fused into match and write (GeneratedKernels::fusedScan): the host scans only the
+    // subgroups' sums.
+    void fusedStep(const Stream& in, Stream& out, uint32_t stepIndex, uint32_t seed, uint64_t budget,
+                   vk::Timestamps* timer, double& millis) {
+        uint32_t n = in.count;
+        uint32_t tiles = static_cast<uint32_t>(tilesFor(n));
+        DerivePush p = push(n, stepIndex, seed, stepIndex * shared::kPassesPerStep, n, 0);
+        uint32_t total = submit(
+            [&](VkCommandBuffer cmd) {
+                vk::cmdFill(cmd, errors, 0);
+                vk::memoryBarrier(cmd, Hazard::TransferToCompute);
+                recordPlantHints(cmd, in);
+                vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+                if (kernels.needsBrackets && n > 0) brackets.record(cmd, in.sym, n);
+                dispatchDerive(cmd, *match, in, {counts, choices, drawStarts, cutDelta, tileSums}, p, n);
+                vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+                scan.record(cmd, tileSums, tileOffsets, tiles);
+                copyTotal(cmd);
+            },
+            timer, millis);
+        checkBudget(total, budget, stepIndex);
+        ensureStream(out, total);
+        submit(
+            [&](VkCommandBuffer cmd) {
+                vk::cmdFill(cmd, errors, 0);
+                vk::memoryBarrier(cmd, Hazard::TransferToCompute);
+                dispatchDerive(cmd, *write, in,
+                               {counts, tileOffsets, choices, drawStarts, out.sym, out.par, out.origin, out.live}, p, n);
+                DeriveHelperPush hp{n, tileSize, total, plants};
+                plantStartsTiled.dispatch(cmd, {plantTable(in), counts, tileOffsets, plantTable(out)}, hp,
+                                          plantStartsTiled.groupsFor(plants + 1));
+                vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+            },
+            timer, millis);
+        out.count = total;
     }
 
     // Recursive rewriting by depth: the decomposition's kernels, or the homomorphism's.
@@ -509,6 +573,7 @@ struct GpuDeriver::Impl {
         bool counting = mode == 0;
         // The counting pass runs on copies of the state, so that the writing pass starts from the same one.
         std::vector<vk::BufferRange> buffers{in.sym, in.par, plantTable(in), brackets.tree(), brackets.levelInfo(),
+                                             brackets.partners(),
                                              counting ? globalsCopy : globals, counting ? arraysCopy : arrays,
                                              funcTables, contextSkip, errors, plantFrozen,
                                              counting ? framesCopy : frames, stackSym, stackPar, stackState,

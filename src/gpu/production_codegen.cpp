@@ -315,6 +315,7 @@ void Bindings::addShared(bool stateWritable) {
     add("readonly", "uint", "plantStart");
     add("readonly", "int", "depthTree");
     add("readonly", "uint", "levelInfo");
+    add("readonly", "uint", "bracketPartners");
     add(state, "double", "globals");
     add(state, "double", "arrays");
     add("readonly", "double", "funcTables");
@@ -332,7 +333,9 @@ uint32_t skipWords(const ir::Grammar& g) { return static_cast<uint32_t>((g.alpha
 namespace {
 
 // The parts of a production's code, in order: matching, then producing.
-void emitMatch(BodyEmitter& body, const ir::Grammar& g, size_t species, const ir::Production& p, RuleKind kind) {
+// `modal`: the function has a `mode` (FrameStyle::Fresh), and mode 2 writes what an earlier pass matched.
+void emitMatch(BodyEmitter& body, const ir::Grammar& g, size_t species, const ir::Production& p, RuleKind kind,
+               bool modal) {
     std::optional<ir::SymbolId> equals = g.alphabet.find("=");
     uint32_t skipRow = static_cast<uint32_t>(species) * skipWords(g);
     for (size_t k = 1; k < p.strict.size(); ++k) {
@@ -343,8 +346,13 @@ void emitMatch(BodyEmitter& body, const ir::Grammar& g, size_t species, const ir
         for (size_t a = 0; a < m.paramSlots.size(); ++a)
             body.line(fmt::format("v{} = paramOf(i + {}u, {}u);", m.paramSlots[a], k, a));
     }
+    // Writing passes apply the production the match pass chose, so they walk contexts only for their parameters.
+    auto walkOpening = [modal](const std::vector<ir::PatternModule>& pattern) {
+        bool binds = std::any_of(pattern.begin(), pattern.end(), [](const ir::PatternModule& m) { return !m.paramSlots.empty(); });
+        return binds || !modal ? "{" : "if (mode < 2u) {";
+    };
     if (!p.right.empty()) {
-        body.open("{");
+        body.open(walkOpening(p.right));
         body.line(fmt::format("uint s = ctxRight + {}u;", p.strict.size() - 1));
         for (const ir::PatternModule& m : p.right) {
             if (equals && m.sym == *equals) {
@@ -360,7 +368,7 @@ void emitMatch(BodyEmitter& body, const ir::Grammar& g, size_t species, const ir
         body.close();
     }
     if (!p.left.empty()) {
-        body.open("{");
+        body.open(walkOpening(p.left));
         body.line("int s = ctxLeft;");
         for (auto it = p.left.rbegin(); it != p.left.rend(); ++it) {
             body.line(fmt::format("if (!leftAdvance(s, pBegin, {}u)) return false;", skipRow));
@@ -455,7 +463,7 @@ void emitProduction(const ir::Grammar& g, size_t species, const ir::Production& 
         body.line("outCount = 0u;");
         body.line(bases);
         for (int slot = 0; slot < p.frameSize; ++slot) body.line(fmt::format("double v{} = 0.0LF;", slot));
-        emitMatch(body, g, species, p, kind);
+        emitMatch(body, g, species, p, kind, true);
         body.line("if (mode == 0u) return true;");
         emitChoice(body, p);
         body.line("if (mode == 1u) return true;");
@@ -466,7 +474,7 @@ void emitProduction(const ir::Grammar& g, size_t species, const ir::Production& 
     }
     out += fmt::format("bool {}TestBody({}{}) {{\n", name, testParameters, frameParameters(p));
     body.line(bases);
-    emitMatch(body, g, species, p, kind);
+    emitMatch(body, g, species, p, kind, false);
     body.line("return true;");
     out += "}\n\n";
     out += frameWrapper(p, "bool", name + "Test", testParameters, "i, plant, key, pBegin, pEnd, ctxLeft, ctxRight, draw");
@@ -544,7 +552,9 @@ std::string deriveLibrary() {
 
 std::string kernelPrelude(size_t speciesCount) {
     std::string s = "#version 460\n"
-                    "#extension GL_EXT_shader_explicit_arithmetic_types_float64 : require\n";
+                    "#extension GL_EXT_shader_explicit_arithmetic_types_float64 : require\n"
+                    "#extension GL_KHR_shader_subgroup_basic : require\n"
+                    "#extension GL_KHR_shader_subgroup_arithmetic : require\n";
     s += std::string(shaders::glslSource("shared/derive_layout.h"));
     s += std::string(shaders::glslSource("shared/random.h"));
     s += "layout(local_size_x = kDeriveWorkgroupSize) in;\n"

@@ -30,7 +30,7 @@ std::string declarations(bool decomposition, bool write, bool fusedScan = false)
         b.add("readonly", "uint", "examined");
     }
     if (!write) {
-        b.add(fusedScan ? "" : "writeonly", "uint", "counts"); // a fused match reads its own count back
+        b.add("writeonly", "uint", "counts");
         b.add("writeonly", "uint", "choices");
         b.add("writeonly", "uint", "drawStarts");
         if (!decomposition) b.add("", "uint", "cutDelta");
@@ -138,12 +138,13 @@ std::string emitters(bool writes, bool provenance) {
 }
 
 // The end of a match kernel: what it found for module i.
-std::string recordChoice() {
-    return "    if (chosen == 0u) produced = 1u;\n"
-           "    counts[i] = produced;\n"
-           "    choices[i] = chosen | ((length - 1u) << 24u); // the predecessor's length for the greedy walk\n"
-           "    drawStarts[i] = start;\n"
-           "}\n";
+// `returnsCount`: the body is a function that also returns the count (a fused scan's matchModule).
+std::string recordChoice(bool returnsCount = false) {
+    return std::string("    if (chosen == 0u) produced = 1u;\n"
+                       "    counts[i] = produced;\n"
+                       "    choices[i] = chosen | ((length - 1u) << 24u); // the predecessor's length for the greedy walk\n"
+                       "    drawStarts[i] = start;\n") +
+           (returnsCount ? "    return produced;\n}\n" : "}\n");
 }
 
 } // namespace
@@ -190,8 +191,11 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species) 
                            name, table);
     };
     // A plant that stopped (stop(), or its species' derivation length reached) keeps its string.
-    const std::string frozenCopy =
-        "    if (plantFrozen[plant] == kPlantFrozen) { counts[i] = 1u; choices[i] = kChoiceCopy; drawStarts[i] = 0u; return; }\n";
+    auto frozenCopy = [](const char* result) {
+        return fmt::format("    if (plantFrozen[plant] == kPlantFrozen) {{ counts[i] = 1u; choices[i] = kChoiceCopy; "
+                           "drawStarts[i] = 0u; return{}; }}\n",
+                           result);
+    };
 
     // The step's scan fused into its two passes: match also sums the successor counts of each subgroup's modules
     // (a tile of gl_SubgroupSize consecutive modules: invocations fill subgroups in order), the host scans those
@@ -210,8 +214,8 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species) 
         s += emitters(false, false);
         s += findPlant("plantStart", "plantOf");
         s += stepFunctions;
-        s += bodyStart("void matchModule(uint i)");
-        s += "    uint plant = plantOf(i);\n" + frozenCopy;
+        s += bodyStart("uint matchModule(uint i)");
+        s += "    uint plant = plantOf(i);\n" + frozenCopy(k.fusedScan ? " 1u" : "");
         s += "    uint species = plant % kSpeciesCount;\n"
              "    uint pBegin = plantStart[plant], pEnd = plantStart[plant + 1u];\n"
              "    uint sym = symOf(i), count = countOf(i);\n"
@@ -227,12 +231,11 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species) 
                  "        atomicAdd(cutDelta[endOfBranch(i + 1u, pBegin, pEnd)], 0xFFFFFFFFu);\n"
                  "    }\n";
         }
-        s += recordChoice();
+        s += recordChoice(k.fusedScan);
         if (k.fusedScan)
             s += "void main() {\n"
                  "    uint i = " + moduleIndex + ";\n"
-                 "    if (i < pc.count) matchModule(i);\n"
-                 "    uint tileSum = subgroupAdd(i < pc.count ? counts[i] : 0u);\n"
+                 "    uint tileSum = subgroupAdd(i < pc.count ? matchModule(i) : 0u);\n"
                  "    if (subgroupElect() && i < pc.count) tileSums[i / gl_SubgroupSize] = tileSum;\n"
                  "}\n";
         k.match = std::move(s);
@@ -289,7 +292,7 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species) 
             s += decompositionFunctions;
             s += "void main() {\n" + globalIndex;
             s += "    if (liveX[i] == 0u) { counts[i] = 1u; choices[i] = kChoiceCopy; drawStarts[i] = 0u; return; }\n";
-            s += "    uint plant = plantOfX(i);\n" + frozenCopy + decompositionSetup;
+            s += "    uint plant = plantOfX(i);\n" + frozenCopy("") + decompositionSetup;
             s += "    uint sym = symX[i] & kSymbolMask, count = symX[i] >> kSymbolBits;\n"
                  "    uint draw = 1u, chosen = 0u, start = 0u, produced = 1u, length = 1u;\n";
             s += codegen::perSpecies(species.size(), decompositionSelection);

@@ -332,10 +332,7 @@ struct GpuDeriver::Impl {
         uint32_t n = in.count;
         double millis = 0;
         ensureScratch(n);
-        if (kernels.fusedScan)
-            fusedStep(in, out, stepIndex, seed, budget, timer, millis);
-        else
-            separateScanStep(in, out, stepIndex, seed, budget, timer, millis);
+        matchScanWrite(in, out, stepIndex, seed, budget, timer, millis);
         // Match writes counts, choices and draw starts, and write reads them; a separate scan reads the counts
         // twice and writes offsets, which write reads.
         uint64_t perModule = kernels.fusedScan ? 4 + 4ull * uint64_t(stride) + 12 + 12
@@ -347,10 +344,14 @@ struct GpuDeriver::Impl {
         return outIndex;
     }
 
-    // A step with its own scan of the counts, which cuts and the greedy walk change after the match.
-    void separateScanStep(const Stream& in, Stream& out, uint32_t stepIndex, uint32_t seed, uint64_t budget,
-                          vk::Timestamps* timer, double& millis) {
+    // One step's match, scan and write. With a fused scan (GeneratedKernels::fusedScan) match also sums each
+    // subgroup's counts and the host scans only those sums; otherwise the counts, which cuts and the greedy walk
+    // change after the match, get a scan of their own.
+    void matchScanWrite(const Stream& in, Stream& out, uint32_t stepIndex, uint32_t seed, uint64_t budget,
+                        vk::Timestamps* timer, double& millis) {
         uint32_t n = in.count;
+        bool fused = kernels.fusedScan;
+        DerivePush p = push(n, stepIndex, seed, stepIndex * shared::kPassesPerStep, n, 0);
         uint32_t total = submit(
             [&](VkCommandBuffer cmd) {
                 vk::cmdFill(cmd, errors, 0);
@@ -359,18 +360,23 @@ struct GpuDeriver::Impl {
                 recordPlantHints(cmd, in);
                 vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
                 if (kernels.needsBrackets && n > 0) brackets.record(cmd, in.sym, n);
-                DerivePush p = push(n, stepIndex, seed, stepIndex * shared::kPassesPerStep, n, 0);
-                dispatchDerive(cmd, *match, in, {counts, choices, drawStarts, cutDelta}, p, n);
-                vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
-                if (kernels.mayCut && n > 0) {
-                    scan.record(cmd, cutDelta, cutBefore, n);
+                if (fused) {
+                    dispatchDerive(cmd, *match, in, {counts, choices, drawStarts, cutDelta, tileSums}, p, n);
                     vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
-                    DeriveHelperPush hp{n, 0, 0, plants};
-                    cutApply.dispatch(cmd, {cutDelta, cutBefore, counts, choices}, hp, cutApply.groupsFor(n));
+                    scan.record(cmd, tileSums, tileOffsets, static_cast<uint32_t>(tilesFor(n)));
+                } else {
+                    dispatchDerive(cmd, *match, in, {counts, choices, drawStarts, cutDelta}, p, n);
                     vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+                    if (kernels.mayCut && n > 0) {
+                        scan.record(cmd, cutDelta, cutBefore, n);
+                        vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+                        DeriveHelperPush hp{n, 0, 0, plants};
+                        cutApply.dispatch(cmd, {cutDelta, cutBefore, counts, choices}, hp, cutApply.groupsFor(n));
+                        vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+                    }
+                    if (kernels.longestPredecessor > 1 && n > 0) recordGreedyWalk(cmd, in);
+                    scan.record(cmd, counts, offsets, n);
                 }
-                if (kernels.longestPredecessor > 1 && n > 0) recordGreedyWalk(cmd, in);
-                scan.record(cmd, counts, offsets, n);
                 copyTotal(cmd);
             },
             timer, millis);
@@ -380,47 +386,18 @@ struct GpuDeriver::Impl {
             [&](VkCommandBuffer cmd) {
                 vk::cmdFill(cmd, errors, 0);
                 vk::memoryBarrier(cmd, Hazard::TransferToCompute);
-                DerivePush p = push(n, stepIndex, seed, stepIndex * shared::kPassesPerStep, n, 0);
-                dispatchDerive(cmd, *write, in,
-                               {offsets, choices, drawStarts, out.sym, out.par, out.origin, out.live}, p, n);
-                recordPlantStarts(cmd, in, out, n, total);
-                vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
-            },
-            timer, millis);
-        out.count = total;
-    }
-
-    // A step whose scan is fused into match and write (GeneratedKernels::fusedScan): the host scans only the
-    // subgroups' sums.
-    void fusedStep(const Stream& in, Stream& out, uint32_t stepIndex, uint32_t seed, uint64_t budget,
-                   vk::Timestamps* timer, double& millis) {
-        uint32_t n = in.count;
-        uint32_t tiles = static_cast<uint32_t>(tilesFor(n));
-        DerivePush p = push(n, stepIndex, seed, stepIndex * shared::kPassesPerStep, n, 0);
-        uint32_t total = submit(
-            [&](VkCommandBuffer cmd) {
-                vk::cmdFill(cmd, errors, 0);
-                vk::memoryBarrier(cmd, Hazard::TransferToCompute);
-                recordPlantHints(cmd, in);
-                vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
-                if (kernels.needsBrackets && n > 0) brackets.record(cmd, in.sym, n);
-                dispatchDerive(cmd, *match, in, {counts, choices, drawStarts, cutDelta, tileSums}, p, n);
-                vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
-                scan.record(cmd, tileSums, tileOffsets, tiles);
-                copyTotal(cmd);
-            },
-            timer, millis);
-        checkBudget(total, budget, stepIndex);
-        ensureStream(out, total);
-        submit(
-            [&](VkCommandBuffer cmd) {
-                vk::cmdFill(cmd, errors, 0);
-                vk::memoryBarrier(cmd, Hazard::TransferToCompute);
-                dispatchDerive(cmd, *write, in,
-                               {counts, tileOffsets, choices, drawStarts, out.sym, out.par, out.origin, out.live}, p, n);
-                DeriveHelperPush hp{n, tileSize, total, plants};
-                plantStartsTiled.dispatch(cmd, {plantTable(in), counts, tileOffsets, plantTable(out)}, hp,
-                                          plantStartsTiled.groupsFor(plants + 1));
+                if (fused) {
+                    dispatchDerive(cmd, *write, in,
+                                   {counts, tileOffsets, choices, drawStarts, out.sym, out.par, out.origin, out.live},
+                                   p, n);
+                    DeriveHelperPush hp{n, tileSize, total, plants};
+                    plantStartsTiled.dispatch(cmd, {plantTable(in), counts, tileOffsets, plantTable(out)}, hp,
+                                              plantStartsTiled.groupsFor(plants + 1));
+                } else {
+                    dispatchDerive(cmd, *write, in,
+                                   {offsets, choices, drawStarts, out.sym, out.par, out.origin, out.live}, p, n);
+                    recordPlantStarts(cmd, in, out, n, total);
+                }
                 vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
             },
             timer, millis);

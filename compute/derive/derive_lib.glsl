@@ -103,6 +103,17 @@ bool leftAdvance(inout int s, uint pBegin, uint skipRow) {
 // The first evaluation error of the pass wins; the host turns the code into a located message.
 void reportError(uint code) { atomicCompSwap(errors[0], 0u, code + 1u); }
 
+// lavapipe ends every loop of an invocation once the invocation has run 65535 loop iterations in all, and the code
+// after a loop then runs as if the loop had ended by itself. A check after a loop cannot see that: the compiler
+// knows only the loop's own exits and folds the check away. So every generated main() ends by asking this loop of
+// pc.loopProbeTrips iterations (a number the compiler cannot know), which stops after one exactly when the
+// invocation's iterations are spent, and raises kFlagLoopCut.
+void reportLoopsCut() {
+    uint trips = 0u;
+    for (uint k = 0u; k < pc.loopProbeTrips; ++k) ++trips;
+    if (trips != pc.loopProbeTrips) atomicOr(errors[1], kFlagLoopCut);
+}
+
 // ---- double precision elementary functions (GLSL provides sqrt, floor, ... for doubles, not these) ----
 
 const double kPi = 3.14159265358979311600LF;

@@ -42,6 +42,7 @@ struct DerivePush {
     uint moduleLimit;  // sequential kernel: a plant counting past this stops and reports it
     uint chunk;        // sequential kernel: input modules a plant rewrites per dispatch
     uint dispatch;     // sequential kernel: the dispatch's index in its pass (0 starts the plants)
+    uint loopProbeTrips; // kLoopProbeTrips (derive_lib.glsl's loopsWereCut())
 };
 
 // plantFrozen values: the host freezes a plant that stopped or finished its derivation length; a production
@@ -50,12 +51,16 @@ SIMECO_CONST kPlantGrowing = 0u;
 SIMECO_CONST kPlantFrozen = 1u;
 SIMECO_CONST kPlantStopRequested = 2u;
 
-// Flags the sequential kernel raises in errors[1].
+// Flags the kernels raise in errors[1].
 SIMECO_CONST kFlagStackFull = 1u;    // a plant's decomposition went deeper than its stack: retry with more levels
 SIMECO_CONST kFlagOverLimit = 2u;    // a plant counted more than moduleLimit modules
 // A loop ended before its condition let it: drivers may cap the iterations of one invocation (lavapipe stops
-// all loops of an invocation after 65535 iterations in total). Retry with smaller chunks.
+// all loops of an invocation after 65535 iterations in total). Every generated kernel raises it; the sequential
+// kernel is retried with smaller chunks, the parallel passes cannot be split and report it.
 SIMECO_CONST kFlagLoopCut = 4u;
+// Iterations of the loop that tells whether the driver cut an invocation's loops; a push constant, so that the
+// compiler cannot count them.
+SIMECO_CONST kLoopProbeTrips = 2u;
 
 // Modules per entry of the plant hints (derive/plant_hints.comp); a stream of n modules has
 // plantHintBlocks(n) + 1 hints.
@@ -75,7 +80,7 @@ struct DeriveHelperPush {
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(DerivePush) == 60);
+static_assert(sizeof(DerivePush) == 64);
 static_assert(sizeof(DeriveHelperPush) == 16);
 } // namespace simeco::shared
 #endif

@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "gpu/curve_codegen.h"
 #include "gpu/production_codegen.h"
 
 namespace simeco::gpu {
@@ -138,7 +139,7 @@ std::string emitters(bool writes, bool provenance) {
 }
 
 // The end of a match kernel: what it found for module i.
-// `returnsCount`: the body is a function that also returns the count (a fused scan's matchModule).
+// `returnsCount`: the function also returns the count (the step's matchModule, which a fused scan sums).
 std::string recordChoice(bool returnsCount = false) {
     return std::string("    if (chosen == 0u) produced = 1u;\n"
                        "    counts[i] = produced;\n"
@@ -158,6 +159,7 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species) 
     for (size_t sp = 0; sp < species.size(); ++sp) {
         const ir::Grammar& g = species[sp];
         functions += codegen::functionTableCode(g, sp, k.functionTables);
+        functions += codegen::curveTableCode(g, sp, k.functionTables);
         for (size_t i = 0; i < g.productions.productions.size(); ++i)
             codegen::emitProduction(g, sp, g.productions.productions[i], RuleKind::Step, i, FrameStyle::Fresh, k.errors,
                                     stepFunctions);
@@ -177,7 +179,10 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species) 
 
     const std::string moduleIndex =
         "(gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * gl_WorkGroupSize.x + gl_LocalInvocationID.x";
-    const std::string globalIndex = "    uint i = " + moduleIndex + ";\n    if (i >= pc.count) return;\n";
+    // Every kernel's main() rewrites module i, then asks whether the driver cut its loops (derive_lib.glsl).
+    auto mainCalling = [&](const std::string& body) {
+        return "void main() {\n    uint i = " + moduleIndex + ";\n" + body + "    reportLoopsCut();\n}\n";
+    };
     // A binary search of the plant table between the hints of i's block and the next block.
     auto findPlant = [](const char* table, const char* name) {
         return fmt::format("uint {}(uint i) {{\n"
@@ -203,10 +208,6 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species) 
     // need no barrier, and the counts are read once more instead of scanned in two more passes over the string.
     // Cuts and predecessors of several modules change counts after the match, so they keep the separate scan.
     k.fusedScan = !k.mayCut && k.longestPredecessor <= 1;
-    // The bodies below are main() for a separate scan, or a function of i that main() calls for a fused one.
-    auto bodyStart = [&](const char* fusedSignature) {
-        return k.fusedScan ? std::string(fusedSignature) + " {\n" : "void main() {\n" + globalIndex;
-    };
 
     // ---- derivation step: match ----
     {
@@ -214,8 +215,8 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species) 
         s += emitters(false, false);
         s += findPlant("plantStart", "plantOf");
         s += stepFunctions;
-        s += bodyStart("uint matchModule(uint i)");
-        s += "    uint plant = plantOf(i);\n" + frozenCopy(k.fusedScan ? " 1u" : "");
+        s += "uint matchModule(uint i) {\n";
+        s += "    uint plant = plantOf(i);\n" + frozenCopy(" 1u");
         s += "    uint species = plant % kSpeciesCount;\n"
              "    uint pBegin = plantStart[plant], pEnd = plantStart[plant + 1u];\n"
              "    uint sym = symOf(i), count = countOf(i);\n"
@@ -231,13 +232,10 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species) 
                  "        atomicAdd(cutDelta[endOfBranch(i + 1u, pBegin, pEnd)], 0xFFFFFFFFu);\n"
                  "    }\n";
         }
-        s += recordChoice(k.fusedScan);
-        if (k.fusedScan)
-            s += "void main() {\n"
-                 "    uint i = " + moduleIndex + ";\n"
-                 "    uint tileSum = subgroupAdd(i < pc.count ? matchModule(i) : 0u);\n"
-                 "    if (subgroupElect() && i < pc.count) tileSums[i / gl_SubgroupSize] = tileSum;\n"
-                 "}\n";
+        s += recordChoice(true);
+        s += mainCalling(k.fusedScan ? "    uint tileSum = subgroupAdd(i < pc.count ? matchModule(i) : 0u);\n"
+                                       "    if (subgroupElect() && i < pc.count) tileSums[i / gl_SubgroupSize] = tileSum;\n"
+                                     : "    if (i < pc.count) matchModule(i);\n");
         k.match = std::move(s);
     }
     // ---- derivation step: write ----
@@ -246,11 +244,10 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species) 
         s += emitters(true, k.hasDecomposition);
         s += findPlant("plantStart", "plantOf");
         s += stepFunctions;
-        s += bodyStart("void writeModule(uint i, uint pos)");
+        s += "void writeModule(uint i, uint pos) {\n";
         s += "    uint choice = choices[i];\n"
              "    if (choice == kChoiceDropped) return;\n"
              "    choice &= kSymbolMask;\n";
-        if (!k.fusedScan) s += "    uint pos = offsets[i];\n";
         s += "    uint origin = i;\n"
              "    if (choice == kChoiceCopy) {\n"
              "        uint count = countOf(i);\n"
@@ -267,12 +264,9 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species) 
              "    uint draw = drawStarts[i];\n";
         s += codegen::perSpecies(species.size(), [&](size_t sp) { return writeDispatch(species[sp].productions, sp, RuleKind::Step); });
         s += "}\n";
-        if (k.fusedScan)
-            s += "void main() {\n"
-                 "    uint i = " + moduleIndex + ";\n"
-                 "    uint before = subgroupExclusiveAdd(i < pc.count ? counts[i] : 0u);\n"
-                 "    if (i < pc.count) writeModule(i, tileOffsets[i / gl_SubgroupSize] + before);\n"
-                 "}\n";
+        s += mainCalling(k.fusedScan ? "    uint before = subgroupExclusiveAdd(i < pc.count ? counts[i] : 0u);\n"
+                                       "    if (i < pc.count) writeModule(i, tileOffsets[i / gl_SubgroupSize] + before);\n"
+                                     : "    if (i < pc.count) writeModule(i, offsets[i]);\n");
         k.write = std::move(s);
     }
     if (k.hasDecomposition) {
@@ -290,13 +284,14 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species) 
                  emitters(false, false);
             s += findPlant("plantStartX", "plantOfX");
             s += decompositionFunctions;
-            s += "void main() {\n" + globalIndex;
+            s += "void matchModule(uint i) {\n";
             s += "    if (liveX[i] == 0u) { counts[i] = 1u; choices[i] = kChoiceCopy; drawStarts[i] = 0u; return; }\n";
             s += "    uint plant = plantOfX(i);\n" + frozenCopy("") + decompositionSetup;
             s += "    uint sym = symX[i] & kSymbolMask, count = symX[i] >> kSymbolBits;\n"
                  "    uint draw = 1u, chosen = 0u, start = 0u, produced = 1u, length = 1u;\n";
             s += codegen::perSpecies(species.size(), decompositionSelection);
             s += recordChoice();
+            s += mainCalling("    if (i < pc.count) matchModule(i);\n");
             k.decompositionMatch = std::move(s);
         }
         // ---- decomposition: write ----
@@ -306,7 +301,7 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species) 
                  emitters(true, true);
             s += findPlant("plantStartX", "plantOfX");
             s += decompositionFunctions;
-            s += "void main() {\n" + globalIndex;
+            s += "void writeModule(uint i) {\n";
             s += "    uint choice = choices[i];\n"
                  "    uint pos = offsets[i];\n"
                  "    if (choice == kChoiceCopy) {\n"
@@ -323,6 +318,7 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species) 
             s += codegen::perSpecies(species.size(),
                             [&](size_t sp) { return writeDispatch(species[sp].decomposition, sp, RuleKind::Decomposition); });
             s += "}\n";
+            s += mainCalling("    if (i < pc.count) writeModule(i);\n");
             k.decompositionWrite = std::move(s);
         }
     }

@@ -39,7 +39,7 @@ struct GeneratedKernels {
     // The step's scan is fused into match and write (see generateDeriveKernels): match also writes each
     // workgroup's sum of counts, and write takes the scanned sums and counts instead of offsets.
     bool fusedScan = false;
-    std::vector<double> functionTables; // the sampled func() tables, concatenated
+    std::vector<double> functionTables; // the sampled func() tables and the contour curves, concatenated
 };
 
 // The GLSL of the kernels for plants of the given species (one alphabet: ir::unifySpecies); plant p is of

@@ -77,10 +77,12 @@ struct GpuDeriver::Impl {
     vk::Buffer frames, framesCopy, globalsCopy, arraysCopy, stackSym, stackPar, stackState, plantCounts, countsReadback;
     vk::Buffer resume;
     uint32_t stackLevels = 0;
-    // Input modules per plant and dispatch: small enough that no invocation loops long (kFlagLoopCut).
+    // Work per plant and dispatch (input modules and decomposition steps): small enough that no invocation loops
+    // long (kFlagLoopCut).
     uint32_t chunk = 256;
     std::vector<uint32_t> hostPlantTable; // the current stream's plant table, kept on the host
-    uint32_t lastFlags = 0; // errors[1] of the last submit
+    uint32_t lastFlags = 0;      // errors[1] of the last submit
+    bool lastUnfinished = false; // errors[2] of the last submit: the sequential kernel's plants need more dispatches
     uint64_t scratchCapacity = 0;
     Stream streams[3];
     uint32_t plants = 1;
@@ -237,13 +239,14 @@ struct GpuDeriver::Impl {
         p.arrayStride = arrayStride;
         p.oldCount = oldCount;
         p.depth = depth;
+        p.loopProbeTrips = shared::kLoopProbeTrips;
         return p;
     }
 
     // Submits `record`, waits, and returns the total the recording copied into the readback buffer; throws
-    // the located error a kernel reported.
-    uint32_t submit(const std::function<void(VkCommandBuffer)>& record, vk::Timestamps* timer,
-                                         double& gpuMillis) {
+    // the located error a kernel reported, and kFlagLoopCut unless the caller retries (`retriesCutLoops`).
+    uint32_t submit(const std::function<void(VkCommandBuffer)>& record, vk::Timestamps* timer, double& gpuMillis,
+                    bool retriesCutLoops = false) {
         ctx.submitAndWait([&](VkCommandBuffer cmd) {
             if (timer) {
                 timer->cmdReset(cmd);
@@ -251,21 +254,26 @@ struct GpuDeriver::Impl {
             }
             record(cmd);
             vk::memoryBarrier(cmd, Hazard::ComputeToTransfer);
-            VkBufferCopy error{0, 4, 8}; // the error site, then the sequential kernel's flags
+            VkBufferCopy error{0, 4, 12}; // the error site, the flags, the sequential kernel's unfinished plants
             vkCmdCopyBuffer(cmd, errors.handle(), readback.handle(), 1, &error);
             vk::memoryBarrier(cmd, Hazard::TransferToHost);
             if (timer) timer->cmdWrite(cmd, 1, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT);
         });
         if (timer) gpuMillis += timer->elapsedNs(0, 1) / 1e6;
-        uint32_t words[3];
+        uint32_t words[4];
         std::memcpy(words, readback.mapped(), sizeof words);
         lastFlags = words[2];
+        lastUnfinished = words[3] != 0;
         if (words[1] != 0) {
             uint32_t site = words[1] - 1;
             const std::vector<ErrorSite>& sites = *activeErrors;
             if (site < sites.size()) throw ir::InputError(sites[site].loc, sites[site].message);
             throw std::runtime_error("a derivation kernel reported an unknown error");
         }
+        if ((lastFlags & shared::kFlagLoopCut) && !retriesCutLoops)
+            throw ir::LimitError("the device's driver ended a shader loop early (lavapipe ends an invocation's loops "
+                                 "after 65535 iterations in all): a production loops long, a context walk passes very "
+                                 "many modules or a decomposition goes very deep; derive this grammar with --backend cpu");
         return words[0];
     }
 
@@ -531,22 +539,19 @@ struct GpuDeriver::Impl {
         arraysCopy = vk::Buffer(ctx, arrays.size(), vk::MemoryUsage::DeviceLocal);
         plantCounts = vk::Buffer(ctx, bytes(plants, 4), vk::MemoryUsage::DeviceLocal);
         countsReadback = vk::Buffer(ctx, bytes(plants, 4), vk::MemoryUsage::Readback);
-        resume = vk::Buffer(ctx, bytes(2ull * plants, 4), vk::MemoryUsage::DeviceLocal);
+        resume = vk::Buffer(ctx, bytes(4ull * plants, 4), vk::MemoryUsage::DeviceLocal);
         ctx.submitAndWait([&](VkCommandBuffer cmd) { vk::cmdFill(cmd, frames, 0); });
         ensureStack(std::min(deepestStack(), 16u));
     }
 
-    // A pass of the sequential kernel: as many dispatches as the longest plant needs chunks.
+    // Dispatches `first` .. `first + count - 1` of a pass of the sequential kernel. The last one tells in errors[2]
+    // whether a plant has work left.
     void dispatchSequential(VkCommandBuffer cmd, uint32_t mode, const Stream& in, const Stream& out,
-                            const DerivePush& base, const std::vector<uint32_t>& inTable) {
+                            const DerivePush& base, uint32_t first, uint32_t count) {
         DerivePush p = base;
         p.mode = mode;
         p.stackLevels = stackLevels;
         p.chunk = chunk;
-        uint32_t longest = 0;
-        for (size_t plant = 0; plant + 1 < inTable.size(); ++plant)
-            longest = std::max(longest, inTable[plant + 1] - inTable[plant]);
-        uint32_t dispatches = std::max<uint32_t>(1, (longest + chunk - 1) / chunk);
         bool counting = mode == 0;
         // The counting pass runs on copies of the state, so that the writing pass starts from the same one.
         std::vector<vk::BufferRange> buffers{in.sym, in.par, plantTable(in), brackets.tree(), brackets.levelInfo(),
@@ -555,13 +560,19 @@ struct GpuDeriver::Impl {
                                              funcTables, contextSkip, errors, plantFrozen,
                                              counting ? framesCopy : frames, stackSym, stackPar, stackState,
                                              plantCounts, plantTable(out), out.sym, out.par, resume};
-        for (p.dispatch = 0; p.dispatch < dispatches; ++p.dispatch) {
+        for (p.dispatch = first; p.dispatch < first + count; ++p.dispatch) {
+            if (p.dispatch + 1 == first + count) {
+                vk::memoryBarrier(cmd, Hazard::ComputeToTransfer);
+                vkCmdFillBuffer(cmd, errors.handle(), 8, 4, 0);
+                vk::memoryBarrier(cmd, Hazard::TransferToCompute);
+            }
             sequential->dispatchBytes(cmd, buffers, std::as_bytes(std::span(&p, 1)), sequential->groupsFor(plants));
             vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
         }
     }
 
-    // One step with one invocation per plant: count (growing the stack when a plant outgrows it), then write.
+    // One step with one invocation per plant: count (growing the stack when a plant outgrows it, splitting the work
+    // finer when the driver cuts loops), then write in the same dispatches.
     int stepSequential(int cur, uint32_t stepIndex, uint32_t seed, uint64_t budget, vk::Timestamps* timer,
                        GpuDeriveStats& stats) {
         Stream& in = streams[cur];
@@ -573,23 +584,36 @@ struct GpuDeriver::Impl {
         ensureStream(out, 1); // bound (unused) while counting
         DerivePush p = push(n, stepIndex, seed, stepIndex * shared::kPassesPerStep, n, 0);
         p.moduleLimit = static_cast<uint32_t>(std::min<uint64_t>(budget, UINT32_MAX - 1));
-        for (;;) {
-            submit(
-                [&](VkCommandBuffer cmd) {
-                    vk::cmdFill(cmd, errors, 0);
-                    for (auto [from, to] : {std::pair{&globals, &globalsCopy}, {&arrays, &arraysCopy}, {&frames, &framesCopy}}) {
-                        VkBufferCopy all{0, 0, from->size()};
-                        vkCmdCopyBuffer(cmd, from->handle(), to->handle(), 1, &all);
-                    }
-                    vk::memoryBarrier(cmd, Hazard::TransferToCompute);
-                    if (kernels.needsBrackets && n > 0) brackets.record(cmd, in.sym, n);
-                    dispatchSequential(cmd, 0, in, out, p, hostPlantTable);
-                    vk::memoryBarrier(cmd, Hazard::ComputeToTransfer);
-                    VkBufferCopy countsCopy{0, 0, plantCounts.size()};
-                    vkCmdCopyBuffer(cmd, plantCounts.handle(), countsReadback.handle(), 1, &countsCopy);
-                },
-                timer, millis);
-            if (lastFlags & shared::kFlagOverLimit) checkBudget(uint64_t(budget) + 1, budget, stepIndex);
+        uint32_t longest = 0;
+        for (size_t plant = 0; plant + 1 < hostPlantTable.size(); ++plant)
+            longest = std::max(longest, hostPlantTable[plant + 1] - hostPlantTable[plant]);
+        uint32_t dispatches = 0;
+        for (bool done = false; !done;) {
+            // Batches of dispatches until no plant has work left; a full stack or a cut loop starts over.
+            uint32_t batch = std::max<uint32_t>(1, (longest + chunk - 1) / chunk);
+            dispatches = 0;
+            for (bool more = true; more; dispatches += batch) {
+                submit(
+                    [&](VkCommandBuffer cmd) {
+                        vk::cmdFill(cmd, errors, 0);
+                        if (dispatches == 0) {
+                            for (auto [from, to] : {std::pair{&globals, &globalsCopy}, {&arrays, &arraysCopy},
+                                                    {&frames, &framesCopy}}) {
+                                VkBufferCopy all{0, 0, from->size()};
+                                vkCmdCopyBuffer(cmd, from->handle(), to->handle(), 1, &all);
+                            }
+                        }
+                        vk::memoryBarrier(cmd, Hazard::TransferToCompute);
+                        if (dispatches == 0 && kernels.needsBrackets && n > 0) brackets.record(cmd, in.sym, n);
+                        dispatchSequential(cmd, 0, in, out, p, dispatches, batch);
+                        vk::memoryBarrier(cmd, Hazard::ComputeToTransfer);
+                        VkBufferCopy countsCopy{0, 0, plantCounts.size()};
+                        vkCmdCopyBuffer(cmd, plantCounts.handle(), countsReadback.handle(), 1, &countsCopy);
+                    },
+                    timer, millis, true);
+                if (lastFlags & shared::kFlagOverLimit) checkBudget(uint64_t(budget) + 1, budget, stepIndex);
+                more = lastUnfinished && !(lastFlags & (shared::kFlagLoopCut | shared::kFlagStackFull));
+            }
             if (lastFlags & shared::kFlagLoopCut) {
                 if (chunk == 1)
                     throw ir::LimitError(fmt::format(
@@ -598,11 +622,12 @@ struct GpuDeriver::Impl {
                         "grammar with --backend cpu",
                         stepIndex));
                 chunk = std::max<uint32_t>(1, chunk / 4);
-                continue;
+            } else if (lastFlags & shared::kFlagStackFull) {
+                if (stackLevels >= deepestStack()) throw std::logic_error("decomposition stack full at the maximum depth");
+                ensureStack(std::min(stackLevels * 4, deepestStack()));
+            } else {
+                done = true;
             }
-            if (!(lastFlags & shared::kFlagStackFull)) break;
-            if (stackLevels >= deepestStack()) throw std::logic_error("decomposition stack full at the maximum depth");
-            ensureStack(std::min(stackLevels * 4, deepestStack()));
         }
         std::vector<uint32_t> table(plants + 1, 0);
         const uint32_t* counted = reinterpret_cast<const uint32_t*>(countsReadback.mapped());
@@ -621,7 +646,7 @@ struct GpuDeriver::Impl {
             [&](VkCommandBuffer cmd) {
                 vk::cmdFill(cmd, errors, 0);
                 vk::memoryBarrier(cmd, Hazard::TransferToCompute);
-                dispatchSequential(cmd, 1, in, out, p, hostPlantTable);
+                dispatchSequential(cmd, 1, in, out, p, 0, dispatches);
                 vk::memoryBarrier(cmd, Hazard::ComputeToHost);
             },
             timer, millis);

@@ -4,7 +4,7 @@
 // earlier module's — productions writing globals or arrays, locals that carry their value over from the
 // production's previous application (cpfg keeps one variable table per production), stop() — is left to the
 // sequential kernel, which walks each plant in order. Neither does what a device cannot: file input and output
-// in productions. Ring L-systems and contour curves (curveX ...) are not on the device yet. printf() is
+// in productions. Ring L-systems are not on the device yet. printf() is
 // accepted and prints nothing: the derived string is the same.
 #include <set>
 
@@ -40,11 +40,7 @@ struct Checker {
             case ir::Builtin::Fclose:
             case ir::Builtin::Fflush:
             case ir::Builtin::Fprintf:
-            case ir::Builtin::Fscanf:
-            case ir::Builtin::CurveX:
-            case ir::Builtin::CurveY:
-            case ir::Builtin::CurveZ:
-            case ir::Builtin::CurveGal: fail(e.loc, fmt::format("{}() in a production", ir::builtinName(e.fn))); break;
+            case ir::Builtin::Fscanf: fail(e.loc, fmt::format("{}() in a production", ir::builtinName(e.fn))); break;
             case ir::Builtin::Func:
                 for (const ir::FunctionCurve& f : g.functions)
                     if (f.samples <= 2) fail(e.loc, "func() of a function without precomputed samples");

@@ -233,6 +233,16 @@ private:
                                                      g_.functions.size()));
             return define(fmt::format("funcValue{}({}, {}, {}u)", species_, a[0], a[1], where));
         }
+        case Builtin::CurveX:
+        case Builtin::CurveY:
+        case Builtin::CurveZ:
+        case Builtin::CurveGal: {
+            uint32_t where = site(e.loc, fmt::format("{}(id, ...): no such curve (the view file defines {})",
+                                                     ir::builtinName(e.fn), g_.curves.size()));
+            int axis = static_cast<int>(e.fn) - static_cast<int>(Builtin::CurveX); // 3 for curveGAL
+            return define(fmt::format("curveValue{}({}, {}, {}, {}u)", species_, a[0], axis,
+                                      e.fn == Builtin::CurveGal ? "0.0LF" : a[1], where));
+        }
         default: return "0.0LF"; // excluded by gpuUnsupportedReason
         }
     }
@@ -266,22 +276,17 @@ private:
         }
         case ir::StmtKind::While:
         case ir::StmtKind::DoWhile: {
+            // A driver that ends the loop early (lavapipe) is caught at the end of the kernel (reportLoopsCut).
             uint32_t where = site(s.loc, fmt::format("loop still running after {} iterations", kLoopLimit));
-            // Some drivers end an invocation's loops after a fixed number of iterations (lavapipe: 65535 in
-            // all); a loop that ends without its condition failing is reported rather than trusted.
-            uint32_t cut = site(s.loc, "the device's driver ended this loop early (lavapipe stops an invocation's "
-                                       "loops after 65535 iterations in all); derive with --backend cpu");
-            std::string guard = temp(), finished = temp();
+            std::string guard = temp();
             line(fmt::format("uint {} = 0u;", guard));
-            line(fmt::format("bool {} = false;", finished));
             open("for (;;) {");
             if (s.kind == ir::StmtKind::DoWhile) statements(s.body);
             std::string c = expr(s.expr);
-            line(fmt::format("if ({} == 0.0LF) {{ {} = true; break; }}", c, finished));
-            line(fmt::format("if (++{} > {}u) {{ reportError({}u); {} = true; break; }}", guard, kLoopLimit, where, finished));
+            line(fmt::format("if ({} == 0.0LF) break;", c));
+            line(fmt::format("if (++{} > {}u) {{ reportError({}u); break; }}", guard, kLoopLimit, where));
             if (s.kind == ir::StmtKind::While) statements(s.body);
             close();
-            line(fmt::format("if (!{}) reportError({}u);", finished, cut));
             break;
         }
         }
@@ -318,7 +323,7 @@ void Bindings::addShared(bool stateWritable) {
     add("readonly", "uint", "bracketPartners");
     add(state, "double", "globals");
     add(state, "double", "arrays");
-    add("readonly", "double", "funcTables");
+    add("readonly", "double", "funcTables"); // func() samples and contour curves (derive/contour_curve.glsl)
     add("readonly", "uint", "contextSkip");
     add("", "uint", "errors");
     add(state, "uint", "plantFrozen"); // the sequential kernel marks 2 when a production calls stop()
@@ -547,7 +552,8 @@ GeneratedKernels speciesTraits(const std::vector<ir::Grammar>& species) {
 
 std::string deriveLibrary() {
     return std::string(shaders::glslSource("derive/depth_tree.glsl")) +
-           std::string(shaders::glslSource("derive/derive_lib.glsl"));
+           std::string(shaders::glslSource("derive/derive_lib.glsl")) +
+           std::string(shaders::glslSource("derive/contour_curve.glsl"));
 }
 
 std::string kernelPrelude(size_t speciesCount) {

@@ -69,7 +69,8 @@ GeneratedKernels speciesTraits(const std::vector<ir::Grammar>& species);
 // The common start of every generated kernel: version, extensions, layouts, push constants, kSpeciesCount.
 std::string kernelPrelude(size_t speciesCount);
 
-// The functions every generated kernel shares after its buffers: bracket matching, then derive_lib.glsl.
+// The functions every generated kernel shares after its buffers: bracket matching, derive_lib.glsl and the
+// contour curves' evaluation.
 std::string deriveLibrary();
 
 } // namespace simeco::gpu::codegen

@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "gpu/curve_codegen.h"
 #include "gpu/derive_codegen.h"
 #include "gpu/production_codegen.h"
 
@@ -31,7 +32,8 @@ std::string declarations() {
     b.add("readonly", "uint", "outStart");
     b.add("writeonly", "uint", "symOut");
     b.add("writeonly", "float", "parOut");
-    b.add("", "uint", "resume");      // per plant: the next input module and output position between dispatches
+    b.add("", "uint", "resume");      // per plant between dispatches: the next input module, the output position,
+                                      // and a suspended decomposition's level + 1 (0: none) and first input module
     return b.text();
 }
 
@@ -43,6 +45,14 @@ uint gBase;          // where a successor's first module goes
 uint gState;         // the plant's first word in stackState
 uint gStack;         // the plant's first module in the stack
 bool gAbort = false; // the stack is full or the plant outgrew the limit: stop, the host reacts
+// Work done in this dispatch: input modules and decomposition steps. A dispatch does pc.chunk of it, then the plant
+// goes on in the next dispatch, so that no invocation loops long (see kFlagLoopCut).
+uint gWork = 0u;
+uint gSuspendedTop;  // the stack level a suspended decomposition goes on from
+
+const uint kDecomposed = 0u;
+const uint kNotDecomposed = 1u; // an original module to which no production applies at depth 0
+const uint kDecompositionSuspended = 2u;
 
 uint currentPass() { return gPass; }
 // The plant stops after this step, as on the CPU: its remaining modules in this pass are still rewritten.
@@ -66,18 +76,19 @@ void advanceOutput(inout uint next, uint n) {
         gAbort = true;
     }
 }
+// The counting pass runs the parameter loops too, without writing: a driver that ends an invocation's loops after
+// a number of iterations in all (kFlagLoopCut) then cuts the counting pass whenever it would cut the writing pass,
+// and the host retries the step in smaller chunks before anything is written.
 void outputFromInput(uint i, inout uint next) {
-    if (pc.mode == 1u) {
-        symOut[next] = symIn[i];
-        for (uint k = 0u; k < (symIn[i] >> kSymbolBits); ++k) parOut[next * pc.stride + k] = parIn[i * pc.stride + k];
-    }
+    if (pc.mode == 1u) symOut[next] = symIn[i];
+    for (uint k = 0u; k < (symIn[i] >> kSymbolBits); ++k)
+        if (pc.mode == 1u) parOut[next * pc.stride + k] = parIn[i * pc.stride + k];
     advanceOutput(next, 1u);
 }
 void outputFromStack(uint slot, inout uint next) {
-    if (pc.mode == 1u) {
-        symOut[next] = stackSym[slot];
-        for (uint k = 0u; k < (stackSym[slot] >> kSymbolBits); ++k) parOut[next * pc.stride + k] = stackPar[slot * pc.stride + k];
-    }
+    if (pc.mode == 1u) symOut[next] = stackSym[slot];
+    for (uint k = 0u; k < (stackSym[slot] >> kSymbolBits); ++k)
+        if (pc.mode == 1u) parOut[next * pc.stride + k] = stackPar[slot * pc.stride + k];
     advanceOutput(next, 1u);
 }
 void stackFromInput(uint i, uint slot) {
@@ -171,19 +182,24 @@ std::string produce(const ir::RuleSet& rules, size_t species, RuleKind kind, con
     return code + "    }\n";
 }
 
-// Depth-first decomposition of the modules on stack level 0 (cpu/derive.cpp decompose()); false when
-// `original` (level 0 holds one module of the string) and no production applies to it at depth 0.
+// Depth-first decomposition of the stack from level `top` on (cpu/derive.cpp decompose()): kNotDecomposed when
+// `original` (level 0 holds one module of the string) and no production applies to it at depth 0;
+// kDecompositionSuspended when the dispatch's work is done (it goes on from gSuspendedTop). Every call takes at
+// least one step, so an original module is always examined before a suspension.
 std::string decomposeFunction(const ir::Grammar& g, size_t sp, const FrameLayout& frames) {
     std::string s = fmt::format(
-        "bool s{}Decompose(uint plant, uint pBegin, uint pEnd, int ctxLeft, uint ctxRight, bool original, inout uint next) {{\n"
+        "uint s{}Decompose(uint plant, uint pBegin, uint pEnd, int ctxLeft, uint ctxRight, bool original, uint top, "
+        "inout uint next) {{\n"
         "    uint frameBase = plant * kFrameSlots;\n"
-        "    uint top = 0u;\n"
-        "    stackState[levelCountAt(0u) + 1u] = 0u;\n"
+        "    bool first = true;\n"
         "    for (;;) {{\n"
-        "        if (gAbort) return true;\n"
+        "        if (gAbort) return kDecomposed;\n"
+        "        if (!first && gWork >= pc.chunk) {{ gSuspendedTop = top; return kDecompositionSuspended; }}\n"
+        "        first = false;\n"
+        "        ++gWork;\n"
         "        uint at = levelCountAt(top);\n"
         "        if (stackState[at + 1u] == stackState[at]) {{\n"
-        "            if (top == 0u) return true;\n"
+        "            if (top == 0u) return kDecomposed;\n"
         "            --top;\n"
         "            continue;\n"
         "        }}\n"
@@ -198,12 +214,12 @@ std::string decomposeFunction(const ir::Grammar& g, size_t sp, const FrameLayout
         sp);
     s += selection(g.decomposition, sp, RuleKind::Decomposition, frames.decomposition[sp]);
     s += fmt::format("        if (chosen == 0u) {{\n"
-                     "            if (depth == 0u && original) return false;\n"
+                     "            if (depth == 0u && original) return kNotDecomposed;\n"
                      "            outputFromStack(i, next);\n"
                      "            continue;\n"
                      "        }}\n"
                      "        if (depth >= {}u) {{ outputFromStack(i, next); continue; }}\n"
-                     "        if (top + 1u >= pc.stackLevels) {{ atomicOr(errors[1], kFlagStackFull); gAbort = true; return true; }}\n"
+                     "        if (top + 1u >= pc.stackLevels) {{ atomicOr(errors[1], kFlagStackFull); gAbort = true; return kDecomposed; }}\n"
                      "        gToStack = true;\n"
                      "        gBase = levelBase(top + 1u);\n",
                      std::max(g.decomposition.maxDepth, 0));
@@ -212,21 +228,36 @@ std::string decomposeFunction(const ir::Grammar& g, size_t sp, const FrameLayout
          "        stackState[levelCountAt(top + 1u) + 1u] = 0u;\n"
          "        ++top;\n"
          "    }\n"
-         "    atomicOr(errors[1], kFlagLoopCut); // the loop ends only by returning: the driver ended it\n"
-         "    gAbort = true;\n"
-         "    return true;\n"
+         "    return kDecomposed; // not reached: the loop ends by returning (a driver's cut is found by reportLoopsCut)\n"
          "}\n\n";
     return s;
 }
 
-// One plant's step (cpu/derive.cpp rewrite()).
+// One plant's step (cpu/derive.cpp rewrite()) for as much work as the dispatch does. `pending` is a suspended
+// decomposition's stack level + 1 (0: none); it decomposes the input modules from `pendingFirst` up to i.
 std::string deriveFunction(const ir::Grammar& g, size_t sp, const FrameLayout& frames) {
     bool decomposes = !g.decomposition.productions.empty() && g.decomposition.maxDepth > 0;
-    std::string s = fmt::format("void s{}Derive(uint plant, uint pBegin, uint pEnd, inout uint i, uint stopAt, inout uint next) {{\n"
+    std::string s = fmt::format("void s{}Derive(uint plant, uint pBegin, uint pEnd, inout uint i, inout uint next, "
+                                "inout uint pending, inout uint pendingFirst) {{\n"
                                 "    uint frameBase = plant * kFrameSlots;\n",
                                 sp);
-    if (decomposes) s += "    if (pc.dispatch == 0u) for (uint d = 0u; d < pc.stackLevels; ++d) stackState[depthCounterAt(d)] = 0u;\n";
-    s += "    while (i < stopAt && !gAbort) {\n"
+    if (decomposes) {
+        s += "    if (pc.dispatch == 0u) for (uint d = 0u; d < pc.stackLevels; ++d) stackState[depthCounterAt(d)] = 0u;\n";
+        // Decomposes stack level 0, which holds what the input modules from `from` up to i became; returns false
+        // when suspended (the plant goes on in the next dispatch).
+        s += fmt::format("    if (pending != 0u) {{\n"
+                         "        uint top = pending - 1u;\n"
+                         "        pending = 0u;\n"
+                         "        if (s{}Decompose(plant, pBegin, pEnd, int(pendingFirst) - 1, i, false, top, next) == "
+                         "kDecompositionSuspended) {{\n"
+                         "            pending = gSuspendedTop + 1u;\n"
+                         "            return;\n"
+                         "        }}\n"
+                         "    }}\n",
+                         sp);
+    }
+    s += "    while (i < pEnd && !gAbort && gWork < pc.chunk) {\n"
+         "        ++gWork;\n"
          "        uint sym = symOf(i), count = countOf(i);\n"
          "        uint key = i - pBegin;\n"
          "        int ctxLeft = int(i) - 1;\n"
@@ -238,18 +269,34 @@ std::string deriveFunction(const ir::Grammar& g, size_t sp, const FrameLayout& f
     s += decomposes ? "            gToStack = true;\n            gBase = levelBase(0u);\n"
                     : "            gToStack = false;\n            gBase = next;\n";
     s += produce(g.productions, sp, RuleKind::Step, frames.step[sp]);
-    s += decomposes ? fmt::format("            stackState[levelCountAt(0u)] = produced;\n"
-                                  "            s{}Decompose(plant, pBegin, pEnd, int(i) - 1, i + length, false, next);\n",
-                                  sp)
-                    : "            advanceOutput(next, produced);\n";
-    s += "            i += length;\n"
-         "            continue;\n"
-         "        }\n";
+    if (decomposes)
+        s += fmt::format("            stackState[levelCountAt(0u)] = produced;\n"
+                         "            stackState[levelCountAt(0u) + 1u] = 0u;\n"
+                         "            uint decomposed = s{}Decompose(plant, pBegin, pEnd, int(i) - 1, i + length, false, "
+                         "0u, next);\n"
+                         "            pendingFirst = i;\n"
+                         "            i += length;\n"
+                         "            if (decomposed == kDecompositionSuspended) {{ pending = gSuspendedTop + 1u; return; }}\n"
+                         "            continue;\n"
+                         "        }}\n",
+                         sp);
+    else
+        s += "            advanceOutput(next, produced);\n"
+             "            i += length;\n"
+             "            continue;\n"
+             "        }\n";
     if (decomposes)
         s += fmt::format("        uint examined = stackState[depthCounterAt(0u)];\n"
                          "        stackFromInput(i, levelBase(0u));\n"
                          "        stackState[levelCountAt(0u)] = 1u;\n"
-                         "        if (s{}Decompose(plant, pBegin, pEnd, int(i) - 1, i + 1u, true, next)) {{ ++i; continue; }}\n",
+                         "        stackState[levelCountAt(0u) + 1u] = 0u;\n"
+                         "        uint decomposed = s{}Decompose(plant, pBegin, pEnd, int(i) - 1, i + 1u, true, 0u, next);\n"
+                         "        if (decomposed != kNotDecomposed) {{\n"
+                         "            pendingFirst = i;\n"
+                         "            ++i;\n"
+                         "            if (decomposed == kDecompositionSuspended) {{ pending = gSuspendedTop + 1u; return; }}\n"
+                         "            continue;\n"
+                         "        }}\n",
                          sp);
     s += "        if (sym == 2u && count == 0u) {\n"
          "            // The cut leaves the string with the rest of its branch; it does not count as examined.\n";
@@ -260,7 +307,6 @@ std::string deriveFunction(const ir::Grammar& g, size_t sp, const FrameLayout& f
          "        outputFromInput(i, next);\n"
          "        ++i;\n"
          "    }\n"
-         "    if (i < stopAt && !gAbort) atomicOr(errors[1], kFlagLoopCut); // the driver ended the loop\n"
          "}\n\n";
     return s;
 }
@@ -287,6 +333,7 @@ GeneratedKernels generateSequentialKernel(const std::vector<ir::Grammar>& specie
     for (size_t sp = 0; sp < species.size(); ++sp) {
         const ir::Grammar& g = species[sp];
         s += codegen::functionTableCode(g, sp, k.functionTables);
+        s += codegen::curveTableCode(g, sp, k.functionTables);
         for (size_t i = 0; i < g.productions.productions.size(); ++i)
             codegen::emitProduction(g, sp, g.productions.productions[i], RuleKind::Step, i, FrameStyle::Persistent,
                                     k.errors, productions);
@@ -306,23 +353,32 @@ GeneratedKernels generateSequentialKernel(const std::vector<ir::Grammar>& specie
          "    if (plant >= pc.plants) return;\n"
          "    uint pBegin = plantStart[plant], pEnd = plantStart[plant + 1u];\n"
          "    uint first = pc.mode == 1u ? outStart[plant] : 0u;\n"
-         "    // A pass is several dispatches, each rewriting at most pc.chunk input modules of every plant, so that\n"
-         "    // no invocation loops long (see kFlagLoopCut).\n"
-         "    uint i = pc.dispatch == 0u ? pBegin : resume[2u * plant];\n"
-         "    uint next = pc.dispatch == 0u ? first : resume[2u * plant + 1u];\n"
-         "    if (i >= pEnd && pc.dispatch > 0u) return;\n"
-         "    uint stopAt = min(pEnd, i + pc.chunk);\n"
+         "    // A pass is several dispatches, each doing at most pc.chunk work for every plant (gWork).\n"
+         "    uint i = pBegin, next = first, pending = 0u, pendingFirst = 0u;\n"
+         "    if (pc.dispatch > 0u) {\n"
+         "        i = resume[4u * plant];\n"
+         "        next = resume[4u * plant + 1u];\n"
+         "        pending = resume[4u * plant + 2u];\n"
+         "        pendingFirst = resume[4u * plant + 3u];\n"
+         "        if (i >= pEnd && pending == 0u) return; // done in an earlier dispatch\n"
+         "    }\n"
          "    gState = plant * 3u * pc.stackLevels;\n"
          "    gStack = plant * pc.stackLevels * kStackWidth;\n"
          "    if (plantFrozen[plant] == kPlantFrozen) {\n"
-         "        for (; i < stopAt; ++i) outputFromInput(i, next);\n"
+         "        for (; i < pEnd && gWork < pc.chunk; ++i, ++gWork) outputFromInput(i, next);\n"
          "    } else {\n"
          "        uint species = plant % kSpeciesCount;\n";
-    s += codegen::perSpecies(species.size(), [](size_t sp) { return fmt::format("        s{}Derive(plant, pBegin, pEnd, i, stopAt, next);\n", sp); });
+    s += codegen::perSpecies(species.size(), [](size_t sp) {
+        return fmt::format("        s{}Derive(plant, pBegin, pEnd, i, next, pending, pendingFirst);\n", sp);
+    });
     s += "    }\n"
-         "    resume[2u * plant] = i;\n"
-         "    resume[2u * plant + 1u] = next;\n"
+         "    resume[4u * plant] = i;\n"
+         "    resume[4u * plant + 1u] = next;\n"
+         "    resume[4u * plant + 2u] = pending;\n"
+         "    resume[4u * plant + 3u] = pendingFirst;\n"
          "    plantCounts[plant] = next - first;\n"
+         "    if ((i < pEnd || pending != 0u) && !gAbort) errors[2] = 1u; // the host dispatches again\n"
+         "    reportLoopsCut();\n"
          "}\n";
     k.sequential = std::move(s);
     return k;

@@ -35,10 +35,16 @@ uint endOfBranch(uint s, uint pBegin, uint pEnd) {
 }
 
 // Right context: moves s to the module the pattern symbol `want` is compared with. Skipped symbols pass,
-// closed branches pass unless the pattern enters one with `[`; false at the end of the plant.
-bool rightWalk(inout uint s, uint want, uint pEnd, uint skipRow) {
+// closed branches pass unless the pattern enters one with `[`; false at the end of the plant, except that a
+// `ring` L-system's walk goes on from the plant's start once per pattern (`wrapped`), as the CPU reference's.
+bool rightWalk(inout uint s, uint want, uint pBegin, uint pEnd, uint skipRow, bool ring, inout bool wrapped) {
     for (;;) {
-        if (s >= pEnd) return false;
+        if (s >= pEnd) {
+            if (!ring || wrapped) return false;
+            wrapped = true;
+            s = pBegin;
+            continue;
+        }
         uint sym = symOf(s);
         if (skipped(sym, skipRow)) {
             ++s;
@@ -53,10 +59,16 @@ bool rightWalk(inout uint s, uint want, uint pEnd, uint skipRow) {
     return false;
 }
 
-// Left context: moves s to the next module to compare, skipping branches to the left and passing `[`.
-bool leftWalk(inout int s, uint pBegin, uint skipRow) {
+// Left context: moves s to the next module to compare, skipping branches to the left and passing `[`; a ring
+// L-system's walk goes on from the plant's end once per pattern.
+bool leftWalk(inout int s, uint pBegin, uint pEnd, uint skipRow, bool ring, inout bool wrapped) {
     for (;;) {
-        if (s < int(pBegin)) return false;
+        if (s < int(pBegin)) {
+            if (!ring || wrapped) return false;
+            wrapped = true;
+            s = int(pEnd) - 1;
+            continue;
+        }
         uint sym = symOf(uint(s));
         if (sym == kClose) {
             uint open = openingBracket(uint(s), pBegin);
@@ -74,6 +86,7 @@ bool leftWalk(inout int s, uint pBegin, uint skipRow) {
 // A module's productions mostly start their context walks at the same place, so each invocation remembers its
 // last walk in each direction and repeats none. Within one invocation pBegin, pEnd and skipRow stay the same
 // for a given start (one plant at a time), so the start and whether the pattern enters branches are the key.
+// (Ring L-systems walk without these: whether a walk may wrap depends on the pattern's earlier walks.)
 uint rightMemoStart = kNoModule, rightMemoEnd = 0u;
 bool rightMemoEnters = false, rightMemoFound = false;
 bool rightAdvance(inout uint s, uint want, uint pEnd, uint skipRow) {
@@ -82,7 +95,8 @@ bool rightAdvance(inout uint s, uint want, uint pEnd, uint skipRow) {
         rightMemoStart = s;
         rightMemoEnters = enters;
         rightMemoEnd = s;
-        rightMemoFound = rightWalk(rightMemoEnd, want, pEnd, skipRow);
+        bool wrapped = false;
+        rightMemoFound = rightWalk(rightMemoEnd, want, 0u, pEnd, skipRow, false, wrapped);
     }
     s = rightMemoEnd;
     return rightMemoFound;
@@ -94,7 +108,8 @@ bool leftAdvance(inout int s, uint pBegin, uint skipRow) {
     if (s != leftMemoStart) {
         leftMemoStart = s;
         leftMemoEnd = s;
-        leftMemoFound = leftWalk(leftMemoEnd, pBegin, skipRow);
+        bool wrapped = false;
+        leftMemoFound = leftWalk(leftMemoEnd, pBegin, 0u, skipRow, false, wrapped);
     }
     s = leftMemoEnd;
     return leftMemoFound;
@@ -108,9 +123,16 @@ void reportError(uint code) { atomicCompSwap(errors[0], 0u, code + 1u); }
 // knows only the loop's own exits and folds the check away. So every generated main() ends by asking this loop of
 // pc.loopProbeTrips iterations (a number the compiler cannot know), which stops after one exactly when the
 // invocation's iterations are spent, and raises kFlagLoopCut.
+// The count lives in shared memory and grows by atomics: LLVM then sees no induction variable to analyse. (Asked
+// about a counted loop at the end of a large kernel, its analysis walks every condition before the loop and can
+// take minutes to compile; a float count does not survive its optimisations.)
+shared uint loopProbe[kDeriveWorkgroupSize];
 void reportLoopsCut() {
-    uint trips = 0u;
-    for (uint k = 0u; k < pc.loopProbeTrips; ++k) ++trips;
+    uint slot = gl_LocalInvocationIndex, trips;
+    loopProbe[slot] = 0u;
+    do {
+        trips = atomicAdd(loopProbe[slot], 1u) + 1u;
+    } while (trips < pc.loopProbeTrips);
     if (trips != pc.loopProbeTrips) atomicOr(errors[1], kFlagLoopCut);
 }
 

@@ -42,6 +42,7 @@ struct Stream {
 VkDeviceSize bytes(uint64_t count, uint64_t size) { return std::max<VkDeviceSize>(count * size, 4); }
 
 constexpr uint32_t kGreedyChunk = 256; // as greedy_chunks.glsl
+constexpr uint32_t kGreedyBlock = 256; // chunks per block of greedy_scan.comp
 
 } // namespace
 
@@ -69,6 +70,7 @@ struct GpuDeriver::Impl {
     vk::Buffer globals, arrays, plantFrozen;
     vk::Buffer counts, choices, drawStarts, offsets, cutDelta, cutBefore, examined;
     vk::Buffer chunkFunctions, chunkEntries; // the greedy walk over predecessors of several modules
+    vk::Buffer blockFunctions, blockEntries; // ... and over blocks of chunks
     vk::Buffer plantHints; // of the stream the running kernels find plants in (recordPlantHints)
     vk::Buffer tileSums, tileOffsets; // a fused scan's sums of counts per subgroup, and their scan
     uint32_t tileSize = 1;            // a fused scan's tile: the device's subgroup size
@@ -217,6 +219,9 @@ struct GpuDeriver::Impl {
             *b = vk::Buffer(ctx, bytes(capacity, 4), vk::MemoryUsage::DeviceLocal);
         chunkFunctions = vk::Buffer(ctx, bytes(capacity / kGreedyChunk + 1, 4), vk::MemoryUsage::DeviceLocal);
         chunkEntries = vk::Buffer(ctx, bytes(capacity / kGreedyChunk + 1, 4), vk::MemoryUsage::DeviceLocal);
+        uint64_t blocks = capacity / kGreedyChunk / kGreedyBlock + 1;
+        blockFunctions = vk::Buffer(ctx, bytes(blocks, 4), vk::MemoryUsage::DeviceLocal);
+        blockEntries = vk::Buffer(ctx, bytes(blocks, 4), vk::MemoryUsage::DeviceLocal);
         plantHints = vk::Buffer(ctx, bytes(shared::plantHintBlocks(static_cast<uint32_t>(capacity)) + 1, 4),
                                 vk::MemoryUsage::DeviceLocal);
         if (kernels.fusedScan)
@@ -297,9 +302,13 @@ struct GpuDeriver::Impl {
         DeriveHelperPush chunked{n, kernels.longestPredecessor, 0, plants};
         greedyReduce.dispatch(cmd, {choices, plantTable(in), chunkFunctions}, chunked, greedyReduce.groupsFor(chunks));
         vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
-        DeriveHelperPush composed{chunks, 0, 0, plants};
-        greedyScan.dispatch(cmd, {chunkFunctions, chunkEntries}, composed, 1);
-        vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+        uint32_t blocks = (chunks + kGreedyBlock - 1) / kGreedyBlock;
+        for (uint32_t phase = 0; phase < 3; ++phase) {
+            DeriveHelperPush composed{chunks, phase, 0, plants};
+            greedyScan.dispatch(cmd, {chunkFunctions, chunkEntries, blockFunctions, blockEntries}, composed,
+                                phase == 1 ? 1 : greedyScan.groupsFor(blocks));
+            vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+        }
         greedyMark.dispatch(cmd, {choices, plantTable(in), chunkEntries, counts}, chunked, greedyMark.groupsFor(chunks));
         vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
     }

@@ -4,8 +4,7 @@
 // earlier module's — productions writing globals or arrays, locals that carry their value over from the
 // production's previous application (cpfg keeps one variable table per production), stop() — is left to the
 // sequential kernel, which walks each plant in order. Neither does what a device cannot: file input and output
-// in productions. Ring L-systems are not on the device yet. printf() is
-// accepted and prints nothing: the derived string is the same.
+// in productions. printf() is accepted and prints nothing: the derived string is the same.
 #include <set>
 
 #include <fmt/format.h>
@@ -106,7 +105,6 @@ struct Checker {
 
 std::optional<std::string> unsupportedReason(const ir::Grammar& g, bool parallel) {
     Checker check{g, parallel, std::nullopt};
-    if (g.ring) check.fail(g.axiomLoc, "a ring L-system");
     if (g.alphabet.size() > (1u << 24)) check.fail(g.axiomLoc, "more than 2^24 symbols");
     for (const ir::Production& p : g.productions.productions) check.production(p, false);
     if (g.decomposition.maxDepth > 0)

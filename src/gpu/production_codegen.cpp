@@ -359,12 +359,15 @@ void emitMatch(BodyEmitter& body, const ir::Grammar& g, size_t species, const ir
     if (!p.right.empty()) {
         body.open(walkOpening(p.right));
         body.line(fmt::format("uint s = ctxRight + {}u;", p.strict.size() - 1));
+        if (g.ring) body.line("bool wrapped = false;");
         for (const ir::PatternModule& m : p.right) {
             if (equals && m.sym == *equals) {
                 body.line("s = endOfBranch(s, pBegin, pEnd);");
                 continue;
             }
-            body.line(fmt::format("if (!rightAdvance(s, {}u, pEnd, {}u)) return false;", m.sym, skipRow));
+            body.line(g.ring ? fmt::format("if (!rightWalk(s, {}u, pBegin, pEnd, {}u, true, wrapped)) return false;",
+                                           m.sym, skipRow)
+                             : fmt::format("if (!rightAdvance(s, {}u, pEnd, {}u)) return false;", m.sym, skipRow));
             body.line(fmt::format("if (symOf(s) != {}u || countOf(s) != {}u) return false;", m.sym, m.paramSlots.size()));
             for (size_t k = 0; k < m.paramSlots.size(); ++k)
                 body.line(fmt::format("v{} = paramOf(s, {}u);", m.paramSlots[k], k));
@@ -375,8 +378,10 @@ void emitMatch(BodyEmitter& body, const ir::Grammar& g, size_t species, const ir
     if (!p.left.empty()) {
         body.open(walkOpening(p.left));
         body.line("int s = ctxLeft;");
+        if (g.ring) body.line("bool wrapped = false;");
         for (auto it = p.left.rbegin(); it != p.left.rend(); ++it) {
-            body.line(fmt::format("if (!leftAdvance(s, pBegin, {}u)) return false;", skipRow));
+            body.line(g.ring ? fmt::format("if (!leftWalk(s, pBegin, pEnd, {}u, true, wrapped)) return false;", skipRow)
+                             : fmt::format("if (!leftAdvance(s, pBegin, {}u)) return false;", skipRow));
             body.line(fmt::format("if (symOf(uint(s)) != {}u || countOf(uint(s)) != {}u) return false;", it->sym,
                                   it->paramSlots.size()));
             for (size_t k = 0; k < it->paramSlots.size(); ++k)

@@ -360,6 +360,47 @@ TEST_F(DeriveGpuTest, ManyPlantsMatchTheCpu) {
     }
 }
 
+// Predecessors of three modules claim their neighbours left to right (the greedy walk); X and the odd successor
+// lengths shift the triples, so that they straddle chunk and block boundaries. At 380,000 modules the walk's
+// chunks form several blocks of greedy_scan.comp.
+TEST_F(DeriveGpuTest, PredecessorsOfSeveralModulesMatchTheCpu) {
+    ir::Grammar g = simeco::testing::grammarFromText(
+        simeco::testing::lsystem("XA(0)A(1)A(2)",
+                                 "A(a)A(b)A(c) --> A(a+1)A(b)A(c)B(a)A(b+c)A(a)A(c)\nB(n) --> A(n)\n", 16));
+    cpu::DeriveResult want = cpu::deriveCpu(g, {});
+    ASSERT_GT(want.string.size(), 4u * 256u * 256u);
+    gpu::GpuDeriver deriver(context(), g);
+    EXPECT_EQ(firstDifference(want, deriver.derive({}), g.alphabet), "");
+}
+
+// Ring L-systems: contexts go on from the other end of their own plant, once per pattern, with branches, ignored
+// symbols and decomposition.
+TEST_F(DeriveGpuTest, RingLSystemsMatchTheCpu) {
+    const std::string grammars[] = {
+        simeco::testing::lsystem("S(1)B(0)[+B(0)]B(0)+B(0)",
+                                 "ring lsystem\nignore: +\nS(n) --> B(n)\nS(n) < B(m) --> S(n+m+1)\n"
+                                 "B(m) > S(n) --> B(m+n)\n",
+                                 9),
+        simeco::testing::lsystem("ABABB", "ring lsystem\nA > BAB --> X\nBAB < A --> Y\nA > BABAB --> Z\n"
+                                          "B > AB --> C\nC --> AB\nX --> BA\nY --> A\n",
+                                 6),
+        "Lsystem: 1\nring lsystem\nDerivation length: 5\nAxiom: A(0)B(1)C(2)\nA(x) --> A(x+1)B(x)\n"
+        "decomposition\nmaximum depth: 2\nC(z) < A(x) --> D(z+x)\nB(y) > A(x) --> E(x)\nD(v) --> C(v)A(1)\n"
+        "endlsystem\n",
+    };
+    for (const std::string& text : grammars) {
+        SCOPED_TRACE(text);
+        ir::Grammar g = simeco::testing::grammarFromText(text);
+        ASSERT_TRUE(g.ring);
+        cpu::DeriveOptions options;
+        options.plants = 3;
+        for (gpu::GpuStrategy strategy : {gpu::GpuStrategy::Parallel, gpu::GpuStrategy::Sequential}) {
+            Outcome outcome = compareEngines(context(), g, options, strategy);
+            EXPECT_EQ(outcome.verdict, Verdict::Match) << outcome.detail;
+        }
+    }
+}
+
 // One deriver derives again and again: with and without reading back, with more plants, then fewer.
 TEST_F(DeriveGpuTest, DeriverDerivesRepeatedly) {
     ir::Grammar g = plantGrammar();

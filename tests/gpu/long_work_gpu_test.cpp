@@ -43,8 +43,8 @@ bool matchesOrRefuses(const vk::Context& context, const ir::Grammar& g, gpu::Gpu
 }
 
 TEST_F(LongWorkGpuTest, LongProductionLoopMatchesOrIsRefused) {
-    ir::Grammar g = testing::grammarFromText(
-        testing::lsystem("A(0)", "A(n) : 1 { k = 0; while (k < 70000) { k = k + 1; } } --> B(k)\n"));
+    ir::Grammar g = simeco::testing::grammarFromText(
+        simeco::testing::lsystem("A(0)", "A(n) : 1 { k = 0; while (k < 70000) { k = k + 1; } } --> B(k)\n"));
     for (const Strategy& s : kStrategies) {
         SCOPED_TRACE(s.name);
         bool matched = matchesOrRefuses(context(), g, s.strategy);
@@ -54,8 +54,8 @@ TEST_F(LongWorkGpuTest, LongProductionLoopMatchesOrIsRefused) {
 
 // B's left context lies beyond 2^17 ignored modules.
 TEST_F(LongWorkGpuTest, LongContextWalkMatchesOrIsRefused) {
-    ir::Grammar g = testing::grammarFromText(
-        testing::lsystem("A(1)XB(0)", "ignore: X\nX --> XX\nA(a) < B(b) --> B(a + b)\n", 17));
+    ir::Grammar g = simeco::testing::grammarFromText(
+        simeco::testing::lsystem("A(1)XB(0)", "ignore: X\nX --> XX\nA(a) < B(b) --> B(a + b)\n", 17));
     for (const Strategy& s : kStrategies) {
         SCOPED_TRACE(s.name);
         bool matched = matchesOrRefuses(context(), g, s.strategy);
@@ -66,7 +66,7 @@ TEST_F(LongWorkGpuTest, LongContextWalkMatchesOrIsRefused) {
 // 5000 levels of decomposition from one module, more than lavapipe lets one invocation loop: the sequential
 // kernel goes on in later dispatches. (The parallel passes run one pass per level; no invocation loops long.)
 TEST_F(LongWorkGpuTest, DeepSequentialDecompositionMatchesTheCpu) {
-    ir::Grammar g = testing::grammarFromText("Lsystem: 1\nDerivation length: 1\nAxiom: A(0)\n"
+    ir::Grammar g = simeco::testing::grammarFromText("Lsystem: 1\nDerivation length: 1\nAxiom: A(0)\n"
                                              "decomposition\nmaximum depth: 5000\n"
                                              "A(n) : n < 100000 --> [B(n)C]A(n+1)\n"
                                              "endlsystem\n");

@@ -73,6 +73,17 @@ TEST(DeriveCpu, SignalPropagatesOneModulePerStep) {
     EXPECT_EQ(deriveText(lsystem("baaaaaaa", body, 3)), "aaabaaaa");
 }
 
+// A ring L-system's contexts go on from the other end of the string, once per pattern.
+TEST(DeriveCpu, RingContextsWrapAroundTheString) {
+    EXPECT_EQ(deriveText(lsystem("SBBB", "ring lsystem\nS --> B\nS < B --> S", 4)), "SBBB");
+    EXPECT_EQ(deriveText(lsystem("SBBB", "S --> B\nS < B --> S", 4)), "BBBB");
+    EXPECT_EQ(deriveText(lsystem("BBBS", "ring lsystem\nS --> B\nB > S --> S", 4)), "BBBS");
+    EXPECT_EQ(deriveText(lsystem("AB", "ring lsystem\nA > BAB --> X", 1)), "XB");
+    EXPECT_EQ(deriveText(lsystem("AB", "ring lsystem\nA > BABA --> X", 1)), "AB");
+    EXPECT_EQ(deriveText(lsystem("AB", "ring lsystem\nBAB < A --> X", 1)), "AB");
+    EXPECT_EQ(deriveText(lsystem("AB", "ring lsystem\nAB < A --> X", 1)), "XB");
+}
+
 TEST(DeriveCpu, CutRemovesTheRestOfTheBranchInTheNextStep) {
     std::string body = "B --> %";
     EXPECT_EQ(deriveText(lsystem("A[BCD]E", body, 1)), "A[%CD]E");

@@ -94,7 +94,7 @@ public:
         depthCounter_.assign(1, 0);
         for (size_t i = 0; i < cur_.size(); ++i) {
             ModuleRef self{cur_.sym[i], cur_.paramsOf(i), cur_.paramCount[i]};
-            if (!rewriteRecursively(homomorphism_, homomorphismPass, self, 0, int64_t(i) - 1, i + 1))
+            if (!rewriteRecursively(homomorphism_, homomorphismPass, self, int64_t(i) - 1, i + 1))
                 next_.push(self.sym, self.params, self.count);
             checkBudget(next_.size());
         }
@@ -115,6 +115,8 @@ private:
     uint64_t budget_;
     int stride_ = 1;
     ModuleString cur_, next_;
+    std::vector<ModuleString> recursionLevels_; // rewriteRecursively's stack, kept between calls
+    std::vector<size_t> recursionNext_;
     std::vector<int64_t> match_; // the matching bracket of each bracket in cur_
     std::vector<std::vector<uint32_t>> productionsBySymbol_;
     bool stochastic_ = false;
@@ -304,17 +306,13 @@ private:
         evaluator_.key.draw = 1; // draw 0 belongs to the choice among stochastic productions
     }
 
-    // Rewrites module m with `set` (depth-first, up to the maximum depth) into next_, with contexts taken
-    // around the predecessor in the current string. Returns false when no rule applies at depth 0 (the
-    // caller then copies or cuts).
+    // The production `set` applies to module m at `depth` (counting m among the modules examined there), or kNone.
     template <typename PassOfDepth>
-    bool rewriteRecursively(RecursiveRules& set, PassOfDepth passOfDepth, const ModuleRef& m, int depth,
-                            int64_t left, size_t right) {
+    int64_t chooseRecursive(RecursiveRules& set, PassOfDepth passOfDepth, const ModuleRef& m, int depth, int64_t left,
+                            size_t right) {
         const ir::RuleSet& rules = *set.rules;
-        if (rules.productions.empty() || rules.maxDepth <= 0) return false;
         if (depthCounter_.size() <= size_t(depth)) depthCounter_.resize(size_t(depth) + 1, 0);
         setKey(passOfDepth(step_, depth), depthCounter_[size_t(depth)]++);
-        int64_t found = kNone;
         std::vector<uint32_t> candidates;
         if (m.sym < set.bySymbol.size()) {
             for (uint32_t pi : set.bySymbol[m.sym]) {
@@ -323,41 +321,63 @@ private:
                 std::vector<double>& frame = set.frames[pi];
                 bool ok = applicable(p, left, right, frame, [&](double* f) { bind(p.strict[0], m.params, f); });
                 if (!ok) continue;
-                if (p.weight < 0) {
-                    found = pi;
-                    break;
-                }
+                if (p.weight < 0) return pi;
                 candidates.push_back(pi);
             }
         }
-        if (found == kNone && !candidates.empty()) found = choose(rules, candidates);
-        if (found == kNone) {
-            if (depth == 0) return false;
-            next_.push(m.sym, m.params, m.count);
-            checkBudget(next_.size());
-            return true;
+        return candidates.empty() ? kNone : choose(rules, candidates);
+    }
+
+    // Rewrites module m with `set` (depth-first, up to the maximum depth) into next_, with contexts taken
+    // around the predecessor in the current string. Returns false when no rule applies at depth 0 (the
+    // caller then copies or cuts). The depth-first walk keeps its own stack, as decompositions may go thousands
+    // of levels deep: levels[d] holds what the production applied at depth d produced, next[d] how many of
+    // those were rewritten.
+    template <typename PassOfDepth>
+    bool rewriteRecursively(RecursiveRules& set, PassOfDepth passOfDepth, const ModuleRef& m, int64_t left,
+                            size_t right) {
+        const ir::RuleSet& rules = *set.rules;
+        if (rules.productions.empty() || rules.maxDepth <= 0) return false;
+        int64_t found = chooseRecursive(set, passOfDepth, m, 0, left, right);
+        if (found == kNone) return false;
+        std::vector<ModuleString>& levels = recursionLevels_;
+        std::vector<size_t>& next = recursionNext_;
+        auto open = [&](size_t level, int64_t production) {
+            if (levels.size() <= level) levels.resize(level + 1);
+            if (next.size() <= level) next.resize(level + 1);
+            levels[level].clear();
+            levels[level].stride = stride_;
+            produce(rules.productions[size_t(production)], set.frames[size_t(production)], levels[level]);
+            next[level] = 0;
+        };
+        open(0, found);
+        for (int64_t top = 0; top >= 0;) {
+            ModuleString& level = levels[size_t(top)];
+            if (next[size_t(top)] == level.size()) {
+                --top;
+                continue;
+            }
+            size_t k = next[size_t(top)]++;
+            ModuleRef child{level.sym[k], level.paramsOf(k), level.paramCount[k]};
+            int depth = int(top) + 1;
+            found = chooseRecursive(set, passOfDepth, child, depth, left, right);
+            if (found == kNone || depth >= rules.maxDepth) {
+                next_.push(child.sym, child.params, child.count);
+                checkBudget(next_.size());
+                continue;
+            }
+            open(size_t(++top), found);
         }
-        if (depth >= rules.maxDepth) {
-            next_.push(m.sym, m.params, m.count);
-            checkBudget(next_.size());
-            return true;
-        }
-        ModuleString produced;
-        produced.stride = stride_;
-        produce(rules.productions[size_t(found)], set.frames[size_t(found)], produced);
-        for (size_t k = 0; k < produced.size(); ++k)
-            rewriteRecursively(set, passOfDepth, {produced.sym[k], produced.paramsOf(k), produced.paramCount[k]},
-                               depth + 1, left, right);
         return true;
     }
 
-    bool decompose(const ModuleRef& m, int depth, int64_t left, size_t right) {
-        return rewriteRecursively(decomposition_, decompositionPass, m, depth, left, right);
+    bool decompose(const ModuleRef& m, int64_t left, size_t right) {
+        return rewriteRecursively(decomposition_, decompositionPass, m, left, right);
     }
 
     // Emits module m after trying decomposition on it.
     void emit(const ModuleRef& m, int64_t left, size_t right) {
-        if (!decompose(m, 0, left, right)) next_.push(m.sym, m.params, m.count);
+        if (!decompose(m, left, right)) next_.push(m.sym, m.params, m.count);
         checkBudget(next_.size());
     }
 
@@ -415,7 +435,7 @@ private:
             }
             ModuleRef self{sym, cur_.paramsOf(i), cur_.paramCount[i]};
             uint32_t examined = depthCounter_[0];
-            if (useDecomposition && decompose(self, 0, int64_t(i) - 1, i + 1)) {
+            if (useDecomposition && decompose(self, int64_t(i) - 1, i + 1)) {
                 checkBudget(next_.size());
                 ++i;
                 continue;

@@ -44,6 +44,14 @@ VkDeviceSize bytes(uint64_t count, uint64_t size) { return std::max<VkDeviceSize
 constexpr uint32_t kGreedyChunk = 256; // as greedy_chunks.glsl
 constexpr uint32_t kGreedyBlock = 256; // chunks per block of greedy_scan.comp
 
+// The driver ended an invocation's loops early (kFlagLoopCut) where the work cannot be split any finer.
+ir::LimitError loopsCutError(const std::string& what) {
+    return ir::LimitError(fmt::format("{}: the device's driver ended a shader loop early (lavapipe ends an "
+                                      "invocation's loops after 65535 iterations in all); derive this grammar with "
+                                      "--backend cpu",
+                                      what));
+}
+
 } // namespace
 
 struct GpuDeriver::Impl {
@@ -276,9 +284,7 @@ struct GpuDeriver::Impl {
             throw std::runtime_error("a derivation kernel reported an unknown error");
         }
         if ((lastFlags & shared::kFlagLoopCut) && !retriesCutLoops)
-            throw ir::LimitError("the device's driver ended a shader loop early (lavapipe ends an invocation's loops "
-                                 "after 65535 iterations in all): a production loops long, a context walk passes very "
-                                 "many modules or a decomposition goes very deep; derive this grammar with --backend cpu");
+            throw loopsCutError("a production loops long or a context walk passes very many modules");
         return words[0];
     }
 
@@ -625,11 +631,7 @@ struct GpuDeriver::Impl {
             }
             if (lastFlags & shared::kFlagLoopCut) {
                 if (chunk == 1)
-                    throw ir::LimitError(fmt::format(
-                        "step {}: the device's driver ended a shader loop early (lavapipe stops an invocation's loops "
-                        "after 65535 iterations in all), even when rewriting one module at a time; derive this "
-                        "grammar with --backend cpu",
-                        stepIndex));
+                    throw loopsCutError(fmt::format("step {}, one module at a time", stepIndex));
                 chunk = std::max<uint32_t>(1, chunk / 4);
             } else if (lastFlags & shared::kFlagStackFull) {
                 if (stackLevels >= deepestStack()) throw std::logic_error("decomposition stack full at the maximum depth");

@@ -243,8 +243,8 @@ std::string deriveFunction(const ir::Grammar& g, size_t sp, const FrameLayout& f
                                 sp);
     if (decomposes) {
         s += "    if (pc.dispatch == 0u) for (uint d = 0u; d < pc.stackLevels; ++d) stackState[depthCounterAt(d)] = 0u;\n";
-        // Decomposes stack level 0, which holds what the input modules from `from` up to i became; returns false
-        // when suspended (the plant goes on in the next dispatch).
+        // A decomposition suspended in an earlier dispatch goes on first: its stack holds what the input modules
+        // from pendingFirst up to i became.
         s += fmt::format("    if (pending != 0u) {{\n"
                          "        uint top = pending - 1u;\n"
                          "        pending = 0u;\n"

@@ -126,8 +126,11 @@ void reportError(uint code) { atomicCompSwap(errors[0], 0u, code + 1u); }
 // The count lives in shared memory and grows by atomics: LLVM then sees no induction variable to analyse. (Asked
 // about a counted loop at the end of a large kernel, its analysis walks every condition before the loop and can
 // take minutes to compile; a float count does not survive its optimisations.)
+// The driver counts iterations per subgroup (its invocations run as one SIMD program), so one invocation of each
+// subgroup asks, which keeps the probe's cost out of the passes' throughput.
 shared uint loopProbe[kDeriveWorkgroupSize];
 void reportLoopsCut() {
+    if (!subgroupElect()) return;
     uint slot = gl_LocalInvocationIndex, trips;
     loopProbe[slot] = 0u;
     do {

@@ -120,14 +120,14 @@ void reportError(uint code) { atomicCompSwap(errors[0], 0u, code + 1u); }
 
 // lavapipe ends every loop of an invocation once the invocation has run 65535 loop iterations in all, and the code
 // after a loop then runs as if the loop had ended by itself. A check after a loop cannot see that: the compiler
-// knows only the loop's own exits and folds the check away. So every generated main() ends by asking this loop of
+// knows only the loop's own exits and folds the check away. So every generated main() ends with this loop of
 // pc.loopProbeTrips iterations (a number the compiler cannot know), which stops after one exactly when the
-// invocation's iterations are spent, and raises kFlagLoopCut.
-// The count lives in shared memory and grows by atomics: LLVM then sees no induction variable to analyse. (Asked
-// about a counted loop at the end of a large kernel, its analysis walks every condition before the loop and can
-// take minutes to compile; a float count does not survive its optimisations.)
-// The driver counts iterations per subgroup (its invocations run as one SIMD program), so one invocation of each
-// subgroup asks, which keeps the probe's cost out of the passes' throughput.
+// iterations are spent, and raises kFlagLoopCut.
+// - The driver counts iterations per subgroup (one SIMD program), so one invocation of each subgroup asks; a probe
+//   in every invocation cost a third of a simple grammar's throughput.
+// - The count grows by atomics in shared memory, so LLVM finds no induction variable to analyse: asked about a
+//   counted loop at the end of a large kernel, its analysis walks every condition before it and can take
+//   minutes; a float count does not survive its optimisations.
 shared uint loopProbe[kDeriveWorkgroupSize];
 void reportLoopsCut() {
     if (!subgroupElect()) return;

@@ -209,13 +209,14 @@ double powD(double a, double b) {
     if (b == 0.0LF) return 1.0LF;
     if (a == 0.0LF) return b > 0.0LF ? 0.0LF : 1.0LF / 0.0LF;
     if (b == floor(b) && abs(b) <= 64.0LF) {
-        // Whole exponents by repeated squaring (as exact as the C library for these).
+        // Whole exponents by repeated squaring (as exact as the C library for these). Seven squarings cover
+        // |b| <= 64; a fixed count unrolls, where a loop on the bits of b made lavapipe's compile of a kernel with
+        // a few powers take seconds.
         double result = 1.0LF, base = a;
         int n = int(abs(b));
-        while (n > 0) {
-            if ((n & 1) == 1) result *= base;
+        for (int bit = 0; bit < 7; ++bit) {
+            if ((n & (1 << bit)) != 0) result *= base;
             base *= base;
-            n >>= 1;
         }
         return b < 0.0LF ? 1.0LF / result : result;
     }

@@ -2,14 +2,15 @@
 // (brackets matched by derive/depth_tree.glsl, which comes before this file), error reports, and
 // double-precision elementary functions.
 //
-// Expects before it: the buffers symIn, parIn, depthTree, levelInfo, bracketPartners, contextSkip, errors and the push
-// constants `pc` (DerivePush), and shared/random.h, shared/derive_layout.h and derive/depth_tree.glsl.
+// Expects before it: the buffers symIn, parIn, depthTree, levelInfo, bracketPartners, errors and the push constants
+// `pc` (DerivePush), shared/random.h, shared/derive_layout.h, derive/depth_tree.glsl and contextSkipWord(word),
+// the species' context filter (codegen::contextSkipBits, as constants or from the contextSkip buffer).
 
 uint symOf(uint i) { return symIn[i] & kSymbolMask; }
 uint countOf(uint i) { return symIn[i] >> kSymbolBits; }
 double paramOf(uint i, uint k) { return double(parIn[i * pc.stride + k]); }
-// contextSkip holds one row of bits per species; `row` is the first word of the species' row.
-bool skipped(uint sym, uint row) { return ((contextSkip[row + (sym >> 5u)] >> (sym & 31u)) & 1u) != 0u; }
+// The context filter holds one row of bits per species; `row` is the first word of the species' row.
+bool skipped(uint sym, uint row) { return ((contextSkipWord(row + (sym >> 5u)) >> (sym & 31u)) & 1u) != 0u; }
 
 // matchOpen and matchClose by the partners found once per string (derive/bracket_partners.comp).
 uint closingBracket(uint s, uint pEnd) {
@@ -34,10 +35,10 @@ uint endOfBranch(uint s, uint pBegin, uint pEnd) {
     return close == kNoModule ? pEnd : close;
 }
 
-// Right context: moves s to the module the pattern symbol `want` is compared with. Skipped symbols pass,
-// closed branches pass unless the pattern enters one with `[`; false at the end of the plant, except that a
-// `ring` L-system's walk goes on from the plant's start once per pattern (`wrapped`), as the CPU reference's.
-bool rightWalk(inout uint s, uint want, uint pBegin, uint pEnd, uint skipRow, bool ring, inout bool wrapped) {
+// Right context: moves s to the module the next pattern symbol is compared with. Skipped symbols pass, closed
+// branches pass unless the pattern `enters` one with `[`; false at the end of the plant, except that a `ring`
+// L-system's walk goes on from the plant's start once per pattern (`wrapped`), as the CPU reference's.
+bool rightWalk(inout uint s, bool enters, uint pBegin, uint pEnd, uint skipRow, bool ring, inout bool wrapped) {
     for (;;) {
         if (s >= pEnd) {
             if (!ring || wrapped) return false;
@@ -48,7 +49,7 @@ bool rightWalk(inout uint s, uint want, uint pBegin, uint pEnd, uint skipRow, bo
         uint sym = symOf(s);
         if (skipped(sym, skipRow)) {
             ++s;
-        } else if (want != kOpen && sym == kOpen) {
+        } else if (!enters && sym == kOpen) {
             uint close = closingBracket(s, pEnd);
             if (close == kNoModule) return false;
             s = close + 1u;
@@ -96,7 +97,7 @@ bool rightAdvance(inout uint s, uint want, uint pEnd, uint skipRow) {
         rightMemoEnters = enters;
         rightMemoEnd = s;
         bool wrapped = false;
-        rightMemoFound = rightWalk(rightMemoEnd, want, 0u, pEnd, skipRow, false, wrapped);
+        rightMemoFound = rightWalk(rightMemoEnd, enters, 0u, pEnd, skipRow, false, wrapped);
     }
     s = rightMemoEnd;
     return rightMemoFound;
@@ -113,6 +114,23 @@ bool leftAdvance(inout int s, uint pBegin, uint skipRow) {
     }
     s = leftMemoEnd;
     return leftMemoFound;
+}
+
+// Where the first module of the context patterns lies, walked once per module by the generated
+// prefetchContexts() before the productions try their patterns: lavapipe runs every branch of a kernel for all
+// invocations of a subgroup, so a walk written into each production cost a loop per production.
+// The modules' words (symbol and parameter count) come along, so a pattern module is one comparison.
+uint firstRight = 0u, firstRightBranch = 0u;
+int firstLeft = 0;
+bool firstRightFound = false, firstRightBranchFound = false, firstLeftFound = false;
+uint firstRightWord = 0u, firstRightBranchWord = 0u, firstLeftWord = 0u;
+bool walkRight(inout uint s, bool enters, uint pEnd, uint skipRow) {
+    bool wrapped = false;
+    return rightWalk(s, enters, 0u, pEnd, skipRow, false, wrapped);
+}
+bool walkLeft(inout int s, uint pBegin, uint skipRow) {
+    bool wrapped = false;
+    return leftWalk(s, pBegin, 0u, skipRow, false, wrapped);
 }
 
 // The first evaluation error of the pass wins; the host turns the code into a located message.

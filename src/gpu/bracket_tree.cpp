@@ -24,6 +24,13 @@ BracketTree::BracketTree(const vk::Context& context, GpuScan& scan)
       levelInfo_(context, 2 * kMaxDepthLevels * 4, vk::MemoryUsage::Upload),
       partners_(context, 4, vk::MemoryUsage::DeviceLocal) {}
 
+const vk::Buffer& BracketTree::carriedPartners(std::uint32_t count) {
+    std::uint64_t elements = std::max(count, 1u);
+    if (!carriedPartners_ || carriedPartners_.size() < elements * 4)
+        carriedPartners_ = vk::Buffer(context_, (elements + elements / 2) * 4, vk::MemoryUsage::DeviceLocal);
+    return carriedPartners_;
+}
+
 void BracketTree::record(VkCommandBuffer cmd, const vk::Buffer& symbols, std::uint32_t count) {
     // Level k holds ceil(n / 2^k) minima; levelInfo gives each level's offset and size.
     std::uint32_t info[2 * kMaxDepthLevels] = {};

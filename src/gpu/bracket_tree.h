@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <utility>
 
 #include <vulkan/vulkan.h>
 
@@ -32,11 +33,17 @@ public:
     const vk::Buffer& levelInfo() const { return levelInfo_; }
     const vk::Buffer& partners() const { return partners_; }
 
+    // Partners that a derivation pass writes for the string it writes, instead of a tree built over that string
+    // (GeneratedKernels::carriesPartners): the buffer for them, with room for `count` modules, and, once the pass
+    // is recorded, carried() makes them partners(). The tree is then out of date.
+    const vk::Buffer& carriedPartners(std::uint32_t count);
+    void carried() { std::swap(partners_, carriedPartners_); }
+
 private:
     const vk::Context& context_;
     GpuScan& scan_;
     vk::ComputePipeline bracketDepth_, depthLeaves_, depthLevel_, bracketPartners_;
-    vk::Buffer deltas_, before_, tree_, levelInfo_, partners_;
+    vk::Buffer deltas_, before_, tree_, levelInfo_, partners_, carriedPartners_;
 };
 
 } // namespace simeco::gpu

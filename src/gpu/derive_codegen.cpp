@@ -19,7 +19,7 @@ using codegen::literal;
 using codegen::RuleKind;
 
 // The buffers of each kernel. Contexts always read the string being rewritten (symIn, parIn).
-std::string declarations(bool decomposition, bool write, bool fusedScan = false) {
+std::string declarations(bool decomposition, bool write, bool fusedScan = false, bool carriesPartners = false) {
     codegen::Bindings b;
     b.addShared(false);
     if (decomposition) {
@@ -31,14 +31,14 @@ std::string declarations(bool decomposition, bool write, bool fusedScan = false)
         b.add("readonly", "uint", "examined");
     }
     if (!write) {
-        b.add("writeonly", "uint", "counts");
+        b.add("writeonly", "uint", fusedScan ? "countsBefore" : "counts");
         b.add("writeonly", "uint", "choices");
         b.add("writeonly", "uint", "drawStarts");
         if (!decomposition) b.add("", "uint", "cutDelta");
         if (fusedScan) b.add("writeonly", "uint", "tileSums");
     } else {
         if (fusedScan) {
-            b.add("readonly", "uint", "counts");
+            b.add("readonly", "uint", "countsBefore");
             b.add("readonly", "uint", "tileOffsets");
         } else {
             b.add("readonly", "uint", "offsets");
@@ -49,6 +49,7 @@ std::string declarations(bool decomposition, bool write, bool fusedScan = false)
         b.add("writeonly", "float", "parOut");
         b.add("writeonly", "uint", "originOut");
         b.add("writeonly", "uint", "liveOut");
+        if (carriesPartners) b.add("writeonly", "uint", "partnersOut");
     }
     b.add("readonly", "uint", "plantHints"); // of the stream plantOf() searches (derive/plant_hints.comp)
     return b.text();
@@ -125,26 +126,32 @@ std::string writeDispatch(const ir::RuleSet& rules, size_t species, RuleKind kin
 
 // How a kernel writes successor modules: nowhere (match passes), or into symOut/parOut, with the position each
 // module came from and its liveness when decomposition follows.
-std::string emitters(bool writes, bool provenance) {
+std::string emitters(bool writes, bool provenance, bool partners = false) {
+    std::string pairs = partners ? "void emitPartners(uint open, uint close) {\n"
+                                   "    partnersOut[open] = close;\n"
+                                   "    partnersOut[close] = open;\n"
+                                   "}\n"
+                                 : "void emitPartners(uint open, uint close) {}\n";
     if (!writes)
         return "void emitModule(uint pos, uint sym, uint count, uint origin) {}\n"
-               "void emitParam(uint pos, uint k, double value) {}\n\n";
+               "void emitParam(uint pos, uint k, double value) {}\n" + pairs + "\n";
     std::string s = "void emitModule(uint pos, uint sym, uint count, uint origin) {\n"
                     "    symOut[pos] = sym | (count << kSymbolBits);\n";
     if (provenance) // where each module came from, for decomposition's contexts
         s += "    originOut[pos] = origin;\n"
              "    liveOut[pos] = 1u;\n";
     return s + "}\n"
-               "void emitParam(uint pos, uint k, double value) { parOut[pos * pc.stride + k] = float(value); }\n\n";
+               "void emitParam(uint pos, uint k, double value) { parOut[pos * pc.stride + k] = float(value); }\n" +
+           pairs + "\n";
 }
 
 // The end of a match kernel: what it found for module i.
-// `returnsCount`: the function also returns the count (the step's matchModule, which a fused scan sums).
+// `returnsCount`: the function returns the count instead of storing it (the step's matchModule, whose main()
+// stores it or, with a fused scan, the counts before it in its tile).
 std::string recordChoice(bool returnsCount = false) {
-    return std::string("    if (chosen == 0u) produced = 1u;\n"
-                       "    counts[i] = produced;\n"
-                       "    choices[i] = chosen | ((length - 1u) << 24u); // the predecessor's length for the greedy walk\n"
-                       "    drawStarts[i] = start;\n") +
+    return std::string("    if (chosen == 0u) produced = 1u;\n") + (returnsCount ? "" : "    counts[i] = produced;\n") +
+           "    choices[i] = chosen | ((length - 1u) << 24u); // the predecessor's length for the greedy walk\n"
+           "    drawStarts[i] = start;\n" +
            (returnsCount ? "    return produced;\n}\n" : "}\n");
 }
 
@@ -154,7 +161,7 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species) 
     GeneratedKernels k = codegen::speciesTraits(species);
 
     std::string prelude = codegen::kernelPrelude(species.size()) + "uint currentPass() { return pc.pass; }\n";
-    std::string library = codegen::deriveLibrary();
+    std::string library = codegen::deriveLibrary(species);
     std::string functions, stepFunctions, decompositionFunctions;
     for (size_t sp = 0; sp < species.size(); ++sp) {
         const ir::Grammar& g = species[sp];
@@ -196,33 +203,39 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species) 
                            name, table);
     };
     // A plant that stopped (stop(), or its species' derivation length reached) keeps its string.
-    auto frozenCopy = [](const char* result) {
-        return fmt::format("    if (plantFrozen[plant] == kPlantFrozen) {{ counts[i] = 1u; choices[i] = kChoiceCopy; "
+    // `returnsCount`: as recordChoice's.
+    auto frozenCopy = [](bool returnsCount) {
+        return fmt::format("    if (plantFrozen[plant] == kPlantFrozen) {{ {}choices[i] = kChoiceCopy; "
                            "drawStarts[i] = 0u; return{}; }}\n",
-                           result);
+                           returnsCount ? "" : "counts[i] = 1u; ", returnsCount ? " 1u" : "");
     };
 
-    // The step's scan fused into its two passes: match also sums the successor counts of each subgroup's modules
-    // (a tile of gl_SubgroupSize consecutive modules: invocations fill subgroups in order), the host scans those
-    // sums, and write adds the subgroup's exclusive scan of the counts to its tile's offset. Subgroup operations
-    // need no barrier, and the counts are read once more instead of scanned in two more passes over the string.
+    // The step's scan fused into its two passes: match sums the successor counts of each subgroup's modules (a
+    // tile of gl_SubgroupSize consecutive modules: invocations fill subgroups in order) and stores for each module
+    // the counts before it in its tile; the host scans the sums, and a module's position is its tile's offset plus
+    // the counts before it. Subgroup operations need no barrier, and no pass over the string is added.
     // Cuts and predecessors of several modules change counts after the match, so they keep the separate scan.
     k.fusedScan = !k.mayCut && k.longestPredecessor <= 1;
+    // Brackets a successor opens and closes are partners there (emitPartners); a copied `[` finds where its
+    // partner went (outputPosition). Cuts and decomposition change brackets after the write.
+    k.carriesPartners = k.needsBrackets && k.fusedScan && !k.hasDecomposition &&
+                        codegen::successorsKeepBracketsBalanced(species);
 
     // ---- derivation step: match ----
     {
         std::string s = prelude + declarations(false, false, k.fusedScan) + library + functions;
         s += emitters(false, false);
         s += findPlant("plantStart", "plantOf");
-        s += stepFunctions;
+        s += codegen::contextPrefetchCode(species, RuleKind::Step, false) + stepFunctions;
         s += "uint matchModule(uint i) {\n";
-        s += "    uint plant = plantOf(i);\n" + frozenCopy(" 1u");
+        s += "    uint plant = plantOf(i);\n" + frozenCopy(true);
         s += "    uint species = plant % kSpeciesCount;\n"
              "    uint pBegin = plantStart[plant], pEnd = plantStart[plant + 1u];\n"
              "    uint sym = symOf(i), count = countOf(i);\n"
              "    uint key = i - pBegin;\n"
              "    int ctxLeft = int(i) - 1;\n"
              "    uint ctxRight = i + 1u;\n"
+             "    prefetchContexts(species, ctxLeft, ctxRight, pBegin, pEnd);\n"
              "    uint draw = 1u, chosen = 0u, start = 0u, produced = 1u, length = 1u;\n";
         s += codegen::perSpecies(species.size(), stepSelection);
         if (k.mayCut) {
@@ -233,17 +246,22 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species) 
                  "    }\n";
         }
         s += recordChoice(true);
-        s += mainCalling(k.fusedScan ? "    uint tileSum = subgroupAdd(i < pc.count ? matchModule(i) : 0u);\n"
+        s += mainCalling(k.fusedScan ? "    uint produced = i < pc.count ? matchModule(i) : 0u;\n"
+                                       "    uint before = subgroupExclusiveAdd(produced);\n"
+                                       "    uint tileSum = subgroupAdd(produced);\n"
+                                       "    if (i < pc.count) countsBefore[i] = before;\n"
                                        "    if (subgroupElect() && i < pc.count) tileSums[i / gl_SubgroupSize] = tileSum;\n"
-                                     : "    if (i < pc.count) matchModule(i);\n");
+                                     : "    if (i < pc.count) counts[i] = matchModule(i);\n");
         k.match = std::move(s);
     }
     // ---- derivation step: write ----
     {
-        std::string s = prelude + declarations(false, true, k.fusedScan) + library + functions;
-        s += emitters(true, k.hasDecomposition);
+        std::string s = prelude + declarations(false, true, k.fusedScan, k.carriesPartners) + library + functions;
+        s += emitters(true, k.hasDecomposition, k.carriesPartners);
         s += findPlant("plantStart", "plantOf");
-        s += stepFunctions;
+        if (k.carriesPartners) // module j's first position in the written string
+            s += "uint outputPosition(uint j) { return tileOffsets[j / gl_SubgroupSize] + countsBefore[j]; }\n\n";
+        s += codegen::contextPrefetchCode(species, RuleKind::Step, true) + stepFunctions;
         s += "void writeModule(uint i, uint pos) {\n";
         s += "    uint choice = choices[i];\n"
              "    if (choice == kChoiceDropped) return;\n"
@@ -252,8 +270,10 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species) 
              "    if (choice == kChoiceCopy) {\n"
              "        uint count = countOf(i);\n"
              "        emitModule(pos, symOf(i), count, origin);\n"
-             "        for (uint k = 0u; k < count; ++k) parOut[pos * pc.stride + k] = parIn[i * pc.stride + k];\n"
-             "        return;\n"
+             "        for (uint k = 0u; k < count; ++k) parOut[pos * pc.stride + k] = parIn[i * pc.stride + k];\n";
+        if (k.carriesPartners) // brackets are never rewritten: both partners are copies
+            s += "        if (symOf(i) == kOpen) emitPartners(pos, outputPosition(bracketPartners[i]));\n";
+        s += "        return;\n"
              "    }\n"
              "    uint plant = plantOf(i);\n"
              "    uint species = plant % kSpeciesCount;\n"
@@ -261,12 +281,13 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species) 
              "    uint key = i - pBegin;\n"
              "    int ctxLeft = int(i) - 1;\n"
              "    uint ctxRight = i + 1u;\n"
+             "    prefetchContexts(species, ctxLeft, ctxRight, pBegin, pEnd);\n"
              "    uint draw = drawStarts[i];\n";
         s += codegen::perSpecies(species.size(), [&](size_t sp) { return writeDispatch(species[sp].productions, sp, RuleKind::Step); });
         s += "}\n";
-        s += mainCalling(k.fusedScan ? "    uint before = subgroupExclusiveAdd(i < pc.count ? counts[i] : 0u);\n"
-                                       "    if (i < pc.count) writeModule(i, tileOffsets[i / gl_SubgroupSize] + before);\n"
-                                     : "    if (i < pc.count) writeModule(i, offsets[i]);\n");
+        s += mainCalling(k.fusedScan
+                             ? "    if (i < pc.count) writeModule(i, tileOffsets[i / gl_SubgroupSize] + countsBefore[i]);\n"
+                             : "    if (i < pc.count) writeModule(i, offsets[i]);\n");
         k.write = std::move(s);
     }
     if (k.hasDecomposition) {
@@ -276,17 +297,18 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species) 
             "    uint origin = originX[i];\n"
             "    uint key = examined[i] - examined[plantStartX[plant]];\n"
             "    int ctxLeft = int(origin) - 1;\n"
-            "    uint ctxRight = origin + 1u;\n";
+            "    uint ctxRight = origin + 1u;\n"
+            "    prefetchContexts(species, ctxLeft, ctxRight, pBegin, pEnd);\n";
         // ---- decomposition: match ----
         {
             std::string s = prelude + declarations(true, false) + library + functions;
             s += "double strictParam(uint i, uint k) { return double(parX[i * pc.stride + k]); }\n" +
                  emitters(false, false);
             s += findPlant("plantStartX", "plantOfX");
-            s += decompositionFunctions;
+            s += codegen::contextPrefetchCode(species, RuleKind::Decomposition, false) + decompositionFunctions;
             s += "void matchModule(uint i) {\n";
             s += "    if (liveX[i] == 0u) { counts[i] = 1u; choices[i] = kChoiceCopy; drawStarts[i] = 0u; return; }\n";
-            s += "    uint plant = plantOfX(i);\n" + frozenCopy("") + decompositionSetup;
+            s += "    uint plant = plantOfX(i);\n" + frozenCopy(false) + decompositionSetup;
             s += "    uint sym = symX[i] & kSymbolMask, count = symX[i] >> kSymbolBits;\n"
                  "    uint draw = 1u, chosen = 0u, start = 0u, produced = 1u, length = 1u;\n";
             s += codegen::perSpecies(species.size(), decompositionSelection);
@@ -300,7 +322,7 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species) 
             s += "double strictParam(uint i, uint k) { return double(parX[i * pc.stride + k]); }\n" +
                  emitters(true, true);
             s += findPlant("plantStartX", "plantOfX");
-            s += decompositionFunctions;
+            s += codegen::contextPrefetchCode(species, RuleKind::Decomposition, true) + decompositionFunctions;
             s += "void writeModule(uint i) {\n";
             s += "    uint choice = choices[i];\n"
                  "    uint pos = offsets[i];\n"

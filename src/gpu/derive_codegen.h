@@ -39,6 +39,9 @@ struct GeneratedKernels {
     // The step's scan is fused into match and write (see generateDeriveKernels): match also writes each
     // workgroup's sum of counts, and write takes the scanned sums and counts instead of offsets.
     bool fusedScan = false;
+    // The step's write pass also writes the partners of the brackets of the string it writes
+    // (codegen::carriesBracketPartners), into the binding after its own outputs.
+    bool carriesPartners = false;
     std::vector<double> functionTables; // the sampled func() tables and the contour curves, concatenated
 };
 

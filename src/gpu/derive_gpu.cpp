@@ -15,6 +15,7 @@
 #include "gpu/bracket_tree.h"
 #include "gpu/derive_codegen.h"
 #include "gpu/glsl_compiler.h"
+#include "gpu/production_codegen.h"
 #include "gpu/scan.h"
 #include "ir/species.h"
 #include "vk/barriers.h"
@@ -50,6 +51,19 @@ ir::LimitError loopsCutError(const std::string& what) {
                                       "invocation's loops after 65535 iterations in all); derive this grammar with "
                                       "--backend cpu",
                                       what));
+}
+
+// Whether every plant's `[` and `]` pair up within the plant.
+bool bracketsBalanced(const cpu::ModuleString& s) {
+    for (size_t plant = 0; plant < s.plants(); ++plant) {
+        int64_t depth = 0;
+        for (uint64_t i = s.plantStart[plant]; i < s.plantStart[plant + 1]; ++i) {
+            depth += s.sym[i] == ir::kBranchOpen ? 1 : s.sym[i] == ir::kBranchClose ? -1 : 0;
+            if (depth < 0) return false;
+        }
+        if (depth != 0) return false;
+    }
+    return true;
 }
 
 } // namespace
@@ -92,6 +106,11 @@ struct GpuDeriver::Impl {
     uint32_t chunk = 256;
     std::vector<uint32_t> hostPlantTable; // the current stream's plant table, kept on the host
     uint32_t lastFlags = 0;      // errors[1] of the last submit
+    // The stream whose bracket partners brackets.partners() holds, or -1; a step whose write pass carries them
+    // (GeneratedKernels::carriesPartners) leaves them for the next, when every plant's string is balanced.
+    int partnersStream = -1;
+    bool axiomsBalanced = false;
+    uint32_t bracketTrees = 0; // built since the derivation started
     bool lastUnfinished = false; // errors[2] of the last submit: the sequential kernel's plants need more dispatches
     uint64_t scratchCapacity = 0;
     Stream streams[3];
@@ -153,14 +172,7 @@ struct GpuDeriver::Impl {
         buildHomomorphism(build);
         compileSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-        // One row of bits per species (derive_lib.glsl's skipped()).
-        size_t symbols = species.front().alphabet.size();
-        size_t rowWords = (symbols + 31) / 32 + 1;
-        std::vector<uint32_t> skipBits(rowWords * species.size(), 0);
-        for (size_t sp = 0; sp < species.size(); ++sp)
-            for (size_t s = 0; s < symbols; ++s)
-                if (species[sp].skippedInContext(static_cast<ir::SymbolId>(s)))
-                    skipBits[sp * rowWords + s / 32] |= 1u << (s % 32);
+        std::vector<uint32_t> skipBits = codegen::contextSkipBits(species);
         contextSkip = vk::deviceBufferWith(ctx, std::span<const uint32_t>(skipBits));
         std::vector<double> tables = kernels.functionTables;
         if (tables.empty()) tables.push_back(0.0);
@@ -332,6 +344,20 @@ struct GpuDeriver::Impl {
         kernel.dispatchBytes(cmd, buffers, std::as_bytes(std::span(&p, 1)), kernel.groupsFor(n));
     }
 
+    // The bracket tree and partners of streams[index], unless its partners are already there.
+    void recordBrackets(VkCommandBuffer cmd, int index) {
+        const Stream& s = streams[index];
+        if (s.count == 0 || partnersStream == index) return;
+        brackets.record(cmd, s.sym, s.count);
+        partnersStream = index;
+        ++bracketTrees;
+    }
+
+    // Called before a pass writes streams[index]: partners describing it no longer do.
+    void overwriting(int index) {
+        if (partnersStream == index) partnersStream = -1;
+    }
+
     // Each plant's first module in the stream written with `offsets`.
     void recordPlantStarts(VkCommandBuffer cmd, const Stream& from, const Stream& to, uint32_t n, uint32_t total) {
         DeriveHelperPush hp{n, 0, total, plants};
@@ -355,7 +381,7 @@ struct GpuDeriver::Impl {
         uint32_t n = in.count;
         double millis = 0;
         ensureScratch(n);
-        matchScanWrite(in, out, stepIndex, seed, budget, timer, millis);
+        matchScanWrite(cur, outIndex, stepIndex, seed, budget, timer, millis);
         // Match writes counts, choices and draw starts, and write reads them; a separate scan reads the counts
         // twice and writes offsets, which write reads.
         uint64_t perModule = kernels.fusedScan ? 4 + 4ull * uint64_t(stride) + 12 + 12
@@ -370,8 +396,11 @@ struct GpuDeriver::Impl {
     // One step's match, scan and write. With a fused scan (GeneratedKernels::fusedScan) match also sums each
     // subgroup's counts and the host scans only those sums; otherwise the counts, which cuts and the greedy walk
     // change after the match, get a scan of their own.
-    void matchScanWrite(const Stream& in, Stream& out, uint32_t stepIndex, uint32_t seed, uint64_t budget,
+    void matchScanWrite(int cur, int outIndex, uint32_t stepIndex, uint32_t seed, uint64_t budget,
                         vk::Timestamps* timer, double& millis) {
+        const Stream& in = streams[cur];
+        Stream& out = streams[outIndex];
+        overwriting(outIndex);
         uint32_t n = in.count;
         bool fused = kernels.fusedScan;
         DerivePush p = push(n, stepIndex, seed, stepIndex * shared::kPassesPerStep, n, 0);
@@ -382,7 +411,7 @@ struct GpuDeriver::Impl {
                 vk::memoryBarrier(cmd, Hazard::TransferToCompute);
                 recordPlantHints(cmd, in);
                 vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
-                if (kernels.needsBrackets && n > 0) brackets.record(cmd, in.sym, n);
+                if (kernels.needsBrackets) recordBrackets(cmd, cur);
                 if (fused) {
                     dispatchDerive(cmd, *match, in, {counts, choices, drawStarts, cutDelta, tileSums}, p, n);
                     vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
@@ -409,10 +438,17 @@ struct GpuDeriver::Impl {
             [&](VkCommandBuffer cmd) {
                 vk::cmdFill(cmd, errors, 0);
                 vk::memoryBarrier(cmd, Hazard::TransferToCompute);
-                if (fused) {
+                if (kernels.carriesPartners) {
+                    dispatchDerive(cmd, *write, in,
+                                   {counts, tileOffsets, choices, drawStarts, out.sym, out.par, out.origin, out.live,
+                                    brackets.carriedPartners(total)},
+                                   p, n);
+                } else if (fused) {
                     dispatchDerive(cmd, *write, in,
                                    {counts, tileOffsets, choices, drawStarts, out.sym, out.par, out.origin, out.live},
                                    p, n);
+                }
+                if (fused) {
                     DeriveHelperPush hp{n, tileSize, total, plants};
                     plantStartsTiled.dispatch(cmd, {plantTable(in), counts, tileOffsets, plantTable(out)}, hp,
                                               plantStartsTiled.groupsFor(plants + 1));
@@ -425,6 +461,10 @@ struct GpuDeriver::Impl {
             },
             timer, millis);
         out.count = total;
+        if (kernels.carriesPartners && axiomsBalanced && partnersStream == cur) {
+            brackets.carried();
+            partnersStream = outIndex;
+        }
     }
 
     // Recursive rewriting by depth: the decomposition's kernels, or the homomorphism's.
@@ -473,6 +513,7 @@ struct GpuDeriver::Impl {
                 timer, millis);
             checkBudget(total, budget, stepIndex);
             Stream& Y = streams[y];
+            overwriting(y);
             ensureStream(Y, total);
             submit(
                 [&](VkCommandBuffer cmd) {
@@ -501,6 +542,7 @@ struct GpuDeriver::Impl {
         if (n == 0) return cur;
         int x = (cur + 1) % 3;
         Stream& X = streams[x];
+        overwriting(x);
         ensureStream(X, n);
         ensureScratch(n);
         double millis = 0;
@@ -515,7 +557,7 @@ struct GpuDeriver::Impl {
                 vk::memoryBarrier(cmd, Hazard::TransferToCompute);
                 DeriveHelperPush hp{n, 0, 0, plants};
                 homomorphismStart.dispatch(cmd, {X.live, X.origin}, hp, homomorphismStart.groupsFor(n));
-                if (homomorphismKernels.needsBrackets) brackets.record(cmd, derived.sym, n);
+                if (homomorphismKernels.needsBrackets) recordBrackets(cmd, cur);
                 vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
             },
             timer, millis);
@@ -593,6 +635,7 @@ struct GpuDeriver::Impl {
         Stream& in = streams[cur];
         int outIndex = (cur + 1) % 3;
         Stream& out = streams[outIndex];
+        overwriting(outIndex);
         uint32_t n = in.count;
         double millis = 0;
         ensureScratch(n);
@@ -619,7 +662,7 @@ struct GpuDeriver::Impl {
                             }
                         }
                         vk::memoryBarrier(cmd, Hazard::TransferToCompute);
-                        if (dispatches == 0 && kernels.needsBrackets && n > 0) brackets.record(cmd, in.sym, n);
+                        if (dispatches == 0 && kernels.needsBrackets) recordBrackets(cmd, cur);
                         dispatchSequential(cmd, 0, in, out, p, dispatches, batch);
                         vk::memoryBarrier(cmd, Hazard::ComputeToTransfer);
                         VkBufferCopy countsCopy{0, 0, plantCounts.size()};
@@ -692,6 +735,8 @@ cpu::DeriveResult GpuDeriver::derive(const cpu::DeriveOptions& options, bool rea
         s.plantStart = vk::Buffer(m.ctx, bytes(m.plants + 1, 4), vk::MemoryUsage::DeviceLocal);
         s.count = 0;
     }
+    m.partnersStream = -1;
+    m.bracketTrees = 0;
     auto speciesOf = [&](uint32_t plant) -> const ir::Grammar& {
         return m.species[ir::speciesOfPlant(plant, m.species.size())];
     };
@@ -726,6 +771,7 @@ cpu::DeriveResult GpuDeriver::derive(const cpu::DeriveOptions& options, bool rea
     }
     if (initial.size() > budget)
         throw ir::LimitError(fmt::format("the axioms alone exceed the module budget of {} modules", budget));
+    m.axiomsBalanced = bracketsBalanced(initial);
 
     int cur = 0;
     {
@@ -838,6 +884,7 @@ cpu::DeriveResult GpuDeriver::derive(const cpu::DeriveOptions& options, bool rea
     Stream& final = m.streams[cur];
     m.lastStream = cur;
     stats.modules = final.count;
+    stats.bracketTrees = m.bracketTrees;
     result.string.stride = m.stride;
     std::vector<uint32_t> table = vk::downloadVector<uint32_t>(m.ctx, final.plantStart, m.plants + 1);
     result.string.plantStart.assign(table.begin(), table.end());

@@ -37,6 +37,7 @@ struct GpuDeriveStats {
     uint64_t bytesMoved = 0;         // bytes the passes read and wrote, as counted by the host
     std::vector<double> stepMillis;  // GPU time of each step from timestamps (empty if unsupported)
     uint64_t peakModules = 0;
+    uint32_t bracketTrees = 0;       // bracket trees built: once, when each step's write carries the partners
 };
 
 class GpuDeriver {

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "compute/shaders.h"
+#include "compute/shared/derive_layout.h"
 
 namespace simeco::gpu::codegen {
 
@@ -337,6 +338,25 @@ uint32_t skipWords(const ir::Grammar& g) { return static_cast<uint32_t>((g.alpha
 
 namespace {
 
+// Whether the first walk of a pattern is one prefetchContexts() makes: a right pattern's from the module after a
+// one-module predecessor, unless it starts with `=`; a left pattern's always. Ring L-systems walk without it:
+// whether a walk may wrap depends on the pattern's earlier walks.
+bool firstRightWalkPrefetched(const ir::Grammar& g, const ir::Production& p) {
+    std::optional<ir::SymbolId> equals = g.alphabet.find("=");
+    return !g.ring && p.strict.size() == 1 && !p.right.empty() && !(equals && p.right.front().sym == *equals);
+}
+
+bool firstLeftWalkPrefetched(const ir::Grammar& g, const ir::Production& p) { return !g.ring && !p.left.empty(); }
+
+// A pattern module as the stream holds it: symbol | parameter count << kSymbolBits.
+uint32_t moduleWord(const ir::PatternModule& m) {
+    return m.sym | static_cast<uint32_t>(m.paramSlots.size()) << shared::kSymbolBits;
+}
+
+bool bindsParameters(const std::vector<ir::PatternModule>& pattern) {
+    return std::any_of(pattern.begin(), pattern.end(), [](const ir::PatternModule& m) { return !m.paramSlots.empty(); });
+}
+
 // The parts of a production's code, in order: matching, then producing.
 // `modal`: the function has a `mode` (FrameStyle::Fresh), and mode 2 writes what an earlier pass matched.
 void emitMatch(BodyEmitter& body, const ir::Grammar& g, size_t species, const ir::Production& p, RuleKind kind,
@@ -353,22 +373,36 @@ void emitMatch(BodyEmitter& body, const ir::Grammar& g, size_t species, const ir
     }
     // Writing passes apply the production the match pass chose, so they walk contexts only for their parameters.
     auto walkOpening = [modal](const std::vector<ir::PatternModule>& pattern) {
-        bool binds = std::any_of(pattern.begin(), pattern.end(), [](const ir::PatternModule& m) { return !m.paramSlots.empty(); });
-        return binds || !modal ? "{" : "if (mode < 2u) {";
+        return bindsParameters(pattern) || !modal ? "{" : "if (mode < 2u) {";
     };
+    // The parallel passes' kernels walk the first module of each pattern once before the productions
+    // (contextPrefetchCode); the sequential kernel walks in each production.
+    bool prefetched = modal;
     if (!p.right.empty()) {
         body.open(walkOpening(p.right));
         body.line(fmt::format("uint s = ctxRight + {}u;", p.strict.size() - 1));
         if (g.ring) body.line("bool wrapped = false;");
+        bool first = true;
         for (const ir::PatternModule& m : p.right) {
             if (equals && m.sym == *equals) {
                 body.line("s = endOfBranch(s, pBegin, pEnd);");
+                first = false;
                 continue;
             }
-            body.line(g.ring ? fmt::format("if (!rightWalk(s, {}u, pBegin, pEnd, {}u, true, wrapped)) return false;",
-                                           m.sym, skipRow)
-                             : fmt::format("if (!rightAdvance(s, {}u, pEnd, {}u)) return false;", m.sym, skipRow));
-            body.line(fmt::format("if (symOf(s) != {}u || countOf(s) != {}u) return false;", m.sym, m.paramSlots.size()));
+            bool enters = m.sym == ir::kBranchOpen;
+            if (first && prefetched && firstRightWalkPrefetched(g, p)) {
+                const char* found = enters ? "firstRightBranch" : "firstRight";
+                body.line(fmt::format("if (!{0}Found || {0}Word != {1}u) return false;", found, moduleWord(m)));
+                body.line(fmt::format("s = {};", found));
+            } else {
+                if (g.ring)
+                    body.line(fmt::format("if (!rightWalk(s, {}, pBegin, pEnd, {}u, true, wrapped)) return false;",
+                                          enters ? "true" : "false", skipRow));
+                else
+                    body.line(fmt::format("if (!rightAdvance(s, {}u, pEnd, {}u)) return false;", m.sym, skipRow));
+                body.line(fmt::format("if (symIn[s] != {}u) return false;", moduleWord(m)));
+            }
+            first = false;
             for (size_t k = 0; k < m.paramSlots.size(); ++k)
                 body.line(fmt::format("v{} = paramOf(s, {}u);", m.paramSlots[k], k));
             body.line("++s;");
@@ -380,10 +414,16 @@ void emitMatch(BodyEmitter& body, const ir::Grammar& g, size_t species, const ir
         body.line("int s = ctxLeft;");
         if (g.ring) body.line("bool wrapped = false;");
         for (auto it = p.left.rbegin(); it != p.left.rend(); ++it) {
-            body.line(g.ring ? fmt::format("if (!leftWalk(s, pBegin, pEnd, {}u, true, wrapped)) return false;", skipRow)
-                             : fmt::format("if (!leftAdvance(s, pBegin, {}u)) return false;", skipRow));
-            body.line(fmt::format("if (symOf(uint(s)) != {}u || countOf(uint(s)) != {}u) return false;", it->sym,
-                                  it->paramSlots.size()));
+            if (it == p.left.rbegin() && prefetched && firstLeftWalkPrefetched(g, p)) {
+                body.line(fmt::format("if (!firstLeftFound || firstLeftWord != {}u) return false;", moduleWord(*it)));
+                body.line("s = firstLeft;");
+            } else {
+                if (g.ring)
+                    body.line(fmt::format("if (!leftWalk(s, pBegin, pEnd, {}u, true, wrapped)) return false;", skipRow));
+                else
+                    body.line(fmt::format("if (!leftAdvance(s, pBegin, {}u)) return false;", skipRow));
+                body.line(fmt::format("if (symIn[uint(s)] != {}u) return false;", moduleWord(*it)));
+            }
             for (size_t k = 0; k < it->paramSlots.size(); ++k)
                 body.line(fmt::format("v{} = paramOf(uint(s), {}u);", it->paramSlots[k], k));
             body.line("--s;");
@@ -416,12 +456,13 @@ void emitChoice(BodyEmitter& body, const ir::Production& p) {
         body.line(fmt::format("if (alt == {}u) outCount = {}u;", k, p.alternatives[k].modules.size()));
 }
 
-// The chosen alternative's modules at outPos + j.
+// The chosen alternative's modules at outPos + j, and the partners of the brackets it matches itself.
 void emitSuccessor(BodyEmitter& body, const ir::Production& p) {
     for (size_t k = 0; k < p.alternatives.size(); ++k) {
         const ir::Alternative& alt = p.alternatives[k];
         if (alt.modules.empty()) continue;
         body.open(fmt::format("if (alt == {}u) {{", k));
+        std::vector<size_t> open;
         for (size_t j = 0; j < alt.modules.size(); ++j) {
             const ir::SuccessorModule& m = alt.modules[j];
             std::vector<std::string> values;
@@ -429,6 +470,11 @@ void emitSuccessor(BodyEmitter& body, const ir::Production& p) {
             body.line(fmt::format("emitModule(outPos + {}u, {}u, {}u, origin);", j, m.sym, m.args.size()));
             for (size_t a = 0; a < values.size(); ++a)
                 body.line(fmt::format("emitParam(outPos + {}u, {}u, {});", j, a, values[a]));
+            if (m.sym == ir::kBranchOpen) open.push_back(j);
+            if (m.sym == ir::kBranchClose && !open.empty()) {
+                body.line(fmt::format("emitPartners(outPos + {}u, outPos + {}u);", open.back(), j));
+                open.pop_back();
+            }
         }
         body.close();
     }
@@ -499,6 +545,79 @@ void emitProduction(const ir::Grammar& g, size_t species, const ir::Production& 
     out += frameWrapper(p, "void", name + "Produce", produceParameters, "plant, key, draw, outCount");
 }
 
+std::string contextPrefetchCode(const std::vector<ir::Grammar>& species, RuleKind kind, bool writing) {
+    bool right = false, rightBranch = false, left = false;
+    for (const ir::Grammar& g : species)
+        for (const ir::Production& p : (kind == RuleKind::Step ? g.productions : g.decomposition).productions) {
+            if (firstRightWalkPrefetched(g, p) && (!writing || bindsParameters(p.right))) {
+                bool enters = p.right.front().sym == ir::kBranchOpen;
+                rightBranch = rightBranch || enters;
+                right = right || !enters;
+            }
+            left = left || (firstLeftWalkPrefetched(g, p) && (!writing || bindsParameters(p.left)));
+        }
+    std::string code = "void prefetchContexts(uint species, int ctxLeft, uint ctxRight, uint pBegin, uint pEnd) {\n";
+    if (right || rightBranch || left)
+        code += fmt::format("    uint skipRow = species * {}u;\n", skipWords(species.front()));
+    if (right)
+        code += "    firstRight = ctxRight;\n"
+                "    firstRightFound = walkRight(firstRight, false, pEnd, skipRow);\n"
+                "    if (firstRightFound) firstRightWord = symIn[firstRight];\n";
+    if (rightBranch)
+        code += "    firstRightBranch = ctxRight;\n"
+                "    firstRightBranchFound = walkRight(firstRightBranch, true, pEnd, skipRow);\n"
+                "    if (firstRightBranchFound) firstRightBranchWord = symIn[firstRightBranch];\n";
+    if (left)
+        code += "    firstLeft = ctxLeft;\n"
+                "    firstLeftFound = walkLeft(firstLeft, pBegin, skipRow);\n"
+                "    if (firstLeftFound) firstLeftWord = symIn[uint(firstLeft)];\n";
+    return code + "}\n\n";
+}
+
+bool successorsKeepBracketsBalanced(const std::vector<ir::Grammar>& species) {
+    auto isBracket = [](ir::SymbolId s) { return s == ir::kBranchOpen || s == ir::kBranchClose; };
+    for (const ir::Grammar& g : species) {
+        std::optional<ir::SymbolId> equals = g.alphabet.find("=");
+        for (const ir::Production& p : g.productions.productions) {
+            if (std::any_of(p.strict.begin(), p.strict.end(), [&](const ir::PatternModule& m) { return isBracket(m.sym); }))
+                return false;
+            if (equals && std::any_of(p.right.begin(), p.right.end(),
+                                      [&](const ir::PatternModule& m) { return m.sym == *equals; }))
+                return false;
+            for (const ir::Alternative& alt : p.alternatives) {
+                int depth = 0;
+                for (const ir::SuccessorModule& m : alt.modules) {
+                    depth += m.sym == ir::kBranchOpen ? 1 : m.sym == ir::kBranchClose ? -1 : 0;
+                    if (depth < 0) return false;
+                }
+                if (depth != 0) return false;
+            }
+        }
+    }
+    return true;
+}
+
+std::vector<uint32_t> contextSkipBits(const std::vector<ir::Grammar>& species) {
+    size_t symbols = species.front().alphabet.size();
+    size_t rowWords = skipWords(species.front());
+    std::vector<uint32_t> bits(rowWords * species.size(), 0);
+    for (size_t sp = 0; sp < species.size(); ++sp)
+        for (size_t s = 0; s < symbols; ++s)
+            if (species[sp].skippedInContext(static_cast<ir::SymbolId>(s)))
+                bits[sp * rowWords + s / 32] |= 1u << (s % 32);
+    return bits;
+}
+
+std::string contextSkipCode(const std::vector<uint32_t>& bits) {
+    // Few words become constants, so a walk tests a symbol without a load; many stay in the contextSkip buffer.
+    constexpr size_t kMostConstantWords = 16;
+    if (bits.size() > kMostConstantWords) return "uint contextSkipWord(uint word) { return contextSkip[word]; }\n";
+    std::string code = "uint contextSkipWord(uint word) {\n    uint bits = 0u;\n";
+    for (size_t w = 0; w < bits.size(); ++w)
+        if (bits[w] != 0) code += fmt::format("    bits = word == {}u ? 0x{:08x}u : bits;\n", w, bits[w]);
+    return code + "    return bits;\n}\n";
+}
+
 std::string functionTableCode(const ir::Grammar& g, size_t species, std::vector<double>& tables) {
     std::string code = fmt::format("double funcValue{}(double idValue, double x, uint errorSite) {{\n"
                                    "    int id = int(idValue);\n", species);
@@ -555,8 +674,8 @@ GeneratedKernels speciesTraits(const std::vector<ir::Grammar>& species) {
     return k;
 }
 
-std::string deriveLibrary() {
-    return std::string(shaders::glslSource("derive/depth_tree.glsl")) +
+std::string deriveLibrary(const std::vector<ir::Grammar>& species) {
+    return contextSkipCode(contextSkipBits(species)) + std::string(shaders::glslSource("derive/depth_tree.glsl")) +
            std::string(shaders::glslSource("derive/derive_lib.glsl")) +
            std::string(shaders::glslSource("derive/contour_curve.glsl"));
 }

@@ -55,6 +55,21 @@ uint32_t skipWords(const ir::Grammar& g);
 void emitProduction(const ir::Grammar& g, size_t species, const ir::Production& p, RuleKind kind, size_t index,
                     FrameStyle style, std::vector<ErrorSite>& errors, std::string& out);
 
+// `void prefetchContexts(uint species, int ctxLeft, uint ctxRight, uint pBegin, uint pEnd)`: the first walk of
+// the context patterns of the `kind` rules of all species, which their FrameStyle::Fresh functions read from
+// firstRight, firstRightBranch and firstLeft (derive_lib.glsl) instead of walking. Every kernel calling those
+// functions calls it first. `writing`: only the walks a writing pass runs (of patterns binding parameters).
+std::string contextPrefetchCode(const std::vector<ir::Grammar>& species, RuleKind kind, bool writing);
+
+// Whether a string whose plants are balanced stays so, its brackets paired as before or within one successor:
+// every successor is balanced, no production rewrites a bracket, and no context asks for the end of a branch
+// (`=`, which needs the bracket tree). A step's write pass can then give the brackets it writes their partners
+// (GeneratedKernels::carriesPartners).
+bool successorsKeepBracketsBalanced(const std::vector<ir::Grammar>& species);
+
+// One row of bits per species, set for the symbols its context walks skip (derive_lib.glsl's skipped()).
+std::vector<uint32_t> contextSkipBits(const std::vector<ir::Grammar>& species);
+
 // `double funcValue<species>(id, x, errorSite)`: the species' func() tables, appended to `tables`.
 std::string functionTableCode(const ir::Grammar& g, size_t species, std::vector<double>& tables);
 
@@ -69,8 +84,8 @@ GeneratedKernels speciesTraits(const std::vector<ir::Grammar>& species);
 // The common start of every generated kernel: version, extensions, layouts, push constants, kSpeciesCount.
 std::string kernelPrelude(size_t speciesCount);
 
-// The functions every generated kernel shares after its buffers: bracket matching, derive_lib.glsl and the
-// contour curves' evaluation.
-std::string deriveLibrary();
+// The functions every generated kernel shares after its buffers: the species' context filter, bracket matching,
+// derive_lib.glsl and the contour curves' evaluation.
+std::string deriveLibrary(const std::vector<ir::Grammar>& species);
 
 } // namespace simeco::gpu::codegen

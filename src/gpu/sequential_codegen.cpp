@@ -68,6 +68,7 @@ void emitParam(uint pos, uint k, double value) {
     if (gToStack) stackPar[(gBase + pos) * pc.stride + k] = float(value);
     else if (pc.mode == 1u) parOut[(gBase + pos) * pc.stride + k] = float(value);
 }
+void emitPartners(uint open, uint close) {} // the next step matches brackets afresh
 
 void advanceOutput(inout uint next, uint n) {
     next += n;
@@ -327,7 +328,7 @@ GeneratedKernels generateSequentialKernel(const std::vector<ir::Grammar>& specie
     s += fmt::format("const uint kFrameSlots = {}u;\nconst uint kStackWidth = {}u;\n", std::max(k.frameSlots, 1u),
                      k.stackWidth);
     s += declarations();
-    s += codegen::deriveLibrary();
+    s += codegen::deriveLibrary(species);
     s += kMachinery;
     std::string productions;
     for (size_t sp = 0; sp < species.size(); ++sp) {

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "../unit/grammar_text.h"
+#include "compute/shared/derive_layout.h"
 #include "cpu/derive.h"
 #include "gpu/derive_gpu.h"
 #include "compare_strings.h"
@@ -398,6 +399,56 @@ TEST_F(DeriveGpuTest, RingLSystemsMatchTheCpu) {
             Outcome outcome = compareEngines(context(), g, options, strategy);
             EXPECT_EQ(outcome.verdict, Verdict::Match) << outcome.detail;
         }
+    }
+}
+
+// A step whose successors are balanced writes the partners of the brackets it writes, so that only the axioms
+// need a bracket tree: branches nested ten deep and longer than a workgroup, contexts skipping them and entering
+// them, on 40 stochastic plants. A cut, or an unbalanced axiom (which no parser lets through, but a grammar built
+// in code may hold), makes every step build its tree.
+TEST_F(DeriveGpuTest, CarriedBracketPartnersMatchTheCpu) {
+    const std::string rules = "seed: 3\nignore: + - F\n"
+                              "A(x) < A(y) > [B(z)] --> A(y+z)\n"
+                              "A(x) < B(y) --> B(y+x)F[-B(y)F]\n"
+                              "B(y) > A(z) --> B(y+z)\n"
+                              "A(x) --> F[+A(x+1)F[-B(x)]F]A(x*0.5) : 1\n"
+                              "A(x) --> A(x)[-F B(x)] : 2\n";
+    constexpr int kSteps = 9;
+    struct Case {
+        const char* what;
+        std::string rules;
+        bool openBranchAtTheEnd;
+        std::uint32_t bracketTrees;
+    };
+    for (const Case& c : {Case{"balanced", rules, false, 1},
+                          Case{"cut", rules + "B(y) : y > 30 --> %\n", false, kSteps},
+                          Case{"unbalanced axiom", rules, true, kSteps}}) {
+        SCOPED_TRACE(c.what);
+        ir::Grammar g = simeco::testing::grammarFromText(simeco::testing::lsystem("A(1)[+B(1)]A(2)", c.rules, kSteps));
+        if (c.openBranchAtTheEnd) {
+            ir::SuccessorModule open;
+            open.sym = ir::kBranchOpen;
+            g.axiom.push_back(open);
+        }
+        cpu::DeriveOptions options;
+        options.plants = 40;
+        cpu::DeriveResult want = cpu::deriveCpu(g, options);
+        std::vector<std::size_t> open;
+        std::size_t longest = 0, deepest = 0;
+        for (std::size_t i = 0; i < want.string.size(); ++i) {
+            if (want.string.sym[i] == ir::kBranchOpen) open.push_back(i);
+            if (want.string.sym[i] == ir::kBranchClose && !open.empty()) {
+                longest = std::max(longest, i - open.back());
+                open.pop_back();
+            }
+            deepest = std::max(deepest, open.size());
+        }
+        ASSERT_GT(longest, 4u * shared::kDeriveWorkgroupSize) << "no branch spans several workgroups";
+        ASSERT_GE(deepest, 8u);
+        gpu::GpuDeriver deriver(context(), g, gpu::GpuStrategy::Parallel);
+        gpu::GpuDeriveStats stats;
+        EXPECT_EQ(firstDifference(want, deriver.derive(options, /*readBack=*/true, &stats), g.alphabet), "");
+        EXPECT_EQ(stats.bracketTrees, c.bracketTrees);
     }
 }
 

@@ -138,9 +138,9 @@ void reportError(uint code) { atomicCompSwap(errors[0], 0u, code + 1u); }
 
 // lavapipe ends every loop of an invocation once the invocation has run 65535 loop iterations in all, and the code
 // after a loop then runs as if the loop had ended by itself. A check after a loop cannot see that: the compiler
-// knows only the loop's own exits and folds the check away. So every generated main() ends with this loop of
-// pc.loopProbeTrips iterations (a number the compiler cannot know), which stops after one exactly when the
-// iterations are spent, and raises kFlagLoopCut.
+// knows only the loop's own exits and folds the check away. So every generated main() whose loops may run long
+// (codegen::mayLoopLong) ends with this loop of pc.loopProbeTrips iterations (a number the compiler cannot know),
+// which stops after one exactly when the iterations are spent, and raises kFlagLoopCut.
 // - The driver counts iterations per subgroup (one SIMD program), so one invocation of each subgroup asks; a probe
 //   in every invocation cost a third of a simple grammar's throughput.
 // - The count grows by atomics in shared memory, so LLVM finds no induction variable to analyse: asked about a

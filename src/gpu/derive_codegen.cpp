@@ -186,9 +186,11 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species) 
 
     const std::string moduleIndex =
         "(gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * gl_WorkGroupSize.x + gl_LocalInvocationID.x";
-    // Every kernel's main() rewrites module i, then asks whether the driver cut its loops (derive_lib.glsl).
-    auto mainCalling = [&](const std::string& body) {
-        return "void main() {\n    uint i = " + moduleIndex + ";\n" + body + "    reportLoopsCut();\n}\n";
+    // Every kernel's main() rewrites module i, then, if its loops may run long, asks whether the driver cut them
+    // (derive_lib.glsl).
+    auto mainCalling = [&](const std::string& body, RuleKind kind) {
+        return "void main() {\n    uint i = " + moduleIndex + ";\n" + body +
+               (codegen::mayLoopLong(species, kind) ? "    reportLoopsCut();\n" : "") + "}\n";
     };
     // A binary search of the plant table between the hints of i's block and the next block.
     auto findPlant = [](const char* table, const char* name) {
@@ -251,7 +253,8 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species) 
                                        "    uint tileSum = subgroupAdd(produced);\n"
                                        "    if (i < pc.count) countsBefore[i] = before;\n"
                                        "    if (subgroupElect() && i < pc.count) tileSums[i / gl_SubgroupSize] = tileSum;\n"
-                                     : "    if (i < pc.count) counts[i] = matchModule(i);\n");
+                                     : "    if (i < pc.count) counts[i] = matchModule(i);\n",
+                         RuleKind::Step);
         k.match = std::move(s);
     }
     // ---- derivation step: write ----
@@ -287,7 +290,8 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species) 
         s += "}\n";
         s += mainCalling(k.fusedScan
                              ? "    if (i < pc.count) writeModule(i, tileOffsets[i / gl_SubgroupSize] + countsBefore[i]);\n"
-                             : "    if (i < pc.count) writeModule(i, offsets[i]);\n");
+                             : "    if (i < pc.count) writeModule(i, offsets[i]);\n",
+                         RuleKind::Step);
         k.write = std::move(s);
     }
     if (k.hasDecomposition) {
@@ -313,7 +317,7 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species) 
                  "    uint draw = 1u, chosen = 0u, start = 0u, produced = 1u, length = 1u;\n";
             s += codegen::perSpecies(species.size(), decompositionSelection);
             s += recordChoice();
-            s += mainCalling("    if (i < pc.count) matchModule(i);\n");
+            s += mainCalling("    if (i < pc.count) matchModule(i);\n", RuleKind::Decomposition);
             k.decompositionMatch = std::move(s);
         }
         // ---- decomposition: write ----
@@ -340,7 +344,7 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species) 
             s += codegen::perSpecies(species.size(),
                             [&](size_t sp) { return writeDispatch(species[sp].decomposition, sp, RuleKind::Decomposition); });
             s += "}\n";
-            s += mainCalling("    if (i < pc.count) writeModule(i);\n");
+            s += mainCalling("    if (i < pc.count) writeModule(i);\n", RuleKind::Decomposition);
             k.decompositionWrite = std::move(s);
         }
     }

@@ -574,6 +574,62 @@ std::string contextPrefetchCode(const std::vector<ir::Grammar>& species, RuleKin
     return code + "}\n\n";
 }
 
+namespace {
+
+// Loop iterations that the code of expressions and statements may run, walking them; `unbounded` once a loop
+// may run as long as the grammar's values say.
+struct LoopCount {
+    uint64_t iterations = 0;
+    bool unbounded = false;
+
+    void expr(const ir::Expr& e) {
+        using ir::Builtin;
+        // The elementary functions of derive_lib.glsl and contour_curve.glsl loop at most this often per call.
+        constexpr uint64_t kMostPerCall = 64;
+        if (e.op == ir::Op::Pow) iterations += kMostPerCall;
+        if (e.op == ir::Op::Call) {
+            switch (e.fn) {
+            case Builtin::Biran: unbounded = true; break;
+            case Builtin::Exp: case Builtin::Log: case Builtin::Pow: case Builtin::Atan: case Builtin::Atan2:
+            case Builtin::Asin: case Builtin::Acos: case Builtin::Nran: case Builtin::CurveX: case Builtin::CurveY:
+            case Builtin::CurveZ:
+                iterations += kMostPerCall;
+                break;
+            default: break;
+            }
+        }
+        for (const ir::Expr& a : e.args) expr(a);
+    }
+    void statements(const std::vector<ir::Stmt>& block) {
+        for (const ir::Stmt& st : block) {
+            if (st.kind == ir::StmtKind::While || st.kind == ir::StmtKind::DoWhile) unbounded = true;
+            expr(st.expr);
+            for (const ir::Expr& index : st.indices) expr(index);
+            statements(st.body);
+            statements(st.elseBody);
+        }
+    }
+};
+
+} // namespace
+
+bool mayLoopLong(const std::vector<ir::Grammar>& species, RuleKind kind) {
+    // Well inside lavapipe's 65535 iterations, with room for the plant search and parameter copies.
+    constexpr uint64_t kMostIterations = 8192;
+    LoopCount count;
+    for (const ir::Grammar& g : species)
+        for (const ir::Production& p : (kind == RuleKind::Step ? g.productions : g.decomposition).productions) {
+            if (!p.left.empty() || !p.right.empty()) return true; // context walks pass any number of modules
+            count.statements(p.before);
+            count.statements(p.after);
+            if (p.condition) count.expr(*p.condition);
+            for (const ir::Alternative& alt : p.alternatives)
+                for (const ir::SuccessorModule& m : alt.modules)
+                    for (const ir::Expr& arg : m.args) count.expr(arg);
+        }
+    return count.unbounded || count.iterations > kMostIterations;
+}
+
 bool successorsKeepBracketsBalanced(const std::vector<ir::Grammar>& species) {
     auto isBracket = [](ir::SymbolId s) { return s == ir::kBranchOpen || s == ir::kBranchClose; };
     for (const ir::Grammar& g : species) {

@@ -67,6 +67,12 @@ std::string contextPrefetchCode(const std::vector<ir::Grammar>& species, RuleKin
 // (GeneratedKernels::carriesPartners).
 bool successorsKeepBracketsBalanced(const std::vector<ir::Grammar>& species);
 
+// Whether the kernels of the `kind` rules of these species may loop so long that a driver ends their loops
+// (lavapipe: 65535 iterations of an invocation in all): context walks, `while` and `do` statements, binomial
+// draws, or very many elementary functions. Only those kernels end with reportLoopsCut (derive_lib.glsl); the
+// others loop a bounded number of times and are spared its cost.
+bool mayLoopLong(const std::vector<ir::Grammar>& species, RuleKind kind);
+
 // One row of bits per species, set for the symbols its context walks skip (derive_lib.glsl's skipped()).
 std::vector<uint32_t> contextSkipBits(const std::vector<ir::Grammar>& species);
 

@@ -125,7 +125,7 @@ std::string writeDispatch(const ir::RuleSet& rules, size_t species, RuleKind kin
 }
 
 // How a kernel writes successor modules: nowhere (match passes), or into symOut/parOut, with the position each
-// module came from and its liveness when decomposition follows.
+// module came from and its liveness when decomposition follows, and the bracket partners it carries.
 std::string emitters(bool writes, bool provenance, bool partners = false) {
     std::string pairs = partners ? "void emitPartners(uint open, uint close) {\n"
                                    "    partnersOut[open] = close;\n"

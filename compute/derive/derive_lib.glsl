@@ -84,6 +84,16 @@ bool leftWalk(inout int s, uint pBegin, uint pEnd, uint skipRow, bool ring, inou
     return false;
 }
 
+// The walks of L-systems that are not rings.
+bool walkRight(inout uint s, bool enters, uint pEnd, uint skipRow) {
+    bool wrapped = false;
+    return rightWalk(s, enters, 0u, pEnd, skipRow, false, wrapped);
+}
+bool walkLeft(inout int s, uint pBegin, uint skipRow) {
+    bool wrapped = false;
+    return leftWalk(s, pBegin, 0u, skipRow, false, wrapped);
+}
+
 // A module's productions mostly start their context walks at the same place, so each invocation remembers its
 // last walk in each direction and repeats none. Within one invocation pBegin, pEnd and skipRow stay the same
 // for a given start (one plant at a time), so the start and whether the pattern enters branches are the key.
@@ -96,8 +106,7 @@ bool rightAdvance(inout uint s, uint want, uint pEnd, uint skipRow) {
         rightMemoStart = s;
         rightMemoEnters = enters;
         rightMemoEnd = s;
-        bool wrapped = false;
-        rightMemoFound = rightWalk(rightMemoEnd, enters, 0u, pEnd, skipRow, false, wrapped);
+        rightMemoFound = walkRight(rightMemoEnd, enters, pEnd, skipRow);
     }
     s = rightMemoEnd;
     return rightMemoFound;
@@ -109,8 +118,7 @@ bool leftAdvance(inout int s, uint pBegin, uint skipRow) {
     if (s != leftMemoStart) {
         leftMemoStart = s;
         leftMemoEnd = s;
-        bool wrapped = false;
-        leftMemoFound = leftWalk(leftMemoEnd, pBegin, 0u, skipRow, false, wrapped);
+        leftMemoFound = walkLeft(leftMemoEnd, pBegin, skipRow);
     }
     s = leftMemoEnd;
     return leftMemoFound;
@@ -124,14 +132,6 @@ uint firstRight = 0u, firstRightBranch = 0u;
 int firstLeft = 0;
 bool firstRightFound = false, firstRightBranchFound = false, firstLeftFound = false;
 uint firstRightWord = 0u, firstRightBranchWord = 0u, firstLeftWord = 0u;
-bool walkRight(inout uint s, bool enters, uint pEnd, uint skipRow) {
-    bool wrapped = false;
-    return rightWalk(s, enters, 0u, pEnd, skipRow, false, wrapped);
-}
-bool walkLeft(inout int s, uint pBegin, uint skipRow) {
-    bool wrapped = false;
-    return leftWalk(s, pBegin, 0u, skipRow, false, wrapped);
-}
 
 // The first evaluation error of the pass wins; the host turns the code into a located message.
 void reportError(uint code) { atomicCompSwap(errors[0], 0u, code + 1u); }

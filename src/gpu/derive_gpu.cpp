@@ -438,17 +438,17 @@ struct GpuDeriver::Impl {
             [&](VkCommandBuffer cmd) {
                 vk::cmdFill(cmd, errors, 0);
                 vk::memoryBarrier(cmd, Hazard::TransferToCompute);
-                if (kernels.carriesPartners) {
-                    dispatchDerive(cmd, *write, in,
-                                   {counts, tileOffsets, choices, drawStarts, out.sym, out.par, out.origin, out.live,
-                                    brackets.carriedPartners(total)},
-                                   p, n);
-                } else if (fused) {
-                    dispatchDerive(cmd, *write, in,
-                                   {counts, tileOffsets, choices, drawStarts, out.sym, out.par, out.origin, out.live},
-                                   p, n);
-                }
                 if (fused) {
+                    if (kernels.carriesPartners) // the partners go after the kernel's own outputs
+                        dispatchDerive(cmd, *write, in,
+                                       {counts, tileOffsets, choices, drawStarts, out.sym, out.par, out.origin,
+                                        out.live, brackets.carriedPartners(total)},
+                                       p, n);
+                    else
+                        dispatchDerive(cmd, *write, in,
+                                       {counts, tileOffsets, choices, drawStarts, out.sym, out.par, out.origin,
+                                        out.live},
+                                       p, n);
                     DeriveHelperPush hp{n, tileSize, total, plants};
                     plantStartsTiled.dispatch(cmd, {plantTable(in), counts, tileOffsets, plantTable(out)}, hp,
                                               plantStartsTiled.groupsFor(plants + 1));

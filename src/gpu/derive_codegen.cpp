@@ -73,7 +73,7 @@ std::string selection(const ir::RuleSet& rules, size_t species, RuleKind kind, b
                 const ir::Production& p = rules.productions[pi];
                 code += fmt::format("            start = draw;\n"
                                     "            if (count == {}u && {}(i, plant, key, pBegin, pEnd, ctxLeft, ctxRight, draw, "
-                                    "1u, 0u, 0u, produced)) {{ chosen = {}u; length = {}u; break; }}\n",
+                                    "1u, produced)) {{ chosen = {}u; length = {}u; break; }}\n",
                                     p.strict[0].paramSlots.size(), functionName(species, kind, pi), pi + 1, p.strict.size());
             }
             code += "        } while (false);\n";
@@ -83,7 +83,7 @@ std::string selection(const ir::RuleSet& rules, size_t species, RuleKind kind, b
                 const ir::Production& p = rules.productions[pi];
                 code += fmt::format("        uint start{0} = draw;\n"
                                     "        bool applicable{0} = count == {1}u && {2}(i, plant, key, pBegin, pEnd, ctxLeft, "
-                                    "ctxRight, draw, 0u, 0u, 0u, ignored);\n"
+                                    "ctxRight, draw, 0u, ignored);\n"
                                     "        if (applicable{0}) total += {3};\n",
                                     pi, p.strict[0].paramSlots.size(), functionName(species, kind, pi),
                                     literal(static_cast<double>(std::max(p.weight, 0.0f))));
@@ -103,8 +103,8 @@ std::string selection(const ir::RuleSet& rules, size_t species, RuleKind kind, b
             }
             code += "            draw = start;\n            switch (chosen) {\n";
             for (size_t pi : list)
-                code += fmt::format("            case {}u: {}(i, plant, key, pBegin, pEnd, ctxLeft, ctxRight, draw, 1u, 0u, "
-                                    "0u, produced); break;\n",
+                code += fmt::format("            case {}u: {}(i, plant, key, pBegin, pEnd, ctxLeft, ctxRight, draw, 1u, produced); "
+                                    "break;\n",
                                     pi + 1, functionName(species, kind, pi));
             code += "            }\n        }\n";
         }
@@ -115,44 +115,42 @@ std::string selection(const ir::RuleSet& rules, size_t species, RuleKind kind, b
 }
 
 std::string writeDispatch(const ir::RuleSet& rules, size_t species, RuleKind kind) {
-    std::string code = "    uint produced;\n    switch (choice) {\n";
+    std::string code = "    switch (choice) {\n";
     for (size_t pi = 0; pi < rules.productions.size(); ++pi)
-        code += fmt::format("    case {}u: {}(i, plant, key, pBegin, pEnd, ctxLeft, ctxRight, draw, 2u, pos, origin, "
-                            "produced); break;\n",
+        code += fmt::format("    case {}u: {}(i, plant, key, pBegin, pEnd, ctxLeft, ctxRight, draw, 2u, produced); break;\n",
                             pi + 1, functionName(species, kind, pi));
     code += "    }\n";
     return code;
 }
 
-// How a kernel writes successor modules: nowhere (match passes), or into symOut/parOut, with the position each
-// module came from and its liveness when decomposition follows, and the bracket partners it carries.
-std::string emitters(bool writes, bool provenance, bool partners = false) {
-    std::string pairs = partners ? "void emitPartners(uint open, uint close) {\n"
-                                   "    partnersOut[open] = close;\n"
-                                   "    partnersOut[close] = open;\n"
-                                   "}\n"
-                                 : "void emitPartners(uint open, uint close) {}\n";
-    if (!writes)
-        return "void emitModule(uint pos, uint sym, uint count, uint origin) {}\n"
-               "void emitParam(uint pos, uint k, double value) {}\n" + pairs + "\n";
-    std::string s = "void emitModule(uint pos, uint sym, uint count, uint origin) {\n"
-                    "    symOut[pos] = sym | (count << kSymbolBits);\n";
-    if (provenance) // where each module came from, for decomposition's contexts
-        s += "    originOut[pos] = origin;\n"
-             "    liveOut[pos] = 1u;\n";
-    return s + "}\n"
-               "void emitParam(uint pos, uint k, double value) { parOut[pos * pc.stride + k] = float(value); }\n" +
-           pairs + "\n";
-}
-
 // The end of a match kernel: what it found for module i.
 // `returnsCount`: the function returns the count instead of storing it (the step's matchModule, whose main()
 // stores it or, with a fused scan, the counts before it in its tile).
-std::string recordChoice(bool returnsCount = false) {
+// `recordsDraws`: the write pass draws, from where the chosen production started.
+std::string recordChoice(bool returnsCount = false, bool recordsDraws = true) {
     return std::string("    if (chosen == 0u) produced = 1u;\n") + (returnsCount ? "" : "    counts[i] = produced;\n") +
-           "    choices[i] = chosen | ((length - 1u) << 24u); // the predecessor's length for the greedy walk\n"
-           "    drawStarts[i] = start;\n" +
-           (returnsCount ? "    return produced;\n}\n" : "}\n");
+           "    choices[i] = chosen | ((length - 1u) << 24u); // the predecessor's length for the greedy walk\n" +
+           (recordsDraws ? "    drawStarts[i] = start;\n" : "") + (returnsCount ? "    return produced;\n}\n" : "}\n");
+}
+
+// Module i's plant and where the plant's string begins and ends, in a step's passes: looked up only when its
+// productions read them (codegen::plantInputs), since each lookup is a search and several loads per module.
+// `frozenCheck`: a match pass, which copies the modules of frozen plants when kFrozenPlants is specialised true
+// (the host does so only while some plant is frozen).
+std::string stepPlantLookup(const codegen::PlantInputs& in, bool frozenCheck) {
+    std::string frozen = "        if (plantFrozen[plant] == kPlantFrozen) { choices[i] = kChoiceCopy; return 1u; }\n";
+    std::string s;
+    if (in.plant) {
+        s += "    uint plant = plantOf(i);\n";
+        if (frozenCheck) s += "    if (kFrozenPlants) {\n" + frozen + "    }\n";
+    } else {
+        s += "    uint plant = 0u;\n";
+        if (frozenCheck) s += "    if (kFrozenPlants) {\n        plant = plantOf(i);\n" + frozen + "    }\n";
+    }
+    s += "    uint species = plant % kSpeciesCount;\n";
+    s += in.bounds ? "    uint pBegin = plantStart[plant], pEnd = plantStart[plant + 1u];\n"
+                   : "    uint pBegin = 0u, pEnd = pc.count; // unread\n";
+    return s;
 }
 
 } // namespace
@@ -205,12 +203,8 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species) 
                            name, table);
     };
     // A plant that stopped (stop(), or its species' derivation length reached) keeps its string.
-    // `returnsCount`: as recordChoice's.
-    auto frozenCopy = [](bool returnsCount) {
-        return fmt::format("    if (plantFrozen[plant] == kPlantFrozen) {{ {}choices[i] = kChoiceCopy; "
-                           "drawStarts[i] = 0u; return{}; }}\n",
-                           returnsCount ? "" : "counts[i] = 1u; ", returnsCount ? " 1u" : "");
-    };
+    const std::string frozenCopy = "    if (plantFrozen[plant] == kPlantFrozen) { counts[i] = 1u; choices[i] = kChoiceCopy; "
+                                   "drawStarts[i] = 0u; return; }\n";
 
     // The step's scan fused into its two passes: match sums the successor counts of each subgroup's modules (a
     // tile of gl_SubgroupSize consecutive modules: invocations fill subgroups in order) and stores for each module
@@ -222,18 +216,25 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species) 
     // partner went (outputPosition). Cuts and decomposition change brackets after the write.
     k.carriesPartners = k.needsBrackets && k.fusedScan && !k.hasDecomposition &&
                         codegen::successorsKeepBracketsBalanced(species);
+    codegen::PlantInputs stepInputs = codegen::plantInputs(species, RuleKind::Step);
+    stepInputs.bounds = stepInputs.bounds || k.mayCut; // a cut ends where its branch does, within the plant
+    stepInputs.plant = stepInputs.plant || stepInputs.bounds;
+    k.stepFindsPlants = stepInputs.plant;
+    int copiedParams = 1; // the parameter slots of every module (the host's stride)
+    for (const ir::Grammar& g : species) copiedParams = std::max(copiedParams, g.maxParams());
+    codegen::SuccessorSlots stepSlots = codegen::successorSlots(species, RuleKind::Step, uint32_t(copiedParams));
+    codegen::SuccessorSlots decompositionSlots = codegen::successorSlots(species, RuleKind::Decomposition, 0);
 
     // ---- derivation step: match ----
     {
         std::string s = prelude + declarations(false, false, k.fusedScan) + library + functions;
-        s += emitters(false, false);
+        s += codegen::slotDeclarations(stepSlots);
+        s += "double ownParam(uint i, uint k) { return paramOf(i, k); }\n";
         s += findPlant("plantStart", "plantOf");
         s += codegen::contextPrefetchCode(species, RuleKind::Step, false) + stepFunctions;
-        s += "uint matchModule(uint i) {\n";
-        s += "    uint plant = plantOf(i);\n" + frozenCopy(true);
-        s += "    uint species = plant % kSpeciesCount;\n"
-             "    uint pBegin = plantStart[plant], pEnd = plantStart[plant + 1u];\n"
-             "    uint sym = symOf(i), count = countOf(i);\n"
+        s += "layout(constant_id = 0) const bool kFrozenPlants = false;\n\n";
+        s += "uint matchModule(uint i) {\n" + stepPlantLookup(stepInputs, true);
+        s += "    uint sym = symOf(i), count = countOf(i);\n"
              "    uint key = i - pBegin;\n"
              "    int ctxLeft = int(i) - 1;\n"
              "    uint ctxRight = i + 1u;\n"
@@ -247,7 +248,7 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species) 
                  "        atomicAdd(cutDelta[endOfBranch(i + 1u, pBegin, pEnd)], 0xFFFFFFFFu);\n"
                  "    }\n";
         }
-        s += recordChoice(true);
+        s += recordChoice(true, stepInputs.random);
         s += mainCalling(k.fusedScan ? "    uint produced = i < pc.count ? matchModule(i) : 0u;\n"
                                        "    uint before = subgroupExclusiveAdd(produced);\n"
                                        "    uint tileSum = subgroupAdd(produced);\n"
@@ -260,34 +261,51 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species) 
     // ---- derivation step: write ----
     {
         std::string s = prelude + declarations(false, true, k.fusedScan, k.carriesPartners) + library + functions;
-        s += emitters(true, k.hasDecomposition, k.carriesPartners);
+        s += codegen::slotDeclarations(stepSlots) +
+             codegen::slotStoreCode(stepSlots, k.hasDecomposition, k.carriesPartners);
+        // The module's parameters, loaded once for all productions and the copy.
+        std::string ownParams, loadOwn, copyOwn, ownParam = "double ownParam(uint i, uint k) {\n";
+        for (int a = 0; a < copiedParams; ++a) {
+            ownParams += fmt::format("double ownParam{};\n", a);
+            loadOwn += fmt::format("    ownParam{0} = paramOf(i, {0}u);\n", a);
+            copyOwn += fmt::format("    slotParam0_{0} = float(ownParam{0});\n", a);
+            ownParam += fmt::format("    if (k == {0}u) return ownParam{0};\n", a);
+        }
+        s += ownParams + ownParam + "    return 0.0LF;\n}\n\n";
         s += findPlant("plantStart", "plantOf");
         if (k.carriesPartners) // module j's first position in the written string
             s += "uint outputPosition(uint j) { return tileOffsets[j / gl_SubgroupSize] + countsBefore[j]; }\n\n";
         s += codegen::contextPrefetchCode(species, RuleKind::Step, true) + stepFunctions;
+        // Every module's successor goes through the slots, a copied module's too, so that each output position
+        // is stored once in the kernel's code: drivers that run every branch for the whole subgroup (lavapipe)
+        // pay for the stores of all productions otherwise.
         s += "void writeModule(uint i, uint pos) {\n";
         s += "    uint choice = choices[i];\n"
              "    if (choice == kChoiceDropped) return;\n"
-             "    choice &= kSymbolMask;\n";
-        s += "    uint origin = i;\n"
-             "    if (choice == kChoiceCopy) {\n"
-             "        uint count = countOf(i);\n"
-             "        emitModule(pos, symOf(i), count, origin);\n"
-             "        for (uint k = 0u; k < count; ++k) parOut[pos * pc.stride + k] = parIn[i * pc.stride + k];\n";
+             "    choice &= kSymbolMask;\n"
+             "    uint origin = i;\n"
+             "    uint word = symIn[i];\n" +
+             loadOwn +
+             "    uint produced = 1u;\n"
+             "    slotWord0 = word;\n" +
+             copyOwn + codegen::resetSlotPartners(stepSlots);
         if (k.carriesPartners) // brackets are never rewritten: both partners are copies
-            s += "        if (symOf(i) == kOpen) emitPartners(pos, outputPosition(bracketPartners[i]));\n";
-        s += "        return;\n"
-             "    }\n"
-             "    uint plant = plantOf(i);\n"
-             "    uint species = plant % kSpeciesCount;\n"
-             "    uint pBegin = plantStart[plant], pEnd = plantStart[plant + 1u];\n"
-             "    uint key = i - pBegin;\n"
+            s += "    if (choice == kChoiceCopy && (word & kSymbolMask) == kOpen) {\n"
+                 "        uint partner = outputPosition(bracketPartners[i]);\n"
+                 "        partnersOut[pos] = partner;\n"
+                 "        partnersOut[partner] = pos;\n"
+                 "    }\n";
+        s += "    if (choice != kChoiceCopy) {\n";
+        s += stepPlantLookup(stepInputs, false);
+        s += "    uint key = i - pBegin;\n"
              "    int ctxLeft = int(i) - 1;\n"
              "    uint ctxRight = i + 1u;\n"
-             "    prefetchContexts(species, ctxLeft, ctxRight, pBegin, pEnd);\n"
-             "    uint draw = drawStarts[i];\n";
+             "    prefetchContexts(species, ctxLeft, ctxRight, pBegin, pEnd);\n";
+        s += stepInputs.random ? "    uint draw = drawStarts[i];\n" : "    uint draw = 1u; // as match left it\n";
         s += codegen::perSpecies(species.size(), [&](size_t sp) { return writeDispatch(species[sp].productions, sp, RuleKind::Step); });
-        s += "}\n";
+        s += "    }\n"
+             "    storeSlots(pos, produced, origin);\n"
+             "}\n";
         s += mainCalling(k.fusedScan
                              ? "    if (i < pc.count) writeModule(i, tileOffsets[i / gl_SubgroupSize] + countsBefore[i]);\n"
                              : "    if (i < pc.count) writeModule(i, offsets[i]);\n",
@@ -307,12 +325,12 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species) 
         {
             std::string s = prelude + declarations(true, false) + library + functions;
             s += "double strictParam(uint i, uint k) { return double(parX[i * pc.stride + k]); }\n" +
-                 emitters(false, false);
+                 codegen::slotDeclarations(decompositionSlots);
             s += findPlant("plantStartX", "plantOfX");
             s += codegen::contextPrefetchCode(species, RuleKind::Decomposition, false) + decompositionFunctions;
             s += "void matchModule(uint i) {\n";
             s += "    if (liveX[i] == 0u) { counts[i] = 1u; choices[i] = kChoiceCopy; drawStarts[i] = 0u; return; }\n";
-            s += "    uint plant = plantOfX(i);\n" + frozenCopy(false) + decompositionSetup;
+            s += "    uint plant = plantOfX(i);\n" + frozenCopy + decompositionSetup;
             s += "    uint sym = symX[i] & kSymbolMask, count = symX[i] >> kSymbolBits;\n"
                  "    uint draw = 1u, chosen = 0u, start = 0u, produced = 1u, length = 1u;\n";
             s += codegen::perSpecies(species.size(), decompositionSelection);
@@ -324,7 +342,7 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species) 
         {
             std::string s = prelude + declarations(true, true) + library + functions;
             s += "double strictParam(uint i, uint k) { return double(parX[i * pc.stride + k]); }\n" +
-                 emitters(true, true);
+                 codegen::slotDeclarations(decompositionSlots) + codegen::slotStoreCode(decompositionSlots, true, false);
             s += findPlant("plantStartX", "plantOfX");
             s += codegen::contextPrefetchCode(species, RuleKind::Decomposition, true) + decompositionFunctions;
             s += "void writeModule(uint i) {\n";
@@ -340,10 +358,12 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species) 
                  "    }\n"
                  "    uint plant = plantOfX(i);\n";
             s += decompositionSetup;
-            s += "    uint draw = drawStarts[i];\n";
+            s += "    uint draw = drawStarts[i];\n"
+                 "    uint produced = 0u;\n";
             s += codegen::perSpecies(species.size(),
                             [&](size_t sp) { return writeDispatch(species[sp].decomposition, sp, RuleKind::Decomposition); });
-            s += "}\n";
+            s += "    storeSlots(pos, produced, origin);\n"
+                 "}\n";
             s += mainCalling("    if (i < pc.count) writeModule(i);\n", RuleKind::Decomposition);
             k.decompositionWrite = std::move(s);
         }

@@ -42,6 +42,9 @@ struct GeneratedKernels {
     // The step's write pass also writes the partners of the brackets of the string it writes
     // (codegen::carriesBracketPartners), into the binding after its own outputs.
     bool carriesPartners = false;
+    // The step's passes find each module's plant for its productions (codegen::plantInputs); otherwise only the
+    // match pass specialised for frozen plants (kFrozenPlants) does, and the plant hints are needed only then.
+    bool stepFindsPlants = false;
     std::vector<double> functionTables; // the sampled func() tables and the contour curves, concatenated
 };
 

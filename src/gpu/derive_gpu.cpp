@@ -77,6 +77,12 @@ struct GpuDeriver::Impl {
     uint32_t globalStride = 0, arrayStride = 0; // globals and array elements per plant (the most of any species)
     GeneratedKernels kernels;
     std::optional<vk::ComputePipeline> match, write, decompositionMatch, decompositionWrite, sequential;
+    // The step's match pass specialised to copy the modules of frozen plants (kFrozenPlants), made the first time
+    // a step has some (frozenMatch()): drivers compile a pipeline when it is made or first run, and most
+    // derivations never need it.
+    std::optional<vk::ComputePipeline> matchWithFrozen;
+    std::vector<uint32_t> matchSpirv;
+    bool anyFrozen = false; // some plant is frozen in the step being derived
     // The homomorphism, generated as the decomposition of grammars whose decomposition is their homomorphism;
     // empty when no species has one, or when its productions need the host (homomorphismHostReason).
     GeneratedKernels homomorphismKernels;
@@ -154,7 +160,8 @@ struct GpuDeriver::Impl {
             sequential.emplace(build(kernels.sequential, "derive/sequential"));
         } else {
             kernels = generateDeriveKernels(species);
-            match.emplace(build(kernels.match, "derive/match"));
+            matchSpirv = cachedComputeKernel(kernels.match, "derive/match");
+            match.emplace(ctx, matchSpirv, "derive/match");
             write.emplace(build(kernels.write, "derive/write"));
         }
         if (kernels.hasDecomposition && strategy == GpuStrategy::Parallel) {
@@ -364,6 +371,14 @@ struct GpuDeriver::Impl {
         plantStarts.dispatch(cmd, {plantTable(from), offsets, plantTable(to)}, hp, plantStarts.groupsFor(plants + 1));
     }
 
+    const vk::ComputePipeline& frozenMatch() {
+        if (!matchWithFrozen) {
+            const uint32_t frozenPlants[] = {VK_TRUE};
+            matchWithFrozen.emplace(ctx, matchSpirv, "derive/match", frozenPlants);
+        }
+        return *matchWithFrozen;
+    }
+
     // The hints the next derivation kernels find plants of `s` with; they stay valid until the next call.
     void recordPlantHints(VkCommandBuffer cmd, const Stream& s) {
         DeriveHelperPush hp{s.count, 0, 0, plants};
@@ -409,15 +424,16 @@ struct GpuDeriver::Impl {
                 vk::cmdFill(cmd, errors, 0);
                 if (kernels.mayCut) vk::cmdFill(cmd, cutDelta, 0);
                 vk::memoryBarrier(cmd, Hazard::TransferToCompute);
-                recordPlantHints(cmd, in);
+                if (kernels.stepFindsPlants || anyFrozen) recordPlantHints(cmd, in);
                 vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
                 if (kernels.needsBrackets) recordBrackets(cmd, cur);
+                const vk::ComputePipeline& matcher = anyFrozen ? frozenMatch() : *match;
                 if (fused) {
-                    dispatchDerive(cmd, *match, in, {counts, choices, drawStarts, cutDelta, tileSums}, p, n);
+                    dispatchDerive(cmd, matcher, in, {counts, choices, drawStarts, cutDelta, tileSums}, p, n);
                     vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
                     scan.record(cmd, tileSums, tileOffsets, static_cast<uint32_t>(tilesFor(n)));
                 } else {
-                    dispatchDerive(cmd, *match, in, {counts, choices, drawStarts, cutDelta}, p, n);
+                    dispatchDerive(cmd, matcher, in, {counts, choices, drawStarts, cutDelta}, p, n);
                     vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
                     if (kernels.mayCut && n > 0) {
                         scan.record(cmd, cutDelta, cutBefore, n);
@@ -820,6 +836,7 @@ cpu::DeriveResult GpuDeriver::derive(const cpu::DeriveOptions& options, bool rea
         double* gp = reinterpret_cast<double*>(m.globals.mapped());
         double* ap = reinterpret_cast<double*>(m.arrays.mapped());
         uint32_t* fp = reinterpret_cast<uint32_t*>(m.plantFrozen.mapped());
+        m.anyFrozen = false;
         for (uint32_t plant = 0; plant < m.plants; ++plant) {
             std::copy(states[plant].globals.begin(), states[plant].globals.end(), gp + uint64_t(plant) * m.globalStride);
             uint64_t at = uint64_t(plant) * m.arrayStride;
@@ -828,6 +845,7 @@ cpu::DeriveResult GpuDeriver::derive(const cpu::DeriveOptions& options, bool rea
                 at += a.size();
             }
             fp[plant] = growing[plant] ? shared::kPlantGrowing : shared::kPlantFrozen;
+            m.anyFrozen = m.anyFrozen || !growing[plant];
         }
     };
 

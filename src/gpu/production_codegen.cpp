@@ -430,8 +430,9 @@ void emitMatch(BodyEmitter& body, const ir::Grammar& g, size_t species, const ir
         }
         body.close();
     }
-    // A step's predecessor is in the string being rewritten; a decomposition's where the kernel keeps it.
-    const char* strictParam = kind == RuleKind::Step ? "paramOf" : "strictParam";
+    // A step's predecessor is in the string being rewritten, whose parallel kernels may have loaded its
+    // parameters already (ownParam); a decomposition's is where the kernel keeps it.
+    const char* strictParam = kind == RuleKind::Step ? (modal ? "ownParam" : "paramOf") : "strictParam";
     for (size_t k = 0; k < p.strict[0].paramSlots.size(); ++k)
         body.line(fmt::format("v{} = {}(i, {}u);", p.strict[0].paramSlots[k], strictParam, k));
     body.statements(p.before);
@@ -456,8 +457,9 @@ void emitChoice(BodyEmitter& body, const ir::Production& p) {
         body.line(fmt::format("if (alt == {}u) outCount = {}u;", k, p.alternatives[k].modules.size()));
 }
 
-// The chosen alternative's modules at outPos + j, and the partners of the brackets it matches itself.
-void emitSuccessor(BodyEmitter& body, const ir::Production& p) {
+// The chosen alternative's modules, and the partners of the brackets it matches itself: written through
+// emitModule/emitParam/emitPartners at outPos + j, or (`slots`) into the successor slots (successorSlots()).
+void emitSuccessor(BodyEmitter& body, const ir::Production& p, bool slots) {
     for (size_t k = 0; k < p.alternatives.size(); ++k) {
         const ir::Alternative& alt = p.alternatives[k];
         if (alt.modules.empty()) continue;
@@ -467,12 +469,19 @@ void emitSuccessor(BodyEmitter& body, const ir::Production& p) {
             const ir::SuccessorModule& m = alt.modules[j];
             std::vector<std::string> values;
             for (const ir::Expr& arg : m.args) values.push_back(body.expr(arg));
-            body.line(fmt::format("emitModule(outPos + {}u, {}u, {}u, origin);", j, m.sym, m.args.size()));
-            for (size_t a = 0; a < values.size(); ++a)
-                body.line(fmt::format("emitParam(outPos + {}u, {}u, {});", j, a, values[a]));
+            if (slots) {
+                body.line(fmt::format("slotWord{} = {}u;", j, m.sym | uint32_t(m.args.size()) << shared::kSymbolBits));
+                for (size_t a = 0; a < values.size(); ++a)
+                    body.line(fmt::format("slotParam{}_{} = float({});", j, a, values[a]));
+            } else {
+                body.line(fmt::format("emitModule(outPos + {}u, {}u, {}u, origin);", j, m.sym, m.args.size()));
+                for (size_t a = 0; a < values.size(); ++a)
+                    body.line(fmt::format("emitParam(outPos + {}u, {}u, {});", j, a, values[a]));
+            }
             if (m.sym == ir::kBranchOpen) open.push_back(j);
             if (m.sym == ir::kBranchClose && !open.empty()) {
-                body.line(fmt::format("emitPartners(outPos + {}u, outPos + {}u);", open.back(), j));
+                body.line(slots ? fmt::format("slotPartner{0} = {1}u; slotPartner{1} = {0}u;", open.back(), j)
+                                : fmt::format("emitPartners(outPos + {}u, outPos + {}u);", open.back(), j));
                 open.pop_back();
             }
         }
@@ -515,7 +524,7 @@ void emitProduction(const ir::Grammar& g, size_t species, const ir::Production& 
     const std::string testParameters =
         "uint i, uint plant, uint key, uint pBegin, uint pEnd, int ctxLeft, uint ctxRight, inout uint draw";
     if (style == FrameStyle::Fresh) {
-        out += fmt::format("bool {}({}, uint mode, uint outPos, uint origin, out uint outCount) {{\n", name, testParameters);
+        out += fmt::format("bool {}({}, uint mode, out uint outCount) {{\n", name, testParameters);
         body.line("outCount = 0u;");
         body.line(bases);
         for (int slot = 0; slot < p.frameSize; ++slot) body.line(fmt::format("double v{} = 0.0LF;", slot));
@@ -523,7 +532,7 @@ void emitProduction(const ir::Grammar& g, size_t species, const ir::Production& 
         body.line("if (mode == 0u) return true;");
         emitChoice(body, p);
         body.line("if (mode == 1u) return true;");
-        emitSuccessor(body, p);
+        emitSuccessor(body, p, true);
         body.line("return true;");
         out += "}\n\n";
         return;
@@ -540,7 +549,7 @@ void emitProduction(const ir::Grammar& g, size_t species, const ir::Production& 
     body.line(bases);
     body.line("const uint outPos = 0u, origin = 0u;");
     emitChoice(body, p);
-    emitSuccessor(body, p);
+    emitSuccessor(body, p, false);
     out += "}\n\n";
     out += frameWrapper(p, "void", name + "Produce", produceParameters, "plant, key, draw, outCount");
 }
@@ -576,58 +585,92 @@ std::string contextPrefetchCode(const std::vector<ir::Grammar>& species, RuleKin
 
 namespace {
 
-// Loop iterations that the code of expressions and statements may run, walking them; `unbounded` once a loop
-// may run as long as the grammar's values say.
-struct LoopCount {
-    uint64_t iterations = 0;
-    bool unbounded = false;
-
-    void expr(const ir::Expr& e) {
-        using ir::Builtin;
-        // The elementary functions of derive_lib.glsl and contour_curve.glsl loop at most this often per call.
-        constexpr uint64_t kMostPerCall = 64;
-        if (e.op == ir::Op::Pow) iterations += kMostPerCall;
-        if (e.op == ir::Op::Call) {
-            switch (e.fn) {
-            case Builtin::Biran: unbounded = true; break;
-            case Builtin::Exp: case Builtin::Log: case Builtin::Pow: case Builtin::Atan: case Builtin::Atan2:
-            case Builtin::Asin: case Builtin::Acos: case Builtin::Nran: case Builtin::CurveX: case Builtin::CurveY:
-            case Builtin::CurveZ:
-                iterations += kMostPerCall;
-                break;
-            default: break;
-            }
-        }
-        for (const ir::Expr& a : e.args) expr(a);
-    }
-    void statements(const std::vector<ir::Stmt>& block) {
+// Calls onExpr for every expression node and onStatement for every statement of a production's code: its
+// statements, condition and successor parameters, nested blocks and subexpressions included.
+template <typename OnExpr, typename OnStatement>
+void walkProductionCode(const ir::Production& p, OnExpr&& onExpr, OnStatement&& onStatement) {
+    auto expr = [&](const ir::Expr& e, auto& self) -> void {
+        onExpr(e);
+        for (const ir::Expr& a : e.args) self(a, self);
+    };
+    auto statements = [&](const std::vector<ir::Stmt>& block, auto& self) -> void {
         for (const ir::Stmt& st : block) {
-            if (st.kind == ir::StmtKind::While || st.kind == ir::StmtKind::DoWhile) unbounded = true;
-            expr(st.expr);
-            for (const ir::Expr& index : st.indices) expr(index);
-            statements(st.body);
-            statements(st.elseBody);
+            onStatement(st);
+            expr(st.expr, expr);
+            for (const ir::Expr& index : st.indices) expr(index, expr);
+            self(st.body, self);
+            self(st.elseBody, self);
         }
-    }
-};
+    };
+    statements(p.before, statements);
+    statements(p.after, statements);
+    if (p.condition) expr(*p.condition, expr);
+    for (const ir::Alternative& alt : p.alternatives)
+        for (const ir::SuccessorModule& m : alt.modules)
+            for (const ir::Expr& arg : m.args) expr(arg, expr);
+}
 
 } // namespace
 
 bool mayLoopLong(const std::vector<ir::Grammar>& species, RuleKind kind) {
     // Well inside lavapipe's 65535 iterations, with room for the plant search and parameter copies.
     constexpr uint64_t kMostIterations = 8192;
-    LoopCount count;
+    // The elementary functions of derive_lib.glsl and contour_curve.glsl loop at most this often per call.
+    constexpr uint64_t kMostPerCall = 64;
+    uint64_t iterations = 0;
+    bool unbounded = false;
+    auto countCalls = [&](const ir::Expr& e) {
+        using ir::Builtin;
+        if (e.op == ir::Op::Pow) iterations += kMostPerCall;
+        if (e.op != ir::Op::Call) return;
+        switch (e.fn) {
+        case Builtin::Biran: unbounded = true; break;
+        case Builtin::Exp: case Builtin::Log: case Builtin::Pow: case Builtin::Atan: case Builtin::Atan2:
+        case Builtin::Asin: case Builtin::Acos: case Builtin::Nran: case Builtin::CurveX: case Builtin::CurveY:
+        case Builtin::CurveZ:
+            iterations += kMostPerCall;
+            break;
+        default: break;
+        }
+    };
+    auto countLoops = [&](const ir::Stmt& st) {
+        if (st.kind == ir::StmtKind::While || st.kind == ir::StmtKind::DoWhile) unbounded = true;
+    };
     for (const ir::Grammar& g : species)
         for (const ir::Production& p : (kind == RuleKind::Step ? g.productions : g.decomposition).productions) {
             if (!p.left.empty() || !p.right.empty()) return true; // context walks pass any number of modules
-            count.statements(p.before);
-            count.statements(p.after);
-            if (p.condition) count.expr(*p.condition);
-            for (const ir::Alternative& alt : p.alternatives)
-                for (const ir::SuccessorModule& m : alt.modules)
-                    for (const ir::Expr& arg : m.args) count.expr(arg);
+            walkProductionCode(p, countCalls, countLoops);
         }
-    return count.unbounded || count.iterations > kMostIterations;
+    return unbounded || iterations > kMostIterations;
+}
+
+PlantInputs plantInputs(const std::vector<ir::Grammar>& species, RuleKind kind) {
+    PlantInputs in;
+    in.plant = species.size() > 1; // a plant's species is its index modulo their number
+    auto scanExpr = [&](const ir::Expr& e) {
+        if (e.op == ir::Op::Global || e.op == ir::Op::ArrayElem) in.plant = true;
+        if (e.op != ir::Op::Call) return;
+        switch (e.fn) {
+        case ir::Builtin::Ran: case ir::Builtin::Nran: case ir::Builtin::Biran: in.random = true; break;
+        case ir::Builtin::Stop: in.plant = true; break;
+        default: break;
+        }
+    };
+    auto scanStatement = [&](const ir::Stmt& st) {
+        if (st.kind == ir::StmtKind::Assign && st.target != ir::TargetKind::Local) in.plant = true;
+    };
+    for (const ir::Grammar& g : species) {
+        const ir::RuleSet& rules = kind == RuleKind::Step ? g.productions : g.decomposition;
+        if (isStochastic(rules)) in.random = true;
+        for (const ir::Production& p : rules.productions) {
+            if (!p.left.empty() || !p.right.empty() || p.strict.size() > 1) in.bounds = true;
+            if (p.alternatives.size() > 1) in.random = true;
+            walkProductionCode(p, scanExpr, scanStatement);
+        }
+    }
+    if (in.random) in.bounds = true; // a draw's key is the module's index in its plant
+    if (in.bounds) in.plant = true;
+    return in;
 }
 
 bool successorsKeepBracketsBalanced(const std::vector<ir::Grammar>& species) {
@@ -651,6 +694,65 @@ bool successorsKeepBracketsBalanced(const std::vector<ir::Grammar>& species) {
         }
     }
     return true;
+}
+
+SuccessorSlots successorSlots(const std::vector<ir::Grammar>& species, RuleKind kind, uint32_t copiedParams) {
+    SuccessorSlots slots;
+    slots.params.assign(1, copiedParams);
+    slots.pairs.assign(1, false);
+    for (const ir::Grammar& g : species)
+        for (const ir::Production& p : (kind == RuleKind::Step ? g.productions : g.decomposition).productions)
+            for (const ir::Alternative& alt : p.alternatives) {
+                if (alt.modules.size() > slots.params.size()) {
+                    slots.params.resize(alt.modules.size(), 0);
+                    slots.pairs.resize(alt.modules.size(), false);
+                }
+                std::vector<size_t> open;
+                for (size_t j = 0; j < alt.modules.size(); ++j) {
+                    const ir::SuccessorModule& m = alt.modules[j];
+                    slots.params[j] = std::max(slots.params[j], static_cast<uint32_t>(m.args.size()));
+                    if (m.sym == ir::kBranchOpen) open.push_back(j);
+                    if (m.sym == ir::kBranchClose && !open.empty()) {
+                        slots.pairs[open.back()] = slots.pairs[j] = true;
+                        open.pop_back();
+                    }
+                }
+            }
+    return slots;
+}
+
+std::string slotDeclarations(const SuccessorSlots& slots) {
+    std::string s;
+    for (size_t j = 0; j < slots.params.size(); ++j) {
+        s += fmt::format("uint slotWord{};", j);
+        for (uint32_t a = 0; a < slots.params[j]; ++a) s += fmt::format(" float slotParam{}_{};", j, a);
+        if (slots.pairs[j]) s += fmt::format(" uint slotPartner{};", j);
+        s += "\n";
+    }
+    return s + "\n";
+}
+
+std::string slotStoreCode(const SuccessorSlots& slots, bool provenance, bool partners) {
+    std::string s = "void storeSlots(uint pos, uint n, uint origin) {\n";
+    for (size_t j = 0; j < slots.params.size(); ++j) {
+        s += fmt::format("    if ({0}u < n) {{\n        symOut[pos + {0}u] = slotWord{0};\n", j);
+        for (uint32_t a = 0; a < slots.params[j]; ++a)
+            s += fmt::format("        if ((slotWord{0} >> kSymbolBits) > {1}u) parOut[(pos + {0}u) * pc.stride + {1}u] = "
+                             "slotParam{0}_{1};\n",
+                             j, a);
+        if (provenance) s += fmt::format("        originOut[pos + {0}u] = origin;\n        liveOut[pos + {0}u] = 1u;\n", j);
+        if (partners && slots.pairs[j])
+            s += fmt::format("        if (slotPartner{0} != kNoModule) partnersOut[pos + {0}u] = pos + slotPartner{0};\n", j);
+        s += "    }\n";
+    }
+    return s + "}\n\n";
+}
+
+std::string resetSlotPartners(const SuccessorSlots& slots) {
+    std::string s;
+    for (size_t j = 0; j < slots.pairs.size(); ++j)
+        if (slots.pairs[j]) s += fmt::format("    slotPartner{} = kNoModule;\n", j);
+    return s;
 }
 
 std::vector<uint32_t> contextSkipBits(const std::vector<ir::Grammar>& species) {

@@ -1,8 +1,9 @@
 // Productions as GLSL functions, shared by the kernel generators (derive_codegen.h).
 //
 // A production becomes straight-line code that walks its contexts, binds its parameters, runs its statements
-// and condition and writes its successor through emitModule/emitParam, which each kernel defines. Two styles:
-// the parallel passes give every application fresh locals, in one function run in three modes; the
+// and condition and writes its successor: into the successor slots (SuccessorSlots), which the kernel stores,
+// or through emitModule/emitParam, which the kernel defines. Two styles: the parallel passes give every
+// application fresh locals, in one function run in three modes, and use the slots; the
 // sequential kernel keeps cpfg's one variable table per production (locals carry over between applications)
 // and splits testing from producing so that statements with side effects run once.
 #pragma once
@@ -21,10 +22,10 @@ namespace simeco::gpu::codegen {
 enum class RuleKind { Step, Decomposition };
 
 enum class FrameStyle {
-    Fresh,      // `bool NAME(..., uint mode, uint outPos, uint origin, out uint outCount)`: mode 0 tests, 1 also
-                // runs the after-statements and sets outCount, 2 also writes the successor at outPos
+    Fresh,      // `bool NAME(..., uint mode, out uint outCount)`: mode 0 tests, 1 also runs the after-statements
+                // and sets outCount, 2 also writes the successor into the slots
     Persistent, // `bool NAMETest(..., uint frame)` and `void NAMEProduce(..., uint frame, out uint outCount)`
-                // with the locals in frames[frame ...], the successor written at positions 0, 1, ...
+                // with the locals in frames[frame ...], the successor emitted at positions 0, 1, ...
 };
 
 // The storage buffer declarations of a kernel, bound in the order they are added.
@@ -72,6 +73,34 @@ bool successorsKeepBracketsBalanced(const std::vector<ir::Grammar>& species);
 // draws, or very many elementary functions. Only those kernels end with reportLoopsCut (derive_lib.glsl); the
 // others loop a bounded number of times and are spared its cost.
 bool mayLoopLong(const std::vector<ir::Grammar>& species, RuleKind kind);
+
+// What the productions of the `kind` rules of these species read of their plant, besides their modules: a
+// kernel whose productions need none of it skips finding the plant, which costs more than the rewriting of
+// many grammars.
+struct PlantInputs {
+    bool plant = false;  // the plant's index: several species, random draws, globals, arrays or stop()
+    bool bounds = false; // where the plant's string begins and ends: contexts, predecessors of several modules
+    bool random = false; // draws from the plant's random stream (which numbers them by module within the plant)
+};
+PlantInputs plantInputs(const std::vector<ir::Grammar>& species, RuleKind kind);
+
+// Where the productions of FrameStyle::Fresh write their successor, so that a kernel stores each module of a
+// successor once, whichever production wrote it, instead of once per production: module j of the successor goes
+// to slotWord<j> (symbol | parameter count << kSymbolBits), its parameter a to slotParam<j>_<a> and, when it is a
+// bracket the successor pairs, its partner's index in the successor to slotPartner<j>.
+struct SuccessorSlots {
+    std::vector<uint32_t> params; // per slot: the most parameters a module there has
+    std::vector<bool> pairs;      // per slot: some successor pairs a bracket there
+};
+// The slots of the `kind` rules of these species; slot 0 has room for `copiedParams` (the module copied when no
+// production applies goes there).
+SuccessorSlots successorSlots(const std::vector<ir::Grammar>& species, RuleKind kind, uint32_t copiedParams);
+std::string slotDeclarations(const SuccessorSlots& slots);
+// `void storeSlots(uint pos, uint n, uint origin)`: the first n slots into symOut/parOut at pos, with the
+// module's origin and liveness (`provenance`) and the partners of the brackets paired (`partners`).
+std::string slotStoreCode(const SuccessorSlots& slots, bool provenance, bool partners);
+// Marks the slots that may hold paired brackets as holding none (before a production writes them).
+std::string resetSlotPartners(const SuccessorSlots& slots);
 
 // One row of bits per species, set for the symbols its context walks skip (derive_lib.glsl's skipped()).
 std::vector<uint32_t> contextSkipBits(const std::vector<ir::Grammar>& species);

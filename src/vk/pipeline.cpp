@@ -18,7 +18,8 @@ BufferRange::BufferRange(const Buffer& whole) : buffer(whole.handle()) {}
 BufferRange::BufferRange(const Buffer& source, VkDeviceSize first, VkDeviceSize bytes)
     : buffer(source.handle()), offset(first), size(bytes) {}
 
-ComputePipeline::ComputePipeline(const Context& context, std::span<const std::uint32_t> spirv, std::string name)
+ComputePipeline::ComputePipeline(const Context& context, std::span<const std::uint32_t> spirv, std::string name,
+                                 std::span<const std::uint32_t> specialization)
     : context_(&context),
       name_(std::move(name)),
       reflection_(reflectComputeShader(spirv)),
@@ -61,6 +62,12 @@ ComputePipeline::ComputePipeline(const Context& context, std::span<const std::ui
     pipelineInfo.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
     pipelineInfo.stage.module = rawModule;
     pipelineInfo.stage.pName = reflection_.entryPoint.c_str();
+    std::vector<VkSpecializationMapEntry> entries;
+    for (std::uint32_t id = 0; id < specialization.size(); ++id)
+        entries.push_back({id, id * std::uint32_t(sizeof(std::uint32_t)), sizeof(std::uint32_t)});
+    VkSpecializationInfo specializationInfo{static_cast<std::uint32_t>(entries.size()), entries.data(),
+                                           specialization.size_bytes(), specialization.data()};
+    if (!specialization.empty()) pipelineInfo.stage.pSpecializationInfo = &specializationInfo;
     pipelineInfo.layout = layout_.get();
     VkPipeline pipeline = VK_NULL_HANDLE;
     VK_CHECK(vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &pipelineInfo, nullptr, &pipeline));

@@ -40,8 +40,10 @@ struct BufferRange {
 
 class ComputePipeline {
 public:
-    // `name` appears in error messages. Bindings go through push descriptors (set 0 only).
-    ComputePipeline(const Context& context, std::span<const std::uint32_t> spirv, std::string name);
+    // `name` appears in error messages. Bindings go through push descriptors (set 0 only). `specialization`
+    // gives the specialization constants with constant_id 0, 1, ... their values (32-bit each, VkBool32 for bools).
+    ComputePipeline(const Context& context, std::span<const std::uint32_t> spirv, std::string name,
+                    std::span<const std::uint32_t> specialization = {});
 
     // A kernel compiled into simeco_shaders, e.g. embedded(context, "scan/reduce").
     static ComputePipeline embedded(const Context& context, std::string_view name);

@@ -33,14 +33,14 @@ std::uint32_t chooseMemoryType(const VkPhysicalDeviceMemoryProperties& memory, s
 }
 
 Buffer::Buffer(const Context& context, VkDeviceSize size, MemoryUsage usage, VkBufferUsageFlags extraUsage)
-    : size_(size) {
-    VkDevice device = context.device();
+    : device_(context.device()), size_(size) {
+    VkDevice device = device_;
     VkBufferCreateInfo info{};
     info.sType = VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO;
     // Zero-sized buffers are invalid in Vulkan; an empty input still gets a bindable buffer.
     info.size = size > 0 ? size : 4;
-    info.usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
-                 VK_BUFFER_USAGE_TRANSFER_DST_BIT | extraUsage;
+    info.usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT |
+                 VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT | extraUsage;
     info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
     VkBuffer buffer = VK_NULL_HANDLE;
     VK_CHECK(vkCreateBuffer(device, &info, nullptr, &buffer));
@@ -77,6 +77,21 @@ Buffer::Buffer(const Context& context, VkDeviceSize size, MemoryUsage usage, VkB
         VK_CHECK(vkMapMemory(device, memory, 0, VK_WHOLE_SIZE, 0, &pointer));
         mapped_ = static_cast<std::byte*>(pointer);
     }
+}
+
+VkBufferView Buffer::texelView(VkFormat format, VkDeviceSize offset, VkDeviceSize range) const {
+    for (const TexelView& v : views_)
+        if (v.format == format && v.offset == offset && v.range == range) return v.view.get();
+    VkBufferViewCreateInfo info{};
+    info.sType = VK_STRUCTURE_TYPE_BUFFER_VIEW_CREATE_INFO;
+    info.buffer = buffer_.get();
+    info.format = format;
+    info.offset = offset;
+    info.range = range;
+    VkBufferView view = VK_NULL_HANDLE;
+    VK_CHECK(vkCreateBufferView(device_, &info, nullptr, &view));
+    views_.push_back({format, offset, range, UniqueBufferView(device_, view)});
+    return view;
 }
 
 namespace {

@@ -24,7 +24,8 @@ enum class MemoryUsage {
 class Buffer {
 public:
     Buffer() = default;
-    // Storage and transfer usages are always included: every buffer can be bound to a kernel, filled and copied.
+    // Storage, uniform texel and transfer usages are always included: every buffer can be bound to a kernel,
+    // filled and copied.
     Buffer(const Context& context, VkDeviceSize size, MemoryUsage usage, VkBufferUsageFlags extraUsage = 0);
 
     Buffer(Buffer&&) noexcept = default;
@@ -37,9 +38,20 @@ public:
     // The persistent mapping of an Upload or Readback buffer; nullptr for DeviceLocal.
     std::byte* mapped() const { return mapped_; }
 
+    // A view of `range` bytes from `offset` read as `format`, for uniform texel buffer bindings. Made the first
+    // time it is asked for and kept as long as the buffer.
+    VkBufferView texelView(VkFormat format, VkDeviceSize offset, VkDeviceSize range) const;
+
 private:
+    struct TexelView {
+        VkFormat format;
+        VkDeviceSize offset, range;
+        UniqueBufferView view;
+    };
     UniqueMemory memory_;  // declared first so the buffer is destroyed before its memory
     UniqueBuffer buffer_;
+    mutable std::vector<TexelView> views_; // after buffer_, so destroyed before it
+    VkDevice device_ = VK_NULL_HANDLE;
     VkDeviceSize size_ = 0;
     std::byte* mapped_ = nullptr;
 };

@@ -13,10 +13,10 @@
 
 namespace simeco::vk {
 
-BufferRange::BufferRange(const Buffer& whole) : buffer(whole.handle()) {}
+BufferRange::BufferRange(const Buffer& whole) : source(&whole), buffer(whole.handle()) {}
 
-BufferRange::BufferRange(const Buffer& source, VkDeviceSize first, VkDeviceSize bytes)
-    : buffer(source.handle()), offset(first), size(bytes) {}
+BufferRange::BufferRange(const Buffer& viewed, VkDeviceSize first, VkDeviceSize bytes)
+    : source(&viewed), buffer(viewed.handle()), offset(first), size(bytes) {}
 
 ComputePipeline::ComputePipeline(const Context& context, std::span<const std::uint32_t> spirv, std::string name,
                                  std::span<const std::uint32_t> specialization)
@@ -25,6 +25,7 @@ ComputePipeline::ComputePipeline(const Context& context, std::span<const std::ui
       reflection_(reflectComputeShader(spirv)),
       maxGroupsX_(context.limits().maxComputeWorkGroupCount[0]),
       maxGroupsY_(context.limits().maxComputeWorkGroupCount[1]),
+      maxTexelElements_(context.limits().maxTexelBufferElements),
       cmdPushDescriptorSet_(context.cmdPushDescriptorSet()) {
     VkDevice device = context.device();
     if (reflection_.pushConstantSize > context.limits().maxPushConstantsSize) {
@@ -78,6 +79,17 @@ ComputePipeline ComputePipeline::embedded(const Context& context, std::string_vi
     return ComputePipeline(context, shaders::spirv(name), std::string(name));
 }
 
+VkBufferView ComputePipeline::texelView(const BufferRange& range, VkFormat format) const {
+    if (!range.source)
+        throw DispatchMismatch(fmt::format("kernel {}: a texel buffer binding needs a vk::Buffer to view", name_));
+    // The whole range in 4-byte texels, as many as the device lets one view hold; the callers size the buffers
+    // their kernels read as texels within that.
+    VkDeviceSize available = range.source->size() - range.offset;
+    VkDeviceSize bytes = range.size == VK_WHOLE_SIZE ? available : std::min(range.size, available);
+    bytes = std::min<VkDeviceSize>(bytes, VkDeviceSize{maxTexelElements_} * 4) / 4 * 4;
+    return range.source->texelView(format, range.offset, std::max<VkDeviceSize>(bytes, 4));
+}
+
 std::uint64_t ComputePipeline::groupsFor(std::uint64_t items, std::uint32_t itemsPerInvocation) const {
     std::uint64_t perGroup = std::uint64_t{reflection_.localSize[0]} * reflection_.localSize[1] *
                              reflection_.localSize[2] * itemsPerInvocation;
@@ -116,6 +128,7 @@ void ComputePipeline::dispatchBytes(VkCommandBuffer cmd, std::span<const BufferR
     std::uint64_t groupsX = (groups + groupsY - 1) / groupsY;
 
     std::vector<VkDescriptorBufferInfo> infos(buffers.size());
+    std::vector<VkBufferView> views(buffers.size(), VK_NULL_HANDLE);
     std::vector<VkWriteDescriptorSet> writes(buffers.size());
     for (std::size_t i = 0; i < buffers.size(); ++i) {
         infos[i] = {buffers[i].buffer, buffers[i].offset, buffers[i].size};
@@ -124,6 +137,11 @@ void ComputePipeline::dispatchBytes(VkCommandBuffer cmd, std::span<const BufferR
         writes[i].descriptorCount = 1;
         writes[i].descriptorType = reflection_.bindings[i].type;
         writes[i].pBufferInfo = &infos[i];
+        if (reflection_.bindings[i].type == VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER) {
+            views[i] = texelView(buffers[i], reflection_.bindings[i].texelFormat);
+            writes[i].pBufferInfo = nullptr;
+            writes[i].pTexelBufferView = &views[i];
+        }
     }
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_.get());
     if (!writes.empty()) {

@@ -31,8 +31,9 @@ public:
 // A buffer, or a range of one, bound to the next binding of a dispatch.
 struct BufferRange {
     BufferRange(const Buffer& whole);  // NOLINT(google-explicit-constructor): whole buffers read naturally
-    BufferRange(const Buffer& source, VkDeviceSize first, VkDeviceSize bytes);
+    BufferRange(const Buffer& viewed, VkDeviceSize first, VkDeviceSize bytes);
 
+    const Buffer* source = nullptr; // for the views of uniform texel buffer bindings
     VkBuffer buffer = VK_NULL_HANDLE;
     VkDeviceSize offset = 0;
     VkDeviceSize size = VK_WHOLE_SIZE;
@@ -77,11 +78,14 @@ public:
                        std::uint64_t groups) const;
 
 private:
+    VkBufferView texelView(const BufferRange& range, VkFormat format) const;
+
     const Context* context_ = nullptr; // for its kernel profile
     std::string name_;
     ShaderReflection reflection_;
     std::uint32_t maxGroupsX_ = 0;
     std::uint32_t maxGroupsY_ = 0;
+    std::uint32_t maxTexelElements_ = 0;
     PFN_vkCmdPushDescriptorSetKHR cmdPushDescriptorSet_ = nullptr;
     UniqueDescriptorSetLayout setLayout_;
     UniquePipelineLayout layout_;

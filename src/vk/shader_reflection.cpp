@@ -19,6 +19,8 @@ enum Op : std::uint32_t {
     OpTypeFloat = 22,
     OpTypeVector = 23,
     OpTypeMatrix = 24,
+    OpTypeImage = 25,
+    OpTypeSampledImage = 27,
     OpTypeArray = 28,
     OpTypeRuntimeArray = 29,
     OpTypeStruct = 30,
@@ -120,6 +122,25 @@ std::uint32_t sizeOf(const Module& m, std::uint32_t id) {
     }
 }
 
+// A uniform texel buffer: a sampled image of dimension Buffer over 32-bit integers or floats.
+ShaderBinding texelBufferBinding(const Module& m, std::uint32_t id, const Type& sampledImage) {
+    constexpr std::uint32_t kDimBuffer = 5;
+    const Type* image = sampledImage.opcode == OpTypeSampledImage ? &type(m, sampledImage.operands.at(0)) : nullptr;
+    // OpTypeImage operands: sampled type, dimension, depth, arrayed, multisampled, sampled (1: with a sampler).
+    if (!image || image->opcode != OpTypeImage || image->operands.at(1) != kDimBuffer || image->operands.at(5) != 1)
+        throw ShaderInterfaceError("kernels may bind only buffers and uniform texel buffers (found another image or a sampler)");
+    const Type& texel = type(m, image->operands.at(0));
+    if (texel.operands.at(0) != 32) throw ShaderInterfaceError("uniform texel buffers must hold 32-bit texels");
+    ShaderBinding binding;
+    binding.set = m.sets.count(id) ? m.sets.at(id) : 0;
+    binding.binding = m.bindings.count(id) ? m.bindings.at(id) : 0;
+    binding.type = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
+    binding.texelFormat = texel.opcode == OpTypeFloat ? VK_FORMAT_R32_SFLOAT
+                          : texel.operands.at(1) != 0 ? VK_FORMAT_R32_SINT
+                                                      : VK_FORMAT_R32_UINT;
+    return binding;
+}
+
 } // namespace
 
 ShaderReflection reflectComputeShader(std::span<const std::uint32_t> spirv) {
@@ -164,6 +185,8 @@ ShaderReflection reflectComputeShader(std::span<const std::uint32_t> spirv) {
         case OpTypeRuntimeArray:
         case OpTypeStruct:
         case OpTypePointer:
+        case OpTypeImage:
+        case OpTypeSampledImage:
             m.types[ops[0]] = Type{opcode, std::vector<std::uint32_t>(ops.begin() + 1, ops.end())};
             break;
         case OpConstant:
@@ -239,7 +262,8 @@ ShaderReflection reflectComputeShader(std::span<const std::uint32_t> spirv) {
             continue;
         }
         if (variable.storageClass == kStorageUniformConstant) {
-            throw ShaderInterfaceError("kernels may bind only buffers (found an image or sampler)");
+            reflection.bindings.push_back(texelBufferBinding(m, id, *block));
+            continue;
         }
         if (variable.storageClass != kStorageStorageBuffer && variable.storageClass != kStorageUniform) {
             continue;

@@ -17,6 +17,9 @@ struct ShaderBinding {
     std::uint32_t set = 0;
     std::uint32_t binding = 0;
     VkDescriptorType type = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    // Uniform texel buffers (samplerBuffer, usamplerBuffer, isamplerBuffer): the one-channel 32-bit format the
+    // dispatch views their buffer as.
+    VkFormat texelFormat = VK_FORMAT_UNDEFINED;
 };
 
 struct ShaderReflection {
@@ -32,7 +35,8 @@ public:
     using std::logic_error::logic_error;
 };
 
-// Reads the first GLCompute entry point. Only buffer resources are supported, which is all the kernels use.
+// Reads the first GLCompute entry point. Only buffers and uniform texel buffers are supported, which is all the
+// kernels use.
 ShaderReflection reflectComputeShader(std::span<const std::uint32_t> spirv);
 
 } // namespace simeco::vk

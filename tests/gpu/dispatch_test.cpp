@@ -1,10 +1,11 @@
-// The dispatch helper and SPIR-V reflection against the embedded scan kernels.
+// The dispatch helper and SPIR-V reflection against the embedded scan kernels and a texel-buffer kernel.
 #include <cstdint>
 #include <stdexcept>
 #include <vector>
 
 #include "compute/shaders.h"
 #include "compute/shared/config.h"
+#include "gpu/glsl_compiler.h"
 #include "gpu_fixture.h"
 #include "vk/barriers.h"
 #include "vk/buffer.h"
@@ -88,6 +89,47 @@ TEST_F(DispatchTest, SplitsLargeDispatchesIntoTwoDimensions) {
         untouched += value != 0 ? 1 : 0;
     }
     EXPECT_EQ(untouched, 0u);
+}
+
+// Uniform texel buffers: reflected with the format of their texels, and read through views of the buffer
+// ranges the dispatch is given.
+TEST_F(DispatchTest, ReadsUniformTexelBuffersThroughViewsOfTheGivenRanges) {
+    const char* source = R"(#version 460
+layout(local_size_x = 64) in;
+layout(set = 0, binding = 0) uniform usamplerBuffer words;
+layout(set = 0, binding = 1) uniform samplerBuffer values;
+layout(set = 0, binding = 2, std430) writeonly buffer Out { float result[]; };
+layout(push_constant) uniform Push { uint count; } pc;
+void main() {
+    uint i = gl_GlobalInvocationID.x;
+    if (i < pc.count) result[i] = float(texelFetch(words, int(i)).x) + texelFetch(values, int(i)).x;
+}
+)";
+    vk::ComputePipeline kernel(context(), gpu::compileComputeKernel(source, "test/texel_read"), "test/texel_read");
+    const std::vector<vk::ShaderBinding>& bindings = kernel.reflection().bindings;
+    ASSERT_EQ(bindings.size(), 3u);
+    EXPECT_EQ(bindings[0].type, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER);
+    EXPECT_EQ(bindings[0].texelFormat, VK_FORMAT_R32_UINT);
+    EXPECT_EQ(bindings[1].type, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER);
+    EXPECT_EQ(bindings[1].texelFormat, VK_FORMAT_R32_SFLOAT);
+    EXPECT_EQ(bindings[2].type, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
+
+    constexpr std::uint32_t kCount = 100, kSkipped = 8; // the words' view starts 32 bytes in
+    std::vector<std::uint32_t> words(kCount + kSkipped);
+    std::vector<float> values(kCount);
+    for (std::uint32_t i = 0; i < words.size(); ++i) words[i] = 1000 + i;
+    for (std::uint32_t i = 0; i < kCount; ++i) values[i] = 0.5f * float(i);
+    vk::Buffer wordBuffer = vk::deviceBufferWith(context(), std::span<const std::uint32_t>(words));
+    vk::Buffer valueBuffer = vk::deviceBufferWith(context(), std::span<const float>(values));
+    vk::Buffer result(context(), kCount * 4, vk::MemoryUsage::DeviceLocal);
+    const std::uint32_t count = kCount;
+    context().submitAndWait([&](VkCommandBuffer cmd) {
+        kernel.dispatch(cmd, {vk::BufferRange(wordBuffer, kSkipped * 4, kCount * 4), valueBuffer, result}, count,
+                        kernel.groupsFor(kCount));
+    });
+    std::vector<float> got = vk::downloadVector<float>(context(), result, kCount);
+    for (std::uint32_t i = 0; i < kCount; ++i)
+        ASSERT_EQ(got[i], float(1000 + kSkipped + i) + 0.5f * float(i)) << "at " << i;
 }
 
 } // namespace

@@ -2,23 +2,24 @@
 // (brackets matched by derive/depth_tree.glsl, which comes before this file), error reports, and
 // double-precision elementary functions.
 //
-// Expects before it: the buffers symIn, parIn, depthTree, levelInfo, bracketPartners, errors and the push constants
+// Expects before it: the inputs symIn, parIn and bracketPartners with their accessors symInAt(i) ...
+// (codegen::Bindings::addInput), the buffers depthTree, levelInfo and errors, the push constants
 // `pc` (DerivePush), shared/random.h, shared/derive_layout.h, derive/depth_tree.glsl and contextSkipWord(word),
 // the species' context filter (codegen::contextSkipBits, as constants or from the contextSkip buffer).
 
-uint symOf(uint i) { return symIn[i] & kSymbolMask; }
-uint countOf(uint i) { return symIn[i] >> kSymbolBits; }
-double paramOf(uint i, uint k) { return double(parIn[i * pc.stride + k]); }
+uint symOf(uint i) { return symInAt(i) & kSymbolMask; }
+uint countOf(uint i) { return symInAt(i) >> kSymbolBits; }
+double paramOf(uint i, uint k) { return double(parInAt(i * pc.stride + k)); }
 // The context filter holds one row of bits per species; `row` is the first word of the species' row.
 bool skipped(uint sym, uint row) { return ((contextSkipWord(row + (sym >> 5u)) >> (sym & 31u)) & 1u) != 0u; }
 
 // matchOpen and matchClose by the partners found once per string (derive/bracket_partners.comp).
 uint closingBracket(uint s, uint pEnd) {
-    uint j = bracketPartners[s];
+    uint j = bracketPartnersAt(s);
     return j < pEnd ? j : kNoModule;
 }
 uint openingBracket(uint j, uint pBegin) {
-    uint open = bracketPartners[j];
+    uint open = bracketPartnersAt(j);
     return (open == kNoModule || open < pBegin || open >= j || symOf(open) != kOpen) ? kNoModule : open;
 }
 

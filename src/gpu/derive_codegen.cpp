@@ -19,13 +19,14 @@ using codegen::literal;
 using codegen::RuleKind;
 
 // The buffers of each kernel. Contexts always read the string being rewritten (symIn, parIn).
-std::string declarations(bool decomposition, bool write, bool fusedScan = false, bool carriesPartners = false) {
-    codegen::Bindings b;
+std::string declarations(bool texelInputs, bool decomposition, bool write, bool fusedScan = false,
+                         bool carriesPartners = false) {
+    codegen::Bindings b(texelInputs);
     b.addShared(false);
     if (decomposition) {
         b.add("readonly", "uint", "symX");
         b.add("readonly", "float", "parX");
-        b.add("readonly", "uint", "plantStartX");
+        b.addInput("uint", "plantStartX");
         b.add("readonly", "uint", "liveX");
         b.add("readonly", "uint", "originX");
         b.add("readonly", "uint", "examined");
@@ -38,20 +39,20 @@ std::string declarations(bool decomposition, bool write, bool fusedScan = false,
         if (fusedScan) b.add("writeonly", "uint", "tileSums");
     } else {
         if (fusedScan) {
-            b.add("readonly", "uint", "countsBefore");
-            b.add("readonly", "uint", "tileOffsets");
+            b.addInput("uint", "countsBefore");
+            b.addInput("uint", "tileOffsets");
         } else {
-            b.add("readonly", "uint", "offsets");
+            b.addInput("uint", "offsets");
         }
-        b.add("readonly", "uint", "choices");
-        b.add("readonly", "uint", "drawStarts");
+        b.addInput("uint", "choices");
+        b.addInput("uint", "drawStarts");
         b.add("writeonly", "uint", "symOut");
         b.add("writeonly", "float", "parOut");
         b.add("writeonly", "uint", "originOut");
         b.add("writeonly", "uint", "liveOut");
         if (carriesPartners) b.add("writeonly", "uint", "partnersOut");
     }
-    b.add("readonly", "uint", "plantHints"); // of the stream plantOf() searches (derive/plant_hints.comp)
+    b.addInput("uint", "plantHints"); // of the stream plantOf() searches (derive/plant_hints.comp)
     return b.text();
 }
 
@@ -148,14 +149,14 @@ std::string stepPlantLookup(const codegen::PlantInputs& in, bool frozenCheck) {
         if (frozenCheck) s += "    if (kFrozenPlants) {\n        plant = plantOf(i);\n" + frozen + "    }\n";
     }
     s += "    uint species = plant % kSpeciesCount;\n";
-    s += in.bounds ? "    uint pBegin = plantStart[plant], pEnd = plantStart[plant + 1u];\n"
+    s += in.bounds ? "    uint pBegin = plantStartAt(plant), pEnd = plantStartAt(plant + 1u);\n"
                    : "    uint pBegin = 0u, pEnd = pc.count; // unread\n";
     return s;
 }
 
 } // namespace
 
-GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species) {
+GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species, bool texelInputs) {
     GeneratedKernels k = codegen::speciesTraits(species);
 
     std::string prelude = codegen::kernelPrelude(species.size()) + "uint currentPass() { return pc.pass; }\n";
@@ -194,10 +195,10 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species) 
     auto findPlant = [](const char* table, const char* name) {
         return fmt::format("uint {}(uint i) {{\n"
                            "    uint block = i / kPlantHintBlock;\n"
-                           "    uint low = plantHints[block], high = plantHints[block + 1u];\n"
+                           "    uint low = plantHintsAt(block), high = plantHintsAt(block + 1u);\n"
                            "    while (low < high) {{\n"
                            "        uint mid = (low + high + 1u) / 2u;\n"
-                           "        if ({}[mid] <= i) low = mid; else high = mid - 1u;\n"
+                           "        if ({}At(mid) <= i) low = mid; else high = mid - 1u;\n"
                            "    }}\n"
                            "    return low;\n}}\n\n",
                            name, table);
@@ -227,7 +228,7 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species) 
 
     // ---- derivation step: match ----
     {
-        std::string s = prelude + declarations(false, false, k.fusedScan) + library + functions;
+        std::string s = prelude + declarations(texelInputs, false, false, k.fusedScan) + library + functions;
         s += codegen::slotDeclarations(stepSlots);
         s += "double ownParam(uint i, uint k) { return paramOf(i, k); }\n";
         s += findPlant("plantStart", "plantOf");
@@ -260,7 +261,7 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species) 
     }
     // ---- derivation step: write ----
     {
-        std::string s = prelude + declarations(false, true, k.fusedScan, k.carriesPartners) + library + functions;
+        std::string s = prelude + declarations(texelInputs, false, true, k.fusedScan, k.carriesPartners) + library + functions;
         s += codegen::slotDeclarations(stepSlots) +
              codegen::slotStoreCode(stepSlots, k.hasDecomposition, k.carriesPartners);
         // The module's parameters, loaded once for all productions and the copy.
@@ -274,24 +275,24 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species) 
         s += ownParams + ownParam + "    return 0.0LF;\n}\n\n";
         s += findPlant("plantStart", "plantOf");
         if (k.carriesPartners) // module j's first position in the written string
-            s += "uint outputPosition(uint j) { return tileOffsets[j / gl_SubgroupSize] + countsBefore[j]; }\n\n";
+            s += "uint outputPosition(uint j) { return tileOffsetsAt(j / gl_SubgroupSize) + countsBeforeAt(j); }\n\n";
         s += codegen::contextPrefetchCode(species, RuleKind::Step, true) + stepFunctions;
         // Every module's successor goes through the slots, a copied module's too, so that each output position
         // is stored once in the kernel's code: drivers that run every branch for the whole subgroup (lavapipe)
         // pay for the stores of all productions otherwise.
         s += "void writeModule(uint i, uint pos) {\n";
-        s += "    uint choice = choices[i];\n"
+        s += "    uint choice = choicesAt(i);\n"
              "    if (choice == kChoiceDropped) return;\n"
              "    choice &= kSymbolMask;\n"
              "    uint origin = i;\n"
-             "    uint word = symIn[i];\n" +
+             "    uint word = symInAt(i);\n" +
              loadOwn +
              "    uint produced = 1u;\n"
              "    slotWord0 = word;\n" +
              copyOwn + codegen::resetSlotPartners(stepSlots);
         if (k.carriesPartners) // brackets are never rewritten: both partners are copies
             s += "    if (choice == kChoiceCopy && (word & kSymbolMask) == kOpen) {\n"
-                 "        uint partner = outputPosition(bracketPartners[i]);\n"
+                 "        uint partner = outputPosition(bracketPartnersAt(i));\n"
                  "        partnersOut[pos] = partner;\n"
                  "        partnersOut[partner] = pos;\n"
                  "    }\n";
@@ -301,29 +302,29 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species) 
              "    int ctxLeft = int(i) - 1;\n"
              "    uint ctxRight = i + 1u;\n"
              "    prefetchContexts(species, ctxLeft, ctxRight, pBegin, pEnd);\n";
-        s += stepInputs.random ? "    uint draw = drawStarts[i];\n" : "    uint draw = 1u; // as match left it\n";
+        s += stepInputs.random ? "    uint draw = drawStartsAt(i);\n" : "    uint draw = 1u; // as match left it\n";
         s += codegen::perSpecies(species.size(), [&](size_t sp) { return writeDispatch(species[sp].productions, sp, RuleKind::Step); });
         s += "    }\n"
              "    storeSlots(pos, produced, origin);\n"
              "}\n";
         s += mainCalling(k.fusedScan
-                             ? "    if (i < pc.count) writeModule(i, tileOffsets[i / gl_SubgroupSize] + countsBefore[i]);\n"
-                             : "    if (i < pc.count) writeModule(i, offsets[i]);\n",
+                             ? "    if (i < pc.count) writeModule(i, tileOffsetsAt(i / gl_SubgroupSize) + countsBeforeAt(i));\n"
+                             : "    if (i < pc.count) writeModule(i, offsetsAt(i));\n",
                          RuleKind::Step);
         k.write = std::move(s);
     }
     if (k.hasDecomposition) {
         const std::string decompositionSetup =
             "    uint species = plant % kSpeciesCount;\n"
-            "    uint pBegin = plantStart[plant], pEnd = plantStart[plant + 1u];\n"
+            "    uint pBegin = plantStartAt(plant), pEnd = plantStartAt(plant + 1u);\n"
             "    uint origin = originX[i];\n"
-            "    uint key = examined[i] - examined[plantStartX[plant]];\n"
+            "    uint key = examined[i] - examined[plantStartXAt(plant)];\n"
             "    int ctxLeft = int(origin) - 1;\n"
             "    uint ctxRight = origin + 1u;\n"
             "    prefetchContexts(species, ctxLeft, ctxRight, pBegin, pEnd);\n";
         // ---- decomposition: match ----
         {
-            std::string s = prelude + declarations(true, false) + library + functions;
+            std::string s = prelude + declarations(texelInputs, true, false) + library + functions;
             s += "double strictParam(uint i, uint k) { return double(parX[i * pc.stride + k]); }\n" +
                  codegen::slotDeclarations(decompositionSlots);
             s += findPlant("plantStartX", "plantOfX");
@@ -340,14 +341,14 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species) 
         }
         // ---- decomposition: write ----
         {
-            std::string s = prelude + declarations(true, true) + library + functions;
+            std::string s = prelude + declarations(texelInputs, true, true) + library + functions;
             s += "double strictParam(uint i, uint k) { return double(parX[i * pc.stride + k]); }\n" +
                  codegen::slotDeclarations(decompositionSlots) + codegen::slotStoreCode(decompositionSlots, true, false);
             s += findPlant("plantStartX", "plantOfX");
             s += codegen::contextPrefetchCode(species, RuleKind::Decomposition, true) + decompositionFunctions;
             s += "void writeModule(uint i) {\n";
-            s += "    uint choice = choices[i];\n"
-                 "    uint pos = offsets[i];\n"
+            s += "    uint choice = choicesAt(i);\n"
+                 "    uint pos = offsetsAt(i);\n"
                  "    if (choice == kChoiceCopy) {\n"
                  "        uint count = symX[i] >> kSymbolBits;\n"
                  "        symOut[pos] = symX[i];\n"
@@ -358,7 +359,7 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species) 
                  "    }\n"
                  "    uint plant = plantOfX(i);\n";
             s += decompositionSetup;
-            s += "    uint draw = drawStarts[i];\n"
+            s += "    uint draw = drawStartsAt(i);\n"
                  "    uint produced = 0u;\n";
             s += codegen::perSpecies(species.size(),
                             [&](size_t sp) { return writeDispatch(species[sp].decomposition, sp, RuleKind::Decomposition); });

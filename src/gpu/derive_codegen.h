@@ -50,13 +50,15 @@ struct GeneratedKernels {
 
 // The GLSL of the kernels for plants of the given species (one alphabet: ir::unifySpecies); plant p is of
 // species p mod species.size(). Parameter slots per module come at run time, in the push constants. Every
-// species must be supported (gpuUnsupportedReason empty).
-GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species);
+// species must be supported (gpuUnsupportedReason empty). `texelInputs`: the kernels read the string and the
+// per-module results of earlier passes through uniform texel buffers (codegen::Bindings), which the host
+// binds as such (the dispatch reads the binding types from the kernels).
+GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species, bool texelInputs = false);
 
 // The sequential strategy's kernel (sequential_codegen.cpp): one invocation per plant walks the plant's string
 // in order, exactly as the CPU reference does, so productions may write globals and arrays, locals carry over
 // between applications, stop() works and decomposition runs depth-first with an explicit stack. Run twice
 // per step: mode 0 counts each plant's modules (on copies of the state), mode 1 writes them and the state.
-GeneratedKernels generateSequentialKernel(const std::vector<ir::Grammar>& species);
+GeneratedKernels generateSequentialKernel(const std::vector<ir::Grammar>& species, bool texelInputs = false);
 
 } // namespace simeco::gpu

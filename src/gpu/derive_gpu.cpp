@@ -73,6 +73,7 @@ struct GpuDeriver::Impl {
     std::vector<ir::Grammar> species;
     GpuStrategy strategy;
     int stride;
+    bool texelInputs; // the generated kernels read their inputs through uniform texel buffers (GpuLoads)
     int lastStream = -1; // the stream the last derive() ended in
     uint32_t globalStride = 0, arrayStride = 0; // globals and array elements per plant (the most of any species)
     GeneratedKernels kernels;
@@ -123,8 +124,10 @@ struct GpuDeriver::Impl {
     uint32_t plants = 1;
     double compileSeconds = 0;
 
-    Impl(const vk::Context& c, std::vector<ir::Grammar> grammars, GpuStrategy requested)
+    Impl(const vk::Context& c, std::vector<ir::Grammar> grammars, GpuStrategy requested, GpuLoads loads)
         : ctx(c), species(std::move(grammars)), strategy(requested), stride(1),
+          texelInputs(loads == GpuLoads::TexelBuffers ||
+                      (loads == GpuLoads::Auto && c.deviceInfo().type == VK_PHYSICAL_DEVICE_TYPE_CPU)),
           plantStarts(vk::ComputePipeline::embedded(c, "derive/plant_starts")),
           plantStartsTiled(vk::ComputePipeline::embedded(c, "derive/plant_starts_tiled")),
           plantHintsKernel(vk::ComputePipeline::embedded(c, "derive/plant_hints")),
@@ -156,10 +159,10 @@ struct GpuDeriver::Impl {
             return vk::ComputePipeline(ctx, spirv, name);
         };
         if (strategy == GpuStrategy::Sequential) {
-            kernels = generateSequentialKernel(species);
+            kernels = generateSequentialKernel(species, texelInputs);
             sequential.emplace(build(kernels.sequential, "derive/sequential"));
         } else {
-            kernels = generateDeriveKernels(species);
+            kernels = generateDeriveKernels(species, texelInputs);
             matchSpirv = cachedComputeKernel(kernels.match, "derive/match");
             match.emplace(ctx, matchSpirv, "derive/match");
             write.emplace(build(kernels.write, "derive/write"));
@@ -207,13 +210,21 @@ struct GpuDeriver::Impl {
             return;
         }
         if (homomorphismHostReason) return;
-        homomorphismKernels = generateDeriveKernels(images);
+        homomorphismKernels = generateDeriveKernels(images, texelInputs);
         homomorphismMatch.emplace(build(homomorphismKernels.decompositionMatch, "derive/homomorphism_match"));
         homomorphismWrite.emplace(build(homomorphismKernels.decompositionWrite, "derive/homomorphism_write"));
     }
 
-    void checkRange(uint64_t count, uint64_t size, const char* what) const {
+    // The most bytes a buffer of the derivation may hold: what a kernel can bind, as storage or, with texel
+    // inputs, as a texel buffer of 4-byte texels.
+    uint64_t bufferLimit() const {
         uint64_t limit = ctx.limits().maxStorageBufferRange;
+        if (texelInputs) limit = std::min<uint64_t>(limit, uint64_t(ctx.limits().maxTexelBufferElements) * 4);
+        return limit;
+    }
+
+    void checkRange(uint64_t count, uint64_t size, const char* what) const {
+        uint64_t limit = bufferLimit();
         if (count * size > limit)
             throw ir::LimitError(fmt::format("the device binds at most {} MiB per buffer; {} modules need {} MiB of {} "
                                              "(derive fewer steps or plants, or use a device with larger buffers)",
@@ -223,7 +234,7 @@ struct GpuDeriver::Impl {
     void ensureStream(Stream& s, uint64_t count) {
         if (s.capacity >= count && s.sym) return;
         uint64_t capacity = std::max<uint64_t>({count + count / 2, 1024, s.capacity});
-        uint64_t limit = ctx.limits().maxStorageBufferRange;
+        uint64_t limit = bufferLimit();
         capacity = std::min<uint64_t>(capacity, limit / (4ull * uint64_t(stride)));
         capacity = std::max(capacity, count);
         checkRange(count, 4ull * uint64_t(stride), "parameters");
@@ -239,7 +250,7 @@ struct GpuDeriver::Impl {
         scan.reserve(static_cast<uint32_t>(count + 1));
         if (scratchCapacity >= count + 1 && counts) return;
         uint64_t capacity = std::max<uint64_t>(count + count / 2 + 1, 1024);
-        capacity = std::min<uint64_t>(capacity, ctx.limits().maxStorageBufferRange / 4);
+        capacity = std::min<uint64_t>(capacity, bufferLimit() / 4);
         capacity = std::max<uint64_t>(capacity, count + 1);
         checkRange(count + 1, 4, "per-module scratch");
         for (vk::Buffer* b : {&counts, &choices, &drawStarts, &offsets, &cutDelta, &cutBefore, &examined})
@@ -728,13 +739,16 @@ struct GpuDeriver::Impl {
     }
 };
 
-GpuDeriver::GpuDeriver(const vk::Context& context, const ir::Grammar& g, GpuStrategy strategy)
-    : impl_(std::make_unique<Impl>(context, std::vector<ir::Grammar>{g}, strategy)) {}
+GpuDeriver::GpuDeriver(const vk::Context& context, const ir::Grammar& g, GpuStrategy strategy, GpuLoads loads)
+    : impl_(std::make_unique<Impl>(context, std::vector<ir::Grammar>{g}, strategy, loads)) {}
 
-GpuDeriver::GpuDeriver(const vk::Context& context, std::vector<ir::Grammar> species, GpuStrategy strategy)
-    : impl_(std::make_unique<Impl>(context, std::move(species), strategy)) {}
+GpuDeriver::GpuDeriver(const vk::Context& context, std::vector<ir::Grammar> species, GpuStrategy strategy,
+                       GpuLoads loads)
+    : impl_(std::make_unique<Impl>(context, std::move(species), strategy, loads)) {}
 
 GpuStrategy GpuDeriver::strategy() const { return impl_->strategy; }
+
+GpuLoads GpuDeriver::loads() const { return impl_->texelInputs ? GpuLoads::TexelBuffers : GpuLoads::StorageBuffers; }
 
 GpuDeriver::~GpuDeriver() = default;
 

@@ -30,6 +30,12 @@ std::optional<std::string> gpuParallelUnsupportedReason(const ir::Grammar& g);
 // allows them.
 enum class GpuStrategy { Auto, Parallel, Sequential };
 
+// How the kernels read the string and what earlier passes wrote for each module: through storage buffers, or
+// through uniform texel buffers, which CPU implementations gather several times faster (lavapipe runs a loop
+// over the subgroup for every storage buffer load) but which hold at most maxTexelBufferElements values, so
+// streams are kept within that. Auto takes texel buffers on CPU devices and storage buffers on GPUs.
+enum class GpuLoads { Auto, StorageBuffers, TexelBuffers };
+
 struct GpuDeriveStats {
     uint64_t modules = 0;            // modules of all plants after the last step
     double seconds = 0;              // wall time of the derivation (without kernel compilation)
@@ -43,10 +49,12 @@ struct GpuDeriveStats {
 class GpuDeriver {
 public:
     // Generates and compiles the grammar's kernels (cached on disk by content hash).
-    GpuDeriver(const vk::Context& context, const ir::Grammar& g, GpuStrategy strategy = GpuStrategy::Auto);
+    GpuDeriver(const vk::Context& context, const ir::Grammar& g, GpuStrategy strategy = GpuStrategy::Auto,
+               GpuLoads loads = GpuLoads::Auto);
     // Plants of several species in one stream: the grammars share one alphabet (ir::unifySpecies), plant p is
     // of species p mod species.size(), and each species derives its own derivation length.
-    GpuDeriver(const vk::Context& context, std::vector<ir::Grammar> species, GpuStrategy strategy = GpuStrategy::Auto);
+    GpuDeriver(const vk::Context& context, std::vector<ir::Grammar> species, GpuStrategy strategy = GpuStrategy::Auto,
+               GpuLoads loads = GpuLoads::Auto);
     ~GpuDeriver();
     GpuDeriver(const GpuDeriver&) = delete;
     GpuDeriver& operator=(const GpuDeriver&) = delete;
@@ -66,6 +74,8 @@ public:
 
     // Parallel or Sequential: the strategy this deriver uses.
     GpuStrategy strategy() const;
+    // StorageBuffers or TexelBuffers: how this deriver's kernels read their inputs.
+    GpuLoads loads() const;
 
 private:
     struct Impl;

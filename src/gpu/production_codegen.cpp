@@ -314,14 +314,26 @@ void Bindings::add(const char* access, const char* type, const char* name) {
                          type, name);
 }
 
+void Bindings::addInput(const char* type, const char* name) {
+    if (!texelInputs_) {
+        add("readonly", type, name);
+        text_ += fmt::format("{0} {1}At(uint i) {{ return {1}[i]; }}\n", type, name);
+        return;
+    }
+    std::string_view t = type;
+    const char* sampler = t == "uint" ? "usamplerBuffer" : t == "int" ? "isamplerBuffer" : "samplerBuffer";
+    text_ += fmt::format("layout(set = 0, binding = {}) uniform {} {};\n", next_++, sampler, name);
+    text_ += fmt::format("{0} {1}At(uint i) {{ return texelFetch({1}, int(i)).x; }}\n", type, name);
+}
+
 void Bindings::addShared(bool stateWritable) {
     const char* state = stateWritable ? "" : "readonly";
-    add("readonly", "uint", "symIn");
-    add("readonly", "float", "parIn");
-    add("readonly", "uint", "plantStart");
+    addInput("uint", "symIn");
+    addInput("float", "parIn");
+    addInput("uint", "plantStart");
     add("readonly", "int", "depthTree");
     add("readonly", "uint", "levelInfo");
-    add("readonly", "uint", "bracketPartners");
+    addInput("uint", "bracketPartners");
     add(state, "double", "globals");
     add(state, "double", "arrays");
     add("readonly", "double", "funcTables"); // func() samples and contour curves (derive/contour_curve.glsl)
@@ -400,7 +412,7 @@ void emitMatch(BodyEmitter& body, const ir::Grammar& g, size_t species, const ir
                                           enters ? "true" : "false", skipRow));
                 else
                     body.line(fmt::format("if (!rightAdvance(s, {}u, pEnd, {}u)) return false;", m.sym, skipRow));
-                body.line(fmt::format("if (symIn[s] != {}u) return false;", moduleWord(m)));
+                body.line(fmt::format("if (symInAt(s) != {}u) return false;", moduleWord(m)));
             }
             first = false;
             for (size_t k = 0; k < m.paramSlots.size(); ++k)
@@ -422,7 +434,7 @@ void emitMatch(BodyEmitter& body, const ir::Grammar& g, size_t species, const ir
                     body.line(fmt::format("if (!leftWalk(s, pBegin, pEnd, {}u, true, wrapped)) return false;", skipRow));
                 else
                     body.line(fmt::format("if (!leftAdvance(s, pBegin, {}u)) return false;", skipRow));
-                body.line(fmt::format("if (symIn[uint(s)] != {}u) return false;", moduleWord(*it)));
+                body.line(fmt::format("if (symInAt(uint(s)) != {}u) return false;", moduleWord(*it)));
             }
             for (size_t k = 0; k < it->paramSlots.size(); ++k)
                 body.line(fmt::format("v{} = paramOf(uint(s), {}u);", it->paramSlots[k], k));
@@ -571,15 +583,15 @@ std::string contextPrefetchCode(const std::vector<ir::Grammar>& species, RuleKin
     if (right)
         code += "    firstRight = ctxRight;\n"
                 "    firstRightFound = walkRight(firstRight, false, pEnd, skipRow);\n"
-                "    if (firstRightFound) firstRightWord = symIn[firstRight];\n";
+                "    if (firstRightFound) firstRightWord = symInAt(firstRight);\n";
     if (rightBranch)
         code += "    firstRightBranch = ctxRight;\n"
                 "    firstRightBranchFound = walkRight(firstRightBranch, true, pEnd, skipRow);\n"
-                "    if (firstRightBranchFound) firstRightBranchWord = symIn[firstRightBranch];\n";
+                "    if (firstRightBranchFound) firstRightBranchWord = symInAt(firstRightBranch);\n";
     if (left)
         code += "    firstLeft = ctxLeft;\n"
                 "    firstLeftFound = walkLeft(firstLeft, pBegin, skipRow);\n"
-                "    if (firstLeftFound) firstLeftWord = symIn[uint(firstLeft)];\n";
+                "    if (firstLeftFound) firstLeftWord = symInAt(uint(firstLeft));\n";
     return code + "}\n\n";
 }
 

@@ -31,7 +31,13 @@ enum class FrameStyle {
 // The storage buffer declarations of a kernel, bound in the order they are added.
 class Bindings {
 public:
+    // `texelInputs`: inputs are uniform texel buffers rather than storage buffers. On lavapipe a texel fetch is
+    // a gather, while a storage buffer load runs a loop over the subgroup's invocations.
+    explicit Bindings(bool texelInputs) : texelInputs_(texelInputs) {}
+
     void add(const char* access, const char* type, const char* name);
+    // A read-only array of 32-bit `type` (uint, int or float) that the kernel reads through `NAMEAt(uint i)`.
+    void addInput(const char* type, const char* name);
     // The first bindings of every derivation kernel: the string being rewritten, its brackets, the plants'
     // state (written only by the sequential kernel), function tables, the context filter, the error word and
     // the frozen plants.
@@ -39,6 +45,7 @@ public:
     const std::string& text() const { return text_; }
 
 private:
+    bool texelInputs_;
     std::string text_;
     int next_ = 0;
 };

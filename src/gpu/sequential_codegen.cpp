@@ -21,8 +21,8 @@ using codegen::functionName;
 using codegen::literal;
 using codegen::RuleKind;
 
-std::string declarations() {
-    codegen::Bindings b;
+std::string declarations(bool texelInputs) {
+    codegen::Bindings b(texelInputs);
     b.addShared(true);
     b.add("", "double", "frames");    // the productions' persistent locals, kFrameSlots per plant
     b.add("", "uint", "stackSym");    // the decomposition stack: pc.stackLevels * kStackWidth modules per plant
@@ -81,9 +81,9 @@ void advanceOutput(inout uint next, uint n) {
 // a number of iterations in all (kFlagLoopCut) then cuts the counting pass whenever it would cut the writing pass,
 // and the host retries the step in smaller chunks before anything is written.
 void outputFromInput(uint i, inout uint next) {
-    if (pc.mode == 1u) symOut[next] = symIn[i];
-    for (uint k = 0u; k < (symIn[i] >> kSymbolBits); ++k)
-        if (pc.mode == 1u) parOut[next * pc.stride + k] = parIn[i * pc.stride + k];
+    if (pc.mode == 1u) symOut[next] = symInAt(i);
+    for (uint k = 0u; k < (symInAt(i) >> kSymbolBits); ++k)
+        if (pc.mode == 1u) parOut[next * pc.stride + k] = parInAt(i * pc.stride + k);
     advanceOutput(next, 1u);
 }
 void outputFromStack(uint slot, inout uint next) {
@@ -93,8 +93,8 @@ void outputFromStack(uint slot, inout uint next) {
     advanceOutput(next, 1u);
 }
 void stackFromInput(uint i, uint slot) {
-    stackSym[slot] = symIn[i];
-    for (uint k = 0u; k < (symIn[i] >> kSymbolBits); ++k) stackPar[slot * pc.stride + k] = parIn[i * pc.stride + k];
+    stackSym[slot] = symInAt(i);
+    for (uint k = 0u; k < (symInAt(i) >> kSymbolBits); ++k) stackPar[slot * pc.stride + k] = parInAt(i * pc.stride + k);
 }
 uint levelCountAt(uint level) { return gState + 2u * level; }
 uint depthCounterAt(uint depth) { return gState + 2u * pc.stackLevels + depth; }
@@ -314,7 +314,7 @@ std::string deriveFunction(const ir::Grammar& g, size_t sp, const FrameLayout& f
 
 } // namespace
 
-GeneratedKernels generateSequentialKernel(const std::vector<ir::Grammar>& species) {
+GeneratedKernels generateSequentialKernel(const std::vector<ir::Grammar>& species, bool texelInputs) {
     GeneratedKernels k = codegen::speciesTraits(species);
     FrameLayout frames = layoutFrames(species);
     k.frameSlots = frames.slots;
@@ -327,7 +327,7 @@ GeneratedKernels generateSequentialKernel(const std::vector<ir::Grammar>& specie
     std::string s = codegen::kernelPrelude(species.size());
     s += fmt::format("const uint kFrameSlots = {}u;\nconst uint kStackWidth = {}u;\n", std::max(k.frameSlots, 1u),
                      k.stackWidth);
-    s += declarations();
+    s += declarations(texelInputs);
     s += codegen::deriveLibrary(species);
     s += kMachinery;
     std::string productions;
@@ -352,7 +352,7 @@ GeneratedKernels generateSequentialKernel(const std::vector<ir::Grammar>& specie
          "    uint plant = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * gl_WorkGroupSize.x + "
          "gl_LocalInvocationID.x;\n"
          "    if (plant >= pc.plants) return;\n"
-         "    uint pBegin = plantStart[plant], pEnd = plantStart[plant + 1u];\n"
+         "    uint pBegin = plantStartAt(plant), pEnd = plantStartAt(plant + 1u);\n"
          "    uint first = pc.mode == 1u ? outStart[plant] : 0u;\n"
          "    // A pass is several dispatches, each doing at most pc.chunk work for every plant (gWork).\n"
          "    uint i = pBegin, next = first, pending = 0u, pendingFirst = 0u;\n"

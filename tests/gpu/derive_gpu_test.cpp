@@ -53,7 +53,7 @@ struct Outcome {
 
 // Derives `g` with both engines. Errors other than the CPU outgrowing the module budget propagate.
 Outcome compareEngines(const vk::Context& context, const ir::Grammar& g, const cpu::DeriveOptions& options,
-                       gpu::GpuStrategy strategy = gpu::GpuStrategy::Auto) {
+                       gpu::GpuStrategy strategy = gpu::GpuStrategy::Auto, gpu::GpuLoads loads = gpu::GpuLoads::Auto) {
     if (std::optional<std::string> reason = gpu::gpuUnsupportedReason(g)) return {Verdict::Unsupported, *reason};
     cpu::DeriveResult want;
     try {
@@ -61,7 +61,7 @@ Outcome compareEngines(const vk::Context& context, const ir::Grammar& g, const c
     } catch (const ir::LimitError& e) {
         return {Verdict::OverBudget, e.what()};
     }
-    gpu::GpuDeriver deriver(context, g, strategy);
+    gpu::GpuDeriver deriver(context, g, strategy, loads);
     cpu::DeriveResult got = deriver.derive(options);
     std::string difference = firstDifference(want, got, g.alphabet);
     return {difference.empty() ? Verdict::Match : Verdict::Differ, difference};
@@ -87,11 +87,11 @@ struct Tally {
 };
 
 void compareFile(const vk::Context& context, const fs::path& file, const std::string& name, Tally& tally,
-                 gpu::GpuStrategy strategy = gpu::GpuStrategy::Auto) {
+                 gpu::GpuStrategy strategy = gpu::GpuStrategy::Auto, gpu::GpuLoads loads = gpu::GpuLoads::Auto) {
     ++tally.total;
     try {
         ir::Grammar g = lang::loadGrammarFile(file.string());
-        Outcome outcome = compareEngines(context, g, {}, strategy);
+        Outcome outcome = compareEngines(context, g, {}, strategy, loads);
         switch (outcome.verdict) {
         case Verdict::Match:
             ++tally.matched;
@@ -137,13 +137,18 @@ private:
     fs::path scratch_, previous_;
 };
 
-TEST_F(DeriveGpuTest, ExampleGrammarsMatchTheCpu) {
+std::vector<fs::path> exampleGrammarFiles() {
     std::vector<fs::path> files;
     for (const fs::directory_entry& entry : fs::recursive_directory_iterator(kGrammars)) {
         std::string extension = entry.path().extension().string();
         if (entry.is_regular_file() && (extension == ".l" || extension == ".lsys")) files.push_back(entry.path());
     }
     std::sort(files.begin(), files.end());
+    return files;
+}
+
+TEST_F(DeriveGpuTest, ExampleGrammarsMatchTheCpu) {
+    std::vector<fs::path> files = exampleGrammarFiles();
     ASSERT_GE(files.size(), 15u) << "example grammars not found under " << kGrammars;
     Tally tally, sequential;
     for (const fs::path& file : files) {
@@ -261,7 +266,7 @@ TEST(RandomGrammarTest, GeneratedGrammarsDeriveOnTheCpu) {
 }
 
 void compareRandomGrammars(const vk::Context& context, std::uint64_t first, std::uint64_t count,
-                           gpu::GpuStrategy strategy) {
+                           gpu::GpuStrategy strategy, gpu::GpuLoads loads = gpu::GpuLoads::Auto) {
     constexpr int kTextsShown = 5; // a broken pass tends to break hundreds
     std::uint64_t matched = 0, skipped = 0, failed = 0;
     for (std::uint64_t seed = first; seed < first + count; ++seed) {
@@ -271,7 +276,7 @@ void compareRandomGrammars(const vk::Context& context, std::uint64_t first, std:
             ir::Grammar g = simeco::testing::grammarFromText(text);
             cpu::DeriveOptions options;
             options.maxModules = kRandomModuleBudget;
-            Outcome outcome = compareEngines(context, g, options, strategy);
+            Outcome outcome = compareEngines(context, g, options, strategy, loads);
             switch (outcome.verdict) {
             case Verdict::Match:
                 ++matched;
@@ -336,6 +341,26 @@ ir::Grammar plantGrammar() {
                                             "A(x) --> F(x)A(x*1.1) : 1\n"
                                             "F(l) : l > 0.95 --> F(l*0.5)F(l*0.5)\n"
                                             "endlsystem\n");
+}
+
+// The kernels read their inputs through storage buffers or texel buffers (gpu::GpuLoads). The other tests take
+// the device's choice (texel buffers on CPU devices, storage buffers on GPUs); here the other one, on the
+// example grammars with both strategies and on random grammars.
+TEST_F(DeriveGpuTest, TheOtherLoadPathMatchesTheCpu) {
+    std::vector<fs::path> files = exampleGrammarFiles();
+    ASSERT_GE(files.size(), 15u) << "example grammars not found under " << kGrammars;
+    gpu::GpuLoads chosen = gpu::GpuDeriver(context(), plantGrammar()).loads();
+    gpu::GpuLoads other = chosen == gpu::GpuLoads::TexelBuffers ? gpu::GpuLoads::StorageBuffers : gpu::GpuLoads::TexelBuffers;
+    ASSERT_EQ(gpu::GpuDeriver(context(), plantGrammar(), gpu::GpuStrategy::Auto, other).loads(), other);
+    Tally tally, sequential;
+    for (const fs::path& file : files) {
+        std::string name = fs::relative(file, kGrammars).string();
+        compareFile(context(), file, name, tally, gpu::GpuStrategy::Auto, other);
+        compareFile(context(), file, name, sequential, gpu::GpuStrategy::Sequential, other);
+    }
+    tally.expectSupportedShare("example grammars, the other load path");
+    sequential.expectSupportedShare("example grammars, the other load path, sequential strategy");
+    compareRandomGrammars(context(), envOr("SIMECO_RANDOM_FIRST_SEED", 1), 100, gpu::GpuStrategy::Auto, other);
 }
 
 // `--plants`: plant k draws from its own random stream on both engines, so any number of plants must match.

@@ -31,7 +31,6 @@ CopyBandwidth measureCopyBandwidth(const vk::Context& context, int warmUp, int r
     bytes = bytes / kElementBytes * kElementBytes;
     result.bufferBytes = bytes;
 
-    vk::ComputePipeline copy = vk::ComputePipeline::embedded(context, "bench/copy");
     vk::Buffer source(context, bytes, vk::MemoryUsage::DeviceLocal);
     vk::Buffer destination(context, bytes, vk::MemoryUsage::DeviceLocal);
     // Touch both buffers once, so that no run pays for first-use page faults (lavapipe's memory is host memory).
@@ -41,33 +40,46 @@ CopyBandwidth measureCopyBandwidth(const vk::Context& context, int warmUp, int r
     });
 
     auto push = CopyPush{static_cast<std::uint32_t>(bytes / kElementBytes), kElementsPerInvocation};
-    std::uint64_t groups = copy.groupsFor(push.count, push.perInvocation);
     std::optional<vk::Timestamps> timestamps;
     if (context.timestampValidBits() != 0) {
         timestamps.emplace(context, 2);
     }
     result.timestamps = timestamps.has_value();
-    result.runMillis = repeatRuns(warmUp, repeat, [&] {
-        Clock::time_point start = Clock::now();
-        context.submitAndWait([&](VkCommandBuffer cmd) {
-            if (timestamps) {
-                timestamps->cmdReset(cmd);
-            }
-            vk::memoryBarrier(cmd, vk::Hazard::TransferToCompute);
-            if (timestamps) {
-                timestamps->cmdWrite(cmd, 0, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT);
-            }
-            copy.dispatch(cmd, {source, destination}, push, groups);
-            if (timestamps) {
-                timestamps->cmdWrite(cmd, 1, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT);
-            }
+    auto runs = [&](const vk::ComputePipeline& copy) {
+        std::uint64_t groups = copy.groupsFor(push.count, push.perInvocation);
+        return repeatRuns(warmUp, repeat, [&] {
+            Clock::time_point start = Clock::now();
+            context.submitAndWait([&](VkCommandBuffer cmd) {
+                if (timestamps) {
+                    timestamps->cmdReset(cmd);
+                }
+                vk::memoryBarrier(cmd, vk::Hazard::TransferToCompute);
+                if (timestamps) {
+                    timestamps->cmdWrite(cmd, 0, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT);
+                }
+                copy.dispatch(cmd, {source, destination}, push, groups);
+                if (timestamps) {
+                    timestamps->cmdWrite(cmd, 1, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT);
+                }
+            });
+            return timestamps ? timestamps->elapsedNs(0, 1) * 1e-6 : secondsSince(start) * 1e3;
         });
-        return timestamps ? timestamps->elapsedNs(0, 1) * 1e-6 : secondsSince(start) * 1e3;
-    });
+    };
+    auto rate = [&](const std::vector<double>& millis) {
+        double m = median(millis);
+        return m > 0 ? 2.0 * static_cast<double>(bytes) / (m * 1e-3) : 0.0;
+    };
+    std::vector<double> storage = runs(vk::ComputePipeline::embedded(context, "bench/copy"));
+    // Devices whose texel buffers hold fewer elements than the copy get the storage kernel's figure alone.
+    std::vector<double> texel;
+    if (bytes / 4 <= context.limits().maxTexelBufferElements)
+        texel = runs(vk::ComputePipeline::embedded(context, "bench/copy_texel"));
+    bool texelFaster = !texel.empty() && rate(texel) > rate(storage);
+    result.kernel = texelFaster ? "texel buffer" : "storage buffer";
+    result.runMillis = texelFaster ? texel : storage;
+    result.otherBytesPerSecond = rate(texelFaster ? storage : texel);
     result.medianMillis = median(result.runMillis);
-    if (result.medianMillis > 0) {
-        result.bytesPerSecond = 2.0 * static_cast<double>(bytes) / (result.medianMillis * 1e-3);
-    }
+    result.bytesPerSecond = rate(result.runMillis);
     return result;
 }
 

@@ -1,8 +1,10 @@
-// The device's copy bandwidth, measured by a compute kernel (compute/bench/copy.comp) in the same run as the
-// derivations it is compared with.
+// The device's copy bandwidth, measured by compute kernels in the same run as the derivations it is compared
+// with: one reading its source as a storage buffer (compute/bench/copy.comp), one as a uniform texel buffer
+// (compute/bench/copy_texel.comp); the faster is the device's figure.
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace simeco::vk {
@@ -20,9 +22,12 @@ struct CopyBandwidth {
     double medianMillis = 0;
     double bytesPerSecond = 0; // (read + written) / median time
     bool timestamps = false;   // GPU timestamps (else host wall time around each submission)
+    std::string kernel;        // the faster kernel: "storage buffer" or "texel buffer" reads
+    double otherBytesPerSecond = 0; // the slower kernel's figure
 };
 
-// Copies min(kCopyBufferBytes, the device's largest storage-buffer binding) bytes `warmUp` + `repeat` times.
+// Copies min(kCopyBufferBytes, the device's largest storage-buffer binding) bytes `warmUp` + `repeat` times with
+// each kernel.
 CopyBandwidth measureCopyBandwidth(const vk::Context& context, int warmUp, int repeat);
 
 } // namespace simeco::bench

@@ -73,7 +73,8 @@ nlohmann::json reportJson(const BenchReport& report) {
         j["copy_bandwidth"] = {
             {"buffer_bytes", c.bufferBytes},        {"bytes_per_copy", 2 * c.bufferBytes},
             {"median_ms", c.medianMillis},          {"run_ms", c.runMillis},
-            {"bytes_per_second", c.bytesPerSecond}, {"timer", c.timestamps ? "gpu timestamps" : "host wall clock"}};
+            {"bytes_per_second", c.bytesPerSecond}, {"timer", c.timestamps ? "gpu timestamps" : "host wall clock"},
+            {"kernel", c.kernel},                   {"other_kernel_bytes_per_second", c.otherBytesPerSecond}};
     } else {
         j["copy_bandwidth"] = nullptr;
     }
@@ -133,9 +134,10 @@ std::string formatTable(const BenchReport& report) {
         out += fmt::format("device: {} ({}, {})\n", report.deviceName, report.deviceType, report.driver);
     }
     if (report.copy) {
-        out += fmt::format("copy bandwidth: {}/s (compute copy of {} MiB, read + write, median of {})\n",
-                           si(report.copy->bytesPerSecond, "B"), report.copy->bufferBytes >> 20,
-                           report.copy->runMillis.size());
+        out += fmt::format("copy bandwidth: {}/s (compute copy of {} MiB reading a {}, read + write, median of {}; "
+                           "the other kernel: {}/s)\n",
+                           si(report.copy->bytesPerSecond, "B"), report.copy->bufferBytes >> 20, report.copy->kernel,
+                           report.copy->runMillis.size(), si(report.copy->otherBytesPerSecond, "B"));
     }
     if (!report.gpuNote.empty()) {
         out += fmt::format("GPU backend: {}\n", report.gpuNote);

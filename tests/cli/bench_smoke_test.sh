@@ -29,6 +29,9 @@ if isinstance(copy, dict):
     for key in ("buffer_bytes", "median_ms", "bytes_per_second"):
         positive(copy, key, "copy_bandwidth")
     check(len(copy.get("run_ms", [])) == 2, "copy_bandwidth.run_ms does not hold 2 runs")
+    check(copy.get("kernel") in ("storage buffer", "texel buffer"), "copy_bandwidth.kernel names no copy kernel")
+    check(copy.get("bytes_per_second", 0) >= copy.get("other_kernel_bytes_per_second", -1),
+          "copy_bandwidth is not the faster kernel's")
 
 entries = report.get("entries", [])
 names = sorted({e.get("name") for e in entries})

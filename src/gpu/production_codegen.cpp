@@ -744,20 +744,68 @@ std::string slotDeclarations(const SuccessorSlots& slots) {
     return s + "\n";
 }
 
+namespace {
+
+// The stores of one slot at pos + `at` (a number or, in the loop over slots, j), its word in `word`.
+std::string slotStores(const std::string& at, const std::string& word, const std::vector<std::string>& params,
+                       const std::string& partner, bool provenance) {
+    std::string s = fmt::format("        symOut[pos + {}] = {};\n", at, word);
+    for (size_t a = 0; a < params.size(); ++a)
+        s += fmt::format("        if (({} >> kSymbolBits) > {}u) parOut[(pos + {}) * pc.stride + {}u] = {};\n", word, a, at, a,
+                         params[a]);
+    if (provenance) s += fmt::format("        originOut[pos + {0}] = origin;\n        liveOut[pos + {0}] = 1u;\n", at);
+    if (!partner.empty())
+        s += fmt::format("        if ({0} != kNoModule) partnersOut[pos + {1}] = pos + {0};\n", partner, at);
+    return s;
+}
+
+} // namespace
+
 std::string slotStoreCode(const SuccessorSlots& slots, bool provenance, bool partners) {
-    std::string s = "void storeSlots(uint pos, uint n, uint origin) {\n";
-    for (size_t j = 0; j < slots.params.size(); ++j) {
-        s += fmt::format("    if ({0}u < n) {{\n        symOut[pos + {0}u] = slotWord{0};\n", j);
-        for (uint32_t a = 0; a < slots.params[j]; ++a)
-            s += fmt::format("        if ((slotWord{0} >> kSymbolBits) > {1}u) parOut[(pos + {0}u) * pc.stride + {1}u] = "
-                             "slotParam{0}_{1};\n",
-                             j, a);
-        if (provenance) s += fmt::format("        originOut[pos + {0}u] = origin;\n        liveOut[pos + {0}u] = 1u;\n", j);
-        if (partners && slots.pairs[j])
-            s += fmt::format("        if (slotPartner{0} != kNoModule) partnersOut[pos + {0}u] = pos + slotPartner{0};\n", j);
+    // Up to this many slots are stored one by one; more go through a loop (below).
+    constexpr size_t kMostSlotsStoredOneByOne = 16;
+    size_t count = slots.params.size();
+    bool loop = count > kMostSlotsStoredOneByOne;
+    std::string accessors, s = "void storeSlots(uint pos, uint n, uint origin) {\n";
+    for (size_t j = 0; j < (loop ? 1 : count); ++j) {
+        std::vector<std::string> params;
+        for (uint32_t a = 0; a < slots.params[j]; ++a) params.push_back(fmt::format("slotParam{}_{}", j, a));
+        std::string partner = partners && slots.pairs[j] ? fmt::format("slotPartner{}", j) : "";
+        s += fmt::format("    if ({}u < n) {{\n", j) +
+             slotStores(fmt::format("{}u", j), fmt::format("slotWord{}", j), params, partner, provenance) + "    }\n";
+    }
+    if (loop) {
+        // The slots after the first in a loop as long as the subgroup's longest successor: every store in the
+        // kernel's code costs a loop over the subgroup on lavapipe, taken or not, and most subgroups copy all
+        // their modules, so the loop ends after one pass where the stores one by one would be many.
+        uint32_t mostParams = *std::max_element(slots.params.begin() + 1, slots.params.end());
+        bool anyPairs = partners && std::find(slots.pairs.begin() + 1, slots.pairs.end(), true) != slots.pairs.end();
+        accessors += "uint slotWordAt(uint j) {\n    uint w = 0u;\n";
+        for (size_t j = 1; j < count; ++j) accessors += fmt::format("    if (j == {0}u) w = slotWord{0};\n", j);
+        accessors += "    return w;\n}\n";
+        std::vector<std::string> params;
+        for (uint32_t a = 0; a < mostParams; ++a) {
+            accessors += fmt::format("float slotParamAt{}(uint j) {{\n    float v = 0.0;\n", a);
+            for (size_t j = 1; j < count; ++j)
+                if (slots.params[j] > a) accessors += fmt::format("    if (j == {0}u) v = slotParam{0}_{1};\n", j, a);
+            accessors += "    return v;\n}\n";
+            params.push_back(fmt::format("slotParamAt{}(j)", a));
+        }
+        if (anyPairs) {
+            accessors += "uint slotPartnerAt(uint j) {\n    uint p = kNoModule;\n";
+            for (size_t j = 1; j < count; ++j)
+                if (slots.pairs[j]) accessors += fmt::format("    if (j == {0}u) p = slotPartner{0};\n", j);
+            accessors += "    return p;\n}\n";
+        }
+        s += "    uint most = subgroupMax(n);\n"
+             "    for (uint j = 1u; j < most; ++j) {\n"
+             "        if (j >= n) continue;\n"
+             "        uint word = slotWordAt(j);\n";
+        if (anyPairs) s += "        uint partner = slotPartnerAt(j);\n";
+        s += slotStores("j", "word", params, anyPairs ? "partner" : "", provenance);
         s += "    }\n";
     }
-    return s + "}\n\n";
+    return accessors + s + "}\n\n";
 }
 
 std::string resetSlotPartners(const SuccessorSlots& slots) {

@@ -18,6 +18,7 @@
 #include "../unit/grammar_text.h"
 #include "compute/shared/derive_layout.h"
 #include "cpu/derive.h"
+#include "gpu/derive_codegen.h"
 #include "gpu/derive_gpu.h"
 #include "compare_strings.h"
 #include "gpu_fixture.h"
@@ -474,6 +475,32 @@ TEST_F(DeriveGpuTest, CarriedBracketPartnersMatchTheCpu) {
         gpu::GpuDeriveStats stats;
         EXPECT_EQ(firstDifference(want, deriver.derive(options, /*readBack=*/true, &stats), g.alphabet), "");
         EXPECT_EQ(stats.bracketTrees, c.bracketTrees);
+    }
+}
+
+// Successors longer than 16 modules are stored in a loop as long as the subgroup's longest successor
+// (codegen::slotStoreCode), shorter ones one slot at a time: parameters, brackets whose partners the write pass
+// carries, deletions and copies around them, in one plant and in many.
+TEST_F(DeriveGpuTest, LongSuccessorsMatchTheCpu) {
+    const std::string rules =
+        "seed: 5\nignore: + -\n"
+        "A(x) : x < 1000 --> F(x)[+A(x+1)]F(x+1)[-B(x)]G(x,x*3)[+[C(x)]H]F(1)F(2)F(3)[A(x+5)]E(x)D : 3\n"
+        "A(x) --> F(x)A(x+1) : 1\n"
+        "B(x) < C(y) --> *\n"
+        "B(x) --> B(x+1)[C(x)]\n"
+        "D --> *\n";
+    ir::Grammar g = simeco::testing::grammarFromText(simeco::testing::lsystem("A(1)B(2)[C(0)]A(3)", rules, 9));
+    gpu::GeneratedKernels kernels = gpu::generateDeriveKernels({g});
+    ASSERT_NE(kernels.write.find("slotWordAt"), std::string::npos) << "the successor of 26 modules is not stored in a loop";
+    ASSERT_TRUE(kernels.carriesPartners);
+    for (std::uint32_t plants : {1u, 37u}) {
+        SCOPED_TRACE(std::to_string(plants) + " plants");
+        cpu::DeriveOptions options;
+        options.plants = plants;
+        cpu::DeriveResult want = cpu::deriveCpu(g, options);
+        ASSERT_GT(want.string.size(), 5000u * plants);
+        gpu::GpuDeriver deriver(context(), g, gpu::GpuStrategy::Parallel);
+        EXPECT_EQ(firstDifference(want, deriver.derive(options), g.alphabet), "");
     }
 }
 

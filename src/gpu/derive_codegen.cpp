@@ -217,10 +217,11 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species, 
     // partner went (outputPosition). Cuts and decomposition change brackets after the write.
     k.carriesPartners = k.needsBrackets && k.fusedScan && !k.hasDecomposition &&
                         codegen::successorsKeepBracketsBalanced(species);
-    codegen::PlantInputs stepInputs = codegen::plantInputs(species, RuleKind::Step);
-    stepInputs.bounds = stepInputs.bounds || k.mayCut; // a cut ends where its branch does, within the plant
-    stepInputs.plant = stepInputs.plant || stepInputs.bounds;
-    k.stepFindsPlants = stepInputs.plant;
+    codegen::PlantInputs matchInputs = codegen::plantInputs(species, RuleKind::Step, false);
+    matchInputs.bounds = matchInputs.bounds || k.mayCut; // a cut ends where its branch does, within the plant
+    matchInputs.plant = matchInputs.plant || matchInputs.bounds;
+    codegen::PlantInputs writeInputs = codegen::plantInputs(species, RuleKind::Step, true);
+    k.stepFindsPlants = matchInputs.plant || writeInputs.plant;
     int copiedParams = 1; // the parameter slots of every module (the host's stride)
     for (const ir::Grammar& g : species) copiedParams = std::max(copiedParams, g.maxParams());
     codegen::SuccessorSlots stepSlots = codegen::successorSlots(species, RuleKind::Step, uint32_t(copiedParams));
@@ -234,7 +235,7 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species, 
         s += findPlant("plantStart", "plantOf");
         s += codegen::contextPrefetchCode(species, RuleKind::Step, false) + stepFunctions;
         s += "layout(constant_id = 0) const bool kFrozenPlants = false;\n\n";
-        s += "uint matchModule(uint i) {\n" + stepPlantLookup(stepInputs, true);
+        s += "uint matchModule(uint i) {\n" + stepPlantLookup(matchInputs, true);
         s += "    uint sym = symOf(i), count = countOf(i);\n"
              "    uint key = i - pBegin;\n"
              "    int ctxLeft = int(i) - 1;\n"
@@ -249,7 +250,7 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species, 
                  "        atomicAdd(cutDelta[endOfBranch(i + 1u, pBegin, pEnd)], 0xFFFFFFFFu);\n"
                  "    }\n";
         }
-        s += recordChoice(true, stepInputs.random);
+        s += recordChoice(true, matchInputs.random);
         s += mainCalling(k.fusedScan ? "    uint produced = i < pc.count ? matchModule(i) : 0u;\n"
                                        "    uint before = subgroupExclusiveAdd(produced);\n"
                                        "    uint tileSum = subgroupAdd(produced);\n"
@@ -297,12 +298,12 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species, 
                  "        partnersOut[partner] = pos;\n"
                  "    }\n";
         s += "    if (choice != kChoiceCopy) {\n";
-        s += stepPlantLookup(stepInputs, false);
+        s += stepPlantLookup(writeInputs, false);
         s += "    uint key = i - pBegin;\n"
              "    int ctxLeft = int(i) - 1;\n"
              "    uint ctxRight = i + 1u;\n"
              "    prefetchContexts(species, ctxLeft, ctxRight, pBegin, pEnd);\n";
-        s += stepInputs.random ? "    uint draw = drawStartsAt(i);\n" : "    uint draw = 1u; // as match left it\n";
+        s += writeInputs.random ? "    uint draw = drawStartsAt(i);\n" : "    uint draw = 1u; // as match left it\n";
         s += codegen::perSpecies(species.size(), [&](size_t sp) { return writeDispatch(species[sp].productions, sp, RuleKind::Step); });
         s += "    }\n"
              "    storeSlots(pos, produced, origin);\n"

@@ -656,7 +656,7 @@ bool mayLoopLong(const std::vector<ir::Grammar>& species, RuleKind kind) {
     return unbounded || iterations > kMostIterations;
 }
 
-PlantInputs plantInputs(const std::vector<ir::Grammar>& species, RuleKind kind) {
+PlantInputs plantInputs(const std::vector<ir::Grammar>& species, RuleKind kind, bool writing) {
     PlantInputs in;
     in.plant = species.size() > 1; // a plant's species is its index modulo their number
     auto scanExpr = [&](const ir::Expr& e) {
@@ -675,7 +675,10 @@ PlantInputs plantInputs(const std::vector<ir::Grammar>& species, RuleKind kind) 
         const ir::RuleSet& rules = kind == RuleKind::Step ? g.productions : g.decomposition;
         if (isStochastic(rules)) in.random = true;
         for (const ir::Production& p : rules.productions) {
-            if (!p.left.empty() || !p.right.empty() || p.strict.size() > 1) in.bounds = true;
+            // A writing pass applies what the match chose: it walks only the contexts that bind parameters, and
+            // the further modules of a predecessor are known to lie within the plant.
+            bool walks = writing ? bindsParameters(p.left) || bindsParameters(p.right) : !p.left.empty() || !p.right.empty();
+            if (walks || (!writing && p.strict.size() > 1)) in.bounds = true;
             if (p.alternatives.size() > 1) in.random = true;
             walkProductionCode(p, scanExpr, scanStatement);
         }

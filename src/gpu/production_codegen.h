@@ -81,15 +81,15 @@ bool successorsKeepBracketsBalanced(const std::vector<ir::Grammar>& species);
 // others loop a bounded number of times and are spared its cost.
 bool mayLoopLong(const std::vector<ir::Grammar>& species, RuleKind kind);
 
-// What the productions of the `kind` rules of these species read of their plant, besides their modules: a
-// kernel whose productions need none of it skips finding the plant, which costs more than the rewriting of
-// many grammars.
+// What the productions of the `kind` rules of these species read of their plant, besides their modules, in a
+// matching pass or a `writing` one: a kernel whose productions need none of it skips finding the plant, which
+// costs more than the rewriting of many grammars.
 struct PlantInputs {
     bool plant = false;  // the plant's index: several species, random draws, globals, arrays or stop()
     bool bounds = false; // where the plant's string begins and ends: contexts, predecessors of several modules
     bool random = false; // draws from the plant's random stream (which numbers them by module within the plant)
 };
-PlantInputs plantInputs(const std::vector<ir::Grammar>& species, RuleKind kind);
+PlantInputs plantInputs(const std::vector<ir::Grammar>& species, RuleKind kind, bool writing);
 
 // Where the productions of FrameStyle::Fresh write their successor, so that a kernel stores each module of a
 // successor once, whichever production wrote it, instead of once per production: module j of the successor goes

@@ -369,6 +369,22 @@ bool bindsParameters(const std::vector<ir::PatternModule>& pattern) {
     return std::any_of(pattern.begin(), pattern.end(), [](const ir::PatternModule& m) { return !m.paramSlots.empty(); });
 }
 
+// For each module of a successor, the index of the bracket it pairs within the successor, or none: the
+// successor gives these brackets their partners itself.
+std::vector<std::optional<size_t>> pairedBrackets(const ir::Alternative& alt) {
+    std::vector<std::optional<size_t>> partner(alt.modules.size());
+    std::vector<size_t> open;
+    for (size_t j = 0; j < alt.modules.size(); ++j) {
+        if (alt.modules[j].sym == ir::kBranchOpen) open.push_back(j);
+        if (alt.modules[j].sym == ir::kBranchClose && !open.empty()) {
+            partner[j] = open.back();
+            partner[open.back()] = j;
+            open.pop_back();
+        }
+    }
+    return partner;
+}
+
 // The parts of a production's code, in order: matching, then producing.
 // `modal`: the function has a `mode` (FrameStyle::Fresh), and mode 2 writes what an earlier pass matched.
 void emitMatch(BodyEmitter& body, const ir::Grammar& g, size_t species, const ir::Production& p, RuleKind kind,
@@ -476,7 +492,7 @@ void emitSuccessor(BodyEmitter& body, const ir::Production& p, bool slots) {
         const ir::Alternative& alt = p.alternatives[k];
         if (alt.modules.empty()) continue;
         body.open(fmt::format("if (alt == {}u) {{", k));
-        std::vector<size_t> open;
+        std::vector<std::optional<size_t>> partner = pairedBrackets(alt);
         for (size_t j = 0; j < alt.modules.size(); ++j) {
             const ir::SuccessorModule& m = alt.modules[j];
             std::vector<std::string> values;
@@ -490,12 +506,9 @@ void emitSuccessor(BodyEmitter& body, const ir::Production& p, bool slots) {
                 for (size_t a = 0; a < values.size(); ++a)
                     body.line(fmt::format("emitParam(outPos + {}u, {}u, {});", j, a, values[a]));
             }
-            if (m.sym == ir::kBranchOpen) open.push_back(j);
-            if (m.sym == ir::kBranchClose && !open.empty()) {
-                body.line(slots ? fmt::format("slotPartner{0} = {1}u; slotPartner{1} = {0}u;", open.back(), j)
-                                : fmt::format("emitPartners(outPos + {}u, outPos + {}u);", open.back(), j));
-                open.pop_back();
-            }
+            if (m.sym == ir::kBranchClose && partner[j]) // after the whole pair is written
+                body.line(slots ? fmt::format("slotPartner{0} = {1}u; slotPartner{1} = {0}u;", *partner[j], j)
+                                : fmt::format("emitPartners(outPos + {}u, outPos + {}u);", *partner[j], j));
         }
         body.close();
     }
@@ -722,15 +735,10 @@ SuccessorSlots successorSlots(const std::vector<ir::Grammar>& species, RuleKind 
                     slots.params.resize(alt.modules.size(), 0);
                     slots.pairs.resize(alt.modules.size(), false);
                 }
-                std::vector<size_t> open;
+                std::vector<std::optional<size_t>> partner = pairedBrackets(alt);
                 for (size_t j = 0; j < alt.modules.size(); ++j) {
-                    const ir::SuccessorModule& m = alt.modules[j];
-                    slots.params[j] = std::max(slots.params[j], static_cast<uint32_t>(m.args.size()));
-                    if (m.sym == ir::kBranchOpen) open.push_back(j);
-                    if (m.sym == ir::kBranchClose && !open.empty()) {
-                        slots.pairs[open.back()] = slots.pairs[j] = true;
-                        open.pop_back();
-                    }
+                    slots.params[j] = std::max(slots.params[j], static_cast<uint32_t>(alt.modules[j].args.size()));
+                    if (partner[j]) slots.pairs[j] = true;
                 }
             }
     return slots;

@@ -222,7 +222,9 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species, 
     matchInputs.plant = matchInputs.plant || matchInputs.bounds;
     codegen::PlantInputs writeInputs = codegen::plantInputs(species, RuleKind::Step, true);
     k.stepFindsPlants = matchInputs.plant || writeInputs.plant;
-    int copiedParams = 1; // the parameter slots of every module (the host's stride)
+    // The parameter slots a module can have: the host's stride, except that the stride is at least 1. A copied
+    // module of a grammar without parameters copies none.
+    int copiedParams = 0;
     for (const ir::Grammar& g : species) copiedParams = std::max(copiedParams, g.maxParams());
     codegen::SuccessorSlots stepSlots = codegen::successorSlots(species, RuleKind::Step, uint32_t(copiedParams));
     codegen::SuccessorSlots decompositionSlots = codegen::successorSlots(species, RuleKind::Decomposition, 0);

@@ -134,6 +134,13 @@ std::string recordChoice(bool returnsCount = false, bool recordsDraws = true) {
            (recordsDraws ? "    drawStarts[i] = start;\n" : "") + (returnsCount ? "    return produced;\n}\n" : "}\n");
 }
 
+// The specialization constants of a step's match and write kernels. The host specialises kSinglePlant when the
+// stream holds one plant, which is then the whole stream: no lookup at all.
+std::string stepSpecializations(bool match) {
+    return std::string(match ? "layout(constant_id = 0) const bool kFrozenPlants = false;\n" : "") +
+           "layout(constant_id = 1) const bool kSinglePlant = false;\n\n";
+}
+
 // Module i's plant and where the plant's string begins and ends, in a step's passes: looked up only when its
 // productions read them (codegen::plantInputs), since each lookup is a search and several loads per module.
 // `frozenCheck`: a match pass, which copies the modules of frozen plants when kFrozenPlants is specialised true
@@ -142,14 +149,15 @@ std::string stepPlantLookup(const codegen::PlantInputs& in, bool frozenCheck) {
     std::string frozen = "        if (plantFrozen[plant] == kPlantFrozen) { choices[i] = kChoiceCopy; return 1u; }\n";
     std::string s;
     if (in.plant) {
-        s += "    uint plant = plantOf(i);\n";
+        s += "    uint plant = kSinglePlant ? 0u : plantOf(i);\n";
         if (frozenCheck) s += "    if (kFrozenPlants) {\n" + frozen + "    }\n";
     } else {
         s += "    uint plant = 0u;\n";
-        if (frozenCheck) s += "    if (kFrozenPlants) {\n        plant = plantOf(i);\n" + frozen + "    }\n";
+        if (frozenCheck) s += "    if (kFrozenPlants) {\n        plant = kSinglePlant ? 0u : plantOf(i);\n" + frozen + "    }\n";
     }
     s += "    uint species = plant % kSpeciesCount;\n";
-    s += in.bounds ? "    uint pBegin = plantStartAt(plant), pEnd = plantStartAt(plant + 1u);\n"
+    s += in.bounds ? "    uint pBegin = kSinglePlant ? 0u : plantStartAt(plant);\n"
+                     "    uint pEnd = kSinglePlant ? pc.count : plantStartAt(plant + 1u);\n"
                    : "    uint pBegin = 0u, pEnd = pc.count; // unread\n";
     return s;
 }
@@ -221,7 +229,8 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species, 
     matchInputs.bounds = matchInputs.bounds || k.mayCut; // a cut ends where its branch does, within the plant
     matchInputs.plant = matchInputs.plant || matchInputs.bounds;
     codegen::PlantInputs writeInputs = codegen::plantInputs(species, RuleKind::Step, true);
-    k.stepFindsPlants = matchInputs.plant || writeInputs.plant;
+    k.matchFindsPlants = matchInputs.plant;
+    k.writeFindsPlants = writeInputs.plant;
     // The parameter slots a module can have: the host's stride, except that the stride is at least 1. A copied
     // module of a grammar without parameters copies none.
     int copiedParams = 0;
@@ -236,7 +245,7 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species, 
         s += "double ownParam(uint i, uint k) { return paramOf(i, k); }\n";
         s += findPlant("plantStart", "plantOf");
         s += codegen::contextPrefetchCode(species, RuleKind::Step, false) + stepFunctions;
-        s += "layout(constant_id = 0) const bool kFrozenPlants = false;\n\n";
+        s += stepSpecializations(true);
         s += "uint matchModule(uint i) {\n" + stepPlantLookup(matchInputs, true);
         s += "    uint sym = symOf(i), count = countOf(i);\n"
              "    uint key = i - pBegin;\n"
@@ -283,7 +292,7 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species, 
         // Every module's successor goes through the slots, a copied module's too, so that each output position
         // is stored once in the kernel's code: drivers that run every branch for the whole subgroup (lavapipe)
         // pay for the stores of all productions otherwise.
-        s += "void writeModule(uint i, uint pos) {\n";
+        s += stepSpecializations(false) + "void writeModule(uint i, uint pos) {\n";
         s += "    uint choice = choicesAt(i);\n"
              "    if (choice == kChoiceDropped) return;\n"
              "    choice &= kSymbolMask;\n"

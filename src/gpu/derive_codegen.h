@@ -42,9 +42,12 @@ struct GeneratedKernels {
     // The step's write pass also writes the partners of the brackets of the string it writes
     // (codegen::carriesBracketPartners), into the binding after its own outputs.
     bool carriesPartners = false;
-    // The step's passes find each module's plant for its productions (codegen::plantInputs); otherwise only the
-    // match pass specialised for frozen plants (kFrozenPlants) does, and the plant hints are needed only then.
-    bool stepFindsPlants = false;
+    // The step's match and write passes find each module's plant for their productions (codegen::plantInputs);
+    // otherwise only the match pass specialised for frozen plants (kFrozenPlants) does, and the plant hints are
+    // needed only then. Both passes have a variant specialised for a stream of one plant (kSinglePlant), which
+    // finds nothing.
+    bool matchFindsPlants = false;
+    bool writeFindsPlants = false;
     std::vector<double> functionTables; // the sampled func() tables and the contour curves, concatenated
 };
 

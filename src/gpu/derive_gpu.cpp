@@ -5,6 +5,7 @@
 #include <cstring>
 #include <initializer_list>
 #include <functional>
+#include <map>
 #include <optional>
 #include <span>
 
@@ -77,12 +78,14 @@ struct GpuDeriver::Impl {
     int lastStream = -1; // the stream the last derive() ended in
     uint32_t globalStride = 0, arrayStride = 0; // globals and array elements per plant (the most of any species)
     GeneratedKernels kernels;
-    std::optional<vk::ComputePipeline> match, write, decompositionMatch, decompositionWrite, sequential;
-    // The step's match pass specialised to copy the modules of frozen plants (kFrozenPlants), made the first time
-    // a step has some (frozenMatch()): drivers compile a pipeline when it is made or first run, and most
-    // derivations never need it.
-    std::optional<vk::ComputePipeline> matchWithFrozen;
-    std::vector<uint32_t> matchSpirv;
+    std::optional<vk::ComputePipeline> decompositionMatch, decompositionWrite, sequential;
+    // The step's match and write passes, specialised for what the step needs (stepMatch(), stepWrite()): to copy
+    // the modules of frozen plants (kFrozenPlants) and for a stream of one plant (kSinglePlant). Each variant is
+    // made the first time a step needs it: drivers compile a pipeline when it is made or first run, and a
+    // derivation needs one or two of them.
+    std::vector<uint32_t> matchSpirv, writeSpirv;
+    std::map<std::pair<bool, bool>, vk::ComputePipeline> matchVariants; // by (frozen plants, single plant)
+    std::map<bool, vk::ComputePipeline> writeVariants;                  // by single plant
     bool anyFrozen = false; // some plant is frozen in the step being derived
     // The homomorphism, generated as the decomposition of grammars whose decomposition is their homomorphism;
     // empty when no species has one, or when its productions need the host (homomorphismHostReason).
@@ -164,8 +167,7 @@ struct GpuDeriver::Impl {
         } else {
             kernels = generateDeriveKernels(species, texelInputs);
             matchSpirv = cachedComputeKernel(kernels.match, "derive/match");
-            match.emplace(ctx, matchSpirv, "derive/match");
-            write.emplace(build(kernels.write, "derive/write"));
+            writeSpirv = cachedComputeKernel(kernels.write, "derive/write");
         }
         if (kernels.hasDecomposition && strategy == GpuStrategy::Parallel) {
             decompositionMatch.emplace(build(kernels.decompositionMatch, "derive/decomposition_match"));
@@ -382,12 +384,28 @@ struct GpuDeriver::Impl {
         plantStarts.dispatch(cmd, {plantTable(from), offsets, plantTable(to)}, hp, plantStarts.groupsFor(plants + 1));
     }
 
-    const vk::ComputePipeline& frozenMatch() {
-        if (!matchWithFrozen) {
-            const uint32_t frozenPlants[] = {VK_TRUE};
-            matchWithFrozen.emplace(ctx, matchSpirv, "derive/match", frozenPlants);
+    // A stream of one plant is that plant: the variants specialised for it find no plants.
+    bool singlePlant(bool findsPlants) const { return plants == 1 && findsPlants; }
+
+    const vk::ComputePipeline& stepMatch() {
+        bool single = singlePlant(kernels.matchFindsPlants || anyFrozen);
+        auto key = std::make_pair(anyFrozen, single);
+        auto found = matchVariants.find(key);
+        if (found == matchVariants.end()) {
+            const uint32_t values[] = {anyFrozen ? VK_TRUE : VK_FALSE, single ? VK_TRUE : VK_FALSE};
+            found = matchVariants.emplace(key, vk::ComputePipeline(ctx, matchSpirv, "derive/match", values)).first;
         }
-        return *matchWithFrozen;
+        return found->second;
+    }
+
+    const vk::ComputePipeline& stepWrite() {
+        bool single = singlePlant(kernels.writeFindsPlants);
+        auto found = writeVariants.find(single);
+        if (found == writeVariants.end()) {
+            const uint32_t values[] = {VK_FALSE, single ? VK_TRUE : VK_FALSE};
+            found = writeVariants.emplace(single, vk::ComputePipeline(ctx, writeSpirv, "derive/write", values)).first;
+        }
+        return found->second;
     }
 
     // The hints the next derivation kernels find plants of `s` with; they stay valid until the next call.
@@ -435,10 +453,11 @@ struct GpuDeriver::Impl {
                 vk::cmdFill(cmd, errors, 0);
                 if (kernels.mayCut) vk::cmdFill(cmd, cutDelta, 0);
                 vk::memoryBarrier(cmd, Hazard::TransferToCompute);
-                if (kernels.stepFindsPlants || anyFrozen) recordPlantHints(cmd, in);
+                if ((kernels.matchFindsPlants || kernels.writeFindsPlants || anyFrozen) && plants > 1)
+                    recordPlantHints(cmd, in);
                 vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
                 if (kernels.needsBrackets) recordBrackets(cmd, cur);
-                const vk::ComputePipeline& matcher = anyFrozen ? frozenMatch() : *match;
+                const vk::ComputePipeline& matcher = stepMatch();
                 if (fused) {
                     dispatchDerive(cmd, matcher, in, {counts, choices, drawStarts, cutDelta, tileSums}, p, n);
                     vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
@@ -467,12 +486,12 @@ struct GpuDeriver::Impl {
                 vk::memoryBarrier(cmd, Hazard::TransferToCompute);
                 if (fused) {
                     if (kernels.carriesPartners) // the partners go after the kernel's own outputs
-                        dispatchDerive(cmd, *write, in,
+                        dispatchDerive(cmd, stepWrite(), in,
                                        {counts, tileOffsets, choices, drawStarts, out.sym, out.par, out.origin,
                                         out.live, brackets.carriedPartners(total)},
                                        p, n);
                     else
-                        dispatchDerive(cmd, *write, in,
+                        dispatchDerive(cmd, stepWrite(), in,
                                        {counts, tileOffsets, choices, drawStarts, out.sym, out.par, out.origin,
                                         out.live},
                                        p, n);
@@ -480,7 +499,7 @@ struct GpuDeriver::Impl {
                     plantStartsTiled.dispatch(cmd, {plantTable(in), counts, tileOffsets, plantTable(out)}, hp,
                                               plantStartsTiled.groupsFor(plants + 1));
                 } else {
-                    dispatchDerive(cmd, *write, in,
+                    dispatchDerive(cmd, stepWrite(), in,
                                    {offsets, choices, drawStarts, out.sym, out.par, out.origin, out.live}, p, n);
                     recordPlantStarts(cmd, in, out, n, total);
                 }

@@ -19,8 +19,9 @@ using codegen::literal;
 using codegen::RuleKind;
 
 // The buffers of each kernel. Contexts always read the string being rewritten (symIn, parIn).
+// `parameters`: the type of parOut's elements, a module's parameter slots (codegen::parameterVectorWidth).
 std::string declarations(bool texelInputs, bool decomposition, bool write, bool fusedScan = false,
-                         bool carriesPartners = false) {
+                         bool carriesPartners = false, const std::string& parameters = "float") {
     codegen::Bindings b(texelInputs);
     b.addShared(false);
     if (decomposition) {
@@ -47,7 +48,7 @@ std::string declarations(bool texelInputs, bool decomposition, bool write, bool 
         b.addInput("uint", "choices");
         b.addInput("uint", "drawStarts");
         b.add("writeonly", "uint", "symOut");
-        b.add("writeonly", "float", "parOut");
+        b.add("writeonly", parameters.c_str(), "parOut");
         b.add("writeonly", "uint", "originOut");
         b.add("writeonly", "uint", "liveOut");
         if (carriesPartners) b.add("writeonly", "uint", "partnersOut");
@@ -235,6 +236,10 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species, 
     // module of a grammar without parameters copies none.
     int copiedParams = 0;
     for (const ir::Grammar& g : species) copiedParams = std::max(copiedParams, g.maxParams());
+    // The step's write pass stores a module's parameters as one vector where a vector type has the stride.
+    k.stride = static_cast<uint32_t>(std::max(copiedParams, 1));
+    uint32_t paramVector = codegen::parameterVectorWidth(k.stride);
+    std::string parameterType = paramVector > 1 ? fmt::format("vec{}", paramVector) : "float";
     codegen::SuccessorSlots stepSlots = codegen::successorSlots(species, RuleKind::Step, uint32_t(copiedParams));
     codegen::SuccessorSlots decompositionSlots = codegen::successorSlots(species, RuleKind::Decomposition, 0);
 
@@ -273,9 +278,10 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species, 
     }
     // ---- derivation step: write ----
     {
-        std::string s = prelude + declarations(texelInputs, false, true, k.fusedScan, k.carriesPartners) + library + functions;
+        std::string s = prelude + declarations(texelInputs, false, true, k.fusedScan, k.carriesPartners, parameterType) +
+                        library + functions;
         s += codegen::slotDeclarations(stepSlots) +
-             codegen::slotStoreCode(stepSlots, k.hasDecomposition, k.carriesPartners);
+             codegen::slotStoreCode(stepSlots, k.hasDecomposition, k.carriesPartners, paramVector);
         // The module's parameters, loaded once for all productions and the copy.
         std::string ownParams, loadOwn, copyOwn, ownParam = "double ownParam(uint i, uint k) {\n";
         for (int a = 0; a < copiedParams; ++a) {

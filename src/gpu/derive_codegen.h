@@ -49,6 +49,9 @@ struct GeneratedKernels {
     bool matchFindsPlants = false;
     bool writeFindsPlants = false;
     std::vector<double> functionTables; // the sampled func() tables and the contour curves, concatenated
+    // Parameter slots per module that the step's write pass was generated for (it stores them as vectors where
+    // it can): the species' most parameters, at least 1, the host's stride.
+    uint32_t stride = 1;
 };
 
 // The GLSL of the kernels for plants of the given species (one alphabet: ir::unifySpecies); plant p is of

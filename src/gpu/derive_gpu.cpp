@@ -166,6 +166,9 @@ struct GpuDeriver::Impl {
             sequential.emplace(build(kernels.sequential, "derive/sequential"));
         } else {
             kernels = generateDeriveKernels(species, texelInputs);
+            if (kernels.stride != static_cast<uint32_t>(stride))
+                throw std::logic_error(fmt::format("the step's write pass stores {} parameter slots per module, the "
+                                                   "stream has {}", kernels.stride, stride));
             matchSpirv = cachedComputeKernel(kernels.match, "derive/match");
             writeSpirv = cachedComputeKernel(kernels.write, "derive/write");
         }

@@ -6,6 +6,7 @@
 #include <optional>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "compute/shaders.h"
 #include "compute/shared/derive_layout.h"
@@ -759,11 +760,18 @@ namespace {
 
 // The stores of one slot at pos + `at` (a number or, in the loop over slots, j), its word in `word`.
 std::string slotStores(const std::string& at, const std::string& word, const std::vector<std::string>& params,
-                       const std::string& partner, bool provenance) {
+                       const std::string& partner, bool provenance, uint32_t paramVector) {
     std::string s = fmt::format("        symOut[pos + {}] = {};\n", at, word);
-    for (size_t a = 0; a < params.size(); ++a)
-        s += fmt::format("        if (({} >> kSymbolBits) > {}u) parOut[(pos + {}) * pc.stride + {}u] = {};\n", word, a, at, a,
-                         params[a]);
+    if (paramVector == 1) {
+        for (size_t a = 0; a < params.size(); ++a)
+            s += fmt::format("        if (({} >> kSymbolBits) > {}u) parOut[(pos + {}) * pc.stride + {}u] = {};\n", word, a,
+                             at, a, params[a]);
+    } else if (!params.empty()) {
+        std::vector<std::string> components = params;
+        components.resize(paramVector, "0.0");
+        s += fmt::format("        if (({} >> kSymbolBits) > 0u) parOut[pos + {}] = vec{}({});\n", word, at, paramVector,
+                         fmt::join(components, ", "));
+    }
     if (provenance) s += fmt::format("        originOut[pos + {0}] = origin;\n        liveOut[pos + {0}] = 1u;\n", at);
     if (!partner.empty())
         s += fmt::format("        if ({0} != kNoModule) partnersOut[pos + {1}] = pos + {0};\n", partner, at);
@@ -772,7 +780,9 @@ std::string slotStores(const std::string& at, const std::string& word, const std
 
 } // namespace
 
-std::string slotStoreCode(const SuccessorSlots& slots, bool provenance, bool partners) {
+uint32_t parameterVectorWidth(uint32_t stride) { return stride == 2 || stride == 4 ? stride : 1; }
+
+std::string slotStoreCode(const SuccessorSlots& slots, bool provenance, bool partners, uint32_t paramVector) {
     // Up to this many slots are stored one by one; more go through a loop (below).
     constexpr size_t kMostSlotsStoredOneByOne = 16;
     size_t count = slots.params.size();
@@ -783,7 +793,8 @@ std::string slotStoreCode(const SuccessorSlots& slots, bool provenance, bool par
         for (uint32_t a = 0; a < slots.params[j]; ++a) params.push_back(fmt::format("slotParam{}_{}", j, a));
         std::string partner = partners && slots.pairs[j] ? fmt::format("slotPartner{}", j) : "";
         s += fmt::format("    if ({}u < n) {{\n", j) +
-             slotStores(fmt::format("{}u", j), fmt::format("slotWord{}", j), params, partner, provenance) + "    }\n";
+             slotStores(fmt::format("{}u", j), fmt::format("slotWord{}", j), params, partner, provenance, paramVector) +
+             "    }\n";
     }
     if (loop) {
         // The slots after the first in a loop as long as the subgroup's longest successor: every store in the
@@ -813,7 +824,7 @@ std::string slotStoreCode(const SuccessorSlots& slots, bool provenance, bool par
              "        if (j >= n) continue;\n"
              "        uint word = slotWordAt(j);\n";
         if (anyPairs) s += "        uint partner = slotPartnerAt(j);\n";
-        s += slotStores("j", "word", params, anyPairs ? "partner" : "", provenance);
+        s += slotStores("j", "word", params, anyPairs ? "partner" : "", provenance, paramVector);
         s += "    }\n";
     }
     return accessors + s + "}\n\n";

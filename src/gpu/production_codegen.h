@@ -105,7 +105,12 @@ SuccessorSlots successorSlots(const std::vector<ir::Grammar>& species, RuleKind 
 std::string slotDeclarations(const SuccessorSlots& slots);
 // `void storeSlots(uint pos, uint n, uint origin)`: the first n slots into symOut/parOut at pos, with the
 // module's origin and liveness (`provenance`) and the partners of the brackets paired (`partners`).
-std::string slotStoreCode(const SuccessorSlots& slots, bool provenance, bool partners);
+// `paramVector` > 1: parOut is an array of vec<paramVector>, one per module (the stride), and a module's
+// parameters are one store; its slots past the module's parameters get zeros.
+std::string slotStoreCode(const SuccessorSlots& slots, bool provenance, bool partners, uint32_t paramVector = 1);
+// The width of the vectors a kernel with this parameter stride stores a module's parameters as: 2 or 4, or 1
+// where no vector type has that stride in std430 layout.
+uint32_t parameterVectorWidth(uint32_t stride);
 // Marks the slots that may hold paired brackets as holding none (before a production writes them).
 std::string resetSlotPartners(const SuccessorSlots& slots);
 

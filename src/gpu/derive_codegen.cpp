@@ -33,19 +33,23 @@ std::string declarations(bool texelInputs, bool decomposition, bool write, bool 
         b.add("readonly", "uint", "examined");
     }
     if (!write) {
-        b.add("writeonly", "uint", fusedScan ? "countsBefore" : "counts");
-        b.add("writeonly", "uint", "choices");
+        if (fusedScan) {
+            b.add("writeonly", "uint", "matchWords");
+        } else {
+            b.add("writeonly", "uint", "counts");
+            b.add("writeonly", "uint", "choices");
+        }
         b.add("writeonly", "uint", "drawStarts");
         if (!decomposition) b.add("", "uint", "cutDelta");
         if (fusedScan) b.add("writeonly", "uint", "tileSums");
     } else {
         if (fusedScan) {
-            b.addInput("uint", "countsBefore");
+            b.addInput("uint", "matchWords");
             b.addInput("uint", "tileOffsets");
         } else {
             b.addInput("uint", "offsets");
+            b.addInput("uint", "choices");
         }
-        b.addInput("uint", "choices");
         b.addInput("uint", "drawStarts");
         b.add("writeonly", "uint", "symOut");
         b.add("writeonly", parameters.c_str(), "parOut");
@@ -129,9 +133,11 @@ std::string writeDispatch(const ir::RuleSet& rules, size_t species, RuleKind kin
 // `returnsCount`: the function returns the count instead of storing it (the step's matchModule, whose main()
 // stores it or, with a fused scan, the counts before it in its tile).
 // `recordsDraws`: the write pass draws, from where the chosen production started.
-std::string recordChoice(bool returnsCount = false, bool recordsDraws = true) {
+// `packsChoice`: the step's match with a fused scan, whose main() packs the choice into the module's match word.
+std::string recordChoice(bool returnsCount = false, bool recordsDraws = true, bool packsChoice = false) {
     return std::string("    if (chosen == 0u) produced = 1u;\n") + (returnsCount ? "" : "    counts[i] = produced;\n") +
-           "    choices[i] = chosen | ((length - 1u) << 24u); // the predecessor's length for the greedy walk\n" +
+           (packsChoice ? "    matchedChoice = chosen;\n"
+                        : "    choices[i] = chosen | ((length - 1u) << 24u); // the predecessor's length for the greedy walk\n") +
            (recordsDraws ? "    drawStarts[i] = start;\n" : "") + (returnsCount ? "    return produced;\n}\n" : "}\n");
 }
 
@@ -146,8 +152,9 @@ std::string stepSpecializations(bool match) {
 // productions read them (codegen::plantInputs), since each lookup is a search and several loads per module.
 // `frozenCheck`: a match pass, which copies the modules of frozen plants when kFrozenPlants is specialised true
 // (the host does so only while some plant is frozen).
-std::string stepPlantLookup(const codegen::PlantInputs& in, bool frozenCheck) {
-    std::string frozen = "        if (plantFrozen[plant] == kPlantFrozen) { choices[i] = kChoiceCopy; return 1u; }\n";
+std::string stepPlantLookup(const codegen::PlantInputs& in, bool frozenCheck, bool packsChoice) {
+    std::string frozen = std::string("        if (plantFrozen[plant] == kPlantFrozen) { ") +
+                         (packsChoice ? "matchedChoice" : "choices[i]") + " = kChoiceCopy; return 1u; }\n";
     std::string s;
     if (in.plant) {
         s += "    uint plant = kSinglePlant ? 0u : plantOf(i);\n";
@@ -216,22 +223,6 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species, 
     const std::string frozenCopy = "    if (plantFrozen[plant] == kPlantFrozen) { counts[i] = 1u; choices[i] = kChoiceCopy; "
                                    "drawStarts[i] = 0u; return; }\n";
 
-    // The step's scan fused into its two passes: match sums the successor counts of each subgroup's modules (a
-    // tile of gl_SubgroupSize consecutive modules: invocations fill subgroups in order) and stores for each module
-    // the counts before it in its tile; the host scans the sums, and a module's position is its tile's offset plus
-    // the counts before it. Subgroup operations need no barrier, and no pass over the string is added.
-    // Cuts and predecessors of several modules change counts after the match, so they keep the separate scan.
-    k.fusedScan = !k.mayCut && k.longestPredecessor <= 1;
-    // Brackets a successor opens and closes are partners there (emitPartners); a copied `[` finds where its
-    // partner went (outputPosition). Cuts and decomposition change brackets after the write.
-    k.carriesPartners = k.needsBrackets && k.fusedScan && !k.hasDecomposition &&
-                        codegen::successorsKeepBracketsBalanced(species);
-    codegen::PlantInputs matchInputs = codegen::plantInputs(species, RuleKind::Step, false);
-    matchInputs.bounds = matchInputs.bounds || k.mayCut; // a cut ends where its branch does, within the plant
-    matchInputs.plant = matchInputs.plant || matchInputs.bounds;
-    codegen::PlantInputs writeInputs = codegen::plantInputs(species, RuleKind::Step, true);
-    k.matchFindsPlants = matchInputs.plant;
-    k.writeFindsPlants = writeInputs.plant;
     // The parameter slots a module can have: the host's stride, except that the stride is at least 1. A copied
     // module of a grammar without parameters copies none.
     int copiedParams = 0;
@@ -243,6 +234,30 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species, 
     codegen::SuccessorSlots stepSlots = codegen::successorSlots(species, RuleKind::Step, uint32_t(copiedParams));
     codegen::SuccessorSlots decompositionSlots = codegen::successorSlots(species, RuleKind::Decomposition, 0);
 
+    // The step's scan fused into its two passes: match sums the successor counts of each subgroup's modules (a
+    // tile of gl_SubgroupSize consecutive modules: invocations fill subgroups in order) and stores for each module
+    // the counts before it in its tile; the host scans the sums, and a module's position is its tile's offset plus
+    // the counts before it. Subgroup operations need no barrier, and no pass over the string is added.
+    // Cuts and predecessors of several modules change counts after the match, so they keep the separate scan.
+    // The counts before a module and its choice share one word (choiceBits): one store in match, one load in
+    // write. The counts before a module stay below the largest subgroup (128) times the longest successor.
+    size_t productions = 0;
+    for (const ir::Grammar& g : species) productions = std::max(productions, g.productions.productions.size());
+    while (k.choiceBits < 32 && (size_t{1} << k.choiceBits) <= productions) ++k.choiceBits;
+    uint64_t mostBefore = 128ull * stepSlots.params.size();
+    k.fusedScan = !k.mayCut && k.longestPredecessor <= 1 && k.choiceBits < 32 && mostBefore < (1ull << (32 - k.choiceBits));
+    // Brackets a successor opens and closes are partners there (emitPartners); a copied `[` finds where its
+    // partner went (outputPosition). Cuts and decomposition change brackets after the write.
+    k.carriesPartners = k.needsBrackets && k.fusedScan && !k.hasDecomposition &&
+                        codegen::successorsKeepBracketsBalanced(species);
+    codegen::PlantInputs matchInputs = codegen::plantInputs(species, RuleKind::Step, false);
+    matchInputs.bounds = matchInputs.bounds || k.mayCut; // a cut ends where its branch does, within the plant
+    matchInputs.plant = matchInputs.plant || matchInputs.bounds;
+    codegen::PlantInputs writeInputs = codegen::plantInputs(species, RuleKind::Step, true);
+    k.matchFindsPlants = matchInputs.plant;
+    k.writeFindsPlants = writeInputs.plant;
+    const std::string choiceBits = fmt::format("const uint kChoiceBits = {}u;\n", k.choiceBits);
+
     // ---- derivation step: match ----
     {
         std::string s = prelude + declarations(texelInputs, false, false, k.fusedScan) + library + functions;
@@ -251,7 +266,8 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species, 
         s += findPlant("plantStart", "plantOf");
         s += codegen::contextPrefetchCode(species, RuleKind::Step, false) + stepFunctions;
         s += stepSpecializations(true);
-        s += "uint matchModule(uint i) {\n" + stepPlantLookup(matchInputs, true);
+        if (k.fusedScan) s += choiceBits + "uint matchedChoice = kChoiceCopy; // packed with the counts by main()\n";
+        s += "uint matchModule(uint i) {\n" + stepPlantLookup(matchInputs, true, k.fusedScan);
         s += "    uint sym = symOf(i), count = countOf(i);\n"
              "    uint key = i - pBegin;\n"
              "    int ctxLeft = int(i) - 1;\n"
@@ -266,11 +282,11 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species, 
                  "        atomicAdd(cutDelta[endOfBranch(i + 1u, pBegin, pEnd)], 0xFFFFFFFFu);\n"
                  "    }\n";
         }
-        s += recordChoice(true, matchInputs.random);
+        s += recordChoice(true, matchInputs.random, k.fusedScan);
         s += mainCalling(k.fusedScan ? "    uint produced = i < pc.count ? matchModule(i) : 0u;\n"
                                        "    uint before = subgroupExclusiveAdd(produced);\n"
                                        "    uint tileSum = subgroupAdd(produced);\n"
-                                       "    if (i < pc.count) countsBefore[i] = before;\n"
+                                       "    if (i < pc.count) matchWords[i] = (before << kChoiceBits) | matchedChoice;\n"
                                        "    if (subgroupElect() && i < pc.count) tileSums[i / gl_SubgroupSize] = tileSum;\n"
                                      : "    if (i < pc.count) counts[i] = matchModule(i);\n",
                          RuleKind::Step);
@@ -292,15 +308,16 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species, 
         }
         s += ownParams + ownParam + "    return 0.0LF;\n}\n\n";
         s += findPlant("plantStart", "plantOf");
+        if (k.fusedScan) s += choiceBits;
         if (k.carriesPartners) // module j's first position in the written string
-            s += "uint outputPosition(uint j) { return tileOffsetsAt(j / gl_SubgroupSize) + countsBeforeAt(j); }\n\n";
+            s += "uint outputPosition(uint j) { return tileOffsetsAt(j / gl_SubgroupSize) + (matchWordsAt(j) >> kChoiceBits); "
+                 "}\n\n";
         s += codegen::contextPrefetchCode(species, RuleKind::Step, true) + stepFunctions;
         // Every module's successor goes through the slots, a copied module's too, so that each output position
         // is stored once in the kernel's code: drivers that run every branch for the whole subgroup (lavapipe)
         // pay for the stores of all productions otherwise.
-        s += stepSpecializations(false) + "void writeModule(uint i, uint pos) {\n";
-        s += "    uint choice = choicesAt(i);\n"
-             "    if (choice == kChoiceDropped) return;\n"
+        s += stepSpecializations(false) + "void writeModule(uint i, uint pos, uint choice) {\n";
+        s += "    if (choice == kChoiceDropped) return;\n"
              "    choice &= kSymbolMask;\n"
              "    uint origin = i;\n"
              "    uint word = symInAt(i);\n" +
@@ -315,7 +332,7 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species, 
                  "        partnersOut[partner] = pos;\n"
                  "    }\n";
         s += "    if (choice != kChoiceCopy) {\n";
-        s += stepPlantLookup(writeInputs, false);
+        s += stepPlantLookup(writeInputs, false, false);
         s += "    uint key = i - pBegin;\n"
              "    int ctxLeft = int(i) - 1;\n"
              "    uint ctxRight = i + 1u;\n"
@@ -325,9 +342,12 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species, 
         s += "    }\n"
              "    storeSlots(pos, produced, origin);\n"
              "}\n";
-        s += mainCalling(k.fusedScan
-                             ? "    if (i < pc.count) writeModule(i, tileOffsetsAt(i / gl_SubgroupSize) + countsBeforeAt(i));\n"
-                             : "    if (i < pc.count) writeModule(i, offsetsAt(i));\n",
+        s += mainCalling(k.fusedScan ? "    if (i < pc.count) {\n"
+                                       "        uint matched = matchWordsAt(i);\n"
+                                       "        writeModule(i, tileOffsetsAt(i / gl_SubgroupSize) + (matched >> kChoiceBits),\n"
+                                       "                    matched & ((1u << kChoiceBits) - 1u));\n"
+                                       "    }\n"
+                                     : "    if (i < pc.count) writeModule(i, offsetsAt(i), choicesAt(i));\n",
                          RuleKind::Step);
         k.write = std::move(s);
     }

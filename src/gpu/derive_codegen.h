@@ -37,8 +37,10 @@ struct GeneratedKernels {
     int maxDecompositionDepth = 0;  // the deepest of the species' decompositions
     uint32_t longestPredecessor = 1; // > 1: the greedy walk decides which modules start a rewrite
     // The step's scan is fused into match and write (see generateDeriveKernels): match also writes each
-    // workgroup's sum of counts, and write takes the scanned sums and counts instead of offsets.
+    // workgroup's sum of counts, and write takes the scanned sums and counts instead of offsets. Match then
+    // stores one word per module, the counts before it in its subgroup above its choice's choiceBits bits.
     bool fusedScan = false;
+    uint32_t choiceBits = 1;
     // The step's write pass also writes the partners of the brackets of the string it writes
     // (codegen::carriesBracketPartners), into the binding after its own outputs.
     bool carriesPartners = false;

@@ -94,7 +94,8 @@ struct GpuDeriver::Impl {
     std::optional<std::string> homomorphismHostReason;
     // The error sites of the kernels being run (the homomorphism's while it runs).
     const std::vector<ErrorSite>* activeErrors = nullptr;
-    vk::ComputePipeline plantStarts, plantStartsTiled, plantHintsKernel, cutApply;
+    vk::ComputePipeline plantStarts, plantHintsKernel, cutApply;
+    std::optional<vk::ComputePipeline> plantStartsTiled; // with a fused scan, specialised for its match words
     vk::ComputePipeline greedyReduce, greedyScan, greedyMark, homomorphismStart;
     GpuScan scan;
     BracketTree brackets; // after scan, which it uses
@@ -132,7 +133,6 @@ struct GpuDeriver::Impl {
           texelInputs(loads == GpuLoads::TexelBuffers ||
                       (loads == GpuLoads::Auto && c.deviceInfo().type == VK_PHYSICAL_DEVICE_TYPE_CPU)),
           plantStarts(vk::ComputePipeline::embedded(c, "derive/plant_starts")),
-          plantStartsTiled(vk::ComputePipeline::embedded(c, "derive/plant_starts_tiled")),
           plantHintsKernel(vk::ComputePipeline::embedded(c, "derive/plant_hints")),
           cutApply(vk::ComputePipeline::embedded(c, "derive/cut_apply")),
           greedyReduce(vk::ComputePipeline::embedded(c, "derive/greedy_reduce")),
@@ -177,6 +177,8 @@ struct GpuDeriver::Impl {
             decompositionWrite.emplace(build(kernels.decompositionWrite, "derive/decomposition_write"));
         }
         if (kernels.fusedScan) {
+            const uint32_t choiceBits[] = {kernels.choiceBits};
+            plantStartsTiled = vk::ComputePipeline::embedded(ctx, "derive/plant_starts_tiled", choiceBits);
             tileSize = ctx.deviceInfo().subgroupSize;
             if (tileSize == 0 || shared::kDeriveWorkgroupSize % tileSize != 0)
                 throw std::runtime_error(fmt::format("the GPU backend needs subgroups that divide its workgroups of {} "
@@ -429,9 +431,9 @@ struct GpuDeriver::Impl {
         double millis = 0;
         ensureScratch(n);
         matchScanWrite(cur, outIndex, stepIndex, seed, budget, timer, millis);
-        // Match writes counts, choices and draw starts, and write reads them; a separate scan reads the counts
-        // twice and writes offsets, which write reads.
-        uint64_t perModule = kernels.fusedScan ? 4 + 4ull * uint64_t(stride) + 12 + 12
+        // Match writes counts, choices and draw starts, and write reads them; with a fused scan the counts and the
+        // choice are one word, otherwise a separate scan reads the counts twice and writes offsets, which write reads.
+        uint64_t perModule = kernels.fusedScan ? 4 + 4ull * uint64_t(stride) + 8 + 8
                                                : 4 + 4ull * uint64_t(stride) + 12 + 12 + 12;
         stats.bytesMoved += uint64_t(n) * perModule + uint64_t(out.count) * (4 + 4ull * uint64_t(stride) + 8);
         if (kernels.hasDecomposition)
@@ -462,7 +464,7 @@ struct GpuDeriver::Impl {
                 if (kernels.needsBrackets) recordBrackets(cmd, cur);
                 const vk::ComputePipeline& matcher = stepMatch();
                 if (fused) {
-                    dispatchDerive(cmd, matcher, in, {counts, choices, drawStarts, cutDelta, tileSums}, p, n);
+                    dispatchDerive(cmd, matcher, in, {counts, drawStarts, cutDelta, tileSums}, p, n);
                     vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
                     scan.record(cmd, tileSums, tileOffsets, static_cast<uint32_t>(tilesFor(n)));
                 } else {
@@ -490,17 +492,15 @@ struct GpuDeriver::Impl {
                 if (fused) {
                     if (kernels.carriesPartners) // the partners go after the kernel's own outputs
                         dispatchDerive(cmd, stepWrite(), in,
-                                       {counts, tileOffsets, choices, drawStarts, out.sym, out.par, out.origin,
-                                        out.live, brackets.carriedPartners(total)},
+                                       {counts, tileOffsets, drawStarts, out.sym, out.par, out.origin, out.live,
+                                        brackets.carriedPartners(total)},
                                        p, n);
                     else
                         dispatchDerive(cmd, stepWrite(), in,
-                                       {counts, tileOffsets, choices, drawStarts, out.sym, out.par, out.origin,
-                                        out.live},
-                                       p, n);
+                                       {counts, tileOffsets, drawStarts, out.sym, out.par, out.origin, out.live}, p, n);
                     DeriveHelperPush hp{n, tileSize, total, plants};
-                    plantStartsTiled.dispatch(cmd, {plantTable(in), counts, tileOffsets, plantTable(out)}, hp,
-                                              plantStartsTiled.groupsFor(plants + 1));
+                    plantStartsTiled->dispatch(cmd, {plantTable(in), counts, tileOffsets, plantTable(out)}, hp,
+                                               plantStartsTiled->groupsFor(plants + 1));
                 } else {
                     dispatchDerive(cmd, stepWrite(), in,
                                    {offsets, choices, drawStarts, out.sym, out.par, out.origin, out.live}, p, n);

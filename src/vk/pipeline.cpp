@@ -75,8 +75,9 @@ ComputePipeline::ComputePipeline(const Context& context, std::span<const std::ui
     pipeline_ = UniquePipeline(device, pipeline);
 }
 
-ComputePipeline ComputePipeline::embedded(const Context& context, std::string_view name) {
-    return ComputePipeline(context, shaders::spirv(name), std::string(name));
+ComputePipeline ComputePipeline::embedded(const Context& context, std::string_view name,
+                                          std::span<const std::uint32_t> specialization) {
+    return ComputePipeline(context, shaders::spirv(name), std::string(name), specialization);
 }
 
 VkBufferView ComputePipeline::texelView(const BufferRange& range, VkFormat format) const {

@@ -47,7 +47,8 @@ public:
                     std::span<const std::uint32_t> specialization = {});
 
     // A kernel compiled into simeco_shaders, e.g. embedded(context, "scan/reduce").
-    static ComputePipeline embedded(const Context& context, std::string_view name);
+    static ComputePipeline embedded(const Context& context, std::string_view name,
+                                    std::span<const std::uint32_t> specialization = {});
 
     ComputePipeline(ComputePipeline&&) noexcept = default;
     ComputePipeline& operator=(ComputePipeline&&) noexcept = default;

@@ -133,7 +133,8 @@ std::string writeDispatch(const ir::RuleSet& rules, size_t species, RuleKind kin
 // `returnsCount`: the function returns the count instead of storing it (the step's matchModule, whose main()
 // stores it or, with a fused scan, the counts before it in its tile).
 // `recordsDraws`: the write pass draws, from where the chosen production started.
-// `packsChoice`: the step's match with a fused scan, whose main() packs the choice into the module's match word.
+// `packsChoice`: the step's match with a fused scan, whose main() packs the choice into the module's match word
+// (its predecessors are one module long, so the choice carries no length).
 std::string recordChoice(bool returnsCount = false, bool recordsDraws = true, bool packsChoice = false) {
     return std::string("    if (chosen == 0u) produced = 1u;\n") + (returnsCount ? "" : "    counts[i] = produced;\n") +
            (packsChoice ? "    matchedChoice = chosen;\n"

@@ -1,8 +1,8 @@
 // Bracket depth, pass 4: every bracket's partner, found once per string on the finished min tree, so that
 // kernels walking contexts jump over a branch with one load instead of a search of the tree. partners[i] is the
-// `]` closing the `[` at i, or the module after the last position before the `]` at i whose depth is below its
-// own (its `[` when the brackets are balanced); kNoModule when there is none. Readers check plant bounds and
-// that an opening bracket's partner is a `[`. Other modules' entries are not written.
+// `]` closing the `[` at i, or the `[` opening the `]` at i: the module after the last position before it whose
+// depth is below its own, when that module is a `[`; kNoModule when there is none. Readers check plant bounds.
+// Other modules' entries are not written.
 #version 450
 #extension GL_GOOGLE_include_directive : require
 #include "shared/derive_layout.h"
@@ -26,6 +26,6 @@ void main() {
         partners[i] = firstBelow(i + 1u, depthAt(0u, i));
     } else if (sym == kClose) {
         int k = lastBelow(int(i) - 1, depthAt(0u, i) + 1);
-        partners[i] = k == kNoneBelow ? kNoModule : uint(k + 1);
+        partners[i] = k == kNoneBelow || symOf(uint(k + 1)) != kOpen ? kNoModule : uint(k + 1);
     }
 }

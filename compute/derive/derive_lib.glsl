@@ -19,8 +19,8 @@ uint closingBracket(uint s, uint pEnd) {
     return j < pEnd ? j : kNoModule;
 }
 uint openingBracket(uint j, uint pBegin) {
-    uint open = bracketPartnersAt(j);
-    return (open == kNoModule || open < pBegin || open >= j || symOf(open) != kOpen) ? kNoModule : open;
+    uint open = bracketPartnersAt(j); // a `[` or kNoModule (bracket_partners.comp, or carried by a write pass)
+    return (open == kNoModule || open < pBegin || open >= j) ? kNoModule : open;
 }
 
 // The `]` that closes the branch containing position s (or pEnd at the top level or when unmatched).
@@ -36,6 +36,10 @@ uint endOfBranch(uint s, uint pBegin, uint pEnd) {
     return close == kNoModule ? pEnd : close;
 }
 
+// The word (symbol and parameter count) of the module where the last walk stopped, so that a caller comparing it
+// with a pattern module does not fetch it again.
+uint walkWord = 0u;
+
 // Right context: moves s to the module the next pattern symbol is compared with. Skipped symbols pass, closed
 // branches pass unless the pattern `enters` one with `[`; false at the end of the plant, except that a `ring`
 // L-system's walk goes on from the plant's start once per pattern (`wrapped`), as the CPU reference's.
@@ -47,7 +51,7 @@ bool rightWalk(inout uint s, bool enters, uint pBegin, uint pEnd, uint skipRow, 
             s = pBegin;
             continue;
         }
-        uint sym = symOf(s);
+        uint word = symInAt(s), sym = word & kSymbolMask;
         if (skipped(sym, skipRow)) {
             ++s;
         } else if (!enters && sym == kOpen) {
@@ -55,6 +59,7 @@ bool rightWalk(inout uint s, bool enters, uint pBegin, uint pEnd, uint skipRow, 
             if (close == kNoModule) return false;
             s = close + 1u;
         } else {
+            walkWord = word;
             return true;
         }
     }
@@ -71,7 +76,7 @@ bool leftWalk(inout int s, uint pBegin, uint pEnd, uint skipRow, bool ring, inou
             s = int(pEnd) - 1;
             continue;
         }
-        uint sym = symOf(uint(s));
+        uint word = symInAt(uint(s)), sym = word & kSymbolMask;
         if (sym == kClose) {
             uint open = openingBracket(uint(s), pBegin);
             if (open == kNoModule) return false;
@@ -79,6 +84,7 @@ bool leftWalk(inout int s, uint pBegin, uint pEnd, uint skipRow, bool ring, inou
         } else if (sym == kOpen || skipped(sym, skipRow)) {
             --s;
         } else {
+            walkWord = word;
             return true;
         }
     }

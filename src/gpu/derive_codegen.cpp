@@ -273,7 +273,7 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species, 
              "    uint key = i - pBegin;\n"
              "    int ctxLeft = int(i) - 1;\n"
              "    uint ctxRight = i + 1u;\n"
-             "    prefetchContexts(species, ctxLeft, ctxRight, pBegin, pEnd);\n"
+             "    prefetchContexts(species, sym, ctxLeft, ctxRight, pBegin, pEnd);\n"
              "    uint draw = 1u, chosen = 0u, start = 0u, produced = 1u, length = 1u;\n";
         s += codegen::perSpecies(species.size(), stepSelection);
         if (k.mayCut) {
@@ -337,7 +337,7 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species, 
         s += "    uint key = i - pBegin;\n"
              "    int ctxLeft = int(i) - 1;\n"
              "    uint ctxRight = i + 1u;\n"
-             "    prefetchContexts(species, ctxLeft, ctxRight, pBegin, pEnd);\n";
+             "    prefetchContexts(species, word & kSymbolMask, ctxLeft, ctxRight, pBegin, pEnd);\n";
         s += writeInputs.random ? "    uint draw = drawStartsAt(i);\n" : "    uint draw = 1u; // as match left it\n";
         s += codegen::perSpecies(species.size(), [&](size_t sp) { return writeDispatch(species[sp].productions, sp, RuleKind::Step); });
         s += "    }\n"
@@ -360,7 +360,8 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species, 
             "    uint key = examined[i] - examined[plantStartXAt(plant)];\n"
             "    int ctxLeft = int(origin) - 1;\n"
             "    uint ctxRight = origin + 1u;\n"
-            "    prefetchContexts(species, ctxLeft, ctxRight, pBegin, pEnd);\n";
+            "    uint sym = symX[i] & kSymbolMask, count = symX[i] >> kSymbolBits;\n"
+            "    prefetchContexts(species, sym, ctxLeft, ctxRight, pBegin, pEnd);\n";
         // ---- decomposition: match ----
         {
             std::string s = prelude + declarations(texelInputs, true, false) + library + functions;
@@ -371,8 +372,7 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species, 
             s += "void matchModule(uint i) {\n";
             s += "    if (liveX[i] == 0u) { counts[i] = 1u; choices[i] = kChoiceCopy; drawStarts[i] = 0u; return; }\n";
             s += "    uint plant = plantOfX(i);\n" + frozenCopy + decompositionSetup;
-            s += "    uint sym = symX[i] & kSymbolMask, count = symX[i] >> kSymbolBits;\n"
-                 "    uint draw = 1u, chosen = 0u, start = 0u, produced = 1u, length = 1u;\n";
+            s += "    uint draw = 1u, chosen = 0u, start = 0u, produced = 1u, length = 1u;\n";
             s += codegen::perSpecies(species.size(), decompositionSelection);
             s += recordChoice();
             s += mainCalling("    if (i < pc.count) matchModule(i);\n", RuleKind::Decomposition);

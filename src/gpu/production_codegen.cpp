@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <optional>
+#include <set>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -366,8 +367,66 @@ uint32_t moduleWord(const ir::PatternModule& m) {
     return m.sym | static_cast<uint32_t>(m.paramSlots.size()) << shared::kSymbolBits;
 }
 
-bool bindsParameters(const std::vector<ir::PatternModule>& pattern) {
-    return std::any_of(pattern.begin(), pattern.end(), [](const ir::PatternModule& m) { return !m.paramSlots.empty(); });
+// Calls onExpr for every expression node and onStatement for every statement of a production's code: its
+// statements, condition (unless `withCondition` is false) and successor parameters, nested blocks and
+// subexpressions included.
+template <typename OnExpr, typename OnStatement>
+void walkProductionCode(const ir::Production& p, OnExpr&& onExpr, OnStatement&& onStatement, bool withCondition = true) {
+    auto expr = [&](const ir::Expr& e, auto& self) -> void {
+        onExpr(e);
+        for (const ir::Expr& a : e.args) self(a, self);
+    };
+    auto statements = [&](const std::vector<ir::Stmt>& block, auto& self) -> void {
+        for (const ir::Stmt& st : block) {
+            onStatement(st);
+            expr(st.expr, expr);
+            for (const ir::Expr& index : st.indices) expr(index, expr);
+            self(st.body, self);
+            self(st.elseBody, self);
+        }
+    };
+    statements(p.before, statements);
+    statements(p.after, statements);
+    if (withCondition && p.condition) expr(*p.condition, expr);
+    for (const ir::Alternative& alt : p.alternatives)
+        for (const ir::SuccessorModule& m : alt.modules)
+            for (const ir::Expr& arg : m.args) expr(arg, expr);
+}
+
+// Whether a condition has no effect but its value: no draws, files or stop(). A writing pass, which applies the
+// production its match pass chose, need not evaluate such a condition again.
+bool conditionIsPure(const ir::Production& p) {
+    if (!p.condition) return true;
+    bool pure = true;
+    auto expr = [&](const ir::Expr& e, auto& self) -> void {
+        if (e.op == ir::Op::Call) {
+            switch (e.fn) {
+            case ir::Builtin::Ran: case ir::Builtin::Nran: case ir::Builtin::Bran: case ir::Builtin::Biran:
+            case ir::Builtin::Fopen: case ir::Builtin::Fclose: case ir::Builtin::Fflush: case ir::Builtin::Fprintf:
+            case ir::Builtin::Fscanf: case ir::Builtin::Printf: case ir::Builtin::Stop:
+                pure = false;
+                break;
+            default: break;
+            }
+        }
+        for (const ir::Expr& a : e.args) self(a, self);
+    };
+    expr(*p.condition, expr);
+    return pure;
+}
+
+// Whether a writing pass walks `pattern`, a context of p: only for the parameters it binds, and only when the
+// statements or the successor read them, or the condition, evaluated again for its effects, may.
+bool writingWalks(const ir::Production& p, const std::vector<ir::PatternModule>& pattern) {
+    std::set<int> bound;
+    for (const ir::PatternModule& m : pattern) bound.insert(m.paramSlots.begin(), m.paramSlots.end());
+    if (bound.empty()) return false;
+    if (!conditionIsPure(p)) return true;
+    bool read = false;
+    walkProductionCode(
+        p, [&](const ir::Expr& e) { read = read || (e.op == ir::Op::Local && bound.count(e.slot)); },
+        [&](const ir::Stmt& st) { read = read || (st.target == ir::TargetKind::Local && bound.count(st.slot)); }, false);
+    return read;
 }
 
 // For each module of a successor, the index of the bracket it pairs within the successor, or none: the
@@ -401,8 +460,8 @@ void emitMatch(BodyEmitter& body, const ir::Grammar& g, size_t species, const ir
             body.line(fmt::format("v{} = paramOf(i + {}u, {}u);", m.paramSlots[a], k, a));
     }
     // Writing passes apply the production the match pass chose, so they walk contexts only for their parameters.
-    auto walkOpening = [modal](const std::vector<ir::PatternModule>& pattern) {
-        return bindsParameters(pattern) || !modal ? "{" : "if (mode < 2u) {";
+    auto walkOpening = [&](const std::vector<ir::PatternModule>& pattern) {
+        return writingWalks(p, pattern) || !modal ? "{" : "if (mode < 2u) {";
     };
     // The parallel passes' kernels walk the first module of each pattern once before the productions
     // (contextPrefetchCode); the sequential kernel walks in each production.
@@ -466,8 +525,12 @@ void emitMatch(BodyEmitter& body, const ir::Grammar& g, size_t species, const ir
         body.line(fmt::format("v{} = {}(i, {}u);", p.strict[0].paramSlots[k], strictParam, k));
     body.statements(p.before);
     if (p.condition) {
+        // A writing pass skips a condition the match pass found true, unless evaluating it has effects.
+        bool again = !modal || !conditionIsPure(p);
+        body.open(again ? "{" : "if (mode < 2u) {");
         std::string c = body.expr(*p.condition);
         body.line(fmt::format("if ({} == 0.0LF) return false;", c));
+        body.close();
     }
 }
 
@@ -580,63 +643,65 @@ void emitProduction(const ir::Grammar& g, size_t species, const ir::Production& 
     out += frameWrapper(p, "void", name + "Produce", produceParameters, "plant, key, draw, outCount");
 }
 
-std::string contextPrefetchCode(const std::vector<ir::Grammar>& species, RuleKind kind, bool writing) {
-    bool right = false, rightBranch = false, left = false;
-    for (const ir::Grammar& g : species)
-        for (const ir::Production& p : (kind == RuleKind::Step ? g.productions : g.decomposition).productions) {
-            if (firstRightWalkPrefetched(g, p) && (!writing || bindsParameters(p.right))) {
-                bool enters = p.right.front().sym == ir::kBranchOpen;
-                rightBranch = rightBranch || enters;
-                right = right || !enters;
-            }
-            left = left || (firstLeftWalkPrefetched(g, p) && (!writing || bindsParameters(p.left)));
-        }
-    std::string code = "void prefetchContexts(uint species, int ctxLeft, uint ctxRight, uint pBegin, uint pEnd) {\n";
-    if (right || rightBranch || left)
-        code += fmt::format("    uint skipRow = species * {}u;\n", skipWords(species.front()));
-    if (right)
-        code += "    firstRight = ctxRight;\n"
-                "    firstRightFound = walkRight(firstRight, false, pEnd, skipRow);\n"
-                "    if (firstRightFound) firstRightWord = symInAt(firstRight);\n";
-    if (rightBranch)
-        code += "    firstRightBranch = ctxRight;\n"
-                "    firstRightBranchFound = walkRight(firstRightBranch, true, pEnd, skipRow);\n"
-                "    if (firstRightBranchFound) firstRightBranchWord = symInAt(firstRightBranch);\n";
-    if (left)
-        code += "    firstLeft = ctxLeft;\n"
-                "    firstLeftFound = walkLeft(firstLeft, pBegin, skipRow);\n"
-                "    if (firstLeftFound) firstLeftWord = symInAt(uint(firstLeft));\n";
-    return code + "}\n\n";
-}
-
 namespace {
 
-// Calls onExpr for every expression node and onStatement for every statement of a production's code: its
-// statements, condition and successor parameters, nested blocks and subexpressions included.
-template <typename OnExpr, typename OnStatement>
-void walkProductionCode(const ir::Production& p, OnExpr&& onExpr, OnStatement&& onStatement) {
-    auto expr = [&](const ir::Expr& e, auto& self) -> void {
-        onExpr(e);
-        for (const ir::Expr& a : e.args) self(a, self);
-    };
-    auto statements = [&](const std::vector<ir::Stmt>& block, auto& self) -> void {
-        for (const ir::Stmt& st : block) {
-            onStatement(st);
-            expr(st.expr, expr);
-            for (const ir::Expr& index : st.indices) expr(index, expr);
-            self(st.body, self);
-            self(st.elseBody, self);
-        }
-    };
-    statements(p.before, statements);
-    statements(p.after, statements);
-    if (p.condition) expr(*p.condition, expr);
-    for (const ir::Alternative& alt : p.alternatives)
-        for (const ir::SuccessorModule& m : alt.modules)
-            for (const ir::Expr& arg : m.args) expr(arg, expr);
+// The predecessors, per species, of the productions one prefetched walk serves.
+using WalkerSymbols = std::vector<std::set<ir::SymbolId>>;
+
+// A condition on `species` and `sym` that holds for the modules whose productions read a prefetched walk, so that
+// the others do not walk: lavapipe runs a loop as long as its longest walk among the invocations that enter it.
+// A species with many such symbols walks for all, where the comparisons would cost more than the walks they save.
+std::string walkerCondition(const WalkerSymbols& walkers) {
+    constexpr size_t kMostComparisons = 16;
+    std::vector<std::string> terms;
+    for (size_t sp = 0; sp < walkers.size(); ++sp) {
+        if (walkers[sp].empty()) continue;
+        std::vector<std::string> symbols;
+        for (ir::SymbolId sym : walkers[sp]) symbols.push_back(fmt::format("sym == {}u", sym));
+        std::string bySymbol = walkers[sp].size() > kMostComparisons ? "true" : fmt::format("{}", fmt::join(symbols, " || "));
+        terms.push_back(walkers.size() == 1 ? bySymbol : fmt::format("(species == {}u && ({}))", sp, bySymbol));
+    }
+    return fmt::format("{}", fmt::join(terms, " || "));
 }
 
 } // namespace
+
+std::string contextPrefetchCode(const std::vector<ir::Grammar>& species, RuleKind kind, bool writing) {
+    WalkerSymbols right(species.size()), rightBranch(species.size()), left(species.size());
+    bool anyWalk = false;
+    for (size_t sp = 0; sp < species.size(); ++sp) {
+        const ir::Grammar& g = species[sp];
+        for (const ir::Production& p : (kind == RuleKind::Step ? g.productions : g.decomposition).productions) {
+            if (firstRightWalkPrefetched(g, p) && (!writing || writingWalks(p, p.right))) {
+                bool enters = p.right.front().sym == ir::kBranchOpen;
+                (enters ? rightBranch : right)[sp].insert(p.strict.front().sym);
+                anyWalk = true;
+            }
+            if (firstLeftWalkPrefetched(g, p) && (!writing || writingWalks(p, p.left))) {
+                left[sp].insert(p.strict.front().sym);
+                anyWalk = true;
+            }
+        }
+    }
+    std::string code = "void prefetchContexts(uint species, uint sym, int ctxLeft, uint ctxRight, uint pBegin, uint pEnd) {\n";
+    if (anyWalk) code += fmt::format("    uint skipRow = species * {}u;\n", skipWords(species.front()));
+    // One walk: `name` is firstRight, firstRightBranch or firstLeft, `walk` the call that moves it.
+    auto prefetch = [&](const WalkerSymbols& walkers, const std::string& name, const std::string& start, const std::string& walk) {
+        std::string condition = walkerCondition(walkers);
+        if (condition.empty()) return;
+        code += fmt::format("    {0}Found = false;\n"
+                            "    if ({1}) {{\n"
+                            "        {0} = {2};\n"
+                            "        {0}Found = {3};\n"
+                            "        if ({0}Found) {0}Word = walkWord;\n"
+                            "    }}\n",
+                            name, condition, start, walk);
+    };
+    prefetch(right, "firstRight", "ctxRight", "walkRight(firstRight, false, pEnd, skipRow)");
+    prefetch(rightBranch, "firstRightBranch", "ctxRight", "walkRight(firstRightBranch, true, pEnd, skipRow)");
+    prefetch(left, "firstLeft", "ctxLeft", "walkLeft(firstLeft, pBegin, skipRow)");
+    return code + "}\n\n";
+}
 
 bool mayLoopLong(const std::vector<ir::Grammar>& species, RuleKind kind) {
     // Well inside lavapipe's 65535 iterations, with room for the plant search and parameter copies.
@@ -689,9 +754,9 @@ PlantInputs plantInputs(const std::vector<ir::Grammar>& species, RuleKind kind, 
         const ir::RuleSet& rules = kind == RuleKind::Step ? g.productions : g.decomposition;
         if (isStochastic(rules)) in.random = true;
         for (const ir::Production& p : rules.productions) {
-            // A writing pass applies what the match chose: it walks only the contexts that bind parameters, and
-            // the further modules of a predecessor are known to lie within the plant.
-            bool walks = writing ? bindsParameters(p.left) || bindsParameters(p.right) : !p.left.empty() || !p.right.empty();
+            // A writing pass applies what the match chose: it walks only the contexts whose parameters it reads
+            // (writingWalks), and the further modules of a predecessor are known to lie within the plant.
+            bool walks = writing ? writingWalks(p, p.left) || writingWalks(p, p.right) : !p.left.empty() || !p.right.empty();
             if (walks || (!writing && p.strict.size() > 1)) in.bounds = true;
             if (p.alternatives.size() > 1) in.random = true;
             walkProductionCode(p, scanExpr, scanStatement);

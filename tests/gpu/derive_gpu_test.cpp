@@ -400,6 +400,23 @@ TEST_F(DeriveGpuTest, PredecessorsOfSeveralModulesMatchTheCpu) {
     EXPECT_EQ(firstDifference(want, deriver.derive({}), g.alphabet), "");
 }
 
+// The write pass applies the production its match chose without evaluating a pure condition again, but one that
+// draws random numbers it evaluates again, so that the successor's draws follow the condition's as on the CPU,
+// walking the context whose parameter only that condition reads.
+TEST_F(DeriveGpuTest, ConditionsThatDrawMatchTheCpu) {
+    ir::Grammar g = simeco::testing::grammarFromText(
+        simeco::testing::lsystem("B(0.5)A(0)",
+                                 "B(y) < A(x) : y + ran(1) > 1 --> A(x + ran(3))B(ran(2))\n"
+                                 "A(x) : ran(1) < 0.5 --> A(x + ran(1))B(ran(2))\n"
+                                 "A(x) : x > 2 --> A(x - 1)B(x)\n"
+                                 "A(x) --> A(x + 1)\n",
+                                 12));
+    cpu::DeriveOptions options;
+    options.plants = 20;
+    Outcome outcome = compareEngines(context(), g, options, gpu::GpuStrategy::Parallel);
+    EXPECT_EQ(outcome.verdict, Verdict::Match) << outcome.detail;
+}
+
 // Ring L-systems: contexts go on from the other end of their own plant, once per pattern, with branches, ignored
 // symbols and decomposition.
 TEST_F(DeriveGpuTest, RingLSystemsMatchTheCpu) {

@@ -11,10 +11,11 @@ shared uint scanWorkgroupTotal[2];
 // Exclusive prefix of `value` over the invocations of the workgroup in gl_LocalInvocationIndex order;
 // `groupTotal` receives the sum over the whole workgroup. Call in uniform control flow.
 uint workgroupExclusiveAdd(uint value, uint slot, out uint groupTotal) {
-    uint prefix = subgroupExclusiveAdd(value);
-    uint subgroupTotal = subgroupAdd(value);
-    if (subgroupElect()) {
-        scanSubgroupTotals[slot][gl_SubgroupID] = subgroupTotal;
+    // The subgroup's last invocation holds its total in its inclusive prefix: one subgroup operation, which
+    // lavapipe runs as a loop over the invocations, where an exclusive prefix and a sum are two.
+    uint through = subgroupInclusiveAdd(value);
+    if (gl_SubgroupInvocationID == gl_SubgroupSize - 1u) {
+        scanSubgroupTotals[slot][gl_SubgroupID] = through;
     }
     barrier();
     // The subgroup totals can outnumber the lanes of one subgroup (32 totals, 8 lanes on lavapipe), so the
@@ -36,7 +37,7 @@ uint workgroupExclusiveAdd(uint value, uint slot, out uint groupTotal) {
     }
     barrier();
     groupTotal = scanWorkgroupTotal[slot];
-    return scanSubgroupTotals[slot][gl_SubgroupID] + prefix;
+    return scanSubgroupTotals[slot][gl_SubgroupID] + through - value;
 }
 
 // Dispatches beyond 65535 workgroups are split over y by the host; tiles are numbered row-major.

@@ -284,11 +284,13 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species, 
                  "    }\n";
         }
         s += recordChoice(true, matchInputs.random, k.fusedScan);
+        // The subgroup's last invocation holds the tile's sum in its inclusive prefix: one subgroup operation,
+        // which lavapipe runs as a loop over the invocations, where an exclusive prefix and a sum are two.
         s += mainCalling(k.fusedScan ? "    uint produced = i < pc.count ? matchModule(i) : 0u;\n"
-                                       "    uint before = subgroupExclusiveAdd(produced);\n"
-                                       "    uint tileSum = subgroupAdd(produced);\n"
-                                       "    if (i < pc.count) matchWords[i] = (before << kChoiceBits) | matchedChoice;\n"
-                                       "    if (subgroupElect() && i < pc.count) tileSums[i / gl_SubgroupSize] = tileSum;\n"
+                                       "    uint through = subgroupInclusiveAdd(produced);\n"
+                                       "    if (i < pc.count) matchWords[i] = ((through - produced) << kChoiceBits) | matchedChoice;\n"
+                                       "    if (gl_SubgroupInvocationID == gl_SubgroupSize - 1u && i - gl_SubgroupInvocationID < pc.count)\n"
+                                       "        tileSums[i / gl_SubgroupSize] = through;\n"
                                      : "    if (i < pc.count) counts[i] = matchModule(i);\n",
                          RuleKind::Step);
         k.match = std::move(s);

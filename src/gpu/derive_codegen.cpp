@@ -258,18 +258,38 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species, 
     k.matchFindsPlants = matchInputs.plant;
     k.writeFindsPlants = writeInputs.plant;
     const std::string choiceBits = fmt::format("const uint kChoiceBits = {}u;\n", k.choiceBits);
+    // A module's first `count` parameters, loaded once (`load`) for all productions and the copy, which read them
+    // through ownParam(i, k) (`declare`): lavapipe runs every production's code, and a load in each is a gather each.
+    struct OwnParameters {
+        std::string declare, load;
+    };
+    auto ownParameters = [](int count) {
+        OwnParameters own;
+        std::string accessor = "double ownParam(uint i, uint k) {\n";
+        for (int a = 0; a < count; ++a) {
+            own.declare += fmt::format("double ownParam{};\n", a);
+            own.load += fmt::format("    ownParam{0} = paramOf(i, {0}u);\n", a);
+            accessor += fmt::format("    if (k == {0}u) return ownParam{0};\n", a);
+        }
+        own.declare += accessor + "    return 0.0LF;\n}\n\n";
+        return own;
+    };
+    int predecessorParams = 0;
+    for (const ir::Grammar& g : species)
+        for (const ir::Production& p : g.productions.productions)
+            predecessorParams = std::max(predecessorParams, static_cast<int>(p.strict[0].paramSlots.size()));
 
     // ---- derivation step: match ----
     {
         std::string s = prelude + declarations(texelInputs, false, false, k.fusedScan) + library + functions;
         s += codegen::slotDeclarations(stepSlots);
-        s += "double ownParam(uint i, uint k) { return paramOf(i, k); }\n";
-        s += findPlant("plantStart", "plantOf");
+        OwnParameters own = ownParameters(predecessorParams);
+        s += own.declare + findPlant("plantStart", "plantOf");
         s += codegen::contextPrefetchCode(species, RuleKind::Step, false) + stepFunctions;
         s += stepSpecializations(true);
         if (k.fusedScan) s += choiceBits + "uint matchedChoice = kChoiceCopy; // packed with the counts by main()\n";
         s += "uint matchModule(uint i) {\n" + stepPlantLookup(matchInputs, true, k.fusedScan);
-        s += "    uint sym = symOf(i), count = countOf(i);\n"
+        s += "    uint sym = symOf(i), count = countOf(i);\n" + own.load +
              "    uint key = i - pBegin;\n"
              "    int ctxLeft = int(i) - 1;\n"
              "    uint ctxRight = i + 1u;\n"
@@ -301,16 +321,10 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species, 
                         library + functions;
         s += codegen::slotDeclarations(stepSlots) +
              codegen::slotStoreCode(stepSlots, k.hasDecomposition, k.carriesPartners, paramVector);
-        // The module's parameters, loaded once for all productions and the copy.
-        std::string ownParams, loadOwn, copyOwn, ownParam = "double ownParam(uint i, uint k) {\n";
-        for (int a = 0; a < copiedParams; ++a) {
-            ownParams += fmt::format("double ownParam{};\n", a);
-            loadOwn += fmt::format("    ownParam{0} = paramOf(i, {0}u);\n", a);
-            copyOwn += fmt::format("    slotParam0_{0} = float(ownParam{0});\n", a);
-            ownParam += fmt::format("    if (k == {0}u) return ownParam{0};\n", a);
-        }
-        s += ownParams + ownParam + "    return 0.0LF;\n}\n\n";
-        s += findPlant("plantStart", "plantOf");
+        OwnParameters own = ownParameters(copiedParams);
+        std::string copyOwn;
+        for (int a = 0; a < copiedParams; ++a) copyOwn += fmt::format("    slotParam0_{0} = float(ownParam{0});\n", a);
+        s += own.declare + findPlant("plantStart", "plantOf");
         if (k.fusedScan) s += choiceBits;
         if (k.carriesPartners) // module j's first position in the written string
             s += "uint outputPosition(uint j) { return tileOffsetsAt(j / gl_SubgroupSize) + (matchWordsAt(j) >> kChoiceBits); "
@@ -324,7 +338,7 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species, 
              "    choice &= kSymbolMask;\n"
              "    uint origin = i;\n"
              "    uint word = symInAt(i);\n" +
-             loadOwn +
+             own.load +
              "    uint produced = 1u;\n"
              "    slotWord0 = word;\n" +
              copyOwn + codegen::resetSlotPartners(stepSlots);

@@ -204,9 +204,9 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species, 
         "(gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * gl_WorkGroupSize.x + gl_LocalInvocationID.x";
     // Every kernel's main() rewrites module i, then, if its loops may run long, asks whether the driver cut them
     // (derive_lib.glsl).
-    auto mainCalling = [&](const std::string& body, RuleKind kind) {
+    auto mainCalling = [&](const std::string& body, RuleKind kind, bool writing) {
         return "void main() {\n    uint i = " + moduleIndex + ";\n" + body +
-               (codegen::mayLoopLong(species, kind) ? "    reportLoopsCut();\n" : "") + "}\n";
+               (codegen::mayLoopLong(species, kind, writing) ? "    reportLoopsCut();\n" : "") + "}\n";
     };
     // A binary search of the plant table between the hints of i's block and the next block.
     auto findPlant = [](const char* table, const char* name) {
@@ -312,7 +312,7 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species, 
                                        "    if (gl_SubgroupInvocationID == gl_SubgroupSize - 1u && i - gl_SubgroupInvocationID < pc.count)\n"
                                        "        tileSums[i / gl_SubgroupSize] = through;\n"
                                      : "    if (i < pc.count) counts[i] = matchModule(i);\n",
-                         RuleKind::Step);
+                         RuleKind::Step, false);
         k.match = std::move(s);
     }
     // ---- derivation step: write ----
@@ -365,7 +365,7 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species, 
                                        "                    matched & ((1u << kChoiceBits) - 1u));\n"
                                        "    }\n"
                                      : "    if (i < pc.count) writeModule(i, offsetsAt(i), choicesAt(i));\n",
-                         RuleKind::Step);
+                         RuleKind::Step, true);
         k.write = std::move(s);
     }
     if (k.hasDecomposition) {
@@ -391,7 +391,7 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species, 
             s += "    uint draw = 1u, chosen = 0u, start = 0u, produced = 1u, length = 1u;\n";
             s += codegen::perSpecies(species.size(), decompositionSelection);
             s += recordChoice();
-            s += mainCalling("    if (i < pc.count) matchModule(i);\n", RuleKind::Decomposition);
+            s += mainCalling("    if (i < pc.count) matchModule(i);\n", RuleKind::Decomposition, false);
             k.decompositionMatch = std::move(s);
         }
         // ---- decomposition: write ----
@@ -420,7 +420,7 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species, 
                             [&](size_t sp) { return writeDispatch(species[sp].decomposition, sp, RuleKind::Decomposition); });
             s += "    storeSlots(pos, produced, origin);\n"
                  "}\n";
-            s += mainCalling("    if (i < pc.count) writeModule(i);\n", RuleKind::Decomposition);
+            s += mainCalling("    if (i < pc.count) writeModule(i);\n", RuleKind::Decomposition, true);
             k.decompositionWrite = std::move(s);
         }
     }

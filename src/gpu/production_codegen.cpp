@@ -703,7 +703,7 @@ std::string contextPrefetchCode(const std::vector<ir::Grammar>& species, RuleKin
     return code + "}\n\n";
 }
 
-bool mayLoopLong(const std::vector<ir::Grammar>& species, RuleKind kind) {
+bool mayLoopLong(const std::vector<ir::Grammar>& species, RuleKind kind, bool writing) {
     // Well inside lavapipe's 65535 iterations, with room for the plant search and parameter copies.
     constexpr uint64_t kMostIterations = 8192;
     // The elementary functions of derive_lib.glsl and contour_curve.glsl loop at most this often per call.
@@ -729,7 +729,9 @@ bool mayLoopLong(const std::vector<ir::Grammar>& species, RuleKind kind) {
     };
     for (const ir::Grammar& g : species)
         for (const ir::Production& p : (kind == RuleKind::Step ? g.productions : g.decomposition).productions) {
-            if (!p.left.empty() || !p.right.empty()) return true; // context walks pass any number of modules
+            // Context walks pass any number of modules.
+            if (writing ? writingWalks(p, p.left) || writingWalks(p, p.right) : !p.left.empty() || !p.right.empty())
+                return true;
             walkProductionCode(p, countCalls, countLoops);
         }
     return unbounded || iterations > kMostIterations;

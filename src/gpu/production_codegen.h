@@ -79,8 +79,9 @@ bool successorsKeepBracketsBalanced(const std::vector<ir::Grammar>& species);
 // Whether the kernels of the `kind` rules of these species may loop so long that a driver ends their loops
 // (lavapipe: 65535 iterations of an invocation in all): context walks, `while` and `do` statements, binomial
 // draws, or very many elementary functions. Only those kernels end with reportLoopsCut (derive_lib.glsl); the
-// others loop a bounded number of times and are spared its cost.
-bool mayLoopLong(const std::vector<ir::Grammar>& species, RuleKind kind);
+// others loop a bounded number of times and are spared its cost. `writing`: of a writing pass, which walks only
+// some contexts (contextPrefetchCode).
+bool mayLoopLong(const std::vector<ir::Grammar>& species, RuleKind kind, bool writing);
 
 // What the productions of the `kind` rules of these species read of their plant, besides their modules, in a
 // matching pass or a `writing` one: a kernel whose productions need none of it skips finding the plant, which

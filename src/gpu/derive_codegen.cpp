@@ -20,8 +20,10 @@ using codegen::RuleKind;
 
 // The buffers of each kernel. Contexts always read the string being rewritten (symIn, parIn).
 // `parameters`: the type of parOut's elements, a module's parameter slots (codegen::parameterVectorWidth).
+// `parameterVectors`: the width of parVec, the string's parameters read as one vector per module (1: none).
 std::string declarations(bool texelInputs, bool decomposition, bool write, bool fusedScan = false,
-                         bool carriesPartners = false, const std::string& parameters = "float") {
+                         bool carriesPartners = false, const std::string& parameters = "float",
+                         uint32_t parameterVectors = 1) {
     codegen::Bindings b(texelInputs);
     b.addShared(false);
     if (decomposition) {
@@ -58,6 +60,7 @@ std::string declarations(bool texelInputs, bool decomposition, bool write, bool 
         if (carriesPartners) b.add("writeonly", "uint", "partnersOut");
     }
     b.addInput("uint", "plantHints"); // of the stream plantOf() searches (derive/plant_hints.comp)
+    if (parameterVectors > 1) b.addVectorInput(parameterVectors, "parVec");
     return b.text();
 }
 
@@ -260,15 +263,18 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species, 
     const std::string choiceBits = fmt::format("const uint kChoiceBits = {}u;\n", k.choiceBits);
     // A module's first `count` parameters, loaded once (`load`) for all productions and the copy, which read them
     // through ownParam(i, k) (`declare`): lavapipe runs every production's code, and a load in each is a gather each.
+    // `vector`: all of them in one load from parVec, a vector of paramVector floats per module.
     struct OwnParameters {
         std::string declare, load;
     };
-    auto ownParameters = [](int count) {
+    auto ownParameters = [paramVector](int count, bool vector) {
         OwnParameters own;
         std::string accessor = "double ownParam(uint i, uint k) {\n";
+        if (vector) own.load = fmt::format("    vec{} ownParams = parVecAt(i);\n", paramVector);
         for (int a = 0; a < count; ++a) {
             own.declare += fmt::format("double ownParam{};\n", a);
-            own.load += fmt::format("    ownParam{0} = paramOf(i, {0}u);\n", a);
+            own.load += vector ? fmt::format("    ownParam{} = double(ownParams[{}]);\n", a, a)
+                               : fmt::format("    ownParam{0} = paramOf(i, {0}u);\n", a);
             accessor += fmt::format("    if (k == {0}u) return ownParam{0};\n", a);
         }
         own.declare += accessor + "    return 0.0LF;\n}\n\n";
@@ -278,12 +284,17 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species, 
     for (const ir::Grammar& g : species)
         for (const ir::Production& p : g.productions.productions)
             predecessorParams = std::max(predecessorParams, static_cast<int>(p.strict[0].paramSlots.size()));
+    k.matchReadsParameterVectors = paramVector > 1 && predecessorParams > 0;
+    k.writeReadsParameterVectors = paramVector > 1; // copiedParams, the stride, parameters are loaded
 
     // ---- derivation step: match ----
     {
-        std::string s = prelude + declarations(texelInputs, false, false, k.fusedScan) + library + functions;
+        std::string s = prelude +
+                        declarations(texelInputs, false, false, k.fusedScan, false, "float",
+                                     k.matchReadsParameterVectors ? paramVector : 1) +
+                        library + functions;
         s += codegen::slotDeclarations(stepSlots);
-        OwnParameters own = ownParameters(predecessorParams);
+        OwnParameters own = ownParameters(predecessorParams, k.matchReadsParameterVectors);
         s += own.declare + findPlant("plantStart", "plantOf");
         s += codegen::contextPrefetchCode(species, RuleKind::Step, false) + stepFunctions;
         s += stepSpecializations(true);
@@ -317,11 +328,13 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species, 
     }
     // ---- derivation step: write ----
     {
-        std::string s = prelude + declarations(texelInputs, false, true, k.fusedScan, k.carriesPartners, parameterType) +
+        std::string s = prelude +
+                        declarations(texelInputs, false, true, k.fusedScan, k.carriesPartners, parameterType,
+                                     k.writeReadsParameterVectors ? paramVector : 1) +
                         library + functions;
         s += codegen::slotDeclarations(stepSlots) +
              codegen::slotStoreCode(stepSlots, k.hasDecomposition, k.carriesPartners, paramVector);
-        OwnParameters own = ownParameters(copiedParams);
+        OwnParameters own = ownParameters(copiedParams, k.writeReadsParameterVectors);
         std::string copyOwn;
         for (int a = 0; a < copiedParams; ++a) copyOwn += fmt::format("    slotParam0_{0} = float(ownParam{0});\n", a);
         s += own.declare + findPlant("plantStart", "plantOf");

@@ -54,6 +54,10 @@ struct GeneratedKernels {
     // Parameter slots per module that the step's write pass was generated for (it stores them as vectors where
     // it can): the species' most parameters, at least 1, the host's stride.
     uint32_t stride = 1;
+    // The step's match and write passes read a module's own parameters as one vector of `stride` floats
+    // (codegen::parameterVectorWidth), from a binding after plantHints: the parameters viewed as such vectors.
+    bool matchReadsParameterVectors = false;
+    bool writeReadsParameterVectors = false;
 };
 
 // The GLSL of the kernels for plants of the given species (one alphabet: ir::unifySpecies); plant p is of

@@ -359,13 +359,19 @@ struct GpuDeriver::Impl {
     // The bindings every generated derivation kernel starts with (see declarations() in derive_codegen.cpp):
     // the string being rewritten, its brackets, the plants' globals and arrays, function tables, the context
     // filter and the error word; `rest` follows them.
+    // `parameterVectors`: the kernel reads each module's parameters as one vector too, the last binding
+    // (GeneratedKernels::matchReadsParameterVectors, writeReadsParameterVectors).
     void dispatchDerive(VkCommandBuffer cmd, const vk::ComputePipeline& kernel, const Stream& strings,
-                        std::initializer_list<vk::BufferRange> rest, const DerivePush& p, uint32_t n) {
+                        std::initializer_list<vk::BufferRange> rest, const DerivePush& p, uint32_t n,
+                        bool parameterVectors = false) {
         std::vector<vk::BufferRange> buffers{strings.sym, strings.par, plantTable(strings), brackets.tree(),
                                              brackets.levelInfo(), brackets.partners(), globals, arrays, funcTables, contextSkip, errors,
                                              plantFrozen};
         buffers.insert(buffers.end(), rest.begin(), rest.end());
         buffers.push_back(plantHints);
+        if (parameterVectors)
+            buffers.push_back(vk::BufferRange(strings.par).viewedAs(stride == 4 ? VK_FORMAT_R32G32B32A32_SFLOAT
+                                                                                 : VK_FORMAT_R32G32_SFLOAT));
         kernel.dispatchBytes(cmd, buffers, std::as_bytes(std::span(&p, 1)), kernel.groupsFor(n));
     }
 
@@ -464,11 +470,13 @@ struct GpuDeriver::Impl {
                 if (kernels.needsBrackets) recordBrackets(cmd, cur);
                 const vk::ComputePipeline& matcher = stepMatch();
                 if (fused) {
-                    dispatchDerive(cmd, matcher, in, {counts, drawStarts, cutDelta, tileSums}, p, n);
+                    dispatchDerive(cmd, matcher, in, {counts, drawStarts, cutDelta, tileSums}, p, n,
+                                   kernels.matchReadsParameterVectors);
                     vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
                     scan.record(cmd, tileSums, tileOffsets, static_cast<uint32_t>(tilesFor(n)));
                 } else {
-                    dispatchDerive(cmd, matcher, in, {counts, choices, drawStarts, cutDelta}, p, n);
+                    dispatchDerive(cmd, matcher, in, {counts, choices, drawStarts, cutDelta}, p, n,
+                                   kernels.matchReadsParameterVectors);
                     vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
                     if (kernels.mayCut && n > 0) {
                         scan.record(cmd, cutDelta, cutBefore, n);
@@ -494,16 +502,18 @@ struct GpuDeriver::Impl {
                         dispatchDerive(cmd, stepWrite(), in,
                                        {counts, tileOffsets, drawStarts, out.sym, out.par, out.origin, out.live,
                                         brackets.carriedPartners(total)},
-                                       p, n);
+                                       p, n, kernels.writeReadsParameterVectors);
                     else
                         dispatchDerive(cmd, stepWrite(), in,
-                                       {counts, tileOffsets, drawStarts, out.sym, out.par, out.origin, out.live}, p, n);
+                                       {counts, tileOffsets, drawStarts, out.sym, out.par, out.origin, out.live}, p, n,
+                                       kernels.writeReadsParameterVectors);
                     DeriveHelperPush hp{n, tileSize, total, plants};
                     plantStartsTiled->dispatch(cmd, {plantTable(in), counts, tileOffsets, plantTable(out)}, hp,
                                                plantStartsTiled->groupsFor(plants + 1));
                 } else {
                     dispatchDerive(cmd, stepWrite(), in,
-                                   {offsets, choices, drawStarts, out.sym, out.par, out.origin, out.live}, p, n);
+                                   {offsets, choices, drawStarts, out.sym, out.par, out.origin, out.live}, p, n,
+                                   kernels.writeReadsParameterVectors);
                     recordPlantStarts(cmd, in, out, n, total);
                 }
                 vk::memoryBarrier(cmd, Hazard::ComputeToCompute);

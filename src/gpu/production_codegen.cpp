@@ -328,6 +328,18 @@ void Bindings::addInput(const char* type, const char* name) {
     text_ += fmt::format("{0} {1}At(uint i) {{ return texelFetch({1}, int(i)).x; }}\n", type, name);
 }
 
+void Bindings::addVectorInput(uint32_t width, const char* name) {
+    std::string type = fmt::format("vec{}", width);
+    if (!texelInputs_) {
+        add("readonly", type.c_str(), name);
+        text_ += fmt::format("{0} {1}At(uint i) {{ return {1}[i]; }}\n", type, name);
+        return;
+    }
+    text_ += fmt::format("layout(set = 0, binding = {}) uniform samplerBuffer {};\n", next_++, name);
+    text_ += fmt::format("{0} {1}At(uint i) {{ return texelFetch({1}, int(i)).{2}; }}\n", type, name,
+                         width == 2 ? "xy" : "xyzw");
+}
+
 void Bindings::addShared(bool stateWritable) {
     const char* state = stateWritable ? "" : "readonly";
     addInput("uint", "symIn");

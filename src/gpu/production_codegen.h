@@ -38,6 +38,8 @@ public:
     void add(const char* access, const char* type, const char* name);
     // A read-only array of 32-bit `type` (uint, int or float) that the kernel reads through `NAMEAt(uint i)`.
     void addInput(const char* type, const char* name);
+    // A read-only array of vectors of `width` floats (2 or 4) that the kernel reads through `NAMEAt(uint i)`.
+    void addVectorInput(uint32_t width, const char* name);
     // The first bindings of every derivation kernel: the string being rewritten, its brackets, the plants'
     // state (written only by the sequential kernel), function tables, the context filter, the error word and
     // the frozen plants.

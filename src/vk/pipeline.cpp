@@ -18,6 +18,12 @@ BufferRange::BufferRange(const Buffer& whole) : source(&whole), buffer(whole.han
 BufferRange::BufferRange(const Buffer& viewed, VkDeviceSize first, VkDeviceSize bytes)
     : source(&viewed), buffer(viewed.handle()), offset(first), size(bytes) {}
 
+BufferRange BufferRange::viewedAs(VkFormat format) const {
+    BufferRange viewed = *this;
+    viewed.texelFormat = format;
+    return viewed;
+}
+
 ComputePipeline::ComputePipeline(const Context& context, std::span<const std::uint32_t> spirv, std::string name,
                                  std::span<const std::uint32_t> specialization)
     : context_(&context),
@@ -83,12 +89,15 @@ ComputePipeline ComputePipeline::embedded(const Context& context, std::string_vi
 VkBufferView ComputePipeline::texelView(const BufferRange& range, VkFormat format) const {
     if (!range.source)
         throw DispatchMismatch(fmt::format("kernel {}: a texel buffer binding needs a vk::Buffer to view", name_));
-    // The whole range in 4-byte texels, as many as the device lets one view hold; the callers size the buffers
-    // their kernels read as texels within that.
+    // The whole range in texels of 4 bytes a component, as many as the device lets one view hold; the callers
+    // size the buffers their kernels read as texels within that.
+    VkDeviceSize texelBytes = format == VK_FORMAT_R32G32B32A32_SFLOAT || format == VK_FORMAT_R32G32B32A32_UINT ? 16
+                              : format == VK_FORMAT_R32G32_SFLOAT || format == VK_FORMAT_R32G32_UINT     ? 8
+                                                                                                        : 4;
     VkDeviceSize available = range.source->size() - range.offset;
     VkDeviceSize bytes = range.size == VK_WHOLE_SIZE ? available : std::min(range.size, available);
-    bytes = std::min<VkDeviceSize>(bytes, VkDeviceSize{maxTexelElements_} * 4) / 4 * 4;
-    return range.source->texelView(format, range.offset, std::max<VkDeviceSize>(bytes, 4));
+    bytes = std::min<VkDeviceSize>(bytes, VkDeviceSize{maxTexelElements_} * texelBytes) / texelBytes * texelBytes;
+    return range.source->texelView(format, range.offset, std::max<VkDeviceSize>(bytes, texelBytes));
 }
 
 std::uint64_t ComputePipeline::groupsFor(std::uint64_t items, std::uint32_t itemsPerInvocation) const {
@@ -139,7 +148,9 @@ void ComputePipeline::dispatchBytes(VkCommandBuffer cmd, std::span<const BufferR
         writes[i].descriptorType = reflection_.bindings[i].type;
         writes[i].pBufferInfo = &infos[i];
         if (reflection_.bindings[i].type == VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER) {
-            views[i] = texelView(buffers[i], reflection_.bindings[i].texelFormat);
+            VkFormat format = buffers[i].texelFormat != VK_FORMAT_UNDEFINED ? buffers[i].texelFormat
+                                                                            : reflection_.bindings[i].texelFormat;
+            views[i] = texelView(buffers[i], format);
             writes[i].pBufferInfo = nullptr;
             writes[i].pTexelBufferView = &views[i];
         }

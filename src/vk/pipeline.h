@@ -33,10 +33,15 @@ struct BufferRange {
     BufferRange(const Buffer& whole);  // NOLINT(google-explicit-constructor): whole buffers read naturally
     BufferRange(const Buffer& viewed, VkDeviceSize first, VkDeviceSize bytes);
 
+    // The same range read as texels of `format` by a uniform texel buffer binding, where the binding reads more
+    // than one 32-bit component per texel: reflection gives only the texels' numeric type.
+    BufferRange viewedAs(VkFormat format) const;
+
     const Buffer* source = nullptr; // for the views of uniform texel buffer bindings
     VkBuffer buffer = VK_NULL_HANDLE;
     VkDeviceSize offset = 0;
     VkDeviceSize size = VK_WHOLE_SIZE;
+    VkFormat texelFormat = VK_FORMAT_UNDEFINED; // VK_FORMAT_UNDEFINED: one 32-bit component, as reflected
 };
 
 class ComputePipeline {

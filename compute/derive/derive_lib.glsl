@@ -148,18 +148,15 @@ void reportError(uint code) { atomicCompSwap(errors[0], 0u, code + 1u); }
 // knows only the loop's own exits and folds the check away. So every generated main() whose loops may run long
 // (codegen::mayLoopLong) ends with this loop of pc.loopProbeTrips iterations (a number the compiler cannot know),
 // which stops after one exactly when the iterations are spent, and raises kFlagLoopCut.
-// - The driver counts iterations per subgroup (one SIMD program), so one invocation of each subgroup asks; a probe
-//   in every invocation cost a third of a simple grammar's throughput.
-// - The count grows by atomics in shared memory, so LLVM finds no induction variable to analyse: asked about a
-//   counted loop at the end of a large kernel, its analysis walks every condition before it and can take
-//   minutes; a float count does not survive its optimisations.
-shared uint loopProbe[kDeriveWorkgroupSize];
+// - The driver counts iterations per subgroup (one SIMD program), so the loop runs once for all its invocations.
+// - The count steps by reading its next value from the push constants, so LLVM finds no induction variable to
+//   analyse: asked about a counted loop at the end of a large kernel, its analysis walks every condition before it
+//   and can take minutes. A float count does not survive its optimisations, and counting by atomics in shared
+//   memory costs lavapipe a loop over the invocations for every access.
 void reportLoopsCut() {
-    if (!subgroupElect()) return;
-    uint slot = gl_LocalInvocationIndex, trips;
-    loopProbe[slot] = 0u;
+    uint trips = 0u;
     do {
-        trips = atomicAdd(loopProbe[slot], 1u) + 1u;
+        trips = pc.loopProbeCounts[trips];
     } while (trips < pc.loopProbeTrips);
     if (trips != pc.loopProbeTrips) atomicOr(errors[1], kFlagLoopCut);
 }

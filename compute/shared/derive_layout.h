@@ -25,6 +25,11 @@ SIMECO_CONST kChoiceCopy = 0u;             // no production: the module is copie
 // A random-stream pass per rewriting pass: step * kPassesPerStep, decomposition depth d at + 1 + d.
 SIMECO_CONST kPassesPerStep = 1024u;
 
+// Iterations of the loop that tells whether the driver cut an invocation's loops; a push constant, so that the
+// compiler cannot count them. The loop reads its next count from DerivePush::loopProbeCounts.
+SIMECO_CONST kLoopProbeTrips = 2u;
+SIMECO_CONST kLoopProbeCounts = 4u; // entries of DerivePush::loopProbeCounts, more than kLoopProbeTrips
+
 // Push constants of the generated derivation kernels (all modes).
 struct DerivePush {
     uint count;        // modules of the stream the kernel walks
@@ -42,7 +47,8 @@ struct DerivePush {
     uint moduleLimit;  // sequential kernel: a plant counting past this stops and reports it
     uint chunk;        // sequential kernel: input modules a plant rewrites per dispatch
     uint dispatch;     // sequential kernel: the dispatch's index in its pass (0 starts the plants)
-    uint loopProbeTrips; // kLoopProbeTrips (derive_lib.glsl's loopsWereCut())
+    uint loopProbeTrips; // kLoopProbeTrips (derive_lib.glsl's reportLoopsCut())
+    uint loopProbeCounts[kLoopProbeCounts]; // {1, 2, 3, 4}: the probe loop's count after each trip
 };
 
 // plantFrozen values: the host freezes a plant that stopped or finished its derivation length; a production
@@ -58,9 +64,6 @@ SIMECO_CONST kFlagOverLimit = 2u;    // a plant counted more than moduleLimit mo
 // all loops of an invocation after 65535 iterations in total). Every generated kernel raises it; the sequential
 // kernel is retried with smaller chunks, the parallel passes cannot be split and report it.
 SIMECO_CONST kFlagLoopCut = 4u;
-// Iterations of the loop that tells whether the driver cut an invocation's loops; a push constant, so that the
-// compiler cannot count them.
-SIMECO_CONST kLoopProbeTrips = 2u;
 
 // Modules per entry of the plant hints (derive/plant_hints.comp); a stream of n modules has
 // plantHintBlocks(n) + 1 hints.
@@ -80,7 +83,8 @@ struct DeriveHelperPush {
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(DerivePush) == 64);
+static_assert(sizeof(DerivePush) == 80);
+static_assert(kLoopProbeTrips < kLoopProbeCounts);
 static_assert(sizeof(DeriveHelperPush) == 16);
 } // namespace simeco::shared
 #endif

@@ -290,6 +290,8 @@ struct GpuDeriver::Impl {
         p.oldCount = oldCount;
         p.depth = depth;
         p.loopProbeTrips = shared::kLoopProbeTrips;
+        for (uint32_t k = 0; k < shared::kLoopProbeCounts; ++k)
+            p.loopProbeCounts[k] = k + 1;
         return p;
     }
 

@@ -304,7 +304,7 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species, 
              "    uint key = i - pBegin;\n"
              "    int ctxLeft = int(i) - 1;\n"
              "    uint ctxRight = i + 1u;\n"
-             "    prefetchContexts(species, sym, ctxLeft, ctxRight, pBegin, pEnd);\n"
+             "    prefetchContexts(i, species, sym, ctxLeft, ctxRight, pBegin, pEnd);\n"
              "    uint draw = 1u, chosen = 0u, start = 0u, produced = 1u, length = 1u;\n";
         s += codegen::perSpecies(species.size(), stepSelection);
         if (k.mayCut) {
@@ -366,7 +366,7 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species, 
         s += "    uint key = i - pBegin;\n"
              "    int ctxLeft = int(i) - 1;\n"
              "    uint ctxRight = i + 1u;\n"
-             "    prefetchContexts(species, word & kSymbolMask, ctxLeft, ctxRight, pBegin, pEnd);\n";
+             "    prefetchContexts(i, species, word & kSymbolMask, ctxLeft, ctxRight, pBegin, pEnd);\n";
         s += writeInputs.random ? "    uint draw = drawStartsAt(i);\n" : "    uint draw = 1u; // as match left it\n";
         s += codegen::perSpecies(species.size(), [&](size_t sp) { return writeDispatch(species[sp].productions, sp, RuleKind::Step); });
         s += "    }\n"
@@ -390,7 +390,7 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species, 
             "    int ctxLeft = int(origin) - 1;\n"
             "    uint ctxRight = origin + 1u;\n"
             "    uint sym = symX[i] & kSymbolMask, count = symX[i] >> kSymbolBits;\n"
-            "    prefetchContexts(species, sym, ctxLeft, ctxRight, pBegin, pEnd);\n";
+            "    prefetchContexts(i, species, sym, ctxLeft, ctxRight, pBegin, pEnd);\n";
         // ---- decomposition: match ----
         {
             std::string s = prelude + declarations(texelInputs, true, false) + library + functions;

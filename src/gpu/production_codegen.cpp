@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <optional>
 #include <set>
 
@@ -657,19 +658,117 @@ void emitProduction(const ir::Grammar& g, size_t species, const ir::Production& 
 
 namespace {
 
-// The predecessors, per species, of the productions one prefetched walk serves.
-using WalkerSymbols = std::vector<std::set<ir::SymbolId>>;
+// GLSL for the value (a double) and the truth of a condition part that reads only the predecessor's own parameters
+// (ownParam(i, k)) and constants, through comparisons, negation and logic: std::nullopt for any other part. No sums or
+// products, which a compiler may fuse differently here and in the production.
+struct OwnParameterCode {
+    const ir::PatternModule& predecessor;
 
-// A condition on `species` and `sym` that holds for the modules whose productions read a prefetched walk, so that
-// the others do not walk: lavapipe runs a loop as long as its longest walk among the invocations that enter it.
-// A species with many such symbols walks for all, where the comparisons would cost more than the walks they save.
+    std::optional<std::string> value(const ir::Expr& e) const {
+        using ir::Op;
+        switch (e.op) {
+        case Op::Const: return literal(e.value);
+        case Op::Local: {
+            const std::vector<int>& slots = predecessor.paramSlots;
+            auto at = std::find(slots.begin(), slots.end(), e.slot);
+            if (at == slots.end()) return std::nullopt;
+            return fmt::format("ownParam(i, {}u)", at - slots.begin());
+        }
+        case Op::Neg: {
+            std::optional<std::string> a = value(e.args[0]);
+            return a ? std::optional(fmt::format("(-{})", *a)) : std::nullopt;
+        }
+        default: {
+            std::optional<std::string> t = truth(e);
+            return t ? std::optional(fmt::format("({} ? 1.0LF : 0.0LF)", *t)) : std::nullopt;
+        }
+        }
+    }
+
+    std::optional<std::string> truth(const ir::Expr& e) const {
+        using ir::Op;
+        switch (e.op) {
+        case Op::Lt: case Op::Le: case Op::Gt: case Op::Ge: case Op::Eq: case Op::Ne: {
+            static const char* ops[] = {"<", "<=", ">", ">=", "==", "!="};
+            std::optional<std::string> a = value(e.args[0]), b = value(e.args[1]);
+            if (!a || !b) return std::nullopt;
+            return fmt::format("({} {} {})", *a, ops[static_cast<int>(e.op) - static_cast<int>(Op::Lt)], *b);
+        }
+        case Op::And: case Op::Or: {
+            std::optional<std::string> a = truth(e.args[0]), b = truth(e.args[1]);
+            if (!a || !b) return std::nullopt;
+            return fmt::format("({} {} {})", *a, e.op == Op::And ? "&&" : "||", *b);
+        }
+        case Op::Not: {
+            std::optional<std::string> a = value(e.args[0]);
+            return a ? std::optional(fmt::format("({} == 0.0LF)", *a)) : std::nullopt;
+        }
+        case Op::Const: case Op::Local: case Op::Neg: {
+            std::optional<std::string> a = value(e);
+            return a ? std::optional(fmt::format("({} != 0.0LF)", *a)) : std::nullopt;
+        }
+        default: return std::nullopt;
+        }
+    }
+};
+
+// Whether evaluating e can have no effect and raise no error: no calls, divisions or array elements.
+bool harmless(const ir::Expr& e) {
+    using ir::Op;
+    switch (e.op) {
+    case Op::Call: case Op::Div: case Op::Mod: case Op::Pow: case Op::ArrayElem: case Op::String: return false;
+    default: return std::all_of(e.args.begin(), e.args.end(), harmless);
+    }
+}
+
+// What a module must satisfy for step production p to apply, decided by its own parameters before any context is
+// walked: the conjuncts of p's condition that OwnParameterCode can write, among those before the first one that is
+// not harmless, as GLSL; "" for none. The CPU reference evaluates the condition after the contexts, from the left
+// and stopping at the first false conjunct, so a module these reject draws nothing and raises no error there:
+// skipping its walk changes nothing. Statements before the condition might, so p has none.
+std::string ownParameterGuard(const ir::Production& p) {
+    if (!p.condition || !p.before.empty() || p.strict.size() != 1) return "";
+    std::vector<const ir::Expr*> conjuncts;
+    auto flatten = [&](const ir::Expr& e, auto& self) -> void {
+        if (e.op == ir::Op::And) {
+            self(e.args[0], self);
+            self(e.args[1], self);
+        } else {
+            conjuncts.push_back(&e);
+        }
+    };
+    flatten(*p.condition, flatten);
+    OwnParameterCode code{p.strict.front()};
+    std::vector<std::string> guards;
+    for (const ir::Expr* c : conjuncts) {
+        if (std::optional<std::string> t = code.truth(*c))
+            guards.push_back(*t);
+        else if (!harmless(*c))
+            break;
+    }
+    return fmt::format("{}", fmt::join(guards, " && "));
+}
+
+// Per species, the predecessors of the productions one prefetched walk serves, each with the guards
+// (ownParameterGuard) of those productions; an empty guard lets every module of the symbol walk.
+using WalkerSymbols = std::vector<std::map<ir::SymbolId, std::set<std::string>>>;
+
+// A condition on `species`, `sym` and the module's own parameters that holds for the modules whose productions read a
+// prefetched walk, so that the others do not walk: lavapipe runs a loop as long as its longest walk among the
+// invocations that enter it. A species with many such symbols walks for all, where the comparisons would cost more
+// than the walks they save.
 std::string walkerCondition(const WalkerSymbols& walkers) {
     constexpr size_t kMostComparisons = 16;
     std::vector<std::string> terms;
     for (size_t sp = 0; sp < walkers.size(); ++sp) {
         if (walkers[sp].empty()) continue;
         std::vector<std::string> symbols;
-        for (ir::SymbolId sym : walkers[sp]) symbols.push_back(fmt::format("sym == {}u", sym));
+        for (const auto& [sym, guards] : walkers[sp]) {
+            if (guards.count(""))
+                symbols.push_back(fmt::format("sym == {}u", sym));
+            else
+                symbols.push_back(fmt::format("(sym == {}u && ({}))", sym, fmt::join(guards, " || ")));
+        }
         std::string bySymbol = walkers[sp].size() > kMostComparisons ? "true" : fmt::format("{}", fmt::join(symbols, " || "));
         terms.push_back(walkers.size() == 1 ? bySymbol : fmt::format("(species == {}u && ({}))", sp, bySymbol));
     }
@@ -684,18 +783,20 @@ std::string contextPrefetchCode(const std::vector<ir::Grammar>& species, RuleKin
     for (size_t sp = 0; sp < species.size(); ++sp) {
         const ir::Grammar& g = species[sp];
         for (const ir::Production& p : (kind == RuleKind::Step ? g.productions : g.decomposition).productions) {
+            // A decomposition kernel keeps its predecessor's parameters elsewhere (strictParam).
+            std::string guard = kind == RuleKind::Step ? ownParameterGuard(p) : "";
             if (firstRightWalkPrefetched(g, p) && (!writing || writingWalks(p, p.right))) {
                 bool enters = p.right.front().sym == ir::kBranchOpen;
-                (enters ? rightBranch : right)[sp].insert(p.strict.front().sym);
+                (enters ? rightBranch : right)[sp][p.strict.front().sym].insert(guard);
                 anyWalk = true;
             }
             if (firstLeftWalkPrefetched(g, p) && (!writing || writingWalks(p, p.left))) {
-                left[sp].insert(p.strict.front().sym);
+                left[sp][p.strict.front().sym].insert(guard);
                 anyWalk = true;
             }
         }
     }
-    std::string code = "void prefetchContexts(uint species, uint sym, int ctxLeft, uint ctxRight, uint pBegin, uint pEnd) {\n";
+    std::string code = "void prefetchContexts(uint i, uint species, uint sym, int ctxLeft, uint ctxRight, uint pBegin, uint pEnd) {\n";
     if (anyWalk) code += fmt::format("    uint skipRow = species * {}u;\n", skipWords(species.front()));
     // One walk: `name` is firstRight, firstRightBranch or firstLeft, `walk` the call that moves it.
     auto prefetch = [&](const WalkerSymbols& walkers, const std::string& name, const std::string& start, const std::string& walk) {

@@ -65,11 +65,12 @@ uint32_t skipWords(const ir::Grammar& g);
 void emitProduction(const ir::Grammar& g, size_t species, const ir::Production& p, RuleKind kind, size_t index,
                     FrameStyle style, std::vector<ErrorSite>& errors, std::string& out);
 
-// `void prefetchContexts(uint species, uint sym, int ctxLeft, uint ctxRight, uint pBegin, uint pEnd)`: the first
-// walk of the context patterns of the `kind` rules of all species, which their FrameStyle::Fresh functions read
-// from firstRight, firstRightBranch and firstLeft (derive_lib.glsl) instead of walking. Every kernel calling those
-// functions calls it first, with the module's symbol: only modules with such patterns walk. `writing`: only the
-// walks a writing pass runs (of patterns whose parameters its statements or successors read).
+// `void prefetchContexts(uint i, uint species, uint sym, int ctxLeft, uint ctxRight, uint pBegin, uint pEnd)`: the
+// first walk of the context patterns of the `kind` rules of all species, which their FrameStyle::Fresh functions
+// read from firstRight, firstRightBranch and firstLeft (derive_lib.glsl) instead of walking. Every kernel calling
+// those functions calls it first, with module i and its symbol: only modules with such patterns walk, and of a
+// step's, only those whose own parameters (ownParam) pass the leading comparisons of the production's condition.
+// `writing`: only the walks a writing pass runs (of patterns whose parameters its statements or successors read).
 std::string contextPrefetchCode(const std::vector<ir::Grammar>& species, RuleKind kind, bool writing);
 
 // Whether a string whose plants are balanced stays so, its brackets paired as before or within one successor:

@@ -417,6 +417,34 @@ TEST_F(DeriveGpuTest, ConditionsThatDrawMatchTheCpu) {
     EXPECT_EQ(outcome.verdict, Verdict::Match) << outcome.detail;
 }
 
+// A module walks its contexts only when its own parameters pass the comparisons its productions' conditions start
+// with; until the first part that may draw or fail, as the CPU reference evaluates the condition from the left.
+// Each symbol has one case, and draws in a later production that would shift if a draw were skipped: A a draw
+// before the comparison, C a draw in the statements before the condition, D a context's parameter compared first,
+// on 20 plants whose parameters pass the comparisons now and then.
+TEST_F(DeriveGpuTest, ContextWalksGuardedByOwnParametersMatchTheCpu) {
+    ir::Grammar g = simeco::testing::grammarFromText(
+        simeco::testing::lsystem("B(0.5)A(0)B(2)C(3)B(1)D(2)B(3)A(1)C(2)B(2)D(1)B(4)",
+                                 "B(y) < A(x) : ran(1) < 0.7 && x == 3 --> A(x + 1)B(y + 1)\n"
+                                 "A(x) : ran(1) < 0.4 --> A(x + 1)\n"
+                                 "A(x) : x > 4 --> A(0)B(x - 4)\n"
+                                 "A(x) --> A(x + 1)\n"
+                                 "B(y) < C(x) : { z = ran(1); } x == 2 --> C(floor(x + z * 3))B(z)\n"
+                                 "C(x) : ran(1) < 0.4 --> C(x + 1)\n"
+                                 "C(x) : x > 4 --> C(0)\n"
+                                 "C(x) --> C(x + 1)\n"
+                                 "D(x) > B(y) : y > 1 && x < 2 && y + ran(2) > 1.5 --> D(x + 1)B(y - 1)\n"
+                                 "D(x) : ran(1) < 0.4 --> D(x + 2)\n"
+                                 "D(x) : x > 4 --> D(0)\n"
+                                 "D(x) --> D(x - 1)\n"
+                                 "B(y) : y > 3 --> B(0)\n",
+                                 10));
+    cpu::DeriveOptions options;
+    options.plants = 20;
+    Outcome outcome = compareEngines(context(), g, options, gpu::GpuStrategy::Parallel);
+    EXPECT_EQ(outcome.verdict, Verdict::Match) << outcome.detail;
+}
+
 // Ring L-systems: contexts go on from the other end of their own plant, once per pattern, with branches, ignored
 // symbols and decomposition.
 TEST_F(DeriveGpuTest, RingLSystemsMatchTheCpu) {

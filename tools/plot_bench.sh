@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Plots a `simeco bench --json` report: modules per second against string size (modules after the last step),
-# one line per backend, log-log. A `simeco bench --render --json` report: organ instances per second against
+# one line per backend (joining each grammar's sizes), log-log. A `simeco bench --render --json` report: organ instances per second against
 # the number of plants, for the turtle kernels, the CPU turtle and frames with and without shadow volumes.
 # Usage: tools/plot_bench.sh BENCH.json OUT.png
 # Needs gnuplot (Debian package gnuplot-nox, installed here with apt-get when missing) and python3.
@@ -54,7 +54,8 @@ if report.get("tool") == "simeco bench --render":
         f.write(title.replace('"', "'"))
     sys.exit(0)
 
-# The derivation report: one data file per backend (string size, modules/s, grammar index), sorted by size; the
+# The derivation report: one data file per backend (string size, modules/s, point shape), a block per grammar
+# sorted by size, so that a backend's line joins the sizes of one grammar and breaks between grammars; the
 # title names the device; the key lists which point shape stands for which grammar.
 grammars = []
 for e in report["entries"]:
@@ -66,11 +67,13 @@ for backend in ("cpu", "gpu"):
     for e in report["entries"]:
         r = e.get(backend, {})
         if r.get("status") == "ok" and r.get("modules", 0) > 0 and r.get("modules_per_second", 0) > 0:
-            rows.append((r["modules"], r["modules_per_second"], shapes[grammars.index(e["name"]) % len(shapes)]))
+            rows.append((grammars.index(e["name"]), r["modules"], r["modules_per_second"]))
     rows.sort()
     with open(f"{work}/{backend}.dat", "w") as f:
-        for modules, rate, shape in rows:
-            f.write(f"{modules} {rate} {shape}\n")
+        for k, (grammar, modules, rate) in enumerate(rows):
+            if k > 0 and rows[k - 1][0] != grammar:
+                f.write("\n")  # gnuplot breaks a line at a blank line
+            f.write(f"{modules} {rate} {shapes[grammar % len(shapes)]}\n")
 with open(f"{work}/grammars.gp", "w") as f:
     keys = [f"NaN with points pt {shapes[i % len(shapes)]} lc rgb 'black' title '{name}'" for i, name in enumerate(grammars)]
     f.write(", ".join(keys))

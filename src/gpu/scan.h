@@ -24,7 +24,8 @@ enum class ScanAlgorithm {
     ReduceThenScan,
     // One kernel with decoupled look-back; reads the input once less. Its wait on earlier tiles is bounded
     // (it falls back to reducing a stalled tile itself), so it terminates even without forward-progress
-    // guarantees between workgroups, as on lavapipe. Input and output must differ.
+    // guarantees between workgroups, as on lavapipe. Input and output must differ. The default: on lavapipe it
+    // takes about a sixth less time than ReduceThenScan (tests/gpu/scan_bench.cpp).
     DecoupledLookBack,
 };
 
@@ -43,7 +44,7 @@ public:
     // totalBuffer(). The caller orders the writes of `input` before this (e.g. Hazard::ComputeToCompute) and
     // its reads of `output` and the total after it. Throws std::logic_error if count > capacity().
     void record(VkCommandBuffer cmd, const vk::Buffer& input, const vk::Buffer& output, std::uint32_t count,
-                ScanAlgorithm algorithm = ScanAlgorithm::ReduceThenScan);
+                ScanAlgorithm algorithm = ScanAlgorithm::DecoupledLookBack);
 
     // Polls of a stalled predecessor before DecoupledLookBack reduces its tile itself. Tests set 1 to drive the
     // fallback path, which a fast device would otherwise rarely take.
@@ -54,7 +55,7 @@ public:
 
     // Reserves, records, submits and waits; returns the total. For tests, tools and one-off work.
     std::uint32_t run(const vk::Buffer& input, const vk::Buffer& output, std::uint32_t count,
-                      ScanAlgorithm algorithm = ScanAlgorithm::ReduceThenScan);
+                      ScanAlgorithm algorithm = ScanAlgorithm::DecoupledLookBack);
 
 private:
     struct Level {

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Plots a `simeco bench --json` report: modules per second against string size (modules after the last step),
-# one line per backend (joining each grammar's sizes), log-log. A `simeco bench --render --json` report: organ instances per second against
-# the number of plants, for the turtle kernels, the CPU turtle and frames with and without shadow volumes.
+# one line per backend (joining each grammar's sizes), log-log. A `simeco bench --render --json` report: organ
+# instances per second against the number of plants, for the turtle kernels, the CPU turtle and frames with and
+# without shadow volumes.
 # Usage: tools/plot_bench.sh BENCH.json OUT.png
 # Needs gnuplot (Debian package gnuplot-nox, installed here with apt-get when missing) and python3.
 set -euo pipefail

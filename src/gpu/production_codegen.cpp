@@ -658,9 +658,9 @@ void emitProduction(const ir::Grammar& g, size_t species, const ir::Production& 
 
 namespace {
 
-// GLSL for the value (a double) and the truth of a condition part that reads only the predecessor's own parameters
-// (ownParam(i, k)) and constants, through comparisons, negation and logic: std::nullopt for any other part. No sums or
-// products, which a compiler may fuse differently here and in the production.
+// GLSL for the value (a double) and the truth of a condition part that reads only the predecessor's own
+// parameters (ownParam(i, k)) and constants, through comparisons, negation and logic: std::nullopt for any other
+// part. No sums or products, which a compiler may fuse differently here and in the production.
 struct OwnParameterCode {
     const ir::PatternModule& predecessor;
 
@@ -753,10 +753,10 @@ std::string ownParameterGuard(const ir::Production& p) {
 // (ownParameterGuard) of those productions; an empty guard lets every module of the symbol walk.
 using WalkerSymbols = std::vector<std::map<ir::SymbolId, std::set<std::string>>>;
 
-// A condition on `species`, `sym` and the module's own parameters that holds for the modules whose productions read a
-// prefetched walk, so that the others do not walk: lavapipe runs a loop as long as its longest walk among the
-// invocations that enter it. A species with many such symbols walks for all, where the comparisons would cost more
-// than the walks they save.
+// A condition on `species`, `sym` and the module's own parameters that holds for the modules whose productions
+// read a prefetched walk, so that the others do not walk: lavapipe runs a loop as long as its longest walk among
+// the invocations that enter it. A species with many such symbols walks for all, where the comparisons would cost
+// more than the walks they save.
 std::string walkerCondition(const WalkerSymbols& walkers) {
     constexpr size_t kMostComparisons = 16;
     std::vector<std::string> terms;

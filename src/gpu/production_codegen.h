@@ -69,7 +69,8 @@ void emitProduction(const ir::Grammar& g, size_t species, const ir::Production& 
 // first walk of the context patterns of the `kind` rules of all species, which their FrameStyle::Fresh functions
 // read from firstRight, firstRightBranch and firstLeft (derive_lib.glsl) instead of walking. Every kernel calling
 // those functions calls it first, with module i and its symbol: only modules with such patterns walk, and of a
-// step's, only those whose own parameters (ownParam) pass the leading comparisons of the production's condition.
+// step's, only those whose own parameters (ownParam) pass the comparisons of them that the production's condition
+// makes before anything that may draw or fail.
 // `writing`: only the walks a writing pass runs (of patterns whose parameters its statements or successors read).
 std::string contextPrefetchCode(const std::vector<ir::Grammar>& species, RuleKind kind, bool writing);
 

@@ -112,7 +112,16 @@ void compareFile(const vk::Context& context, const fs::path& file, const std::st
     }
 }
 
-using DeriveGpuTest = GpuTest;
+class DeriveGpuTest : public GpuTest {
+protected:
+    // `plants` plants of g derived by the parallel strategy must match the CPU reference's.
+    void expectParallelMatch(const ir::Grammar& g, std::uint32_t plants) {
+        cpu::DeriveOptions options;
+        options.plants = plants;
+        Outcome outcome = compareEngines(context(), g, options, gpu::GpuStrategy::Parallel);
+        EXPECT_EQ(outcome.verdict, Verdict::Match) << outcome.detail;
+    }
+};
 
 // Models may write files (fopen) relative to the working directory: they run in a scratch directory.
 class ScratchDirGpuTest : public GpuTest {
@@ -411,10 +420,7 @@ TEST_F(DeriveGpuTest, ConditionsThatDrawMatchTheCpu) {
                                  "A(x) : x > 2 --> A(x - 1)B(x)\n"
                                  "A(x) --> A(x + 1)\n",
                                  12));
-    cpu::DeriveOptions options;
-    options.plants = 20;
-    Outcome outcome = compareEngines(context(), g, options, gpu::GpuStrategy::Parallel);
-    EXPECT_EQ(outcome.verdict, Verdict::Match) << outcome.detail;
+    expectParallelMatch(g, 20);
 }
 
 // A module walks its contexts only when its own parameters pass the comparisons its productions' conditions start
@@ -439,10 +445,7 @@ TEST_F(DeriveGpuTest, ContextWalksGuardedByOwnParametersMatchTheCpu) {
                                  "D(x) --> D(x - 1)\n"
                                  "B(y) : y > 3 --> B(0)\n",
                                  10));
-    cpu::DeriveOptions options;
-    options.plants = 20;
-    Outcome outcome = compareEngines(context(), g, options, gpu::GpuStrategy::Parallel);
-    EXPECT_EQ(outcome.verdict, Verdict::Match) << outcome.detail;
+    expectParallelMatch(g, 20);
 }
 
 // Ring L-systems: contexts go on from the other end of their own plant, once per pattern, with branches, ignored

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -50,7 +51,8 @@ public:
         percentSym_ = ir::kCut;
     }
 
-    int run(int steps) {
+    // `particles`: the state of the axiom's modules, when the derivation carries particle state.
+    int run(int steps, const std::optional<std::vector<shared::ParticleState>>& particles) {
         state_.reset(g_);
         runBlock(g_.startBlock, 0, ControlBlock::Start);
         // The axiom's parameters may use globals of the Start block.
@@ -60,6 +62,8 @@ public:
             for (const ir::Expr& e : m.args) values.push_back(static_cast<float>(evaluator_.eval(e, nullptr)));
             cur_.push(m.sym, values.data(), values.size());
         }
+        if (particles) cur_.particles = *particles;
+        carries_ = particles.has_value();
         checkBudget(cur_.size());
         int done = 0;
         for (int step = 1; step <= steps; ++step) {
@@ -82,6 +86,8 @@ public:
         cur_.clear();
         cur_.reserve(end - begin);
         for (size_t i = begin; i < end; ++i) cur_.push(s.sym[i], s.paramsOf(i), s.paramCount[i]);
+        carries_ = !s.particles.empty();
+        if (carries_) cur_.particles.assign(s.particles.begin() + begin, s.particles.begin() + end);
     }
 
     // Replaces the derived string by its image under the homomorphism, the string the turtle interprets:
@@ -96,6 +102,7 @@ public:
             ModuleRef self{cur_.sym[i], cur_.paramsOf(i), cur_.paramCount[i]};
             if (!rewriteRecursively(homomorphism_, homomorphismPass, self, int64_t(i) - 1, i + 1))
                 next_.push(self.sym, self.params, self.count);
+            inherit(i);
             checkBudget(next_.size());
         }
         std::swap(cur_, next_);
@@ -124,6 +131,13 @@ private:
     uint32_t percentSym_ = ir::kCut;
     uint32_t step_ = 0;
     std::vector<uint32_t> depthCounter_;
+    bool carries_ = false; // the strings carry particle state
+
+    // The modules next_ gained since the last call came from module `source` of cur_: they take its particle
+    // state.
+    void inherit(size_t source) {
+        if (carries_) next_.particles.resize(next_.size(), cur_.particles[source]);
+    }
 
     static void index(const ir::RuleSet& rules, std::vector<std::vector<uint32_t>>& bySymbol) {
         for (size_t i = 0; i < rules.productions.size(); ++i) {
@@ -430,6 +444,7 @@ private:
                     for (size_t k = 0; k < produced.size(); ++k)
                         emit({produced.sym[k], produced.paramsOf(k), produced.paramCount[k]}, int64_t(i) - 1, i + len);
                 }
+                inherit(i);
                 i += len;
                 continue;
             }
@@ -437,6 +452,7 @@ private:
             uint32_t examined = depthCounter_[0];
             if (useDecomposition && decompose(self, int64_t(i) - 1, i + 1)) {
                 checkBudget(next_.size());
+                inherit(i);
                 ++i;
                 continue;
             }
@@ -449,6 +465,7 @@ private:
             }
             next_.push(sym, self.params, self.count);
             checkBudget(next_.size());
+            inherit(i);
             ++i;
         }
         std::swap(cur_, next_);
@@ -465,10 +482,28 @@ void appendPlant(ModuleString& out, const ModuleString& s) {
         out.reserve(out.size() + s.size());
         for (size_t i = 0; i < s.size(); ++i) out.pushFrom(s, i);
     }
+    out.particles.insert(out.particles.end(), s.particles.begin(), s.particles.end());
     out.plantStart.push_back(out.sym.size());
 }
 
 } // namespace
+
+std::vector<std::vector<shared::ParticleState>> splitAxiomParticles(const std::vector<ir::Grammar>& species,
+                                                                   uint32_t plants,
+                                                                   const std::vector<shared::ParticleState>& initial) {
+    std::vector<std::vector<shared::ParticleState>> perPlant(plants);
+    size_t total = 0;
+    for (uint32_t plant = 0; plant < plants; ++plant) {
+        size_t length = species[ir::speciesOfPlant(plant, species.size())].axiom.size();
+        perPlant[plant].resize(length);
+        if (!initial.empty() && total + length <= initial.size())
+            std::copy(initial.begin() + total, initial.begin() + total + length, perPlant[plant].begin());
+        total += length;
+    }
+    if (!initial.empty() && initial.size() != total)
+        throw std::invalid_argument(fmt::format("{} initial particle states for {} axiom modules", initial.size(), total));
+    return perPlant;
+}
 
 DeriveResult deriveCpu(const ir::Grammar& g, const DeriveOptions& options) {
     return deriveSpeciesCpu({g}, options);
@@ -484,10 +519,17 @@ DeriveResult deriveSpeciesCpu(const std::vector<ir::Grammar>& species, const Der
     result.string.stride = stride;
     result.string.plantStart.push_back(0);
     uint64_t used = 0;
-    for (uint32_t plant = 0; plant < std::max<uint32_t>(options.plants, 1); ++plant) {
+    uint32_t plants = std::max<uint32_t>(options.plants, 1);
+    std::vector<std::vector<shared::ParticleState>> axiomParticles =
+        options.particles ? splitAxiomParticles(species, plants, options.initialParticles)
+                          : std::vector<std::vector<shared::ParticleState>>{};
+    for (uint32_t plant = 0; plant < plants; ++plant) {
         const ir::Grammar& g = species[ir::speciesOfPlant(plant, species.size())];
         PlantDeriver deriver(g, plant, seed, budget - used);
-        result.steps = std::max(result.steps, deriver.run(options.steps >= 0 ? options.steps : g.derivationLength));
+        std::optional<std::vector<shared::ParticleState>> particles;
+        if (options.particles) particles = std::move(axiomParticles[plant]);
+        result.steps =
+            std::max(result.steps, deriver.run(options.steps >= 0 ? options.steps : g.derivationLength, particles));
         if (options.homomorphism) deriver.applyHomomorphism();
         used += deriver.result().size();
         appendPlant(result.string, deriver.result());

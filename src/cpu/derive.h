@@ -25,6 +25,11 @@ struct DeriveOptions {
     uint32_t plants = 1;     // independent copies, each with its own random stream
     uint64_t maxModules = 0; // 0: defaultModuleBudget
     bool homomorphism = false; // return the string the turtle interprets: the result under the homomorphism
+    // Carry each module's particle state (shared/particle_layout.h) through the derivation, into the result's
+    // string.particles. The axioms' modules, all plants' in order, start with initialParticles, or at zero
+    // when it is empty.
+    bool particles = false;
+    std::vector<shared::ParticleState> initialParticles;
 };
 
 struct DeriveResult {
@@ -40,6 +45,12 @@ DeriveResult deriveCpu(const ir::Grammar& g, const DeriveOptions& options);
 // species p mod species.size(). Each species derives its own derivation length unless options.steps is set;
 // the seed is options.seed, else the first species'. The stride is the largest of the species'.
 DeriveResult deriveSpeciesCpu(const std::vector<ir::Grammar>& species, const DeriveOptions& options);
+
+// DeriveOptions::initialParticles cut into each plant's axiom (zeros when it is empty). Throws
+// std::invalid_argument unless it has one state for each module of the plants' axioms.
+std::vector<std::vector<shared::ParticleState>> splitAxiomParticles(const std::vector<ir::Grammar>& species,
+                                                                   uint32_t plants,
+                                                                   const std::vector<shared::ParticleState>& initial);
 
 // The string the turtle reads for a string derived elsewhere (on the GPU): each plant's modules under its
 // species' homomorphism, with the globals as the Start block sets them.

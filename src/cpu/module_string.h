@@ -1,7 +1,8 @@
 // The module stream: the derived string of one or more plants, as structure of arrays.
 //
 // Symbols and parameter counts per module, parameters in a fixed stride per grammar (the layout the GPU
-// buffers use too), and a segment table that says where each plant's modules start.
+// buffers use too), each module's particle state when the derivation carries it, and a segment table that
+// says where each plant's modules start.
 #pragma once
 
 #include <cstdint>
@@ -9,6 +10,7 @@
 #include <vector>
 
 #include "ir/grammar.h"
+#include "shared/particle_layout.h"
 
 namespace simeco::cpu {
 
@@ -17,6 +19,8 @@ struct ModuleString {
     std::vector<uint32_t> sym;          // symbol ids
     std::vector<uint8_t> paramCount;    // parameters actually present
     std::vector<float> params;          // stride floats per module
+    // One per module while the derivation carries particle state (DeriveOptions::particles), else empty.
+    std::vector<shared::ParticleState> particles;
     std::vector<uint64_t> plantStart;   // first module of each plant; size = plants + 1
 
     size_t size() const { return sym.size(); }
@@ -27,6 +31,7 @@ struct ModuleString {
         sym.clear();
         paramCount.clear();
         params.clear();
+        particles.clear();
         plantStart.clear();
     }
     void reserve(size_t n) {

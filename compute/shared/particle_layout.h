@@ -20,6 +20,7 @@ using uint = uint32_t;
 
 // Two vec4 per module: the kernels move a module's state as two vector loads and stores.
 SIMECO_CONST kParticleStateFloats = 8u;
+SIMECO_CONST kParticleStateVec4s = kParticleStateFloats / 4u;
 // The slots, as the growth simulation uses them.
 SIMECO_CONST kParticleAge = 0u;        // time since the particle was born
 SIMECO_CONST kParticleElongation = 1u; // its length so far

@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include "compute/shared/derive_layout.h"
+#include "compute/shared/particle_layout.h"
 #include "cpu/evaluator.h"
 #include "gpu/bracket_tree.h"
 #include "gpu/derive_codegen.h"
@@ -37,6 +38,7 @@ using vk::Hazard;
 // each module came from in the string being rewritten and whether the next depth examines it.
 struct Stream {
     vk::Buffer sym, par, plantStart, origin, live;
+    vk::Buffer particles; // kParticleStateFloats per module, while the derivation carries particle state
     uint64_t capacity = 0;
     uint32_t count = 0;
 };
@@ -97,6 +99,10 @@ struct GpuDeriver::Impl {
     vk::ComputePipeline plantStarts, plantHintsKernel, cutApply;
     std::optional<vk::ComputePipeline> plantStartsTiled; // with a fused scan, specialised for its match words
     vk::ComputePipeline greedyReduce, greedyScan, greedyMark, homomorphismStart;
+    // The particle state's moves, made the first time a derivation carries it: by the step's positions (with a
+    // fused scan, specialised for its match words), or from each module's origin.
+    std::optional<vk::ComputePipeline> particleScatter, particleGather;
+    bool carriesParticles = false; // the derivation running carries particle state (DeriveOptions::particles)
     GpuScan scan;
     BracketTree brackets; // after scan, which it uses
     vk::Buffer contextSkip, funcTables, errors, readback;
@@ -397,6 +403,56 @@ struct GpuDeriver::Impl {
         plantStarts.dispatch(cmd, {plantTable(from), offsets, plantTable(to)}, hp, plantStarts.groupsFor(plants + 1));
     }
 
+    // Room for the particle state of s's modules, while the derivation carries it.
+    void ensureParticles(Stream& s) {
+        if (!carriesParticles) return;
+        static_assert(shared::kParticleStateFloats == 4 * shared::kParticleStateVec4s);
+        uint64_t perModule = 4ull * shared::kParticleStateFloats;
+        checkRange(s.count, perModule, "particle state");
+        uint64_t capacity = std::min<uint64_t>(s.capacity, bufferLimit() / perModule);
+        if (!s.particles || s.particles.size() < bytes(s.count, perModule))
+            s.particles = vk::Buffer(ctx, bytes(std::max<uint64_t>(capacity, s.count), perModule),
+                                     vk::MemoryUsage::DeviceLocal);
+    }
+
+    // After a step without decomposition: each module of streams[from] passes its particle state to its successor
+    // in streams[to], at the positions this step's scan gave it.
+    void scatterParticles(int from, int to, vk::Timestamps* timer, double& millis) {
+        Stream& in = streams[from];
+        Stream& out = streams[to];
+        ensureParticles(out);
+        if (in.count == 0 || out.count == 0) return;
+        if (!particleScatter) {
+            const uint32_t choiceBits[] = {kernels.fusedScan ? kernels.choiceBits : 0u};
+            particleScatter = vk::ComputePipeline::embedded(ctx, "derive/particle_scatter", choiceBits);
+        }
+        DeriveHelperPush hp{in.count, kernels.fusedScan ? tileSize : 0u, out.count, plants};
+        submit(
+            [&](VkCommandBuffer cmd) {
+                particleScatter->dispatch(cmd,
+                                          {kernels.fusedScan ? counts : offsets, kernels.fusedScan ? tileOffsets : offsets,
+                                           in.particles, out.particles},
+                                          hp, particleScatter->groupsFor(in.count));
+            },
+            timer, millis);
+    }
+
+    // Each module of streams[to] takes the particle state of the module of streams[from] it descends from (its
+    // origin): after decomposition, the homomorphism or a sequential step.
+    void gatherParticles(int from, int to, vk::Timestamps* timer, double& millis) {
+        Stream& out = streams[to];
+        ensureParticles(out);
+        if (out.count == 0) return;
+        if (!particleGather) particleGather = vk::ComputePipeline::embedded(ctx, "derive/particle_gather");
+        DeriveHelperPush hp{out.count, 0, 0, plants};
+        submit(
+            [&](VkCommandBuffer cmd) {
+                particleGather->dispatch(cmd, {out.origin, streams[from].particles, out.particles}, hp,
+                                         particleGather->groupsFor(out.count));
+            },
+            timer, millis);
+    }
+
     // A stream of one plant is that plant: the variants specialised for it find no plants.
     bool singlePlant(bool findsPlants) const { return plants == 1 && findsPlants; }
 
@@ -439,13 +495,16 @@ struct GpuDeriver::Impl {
         double millis = 0;
         ensureScratch(n);
         matchScanWrite(cur, outIndex, stepIndex, seed, budget, timer, millis);
+        if (carriesParticles && !kernels.hasDecomposition) scatterParticles(cur, outIndex, timer, millis);
         // Match writes counts, choices and draw starts, and write reads them; with a fused scan the counts and the
         // choice are one word, otherwise a separate scan reads the counts twice and writes offsets, which write reads.
         uint64_t perModule = kernels.fusedScan ? 4 + 4ull * uint64_t(stride) + 8 + 8
                                                : 4 + 4ull * uint64_t(stride) + 12 + 12 + 12;
         stats.bytesMoved += uint64_t(n) * perModule + uint64_t(out.count) * (4 + 4ull * uint64_t(stride) + 8);
-        if (kernels.hasDecomposition)
+        if (kernels.hasDecomposition) {
             outIndex = decompose(cur, outIndex, stepIndex, seed, budget, timer, millis, stats, decompositionPasses());
+            if (carriesParticles) gatherParticles(cur, outIndex, timer, millis);
+        }
         if (timer) stats.stepMillis.push_back(millis);
         return outIndex;
     }
@@ -627,6 +686,7 @@ struct GpuDeriver::Impl {
         RecursivePasses passes{&*homomorphismMatch, &*homomorphismWrite, homomorphismKernels.maxDecompositionDepth};
         int result = decompose(cur, x, 0, seed, budget, timer, millis, stats, passes);
         activeErrors = &kernels.errors;
+        if (carriesParticles) gatherParticles(cur, result, timer, millis);
         return result;
     }
 
@@ -677,7 +737,7 @@ struct GpuDeriver::Impl {
                                              counting ? globalsCopy : globals, counting ? arraysCopy : arrays,
                                              funcTables, contextSkip, errors, plantFrozen,
                                              counting ? framesCopy : frames, stackSym, stackPar, stackState,
-                                             plantCounts, plantTable(out), out.sym, out.par, resume};
+                                             plantCounts, plantTable(out), out.sym, out.par, resume, out.origin};
         for (p.dispatch = first; p.dispatch < first + count; ++p.dispatch) {
             if (p.dispatch + 1 == first + count) {
                 vk::memoryBarrier(cmd, Hazard::ComputeToTransfer);
@@ -767,6 +827,7 @@ struct GpuDeriver::Impl {
             timer, millis);
         out.count = static_cast<uint32_t>(total);
         hostPlantTable = std::move(table);
+        if (carriesParticles) gatherParticles(cur, outIndex, timer, millis);
         stats.bytesMoved += 2 * uint64_t(n) * (4 + 4ull * uint64_t(stride)) + total * (4 + 4ull * uint64_t(stride));
         if (timer) stats.stepMillis.push_back(millis);
         return outIndex;
@@ -794,6 +855,7 @@ cpu::DeriveResult GpuDeriver::derive(const cpu::DeriveOptions& options, bool rea
     uint32_t seed = options.seed >= 0 ? uint32_t(options.seed) : m.species.front().seed;
     m.plants = std::max<uint32_t>(options.plants, 1);
     uint64_t budget = options.maxModules ? options.maxModules : cpu::defaultModuleBudget(m.stride);
+    m.carriesParticles = options.particles;
     // The plant tables are sized by the plant count, which may change between derivations.
     for (Stream& s : m.streams) {
         s.plantStart = vk::Buffer(m.ctx, bytes(m.plants + 1, 4), vk::MemoryUsage::DeviceLocal);
@@ -850,6 +912,15 @@ cpu::DeriveResult GpuDeriver::derive(const cpu::DeriveOptions& options, bool rea
         std::vector<uint32_t> table(initial.plantStart.begin(), initial.plantStart.end());
         vk::upload(m.ctx, s.plantStart, std::as_bytes(std::span<const uint32_t>(table)));
         s.count = static_cast<uint32_t>(initial.size());
+        if (options.particles) {
+            std::vector<shared::ParticleState> particles;
+            for (std::vector<shared::ParticleState>& plant :
+                 cpu::splitAxiomParticles(m.species, m.plants, options.initialParticles))
+                particles.insert(particles.end(), plant.begin(), plant.end());
+            m.ensureParticles(s);
+            if (!particles.empty())
+                vk::upload(m.ctx, s.particles, std::as_bytes(std::span<const shared::ParticleState>(particles)));
+        }
     }
 
     m.globals = vk::Buffer(m.ctx, bytes(uint64_t(m.plants) * std::max<uint32_t>(m.globalStride, 1), 8), vk::MemoryUsage::Upload);
@@ -963,6 +1034,8 @@ cpu::DeriveResult GpuDeriver::derive(const cpu::DeriveOptions& options, bool rea
             result.string.sym[i] = words[i] & shared::kSymbolMask;
             result.string.paramCount[i] = static_cast<uint8_t>(words[i] >> shared::kSymbolBits);
         }
+        if (options.particles)
+            result.string.particles = vk::downloadVector<shared::ParticleState>(m.ctx, final.particles, final.count);
         // Unused parameter slots are whatever the device left there; the CPU's are zero.
         for (size_t i = 0; i < words.size(); ++i)
             for (size_t k = result.string.paramCount[i]; k < size_t(m.stride); ++k)

@@ -34,6 +34,7 @@ std::string declarations(bool texelInputs) {
     b.add("writeonly", "float", "parOut");
     b.add("", "uint", "resume");      // per plant between dispatches: the next input module, the output position,
                                       // and a suspended decomposition's level + 1 (0: none) and first input module
+    b.add("writeonly", "uint", "originOut"); // each written module's origin: the input module it descends from
     return b.text();
 }
 
@@ -49,6 +50,7 @@ bool gAbort = false; // the stack is full or the plant outgrew the limit: stop, 
 // goes on in the next dispatch, so that no invocation loops long (see kFlagLoopCut).
 uint gWork = 0u;
 uint gSuspendedTop;  // the stack level a suspended decomposition goes on from
+uint gOrigin;        // the input module whose successor (or decomposition) is being written
 
 const uint kDecomposed = 0u;
 const uint kNotDecomposed = 1u; // an original module to which no production applies at depth 0
@@ -62,7 +64,10 @@ uint levelBase(uint level) { return gStack + level * kStackWidth; }
 
 void emitModule(uint pos, uint sym, uint count, uint origin) {
     if (gToStack) stackSym[gBase + pos] = sym | (count << kSymbolBits);
-    else if (pc.mode == 1u) symOut[gBase + pos] = sym | (count << kSymbolBits);
+    else if (pc.mode == 1u) {
+        symOut[gBase + pos] = sym | (count << kSymbolBits);
+        originOut[gBase + pos] = gOrigin;
+    }
 }
 void emitParam(uint pos, uint k, double value) {
     if (gToStack) stackPar[(gBase + pos) * pc.stride + k] = float(value);
@@ -81,13 +86,19 @@ void advanceOutput(inout uint next, uint n) {
 // a number of iterations in all (kFlagLoopCut) then cuts the counting pass whenever it would cut the writing pass,
 // and the host retries the step in smaller chunks before anything is written.
 void outputFromInput(uint i, inout uint next) {
-    if (pc.mode == 1u) symOut[next] = symInAt(i);
+    if (pc.mode == 1u) {
+        symOut[next] = symInAt(i);
+        originOut[next] = i;
+    }
     for (uint k = 0u; k < (symInAt(i) >> kSymbolBits); ++k)
         if (pc.mode == 1u) parOut[next * pc.stride + k] = parInAt(i * pc.stride + k);
     advanceOutput(next, 1u);
 }
 void outputFromStack(uint slot, inout uint next) {
-    if (pc.mode == 1u) symOut[next] = stackSym[slot];
+    if (pc.mode == 1u) {
+        symOut[next] = stackSym[slot];
+        originOut[next] = gOrigin;
+    }
     for (uint k = 0u; k < (stackSym[slot] >> kSymbolBits); ++k)
         if (pc.mode == 1u) parOut[next * pc.stride + k] = stackPar[slot * pc.stride + k];
     advanceOutput(next, 1u);
@@ -247,6 +258,7 @@ std::string deriveFunction(const ir::Grammar& g, size_t sp, const FrameLayout& f
         // A decomposition suspended in an earlier dispatch goes on first: its stack holds what the input modules
         // from pendingFirst up to i became.
         s += fmt::format("    if (pending != 0u) {{\n"
+                         "        gOrigin = pendingFirst;\n"
                          "        uint top = pending - 1u;\n"
                          "        pending = 0u;\n"
                          "        if (s{}Decompose(plant, pBegin, pEnd, int(pendingFirst) - 1, i, false, top, next) == "
@@ -259,6 +271,7 @@ std::string deriveFunction(const ir::Grammar& g, size_t sp, const FrameLayout& f
     }
     s += "    while (i < pEnd && !gAbort && gWork < pc.chunk) {\n"
          "        ++gWork;\n"
+         "        gOrigin = i;\n"
          "        uint sym = symOf(i), count = countOf(i);\n"
          "        uint key = i - pBegin;\n"
          "        int ctxLeft = int(i) - 1;\n"

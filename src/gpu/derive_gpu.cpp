@@ -1052,7 +1052,8 @@ DeviceModules GpuDeriver::lastString() const {
     const Impl& m = *impl_;
     if (m.lastStream < 0) throw std::logic_error("lastString() before derive()");
     const Stream& s = m.streams[m.lastStream];
-    return DeviceModules{&s.sym, &s.par, &s.plantStart, s.count, m.plants, static_cast<uint32_t>(m.stride)};
+    return DeviceModules{&s.sym,   &s.par, &s.plantStart, s.count, m.plants, static_cast<uint32_t>(m.stride),
+                         m.carriesParticles ? &s.particles : nullptr};
 }
 
 } // namespace simeco::gpu

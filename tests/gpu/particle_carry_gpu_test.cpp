@@ -18,6 +18,7 @@
 #include "ir/species.h"
 #include "lang/eco_parser.h"
 #include "lang/load_grammar.h"
+#include "vk/buffer.h"
 
 namespace simeco::test {
 namespace {
@@ -117,6 +118,23 @@ TEST_F(ParticleCarryGpuTest, SpeciesThatStopAtDifferentSteps) {
     cpu::DeriveOptions options;
     options.plants = 5;
     expectCarried(species, options, "fig1.24d and fig1.31a");
+}
+
+// The stream the turtle kernels read (lastString) holds the states the derivation returned, or none.
+TEST_F(ParticleCarryGpuTest, TheDeviceStringHoldsTheStates) {
+    ir::Grammar g = testing::grammarFromText(testing::lsystem("AB", "A --> AB[A]", 4));
+    gpu::GpuDeriver deriver(context(), g);
+    cpu::DeriveOptions options;
+    options.particles = true;
+    options.initialParticles = axiomStates({g}, 1);
+    cpu::DeriveResult carried = deriver.derive(options);
+    gpu::DeviceModules modules = deriver.lastString();
+    ASSERT_NE(modules.particles, nullptr);
+    ASSERT_EQ(modules.count, carried.string.size());
+    EXPECT_EQ(vk::downloadVector<shared::ParticleState>(context(), *modules.particles, modules.count),
+              carried.string.particles);
+    deriver.derive(cpu::DeriveOptions{});
+    EXPECT_EQ(deriver.lastString().particles, nullptr);
 }
 
 TEST_F(ParticleCarryGpuTest, ExampleGrammars) {

@@ -494,14 +494,17 @@ std::vector<std::vector<shared::ParticleState>> splitAxiomParticles(const std::v
     std::vector<std::vector<shared::ParticleState>> perPlant(plants);
     size_t total = 0;
     for (uint32_t plant = 0; plant < plants; ++plant) {
-        size_t length = species[ir::speciesOfPlant(plant, species.size())].axiom.size();
-        perPlant[plant].resize(length);
-        if (!initial.empty() && total + length <= initial.size())
-            std::copy(initial.begin() + total, initial.begin() + total + length, perPlant[plant].begin());
-        total += length;
+        perPlant[plant].resize(species[ir::speciesOfPlant(plant, species.size())].axiom.size());
+        total += perPlant[plant].size();
     }
-    if (!initial.empty() && initial.size() != total)
+    if (initial.empty()) return perPlant;
+    if (initial.size() != total)
         throw std::invalid_argument(fmt::format("{} initial particle states for {} axiom modules", initial.size(), total));
+    auto next = initial.begin();
+    for (std::vector<shared::ParticleState>& states : perPlant) {
+        std::copy_n(next, states.size(), states.begin());
+        next += static_cast<std::ptrdiff_t>(states.size());
+    }
     return perPlant;
 }
 

@@ -1,5 +1,5 @@
-// After a step with decomposition, or the homomorphism: each module of the new stream takes the particle state
-// of the module of the rewritten string it descends from (its origin, which the passes carried along).
+// After a step with decomposition, the homomorphism or a sequential step: each module of the new stream takes the
+// particle state of the module of the rewritten string it descends from (its origin, which those passes write).
 #version 450
 #extension GL_GOOGLE_include_directive : require
 #include "shared/derive_layout.h"

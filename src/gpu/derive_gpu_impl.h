@@ -1,0 +1,227 @@
+// The GPU deriver's state, shared by the files that implement it: its kernels and buffers
+// (derive_gpu_resources.cpp), the parallel passes (derive_gpu_passes.cpp), the sequential strategy
+// (derive_gpu_sequential.cpp) and the derivation itself (derive_gpu.cpp). Private to src/gpu/.
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <functional>
+#include <initializer_list>
+#include <map>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+#include "compute/shared/derive_layout.h"
+#include "gpu/bracket_tree.h"
+#include "gpu/derive_codegen.h"
+#include "gpu/derive_gpu.h"
+#include "gpu/scan.h"
+#include "ir/grammar.h"
+#include "ir/source_loc.h"
+#include "vk/buffer.h"
+#include "vk/context.h"
+#include "vk/pipeline.h"
+#include "vk/timestamps.h"
+
+namespace simeco::gpu {
+
+// A module stream on the device: symbols, parameters, the plant table, and for decomposition the position
+// each module came from in the string being rewritten and whether the next depth examines it.
+struct Stream {
+    vk::Buffer sym, par, plantStart, origin, live;
+    vk::Buffer particles; // kParticleStateFloats per module, while the derivation carries particle state
+    uint64_t capacity = 0;
+    uint32_t count = 0;
+};
+
+inline VkDeviceSize bytes(uint64_t count, uint64_t size) { return std::max<VkDeviceSize>(count * size, 4); }
+
+inline constexpr uint32_t kGreedyChunk = 256; // as greedy_chunks.glsl
+inline constexpr uint32_t kGreedyBlock = 256; // chunks per block of greedy_scan.comp
+
+// The driver ended an invocation's loops early (kFlagLoopCut) where the work cannot be split any finer.
+ir::LimitError loopsCutError(const std::string& what);
+
+struct GpuDeriver::Impl {
+    const vk::Context& ctx;
+    std::vector<ir::Grammar> species;
+    GpuStrategy strategy;
+    int stride;
+    bool texelInputs; // the generated kernels read their inputs through uniform texel buffers (GpuLoads)
+    int lastStream = -1; // the stream the last derive() ended in
+    uint32_t globalStride = 0, arrayStride = 0; // globals and array elements per plant (the most of any species)
+    GeneratedKernels kernels;
+    std::optional<vk::ComputePipeline> decompositionMatch, decompositionWrite, sequential;
+    // The step's match and write passes, specialised for what the step needs (stepMatch(), stepWrite()): to copy
+    // the modules of frozen plants (kFrozenPlants) and for a stream of one plant (kSinglePlant). Each variant is
+    // made the first time a step needs it: drivers compile a pipeline when it is made or first run, and a
+    // derivation needs one or two of them.
+    std::vector<uint32_t> matchSpirv, writeSpirv;
+    std::map<std::pair<bool, bool>, vk::ComputePipeline> matchVariants; // by (frozen plants, single plant)
+    std::map<bool, vk::ComputePipeline> writeVariants;                  // by single plant
+    bool anyFrozen = false; // some plant is frozen in the step being derived
+    // The homomorphism, generated as the decomposition of grammars whose decomposition is their homomorphism;
+    // empty when no species has one, or when its productions need the host (homomorphismHostReason).
+    GeneratedKernels homomorphismKernels;
+    std::optional<vk::ComputePipeline> homomorphismMatch, homomorphismWrite;
+    std::optional<std::string> homomorphismHostReason;
+    // The error sites of the kernels being run (the homomorphism's while it runs).
+    const std::vector<ErrorSite>* activeErrors = nullptr;
+    vk::ComputePipeline plantStarts, plantHintsKernel, cutApply;
+    std::optional<vk::ComputePipeline> plantStartsTiled; // with a fused scan, specialised for its match words
+    vk::ComputePipeline greedyReduce, greedyScan, greedyMark, homomorphismStart;
+    // The particle state's moves, made the first time a derivation carries it: by the step's positions (with a
+    // fused scan, specialised for its match words), or from each module's origin.
+    std::optional<vk::ComputePipeline> particleScatter, particleGather;
+    bool carriesParticles = false; // the derivation running carries particle state (DeriveOptions::particles)
+    GpuScan scan;
+    BracketTree brackets; // after scan, which it uses
+    vk::Buffer contextSkip, funcTables, errors, readback;
+    vk::Buffer globals, arrays, plantFrozen;
+    vk::Buffer counts, choices, drawStarts, offsets, cutDelta, cutBefore, examined;
+    vk::Buffer chunkFunctions, chunkEntries; // the greedy walk over predecessors of several modules
+    vk::Buffer blockFunctions, blockEntries; // ... and over blocks of chunks
+    vk::Buffer plantHints; // of the stream the running kernels find plants in (recordPlantHints)
+    vk::Buffer tileSums, tileOffsets; // a fused scan's sums of counts per subgroup, and their scan
+    uint32_t tileSize = 1;            // a fused scan's tile: the device's subgroup size
+    // The sequential strategy: persistent locals, copies of the state for the counting pass, the decomposition
+    // stack, and each plant's module count.
+    vk::Buffer frames, framesCopy, globalsCopy, arraysCopy, stackSym, stackPar, stackState, plantCounts, countsReadback;
+    vk::Buffer resume;
+    uint32_t stackLevels = 0;
+    // Work per plant and dispatch (input modules and decomposition steps): small enough that no invocation loops
+    // long (kFlagLoopCut).
+    uint32_t chunk = 256;
+    std::vector<uint32_t> hostPlantTable; // the current stream's plant table, kept on the host
+    uint32_t lastFlags = 0;      // errors[1] of the last submit
+    // The stream whose bracket partners brackets.partners() holds, or -1; a step whose write pass carries them
+    // (GeneratedKernels::carriesPartners) leaves them for the next, when every plant's string is balanced.
+    int partnersStream = -1;
+    bool axiomsBalanced = false;
+    uint32_t bracketTrees = 0; // built since the derivation started
+    bool lastUnfinished = false; // errors[2] of the last submit: the sequential kernel's plants need more dispatches
+    uint64_t scratchCapacity = 0;
+    Stream streams[3];
+    uint32_t plants = 1;
+    double compileSeconds = 0;
+
+    // ---- kernels and buffers (derive_gpu_resources.cpp) ----
+
+    Impl(const vk::Context& c, std::vector<ir::Grammar> grammars, GpuStrategy requested, GpuLoads loads);
+
+    // The homomorphism's kernels: the decomposition passes of copies of the species whose decomposition is
+    // their homomorphism (one pass per depth, contexts in the derived string, no cuts).
+    template <typename Build> void buildHomomorphism(Build& build);
+
+    // The most bytes a buffer of the derivation may hold: what a kernel can bind, as storage or, with texel
+    // inputs, as a texel buffer of 4-byte texels.
+    uint64_t bufferLimit() const;
+    void checkRange(uint64_t count, uint64_t size, const char* what) const;
+    void ensureStream(Stream& s, uint64_t count);
+    void ensureScratch(uint64_t count);
+    uint64_t tilesFor(uint64_t count) const { return (count + tileSize - 1) / tileSize; }
+
+    // Room for the particle state of s's modules, while the derivation carries it.
+    void ensureParticles(Stream& s);
+
+    // A stream of one plant is that plant: the variants specialised for it find no plants.
+    bool singlePlant(bool findsPlants) const { return plants == 1 && findsPlants; }
+    const vk::ComputePipeline& stepMatch();
+    const vk::ComputePipeline& stepWrite();
+
+    // ---- the parallel passes (derive_gpu_passes.cpp) ----
+
+    shared::DerivePush push(uint32_t count, uint32_t step, uint32_t seed, uint32_t pass, uint32_t oldCount, uint32_t depth) const;
+
+    // Submits `record`, waits, and returns the total the recording copied into the readback buffer; throws
+    // the located error a kernel reported, and kFlagLoopCut unless the caller retries (`retriesCutLoops`).
+    uint32_t submit(const std::function<void(VkCommandBuffer)>& record, vk::Timestamps* timer, double& gpuMillis,
+                    bool retriesCutLoops = false);
+    static void checkBudget(uint64_t total, uint64_t budget, uint32_t stepIndex);
+    void copyTotal(VkCommandBuffer cmd);
+
+    // Which modules start a rewrite when predecessors of several modules consume their neighbours.
+    void recordGreedyWalk(VkCommandBuffer cmd, const Stream& in);
+
+    // The bindings every generated derivation kernel starts with (see declarations() in derive_codegen.cpp):
+    // the string being rewritten, its brackets, the plants' globals and arrays, function tables, the context
+    // filter and the error word; `rest` follows them.
+    // `parameterVectors`: the kernel reads each module's parameters as one vector too, the last binding
+    // (GeneratedKernels::matchReadsParameterVectors, writeReadsParameterVectors).
+    void dispatchDerive(VkCommandBuffer cmd, const vk::ComputePipeline& kernel, const Stream& strings,
+                        std::initializer_list<vk::BufferRange> rest, const shared::DerivePush& p, uint32_t n,
+                        bool parameterVectors = false);
+
+    // The bracket tree and partners of streams[index], unless its partners are already there.
+    void recordBrackets(VkCommandBuffer cmd, int index);
+
+    // Called before a pass writes streams[index]: partners describing it no longer do.
+    void overwriting(int index);
+
+    // Each plant's first module in the stream written with `offsets`.
+    void recordPlantStarts(VkCommandBuffer cmd, const Stream& from, const Stream& to, uint32_t n, uint32_t total);
+
+    // After a step without decomposition: each module of streams[from] passes its particle state to its successor
+    // in streams[to], at the positions this step's scan gave it.
+    void scatterParticles(int from, int to, vk::Timestamps* timer, double& millis);
+
+    // Each module of streams[to] takes the particle state of the module of streams[from] it descends from (its
+    // origin): after decomposition, the homomorphism or a sequential step.
+    void gatherParticles(int from, int to, vk::Timestamps* timer, double& millis);
+
+    // The hints the next derivation kernels find plants of `s` with; they stay valid until the next call.
+    void recordPlantHints(VkCommandBuffer cmd, const Stream& s);
+    vk::BufferRange plantTable(const Stream& s) const { return vk::BufferRange(s.plantStart, 0, bytes(plants + 1, 4)); }
+
+    // One derivation step from streams[cur] into a new stream; returns its index.
+    int step(int cur, uint32_t stepIndex, uint32_t seed, uint64_t budget, vk::Timestamps* timer, GpuDeriveStats& stats);
+
+    // One step's match, scan and write. With a fused scan (GeneratedKernels::fusedScan) match also sums each
+    // subgroup's counts and the host scans only those sums; otherwise the counts, which cuts and the greedy walk
+    // change after the match, get a scan of their own.
+    void matchScanWrite(int cur, int outIndex, uint32_t stepIndex, uint32_t seed, uint64_t budget,
+                        vk::Timestamps* timer, double& millis);
+
+    // Recursive rewriting by depth: the decomposition's kernels, or the homomorphism's.
+    struct RecursivePasses {
+        const vk::ComputePipeline* match;
+        const vk::ComputePipeline* write;
+        int maxDepth;
+    };
+    RecursivePasses decompositionPasses() const;
+
+    // Decomposition depth by depth, from streams[x]; the string being rewritten (contexts) is streams[old].
+    int decompose(int old, int x, uint32_t stepIndex, uint32_t seed, uint64_t budget, vk::Timestamps* timer,
+                  double& millis, GpuDeriveStats& stats, const RecursivePasses& passes);
+
+    // The homomorphism of the derived string streams[cur], into another stream; returns its index. Every
+    // module is examined at depth 0 with its contexts around itself, and the passes draw from step 0's.
+    int applyHomomorphism(int cur, uint32_t seed, uint64_t budget, vk::Timestamps* timer, GpuDeriveStats& stats);
+
+    // ---- the sequential strategy (derive_gpu_sequential.cpp) ----
+
+    // The stack levels the deepest decomposition can use (one level per depth, and the last one's modules).
+    uint32_t deepestStack() const;
+
+    // Sizes the decomposition stack for `levels` levels per plant.
+    void ensureStack(uint32_t levels);
+
+    // Buffers of a sequential derivation of `plants` plants; the locals start at zero as cpfg's do.
+    void prepareSequential();
+
+    // Dispatches `first` .. `first + count - 1` of a pass of the sequential kernel. The last one tells in errors[2]
+    // whether a plant has work left.
+    void dispatchSequential(VkCommandBuffer cmd, uint32_t mode, const Stream& in, const Stream& out,
+                            const shared::DerivePush& base, uint32_t first, uint32_t count);
+
+    // One step with one invocation per plant: count (growing the stack when a plant outgrows it, splitting the work
+    // finer when the driver cuts loops), then write in the same dispatches.
+    int stepSequential(int cur, uint32_t stepIndex, uint32_t seed, uint64_t budget, vk::Timestamps* timer,
+                       GpuDeriveStats& stats);
+};
+
+} // namespace simeco::gpu

@@ -7,7 +7,10 @@
 #include <fmt/format.h>
 
 #include "gpu/curve_codegen.h"
+#include "gpu/context_codegen.h"
+#include "gpu/kernel_traits.h"
 #include "gpu/production_codegen.h"
+#include "gpu/successor_slots.h"
 
 namespace simeco::gpu {
 

@@ -9,7 +9,7 @@
 
 #include "compute/shared/particle_layout.h"
 #include "gpu/glsl_compiler.h"
-#include "gpu/production_codegen.h"
+#include "gpu/context_codegen.h"
 
 namespace simeco::gpu {
 

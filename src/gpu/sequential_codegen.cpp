@@ -10,6 +10,7 @@
 
 #include "gpu/curve_codegen.h"
 #include "gpu/derive_codegen.h"
+#include "gpu/kernel_traits.h"
 #include "gpu/production_codegen.h"
 
 namespace simeco::gpu {

@@ -6,8 +6,8 @@
 
 #include <fmt/format.h>
 
-#include "gpu/curve_codegen.h"
 #include "gpu/context_codegen.h"
+#include "gpu/curve_codegen.h"
 #include "gpu/kernel_traits.h"
 #include "gpu/production_codegen.h"
 #include "gpu/successor_slots.h"

@@ -8,8 +8,8 @@
 #include <fmt/format.h>
 
 #include "compute/shared/particle_layout.h"
-#include "gpu/glsl_compiler.h"
 #include "gpu/context_codegen.h"
+#include "gpu/glsl_compiler.h"
 
 namespace simeco::gpu {
 

@@ -135,7 +135,8 @@ struct GpuDeriver::Impl {
 
     // ---- the parallel passes (derive_gpu_passes.cpp) ----
 
-    shared::DerivePush push(uint32_t count, uint32_t step, uint32_t seed, uint32_t pass, uint32_t oldCount, uint32_t depth) const;
+    shared::DerivePush push(uint32_t count, uint32_t step, uint32_t seed, uint32_t pass, uint32_t oldCount,
+                            uint32_t depth) const;
 
     // Submits `record`, waits, and returns the total the recording copied into the readback buffer; throws
     // the located error a kernel reported, and kFlagLoopCut unless the caller retries (`retriesCutLoops`).

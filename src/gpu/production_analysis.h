@@ -20,7 +20,8 @@ bool firstLeftWalkPrefetched(const ir::Grammar& g, const ir::Production& p);
 // statements, condition (unless `withCondition` is false) and successor parameters, nested blocks and
 // subexpressions included.
 template <typename OnExpr, typename OnStatement>
-void walkProductionCode(const ir::Production& p, OnExpr&& onExpr, OnStatement&& onStatement, bool withCondition = true) {
+void walkProductionCode(const ir::Production& p, OnExpr&& onExpr, OnStatement&& onStatement,
+                        bool withCondition = true) {
     auto expr = [&](const ir::Expr& e, auto& self) -> void {
         onExpr(e);
         for (const ir::Expr& a : e.args) self(a, self);

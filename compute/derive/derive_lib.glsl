@@ -140,6 +140,12 @@ int firstLeft = 0;
 bool firstRightFound = false, firstRightBranchFound = false, firstLeftFound = false;
 uint firstRightWord = 0u, firstRightBranchWord = 0u, firstLeftWord = 0u;
 
+// The alternative of a production with several (prob) that a parallel pass applied, which a match pass records
+// with its choice, and the one a writing pass is given to apply in mode 3 (production_codegen.h) instead of
+// drawing it again.
+uint chosenAlternative = 0u;
+uint givenAlternative = 0u;
+
 // The first evaluation error of the pass wins; the host turns the code into a located message.
 void reportError(uint code) { atomicCompSwap(errors[0], 0u, code + 1u); }
 

@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "compute/shared/derive_layout.h"
 #include "gpu/context_codegen.h"
 #include "gpu/curve_codegen.h"
 #include "gpu/kernel_traits.h"
@@ -126,11 +127,13 @@ std::string selection(const ir::RuleSet& rules, size_t species, RuleKind kind, b
     return code;
 }
 
-std::string writeDispatch(const ir::RuleSet& rules, size_t species, RuleKind kind) {
+// `mode`: 2, or 3 where the write pass is given the alternatives (production_codegen.h).
+std::string writeDispatch(const ir::RuleSet& rules, size_t species, RuleKind kind, uint32_t mode = 2) {
     std::string code = "    switch (choice) {\n";
     for (size_t pi = 0; pi < rules.productions.size(); ++pi)
-        code += fmt::format("    case {}u: {}(i, plant, key, pBegin, pEnd, ctxLeft, ctxRight, draw, 2u, produced); break;\n",
-                            pi + 1, functionName(species, kind, pi));
+        code += fmt::format("    case {}u: {}(i, plant, key, pBegin, pEnd, ctxLeft, ctxRight, draw, {}u, produced); "
+                            "break;\n",
+                            pi + 1, functionName(species, kind, pi), mode);
     code += "    }\n";
     return code;
 }
@@ -141,10 +144,14 @@ std::string writeDispatch(const ir::RuleSet& rules, size_t species, RuleKind kin
 // `recordsDraws`: the write pass draws, from where the chosen production started.
 // `packsChoice`: the step's match with a fused scan, whose main() packs the choice into the module's match word
 // (its predecessors are one module long, so the choice carries no length).
-std::string recordChoice(bool returnsCount = false, bool recordsDraws = true, bool packsChoice = false) {
+// `givesAlternative`: the choice carries the drawn alternative above the production (kProductionBits).
+std::string recordChoice(bool returnsCount = false, bool recordsDraws = true, bool packsChoice = false,
+                         bool givesAlternative = false) {
+    std::string choice = givesAlternative ? "chosen | (chosenAlternative << kProductionBits)" : "chosen";
     return std::string("    if (chosen == 0u) produced = 1u;\n") + (returnsCount ? "" : "    counts[i] = produced;\n") +
-           (packsChoice ? "    matchedChoice = chosen;\n"
-                        : "    choices[i] = chosen | ((length - 1u) << 24u); // the predecessor's length for the greedy walk\n") +
+           (packsChoice ? "    matchedChoice = " + choice + ";\n"
+                        : "    choices[i] = " + choice +
+                              " | ((length - 1u) << 24u); // the predecessor's length for the greedy walk\n") +
            (recordsDraws ? "    drawStarts[i] = start;\n" : "") + (returnsCount ? "    return produced;\n}\n" : "}\n");
 }
 
@@ -248,11 +255,34 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species, 
     // Cuts and predecessors of several modules change counts after the match, so they keep the separate scan.
     // The counts before a module and its choice share one word (choiceBits): one store in match, one load in
     // write. The counts before a module stay below the largest subgroup (128) times the longest successor.
-    size_t productions = 0;
-    for (const ir::Grammar& g : species) productions = std::max(productions, g.productions.productions.size());
-    while (k.choiceBits < 32 && (size_t{1} << k.choiceBits) <= productions) ++k.choiceBits;
+    // A choice is the production (index + 1) and, above it, the alternative drawn when the write is given it.
+    size_t productions = 0, mostAlternatives = 1;
+    for (const ir::Grammar& g : species) {
+        productions = std::max(productions, g.productions.productions.size());
+        for (const ir::Production& p : g.productions.productions)
+            mostAlternatives = std::max(mostAlternatives, p.alternatives.size());
+    }
+    uint32_t productionBits = 1, alternativeBits = 0;
+    while (productionBits < 32 && (size_t{1} << productionBits) <= productions) ++productionBits;
+    while (alternativeBits < 32 && (size_t{1} << alternativeBits) < mostAlternatives) ++alternativeBits;
     uint64_t mostBefore = 128ull * stepSlots.params.size();
-    k.fusedScan = !k.mayCut && k.longestPredecessor <= 1 && k.choiceBits < 32 && mostBefore < (1ull << (32 - k.choiceBits));
+    auto fusesScan = [&](uint32_t choiceBits) {
+        return !k.mayCut && k.longestPredecessor <= 1 && choiceBits < 32 && mostBefore < (1ull << (32 - choiceBits));
+    };
+    // The alternative a production's match drew goes to the write pass with the choice, above the production's
+    // bits, when the productions' code draws nothing else: the write pass then draws nothing, so it needs no
+    // draw starts and, unless its productions read more of the plant, no plant. Otherwise it draws the
+    // alternative again from the match's draw start, numbering the stream's draws as the CPU reference does.
+    codegen::PlantInputs writeInputs = codegen::plantInputs(species, RuleKind::Step, true, true);
+    bool givesAlternatives = alternativeBits > 0 && !writeInputs.random &&
+                             productionBits + alternativeBits <= shared::kSymbolBits &&
+                             fusesScan(productionBits + alternativeBits) == fusesScan(productionBits);
+    if (!givesAlternatives) {
+        alternativeBits = 0;
+        writeInputs = codegen::plantInputs(species, RuleKind::Step, true, false);
+    }
+    k.choiceBits = productionBits + alternativeBits;
+    k.fusedScan = fusesScan(k.choiceBits);
     // Brackets a successor opens and closes are partners there (emitPartners); a copied `[` finds where its
     // partner went (outputPosition). Cuts and decomposition change brackets after the write.
     k.carriesPartners = k.needsBrackets && k.fusedScan && !k.hasDecomposition &&
@@ -260,10 +290,10 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species, 
     codegen::PlantInputs matchInputs = codegen::plantInputs(species, RuleKind::Step, false);
     matchInputs.bounds = matchInputs.bounds || k.mayCut; // a cut ends where its branch does, within the plant
     matchInputs.plant = matchInputs.plant || matchInputs.bounds;
-    codegen::PlantInputs writeInputs = codegen::plantInputs(species, RuleKind::Step, true);
     k.matchFindsPlants = matchInputs.plant;
     k.writeFindsPlants = writeInputs.plant;
-    const std::string choiceBits = fmt::format("const uint kChoiceBits = {}u;\n", k.choiceBits);
+    std::string choiceBits = fmt::format("const uint kChoiceBits = {}u;\n", k.choiceBits);
+    if (givesAlternatives) choiceBits += fmt::format("const uint kProductionBits = {}u;\n", productionBits);
     // A module's first `count` parameters, loaded once (`load`) for all productions and the copy, which read them
     // through ownParam(i, k) (`declare`): lavapipe runs every production's code, and a load in each is a gather each.
     // `vector`: all of them in one load from parVec, a vector of paramVector floats per module.
@@ -301,7 +331,8 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species, 
         s += own.declare + findPlant("plantStart", "plantOf");
         s += codegen::contextPrefetchCode(species, RuleKind::Step, false) + stepFunctions;
         s += stepSpecializations(true);
-        if (k.fusedScan) s += choiceBits + "uint matchedChoice = kChoiceCopy; // packed with the counts by main()\n";
+        if (k.fusedScan || givesAlternatives) s += choiceBits;
+        if (k.fusedScan) s += "uint matchedChoice = kChoiceCopy; // packed with the counts by main()\n";
         s += "uint matchModule(uint i) {\n" + stepPlantLookup(matchInputs, true, k.fusedScan);
         s += "    uint sym = symOf(i), count = countOf(i);\n" + own.load +
              "    uint key = i - pBegin;\n"
@@ -317,7 +348,7 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species, 
                  "        atomicAdd(cutDelta[endOfBranch(i + 1u, pBegin, pEnd)], 0xFFFFFFFFu);\n"
                  "    }\n";
         }
-        s += recordChoice(true, matchInputs.random, k.fusedScan);
+        s += recordChoice(true, writeInputs.random, k.fusedScan, givesAlternatives);
         // The subgroup's last invocation holds the tile's sum in its inclusive prefix: one subgroup operation,
         // which lavapipe runs as a loop over the invocations, where an exclusive prefix and a sum are two.
         s += mainCalling(k.fusedScan ? "    uint produced = i < pc.count ? matchModule(i) : 0u;\n"
@@ -341,7 +372,7 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species, 
         std::string copyOwn;
         for (int a = 0; a < copiedParams; ++a) copyOwn += fmt::format("    slotParam0_{0} = float(ownParam{0});\n", a);
         s += own.declare + findPlant("plantStart", "plantOf");
-        if (k.fusedScan) s += choiceBits;
+        if (k.fusedScan || givesAlternatives) s += choiceBits;
         if (k.carriesPartners) // module j's first position in the written string
             s += "uint outputPosition(uint j) { return tileOffsetsAt(j / gl_SubgroupSize) + (matchWordsAt(j) >> kChoiceBits); "
                  "}\n\n";
@@ -351,8 +382,11 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species, 
         // pay for the stores of all productions otherwise.
         s += stepSpecializations(false) + "void writeModule(uint i, uint pos, uint choice) {\n";
         s += "    if (choice == kChoiceDropped) return;\n"
-             "    choice &= kSymbolMask;\n"
-             "    uint origin = i;\n"
+             "    choice &= kSymbolMask;\n";
+        if (givesAlternatives)
+            s += "    givenAlternative = choice >> kProductionBits;\n"
+                 "    choice &= (1u << kProductionBits) - 1u;\n";
+        s += "    uint origin = i;\n"
              "    uint word = symInAt(i);\n" +
              own.load +
              "    uint produced = 1u;\n"
@@ -371,7 +405,9 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species, 
              "    uint ctxRight = i + 1u;\n"
              "    prefetchContexts(i, species, word & kSymbolMask, ctxLeft, ctxRight, pBegin, pEnd);\n";
         s += writeInputs.random ? "    uint draw = drawStartsAt(i);\n" : "    uint draw = 1u; // as match left it\n";
-        s += codegen::perSpecies(species.size(), [&](size_t sp) { return writeDispatch(species[sp].productions, sp, RuleKind::Step); });
+        s += codegen::perSpecies(species.size(), [&](size_t sp) {
+            return writeDispatch(species[sp].productions, sp, RuleKind::Step, givesAlternatives ? 3 : 2);
+        });
         s += "    }\n"
              "    storeSlots(pos, produced, origin);\n"
              "}\n";

@@ -38,7 +38,8 @@ struct GeneratedKernels {
     uint32_t longestPredecessor = 1; // > 1: the greedy walk decides which modules start a rewrite
     // The step's scan is fused into match and write (see generateDeriveKernels): match also writes each
     // workgroup's sum of counts, and write takes the scanned sums and counts instead of offsets. Match then
-    // stores one word per module, the counts before it in its subgroup above its choice's choiceBits bits.
+    // stores one word per module, the counts before it in its subgroup above its choice's choiceBits bits (the
+    // production and, where the write pass is given it, the alternative the match drew).
     bool fusedScan = false;
     uint32_t choiceBits = 1;
     // The step's write pass also writes the partners of the brackets of the string it writes

@@ -44,7 +44,7 @@ bool mayLoopLong(const std::vector<ir::Grammar>& species, RuleKind kind, bool wr
     return unbounded || iterations > kMostIterations;
 }
 
-PlantInputs plantInputs(const std::vector<ir::Grammar>& species, RuleKind kind, bool writing) {
+PlantInputs plantInputs(const std::vector<ir::Grammar>& species, RuleKind kind, bool writing, bool alternativesGiven) {
     PlantInputs in;
     in.plant = species.size() > 1; // a plant's species is its index modulo their number
     auto scanExpr = [&](const ir::Expr& e) {
@@ -61,13 +61,13 @@ PlantInputs plantInputs(const std::vector<ir::Grammar>& species, RuleKind kind, 
     };
     for (const ir::Grammar& g : species) {
         const ir::RuleSet& rules = kind == RuleKind::Step ? g.productions : g.decomposition;
-        if (isStochastic(rules)) in.random = true;
+        if (isStochastic(rules) && !writing) in.random = true;
         for (const ir::Production& p : rules.productions) {
             // A writing pass applies what the match chose: it walks only the contexts whose parameters it reads
             // (writingWalks), and the further modules of a predecessor are known to lie within the plant.
             bool walks = writing ? writingWalks(p, p.left) || writingWalks(p, p.right) : !p.left.empty() || !p.right.empty();
             if (walks || (!writing && p.strict.size() > 1)) in.bounds = true;
-            if (p.alternatives.size() > 1) in.random = true;
+            if (p.alternatives.size() > 1 && !(writing && alternativesGiven)) in.random = true;
             walkProductionCode(p, scanExpr, scanStatement);
         }
     }

@@ -22,13 +22,16 @@ bool mayLoopLong(const std::vector<ir::Grammar>& species, RuleKind kind, bool wr
 
 // What the productions of the `kind` rules of these species read of their plant, besides their modules, in a
 // matching pass or a `writing` one: a kernel whose productions need none of it skips finding the plant, which
-// costs more than the rewriting of many grammars.
+// costs more than the rewriting of many grammars. A writing pass applies the production the match chose, drawing
+// again only what the production's code draws, and the alternative unless the match passes it on
+// (`alternativesGiven`).
 struct PlantInputs {
     bool plant = false;  // the plant's index: several species, random draws, globals, arrays or stop()
     bool bounds = false; // where the plant's string begins and ends: contexts, predecessors of several modules
     bool random = false; // draws from the plant's random stream (which numbers them by module within the plant)
 };
-PlantInputs plantInputs(const std::vector<ir::Grammar>& species, RuleKind kind, bool writing);
+PlantInputs plantInputs(const std::vector<ir::Grammar>& species, RuleKind kind, bool writing,
+                        bool alternativesGiven = false);
 
 // `double funcValue<species>(id, x, errorSite)`: the species' func() tables, appended to `tables`.
 std::string functionTableCode(const ir::Grammar& g, size_t species, std::vector<double>& tables);

@@ -453,17 +453,24 @@ void emitMatch(BodyEmitter& body, const ir::Grammar& g, size_t species, const ir
     }
 }
 
-// The after-statements and the draw of an alternative; sets outCount.
-void emitChoice(BodyEmitter& body, const ir::Production& p) {
+// The after-statements and the draw of an alternative; sets outCount. A `modal` function leaves the alternative
+// in chosenAlternative and, in mode 3, applies givenAlternative instead of drawing (derive_lib.glsl).
+void emitChoice(BodyEmitter& body, const ir::Production& p, bool modal) {
     body.statements(p.after);
     size_t alternatives = p.alternatives.size();
     body.line(fmt::format("uint alt = {}u;", alternatives - 1));
+    bool mayBeGiven = modal && alternatives > 1;
+    if (mayBeGiven) {
+        body.line("bool drawsAlternative = mode != 3u;");
+        body.line("if (!drawsAlternative) alt = givenAlternative;");
+    }
     for (size_t k = 0; k + 1 < alternatives; ++k) {
-        body.open("if (alt == " + std::to_string(alternatives - 1) + "u) {");
+        body.open(fmt::format("if ({}alt == {}u) {{", mayBeGiven ? "drawsAlternative && " : "", alternatives - 1));
         body.line("double u = double(randomUnit(pc.seed, plant, currentPass(), key, draw)); ++draw;");
         body.line(fmt::format("if (u < {}) alt = {}u;", literal(static_cast<double>(p.alternatives[k].probability)), k));
         body.close();
     }
+    if (modal) body.line("chosenAlternative = alt;");
     for (size_t k = 0; k < alternatives; ++k)
         body.line(fmt::format("if (alt == {}u) outCount = {}u;", k, p.alternatives[k].modules.size()));
 }
@@ -538,7 +545,7 @@ void emitProduction(const ir::Grammar& g, size_t species, const ir::Production& 
         for (int slot = 0; slot < p.frameSize; ++slot) body.line(fmt::format("double v{} = 0.0LF;", slot));
         emitMatch(body, g, species, p, kind, true);
         body.line("if (mode == 0u) return true;");
-        emitChoice(body, p);
+        emitChoice(body, p, true);
         body.line("if (mode == 1u) return true;");
         emitSuccessor(body, p, true);
         body.line("return true;");
@@ -556,7 +563,7 @@ void emitProduction(const ir::Grammar& g, size_t species, const ir::Production& 
     body.line("outCount = 0u;");
     body.line(bases);
     body.line("const uint outPos = 0u, origin = 0u;");
-    emitChoice(body, p);
+    emitChoice(body, p, false);
     emitSuccessor(body, p, false);
     out += "}\n\n";
     out += frameWrapper(p, "void", name + "Produce", produceParameters, "plant, key, draw, outCount");

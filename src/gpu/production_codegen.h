@@ -3,7 +3,7 @@
 // A production becomes straight-line code that walks its contexts, binds its parameters, runs its statements
 // and condition and writes its successor: into the successor slots (SuccessorSlots), which the kernel stores,
 // or through emitModule/emitParam, which the kernel defines. Two styles: the parallel passes give every
-// application fresh locals, in one function run in three modes, and use the slots; the
+// application fresh locals, in one function run in four modes, and use the slots; the
 // sequential kernel keeps cpfg's one variable table per production (locals carry over between applications)
 // and splits testing from producing so that statements with side effects run once.
 #pragma once
@@ -21,8 +21,9 @@ namespace simeco::gpu::codegen {
 enum class RuleKind { Step, Decomposition };
 
 enum class FrameStyle {
-    Fresh,      // `bool NAME(..., uint mode, out uint outCount)`: mode 0 tests, 1 also runs the after-statements
-                // and sets outCount, 2 also writes the successor into the slots
+    Fresh,      // `bool NAME(..., uint mode, out uint outCount)`: mode 0 tests, 1 also runs the after-statements,
+                // draws the alternative and sets outCount, 2 also writes the successor into the slots, 3 does
+                // what 2 does with the alternative the match pass drew (givenAlternative) instead of drawing it
     Persistent, // `bool NAMETest(..., uint frame)` and `void NAMEProduce(..., uint frame, out uint outCount)`
                 // with the locals in frames[frame ...], the successor emitted at positions 0, 1, ...
 };

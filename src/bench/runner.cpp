@@ -110,59 +110,94 @@ void finish(BackendResult& r, std::uint64_t bytesMoved) {
     }
 }
 
-BackendResult runCpu(const ir::Grammar& g, const EntryResult& entry, const BenchOptions& options) {
-    BackendResult r;
-    cpu::DeriveOptions derive;
-    derive.steps = entry.steps;
-    derive.plants = entry.plants;
-    r.runSeconds = repeatRuns(options.warmUp, options.repeat, [&] {
-        Clock::time_point start = Clock::now();
-        cpu::DeriveResult result = cpu::deriveCpu(g, derive);
-        double seconds = secondsSince(start);
-        r.modules = result.string.size();
-        return seconds;
-    });
-    finish(r, entry.stringTrafficBytes);
-    return r;
-}
-
-BackendResult runGpu(gpu::GpuDeriver& deriver, const EntryResult& entry, const BenchOptions& options) {
-    BackendResult r;
-    cpu::DeriveOptions derive;
-    derive.steps = entry.steps;
-    derive.plants = entry.plants;
-    std::vector<gpu::GpuDeriveStats> runs;
-    r.runSeconds = repeatRuns(options.warmUp, options.repeat, [&] {
-        gpu::GpuDeriveStats stats;
-        Clock::time_point start = Clock::now();
-        deriver.derive(derive, /*readBack=*/false, &stats);
-        double seconds = secondsSince(start);
-        runs.push_back(stats);
-        return seconds;
-    });
-    runs.erase(runs.begin(), runs.begin() + std::min<std::ptrdiff_t>(options.warmUp, std::ssize(runs)));
-    // The passes of the run with the median wall time (the upper middle one for an even count).
-    std::vector<std::size_t> order(runs.size());
-    for (std::size_t i = 0; i < order.size(); ++i)
-        order[i] = i;
-    std::sort(order.begin(), order.end(),
-              [&](std::size_t a, std::size_t b) { return r.runSeconds[a] < r.runSeconds[b]; });
-    const gpu::GpuDeriveStats& mid = runs.at(order.at(order.size() / 2));
-    r.modules = mid.modules;
-    r.compileSeconds = mid.compileSeconds;
-    r.passMillis = mid.stepMillis;
-    for (double ms : mid.stepMillis)
-        r.passMillisTotal += ms;
-    finish(r, mid.bytesMoved);
-    return r;
-}
-
 BackendResult failed(const std::string& status, const std::string& reason) {
     BackendResult r;
     r.status = status;
     r.reason = reason;
     return r;
 }
+
+// The CPU reference's and the GPU backend's runs of an entry, taken in turns (runInTurns).
+class EntryRuns {
+public:
+    EntryRuns(const ir::Grammar& g, gpu::GpuDeriver* deriver, const EntryResult& entry) {
+        derive_.steps = entry.steps;
+        derive_.plants = entry.plants;
+        cpu_.run = [this, &g] {
+            Clock::time_point start = Clock::now();
+            cpu::DeriveResult result = cpu::deriveCpu(g, derive_);
+            double seconds = secondsSince(start);
+            cpuModules_ = result.string.size();
+            return seconds;
+        };
+        if (deriver) {
+            gpu_.run = [this, deriver] {
+                gpu::GpuDeriveStats stats;
+                Clock::time_point start = Clock::now();
+                deriver->derive(derive_, /*readBack=*/false, &stats);
+                double seconds = secondsSince(start);
+                gpuStats_.push_back(stats);
+                return seconds;
+            };
+        }
+    }
+
+    EntryRuns(const EntryRuns&) = delete; // the runs capture `this`
+    EntryRuns& operator=(const EntryRuns&) = delete;
+
+    void run(const BenchOptions& options, bool cpu, bool gpu) {
+        std::vector<Measurement*> measurements;
+        if (cpu) {
+            measurements.push_back(&cpu_);
+        }
+        if (gpu && gpu_.run) {
+            measurements.push_back(&gpu_);
+        }
+        runInTurns(options.warmUp, options.repeat, measurements);
+        // The GPU's statistics of the timed runs only.
+        std::size_t gpuWarmUps = gpuStats_.size() - std::min(gpuStats_.size(), gpu_.samples.size());
+        gpuStats_.erase(gpuStats_.begin(), gpuStats_.begin() + static_cast<std::ptrdiff_t>(gpuWarmUps));
+    }
+
+    BackendResult cpuResult(std::uint64_t bytesMoved) const {
+        if (!cpu_.error.empty()) {
+            return failed("failed", cpu_.error);
+        }
+        BackendResult r;
+        r.runSeconds = cpu_.samples;
+        r.modules = cpuModules_;
+        finish(r, bytesMoved);
+        return r;
+    }
+
+    BackendResult gpuResult() const {
+        if (!gpu_.error.empty()) {
+            return failed("failed", gpu_.error);
+        }
+        BackendResult r;
+        r.runSeconds = gpu_.samples;
+        // The passes of the run with the median wall time (the upper middle one for an even count).
+        std::vector<std::size_t> order(gpuStats_.size());
+        for (std::size_t i = 0; i < order.size(); ++i)
+            order[i] = i;
+        std::sort(order.begin(), order.end(),
+                  [&](std::size_t a, std::size_t b) { return r.runSeconds[a] < r.runSeconds[b]; });
+        const gpu::GpuDeriveStats& mid = gpuStats_.at(order.at(order.size() / 2));
+        r.modules = mid.modules;
+        r.compileSeconds = mid.compileSeconds;
+        r.passMillis = mid.stepMillis;
+        for (double ms : mid.stepMillis)
+            r.passMillisTotal += ms;
+        finish(r, mid.bytesMoved);
+        return r;
+    }
+
+private:
+    cpu::DeriveOptions derive_;
+    Measurement cpu_, gpu_;
+    std::uint64_t cpuModules_ = 0;
+    std::vector<gpu::GpuDeriveStats> gpuStats_;
+};
 
 } // namespace
 
@@ -283,18 +318,16 @@ BenchReport runBenchmark(const BenchOptions& options, const std::function<void(c
         }
 
         progress(fmt::format("{} x{}: {} steps, about {} modules", e.name, e.plants, e.steps, e.expectedModules));
+        // The two backends take turns, so that a drift in the machine's speed reaches both alike.
+        EntryRuns runs(l.grammar, l.deriver.get(), e);
+        runs.run(options, options.runCpu, context && l.deriver);
         if (options.runCpu) {
-            try {
-                e.cpu = runCpu(l.grammar, e, options);
-                // A stochastic grammar's plants differ: rescale the traffic estimate to the real string size.
-                if (e.expectedModules > 0 && e.cpu.modules != e.expectedModules) {
-                    double scale = static_cast<double>(e.cpu.modules) / static_cast<double>(e.expectedModules);
-                    e.stringTrafficBytes =
-                        static_cast<std::uint64_t>(static_cast<double>(e.stringTrafficBytes) * scale);
-                    finish(e.cpu, e.stringTrafficBytes);
-                }
-            } catch (const std::exception& ex) {
-                e.cpu = failed("failed", ex.what());
+            e.cpu = runs.cpuResult(e.stringTrafficBytes);
+            // A stochastic grammar's plants differ: rescale the traffic estimate to the real string size.
+            if (e.cpu.ok() && e.expectedModules > 0 && e.cpu.modules != e.expectedModules) {
+                double scale = static_cast<double>(e.cpu.modules) / static_cast<double>(e.expectedModules);
+                e.stringTrafficBytes = static_cast<std::uint64_t>(static_cast<double>(e.stringTrafficBytes) * scale);
+                finish(e.cpu, e.stringTrafficBytes);
             }
         }
         if (!context) {
@@ -302,18 +335,14 @@ BenchReport runBenchmark(const BenchOptions& options, const std::function<void(c
         } else if (!l.deriver) {
             e.gpu = failed(l.gpuStatus, l.gpuReason);
         } else {
-            try {
-                e.gpu = runGpu(*l.deriver, e, options);
-                if (report.copy && report.copy->bytesPerSecond > 0) {
-                    e.gpu.copyFraction = e.gpu.bytesPerSecond / report.copy->bytesPerSecond;
-                }
-                if (e.cpu.ok() && e.gpu.modules != e.cpu.modules) {
-                    e.gpu.status = "failed";
-                    e.gpu.reason =
-                        fmt::format("the GPU derived {} modules, the CPU reference {}", e.gpu.modules, e.cpu.modules);
-                }
-            } catch (const std::exception& ex) {
-                e.gpu = failed("failed", ex.what());
+            e.gpu = runs.gpuResult();
+            if (e.gpu.ok() && report.copy && report.copy->bytesPerSecond > 0) {
+                e.gpu.copyFraction = e.gpu.bytesPerSecond / report.copy->bytesPerSecond;
+            }
+            if (e.gpu.ok() && e.cpu.ok() && e.gpu.modules != e.cpu.modules) {
+                e.gpu.status = "failed";
+                e.gpu.reason =
+                    fmt::format("the GPU derived {} modules, the CPU reference {}", e.gpu.modules, e.cpu.modules);
             }
         }
         auto rate = [](const BackendResult& r) {

@@ -1,6 +1,7 @@
 #include "bench/timing.h"
 
 #include <algorithm>
+#include <exception>
 
 namespace simeco::bench {
 
@@ -23,6 +24,24 @@ std::vector<double> repeatRuns(int warmUp, int repeat, const std::function<doubl
         samples.push_back(run());
     }
     return samples;
+}
+
+void runInTurns(int warmUp, int repeat, const std::vector<Measurement*>& measurements) {
+    for (int round = 0; round < warmUp + repeat; ++round) {
+        for (Measurement* m : measurements) {
+            if (!m->error.empty()) {
+                continue;
+            }
+            try {
+                double value = m->run();
+                if (round >= warmUp) {
+                    m->samples.push_back(value);
+                }
+            } catch (const std::exception& e) {
+                m->error = *e.what() ? e.what() : "failed";
+            }
+        }
+    }
 }
 
 } // namespace simeco::bench

@@ -12,6 +12,7 @@
 #include "gpu/derive_codegen.h"
 #include "gpu/derive_gpu.h"
 #include "gpu_fixture.h"
+#include "ir/species.h"
 #include "lang/eco_parser.h"
 
 namespace simeco::test {
@@ -45,9 +46,14 @@ ir::Grammar scenePlant(const std::string& text) {
     return lang::compileEcoPlant(scene, 0);
 }
 
-// Whether the write pass generated for g is given the alternatives (it reads no draw starts then).
-bool writeIsGivenAlternatives(const ir::Grammar& g) {
-    gpu::GeneratedKernels k = gpu::generateDeriveKernels({g}, true);
+ir::Grammar lantanaPlant() {
+    return lang::compileEcoPlant(
+        lang::parseEcoFile((fs::path(SIMECO_SOURCE_DIR) / "scenes" / "lantana-camara.eco").string()), 0);
+}
+
+// Whether the write pass generated for these species is given the alternatives (it reads no draw starts then).
+bool writeIsGivenAlternatives(const std::vector<ir::Grammar>& species) {
+    gpu::GeneratedKernels k = gpu::generateDeriveKernels(species, true);
     bool given = k.write.find("givenAlternative = choice >> kProductionBits;") != std::string::npos;
     bool draws = k.write.find("drawStartsAt(i)") != std::string::npos;
     EXPECT_NE(given, draws) << "a write pass either is given the alternatives or draws them";
@@ -55,36 +61,48 @@ bool writeIsGivenAlternatives(const ir::Grammar& g) {
 }
 
 // The plants' strings on both engines, after checking that the plants took every alternative somewhere.
-void expectEnginesAgree(const vk::Context& context, const ir::Grammar& g, const std::vector<std::string>& seen) {
+// Plant p is of species p mod species.size().
+void expectEnginesAgree(const vk::Context& context, const std::vector<ir::Grammar>& species,
+                        const std::vector<std::string>& seen) {
+    const ir::Alphabet& alphabet = species.front().alphabet;
     for (std::uint32_t plants : {1u, 9u, 300u}) {
         SCOPED_TRACE(std::to_string(plants) + " plants");
         cpu::DeriveOptions options;
         options.plants = plants;
-        cpu::DeriveResult want = cpu::deriveCpu(g, options);
+        cpu::DeriveResult want = cpu::deriveSpeciesCpu(species, options);
         if (plants == 300u) {
-            std::string text = cpu::formatModules(want.string, g.alphabet, 0, want.string.size());
+            std::string text = cpu::formatModules(want.string, alphabet, 0, want.string.size());
             for (const std::string& module : seen) EXPECT_NE(text.find(module), std::string::npos) << module;
         }
-        gpu::GpuDeriver deriver(context, g);
-        EXPECT_EQ(firstDifference(want, deriver.derive(options), g.alphabet), "");
+        gpu::GpuDeriver deriver(context, species);
+        EXPECT_EQ(firstDifference(want, deriver.derive(options), alphabet), "");
     }
 }
 
 TEST_F(AlternativesGpuTest, WriteGivenTheMatchsAlternativeMatchesTheCpu) {
-    ir::Grammar lantana = lang::compileEcoPlant(
-        lang::parseEcoFile((fs::path(SIMECO_SOURCE_DIR) / "scenes" / "lantana-camara.eco").string()), 0);
+    std::vector<ir::Grammar> lantana{lantanaPlant()};
     EXPECT_TRUE(writeIsGivenAlternatives(lantana));
     expectEnginesAgree(context(), lantana, {"S(99)", "S(6)"});
 
-    ir::Grammar threeWays = scenePlant(threeWayScene("L(i) -> L(i + 1);"));
+    std::vector<ir::Grammar> threeWays{scenePlant(threeWayScene("L(i) -> L(i + 1);"))};
     EXPECT_TRUE(writeIsGivenAlternatives(threeWays));
     expectEnginesAgree(context(), threeWays, {"[L(", "F(", "S(1"});
+
+    // Both as species of one stream, whose productions and alternatives differ.
+    std::vector<ir::Grammar> both = ir::unifySpecies({lantana.front(), threeWays.front()});
+    EXPECT_TRUE(writeIsGivenAlternatives(both));
+    expectEnginesAgree(context(), both, {"S(99)", "[L(", "F("});
 }
 
 TEST_F(AlternativesGpuTest, WriteThatDrawsItselfDrawsTheAlternativeAgain) {
-    ir::Grammar g = scenePlant(threeWayScene("L(i) -> prob(0.5) L(rand(0.0, 1.0)) T(i) | L(i + 1);"));
-    EXPECT_FALSE(writeIsGivenAlternatives(g));
-    expectEnginesAgree(context(), g, {"[L(", "T(", "F("});
+    std::vector<ir::Grammar> draws{scenePlant(threeWayScene("L(i) -> prob(0.5) L(rand(0.0, 1.0)) T(i) | L(i + 1);"))};
+    EXPECT_FALSE(writeIsGivenAlternatives(draws));
+    expectEnginesAgree(context(), draws, {"[L(", "T(", "F("});
+
+    // A species that draws makes the whole stream's write pass draw, the other species' alternatives included.
+    std::vector<ir::Grammar> mixed = ir::unifySpecies({lantanaPlant(), draws.front()});
+    EXPECT_FALSE(writeIsGivenAlternatives(mixed));
+    expectEnginesAgree(context(), mixed, {"S(99)", "T("});
 }
 
 } // namespace

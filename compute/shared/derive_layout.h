@@ -18,6 +18,8 @@ using uint = uint32_t;
 SIMECO_CONST kDeriveWorkgroupSize = 64u;
 SIMECO_CONST kSymbolBits = 24u;
 SIMECO_CONST kSymbolMask = 0xFFFFFFu;
+// Modules one invocation of a match pass by chunks rewrites (derive/context_chunks.glsl): its tile of the scan.
+SIMECO_CONST kContextChunk = 64u;
 SIMECO_CONST kMaxDepthLevels = 32u;  // levels of the bracket-depth min tree (enough for 2^32 modules)
 SIMECO_CONST kNoModule = 0xFFFFFFFFu;
 SIMECO_CONST kChoiceDropped = 0xFFFFFFFFu; // the module lies in a cut part of a branch

@@ -131,11 +131,15 @@ std::string walkerCondition(const WalkerSymbols& walkers) {
     return fmt::format("{}", fmt::join(terms, " || "));
 }
 
-} // namespace
+// The first context walks of the `kind` rules of all species: per species, the predecessors whose productions read
+// each kind of walk (of the patterns a writing pass walks, when `writing`).
+struct PrefetchedWalks {
+    WalkerSymbols right, rightBranch, left;
+    bool any = false;
+};
 
-std::string contextPrefetchCode(const std::vector<ir::Grammar>& species, RuleKind kind, bool writing) {
-    WalkerSymbols right(species.size()), rightBranch(species.size()), left(species.size());
-    bool anyWalk = false;
+PrefetchedWalks prefetchedWalks(const std::vector<ir::Grammar>& species, RuleKind kind, bool writing) {
+    PrefetchedWalks walks{WalkerSymbols(species.size()), WalkerSymbols(species.size()), WalkerSymbols(species.size())};
     for (size_t sp = 0; sp < species.size(); ++sp) {
         const ir::Grammar& g = species[sp];
         for (const ir::Production& p : (kind == RuleKind::Step ? g.productions : g.decomposition).productions) {
@@ -143,17 +147,35 @@ std::string contextPrefetchCode(const std::vector<ir::Grammar>& species, RuleKin
             std::string guard = kind == RuleKind::Step ? ownParameterGuard(p) : "";
             if (firstRightWalkPrefetched(g, p) && (!writing || writingWalks(p, p.right))) {
                 bool enters = p.right.front().sym == ir::kBranchOpen;
-                (enters ? rightBranch : right)[sp][p.strict.front().sym].insert(guard);
-                anyWalk = true;
+                (enters ? walks.rightBranch : walks.right)[sp][p.strict.front().sym].insert(guard);
+                walks.any = true;
             }
             if (firstLeftWalkPrefetched(g, p) && (!writing || writingWalks(p, p.left))) {
-                left[sp][p.strict.front().sym].insert(guard);
-                anyWalk = true;
+                walks.left[sp][p.strict.front().sym].insert(guard);
+                walks.any = true;
             }
         }
     }
+    return walks;
+}
+
+bool anyWalker(const WalkerSymbols& walkers) {
+    return std::any_of(walkers.begin(), walkers.end(), [](const auto& symbols) { return !symbols.empty(); });
+}
+
+// Whether every module of some symbol walks: a production of it has no guard (ownParameterGuard).
+bool anyUnguardedWalker(const WalkerSymbols& walkers) {
+    return std::any_of(walkers.begin(), walkers.end(), [](const auto& symbols) {
+        return std::any_of(symbols.begin(), symbols.end(), [](const auto& entry) { return entry.second.count("") > 0; });
+    });
+}
+
+} // namespace
+
+std::string contextPrefetchCode(const std::vector<ir::Grammar>& species, RuleKind kind, bool writing) {
+    PrefetchedWalks walks = prefetchedWalks(species, kind, writing);
     std::string code = "void prefetchContexts(uint i, uint species, uint sym, int ctxLeft, uint ctxRight, uint pBegin, uint pEnd) {\n";
-    if (anyWalk) code += fmt::format("    uint skipRow = species * {}u;\n", skipWords(species.front()));
+    if (walks.any) code += fmt::format("    uint skipRow = species * {}u;\n", skipWords(species.front()));
     // One walk: `name` is firstRight, firstRightBranch or firstLeft, `walk` the call that moves it.
     auto prefetch = [&](const WalkerSymbols& walkers, const std::string& name, const std::string& start, const std::string& walk) {
         std::string condition = walkerCondition(walkers);
@@ -166,10 +188,25 @@ std::string contextPrefetchCode(const std::vector<ir::Grammar>& species, RuleKin
                             "    }}\n",
                             name, condition, start, walk);
     };
-    prefetch(right, "firstRight", "ctxRight", "walkRight(firstRight, false, pEnd, skipRow)");
-    prefetch(rightBranch, "firstRightBranch", "ctxRight", "walkRight(firstRightBranch, true, pEnd, skipRow)");
-    prefetch(left, "firstLeft", "ctxLeft", "walkLeft(firstLeft, pBegin, skipRow)");
+    prefetch(walks.right, "firstRight", "ctxRight", "walkRight(firstRight, false, pEnd, skipRow)");
+    prefetch(walks.rightBranch, "firstRightBranch", "ctxRight", "walkRight(firstRightBranch, true, pEnd, skipRow)");
+    prefetch(walks.left, "firstLeft", "ctxLeft", "walkLeft(firstLeft, pBegin, skipRow)");
     return code + "}\n\n";
+}
+
+bool everyModuleOfASymbolWalks(const std::vector<ir::Grammar>& species) {
+    PrefetchedWalks walks = prefetchedWalks(species, RuleKind::Step, false);
+    return anyUnguardedWalker(walks.right) || anyUnguardedWalker(walks.rightBranch) || anyUnguardedWalker(walks.left);
+}
+
+std::string contextChunkConstants(const std::vector<ir::Grammar>& species) {
+    PrefetchedWalks walks = prefetchedWalks(species, RuleKind::Step, false);
+    return fmt::format("const bool kChunkRight = {};\n"
+                       "const bool kChunkRightBranch = {};\n"
+                       "const bool kChunkLeft = {};\n"
+                       "const uint kSkipWords = {}u;\n",
+                       anyWalker(walks.right), anyWalker(walks.rightBranch), anyWalker(walks.left),
+                       skipWords(species.front()));
 }
 
 std::vector<uint32_t> contextSkipBits(const std::vector<ir::Grammar>& species) {

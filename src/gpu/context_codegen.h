@@ -19,6 +19,16 @@ namespace simeco::gpu::codegen {
 // `writing`: only the walks a writing pass runs (of patterns whose parameters its statements or successors read).
 std::string contextPrefetchCode(const std::vector<ir::Grammar>& species, RuleKind kind, bool writing);
 
+// Whether every module of some symbol walks to a first context module of the step's productions (their
+// conditions do not decide it by the module's own parameters first): the walks of many modules, which the step's
+// match pass may find by chunks instead (compute/derive/context_chunks.glsl). Where only modules with given
+// parameters walk, few do, and finding every module's context modules costs more than their walks.
+bool everyModuleOfASymbolWalks(const std::vector<ir::Grammar>& species);
+
+// The constants context_chunks.glsl expects: which first context modules the step's productions read, and the
+// words of a species' row of the context filter.
+std::string contextChunkConstants(const std::vector<ir::Grammar>& species);
+
 // One row of bits per species, set for the symbols its context walks skip (derive_lib.glsl's skipped()).
 std::vector<uint32_t> contextSkipBits(const std::vector<ir::Grammar>& species);
 

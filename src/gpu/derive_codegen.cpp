@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "compute/shaders.h"
 #include "compute/shared/derive_layout.h"
 #include "gpu/context_codegen.h"
 #include "gpu/curve_codegen.h"
@@ -186,7 +187,7 @@ std::string stepPlantLookup(const codegen::PlantInputs& in, bool frozenCheck, bo
 
 } // namespace
 
-GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species, bool texelInputs) {
+GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species, bool texelInputs, bool contextChunks) {
     GeneratedKernels k = codegen::speciesTraits(species);
 
     std::string prelude = codegen::kernelPrelude(species.size()) + "uint currentPass() { return pc.pass; }\n";
@@ -251,7 +252,8 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species, 
     // The step's scan fused into its two passes: match sums the successor counts of each subgroup's modules (a
     // tile of gl_SubgroupSize consecutive modules: invocations fill subgroups in order) and stores for each module
     // the counts before it in its tile; the host scans the sums, and a module's position is its tile's offset plus
-    // the counts before it. Subgroup operations need no barrier, and no pass over the string is added.
+    // the counts before it. Subgroup operations need no barrier, and no pass over the string is added. A match
+    // by chunks (chunkedMatch) sums each chunk's counts in order: its tiles are the chunks.
     // Cuts and predecessors of several modules change counts after the match, so they keep the separate scan.
     // The counts before a module and its choice share one word (choiceBits): one store in match, one load in
     // write. The counts before a module stay below the largest subgroup (128) times the longest successor.
@@ -287,6 +289,10 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species, 
     // partner went (outputPosition). Cuts and decomposition change brackets after the write.
     k.carriesPartners = k.needsBrackets && k.fusedScan && !k.hasDecomposition &&
                         codegen::successorsKeepBracketsBalanced(species);
+    // Matching by chunks finds the first context modules a step's productions read; its chunks are the tiles.
+    k.chunkedMatch = contextChunks && k.fusedScan && codegen::everyModuleOfASymbolWalks(species);
+    const std::string tileOf = k.chunkedMatch ? "uint tileOf(uint i) { return i / kContextChunk; }\n"
+                                              : "uint tileOf(uint i) { return i / gl_SubgroupSize; }\n";
     codegen::PlantInputs matchInputs = codegen::plantInputs(species, RuleKind::Step, false);
     matchInputs.bounds = matchInputs.bounds || k.mayCut; // a cut ends where its branch does, within the plant
     matchInputs.plant = matchInputs.plant || matchInputs.bounds;
@@ -329,17 +335,30 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species, 
         s += codegen::slotDeclarations(stepSlots);
         OwnParameters own = ownParameters(predecessorParams, k.matchReadsParameterVectors);
         s += own.declare + findPlant("plantStart", "plantOf");
-        s += codegen::contextPrefetchCode(species, RuleKind::Step, false) + stepFunctions;
-        s += stepSpecializations(true);
+        if (!k.chunkedMatch) s += codegen::contextPrefetchCode(species, RuleKind::Step, false);
+        s += stepFunctions + stepSpecializations(true);
         if (k.fusedScan || givesAlternatives) s += choiceBits;
+        if (k.fusedScan) s += tileOf;
         if (k.fusedScan) s += "uint matchedChoice = kChoiceCopy; // packed with the counts by main()\n";
-        s += "uint matchModule(uint i) {\n" + stepPlantLookup(matchInputs, true, k.fusedScan);
-        s += "    uint sym = symOf(i), count = countOf(i);\n" + own.load +
+        if (k.chunkedMatch) {
+            // Module i with its word, plant and bounds as context_chunks.glsl found them, and the first context
+            // modules it left in firstRight...
+            s += "uint matchChunkModule(uint i, uint word, uint plant, uint pBegin, uint pEnd) {\n"
+                 "    if (kFrozenPlants) {\n"
+                 "        if (plantFrozen[plant] == kPlantFrozen) { matchedChoice = kChoiceCopy; return 1u; }\n"
+                 "    }\n"
+                 "    uint species = plant % kSpeciesCount;\n"
+                 "    uint sym = word & kSymbolMask, count = word >> kSymbolBits;\n";
+        } else {
+            s += "uint matchModule(uint i) {\n" + stepPlantLookup(matchInputs, true, k.fusedScan);
+            s += "    uint sym = symOf(i), count = countOf(i);\n";
+        }
+        s += own.load +
              "    uint key = i - pBegin;\n"
              "    int ctxLeft = int(i) - 1;\n"
-             "    uint ctxRight = i + 1u;\n"
-             "    prefetchContexts(i, species, sym, ctxLeft, ctxRight, pBegin, pEnd);\n"
-             "    uint draw = 1u, chosen = 0u, start = 0u, produced = 1u, length = 1u;\n";
+             "    uint ctxRight = i + 1u;\n";
+        if (!k.chunkedMatch) s += "    prefetchContexts(i, species, sym, ctxLeft, ctxRight, pBegin, pEnd);\n";
+        s += "    uint draw = 1u, chosen = 0u, start = 0u, produced = 1u, length = 1u;\n";
         s += codegen::perSpecies(species.size(), stepSelection);
         if (k.mayCut) {
             s += "    if (chosen == 0u && sym == 2u && count == 0u) {\n"
@@ -349,15 +368,20 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species, 
                  "    }\n";
         }
         s += recordChoice(true, writeInputs.random, k.fusedScan, givesAlternatives);
-        // The subgroup's last invocation holds the tile's sum in its inclusive prefix: one subgroup operation,
-        // which lavapipe runs as a loop over the invocations, where an exclusive prefix and a sum are two.
-        s += mainCalling(k.fusedScan ? "    uint produced = i < pc.count ? matchModule(i) : 0u;\n"
-                                       "    uint through = subgroupInclusiveAdd(produced);\n"
-                                       "    if (i < pc.count) matchWords[i] = ((through - produced) << kChoiceBits) | matchedChoice;\n"
-                                       "    if (gl_SubgroupInvocationID == gl_SubgroupSize - 1u && i - gl_SubgroupInvocationID < pc.count)\n"
-                                       "        tileSums[i / gl_SubgroupSize] = through;\n"
-                                     : "    if (i < pc.count) counts[i] = matchModule(i);\n",
-                         RuleKind::Step, false);
+        if (k.chunkedMatch) {
+            s += codegen::contextChunkConstants(species) + std::string(shaders::glslSource("derive/context_chunks.glsl"));
+            s += mainCalling("    matchChunk(i);\n", RuleKind::Step, false);
+        } else {
+            // The subgroup's last invocation holds the tile's sum in its inclusive prefix: one subgroup operation,
+            // which lavapipe runs as a loop over the invocations, where an exclusive prefix and a sum are two.
+            s += mainCalling(k.fusedScan ? "    uint produced = i < pc.count ? matchModule(i) : 0u;\n"
+                                           "    uint through = subgroupInclusiveAdd(produced);\n"
+                                           "    if (i < pc.count) matchWords[i] = ((through - produced) << kChoiceBits) | matchedChoice;\n"
+                                           "    if (gl_SubgroupInvocationID == gl_SubgroupSize - 1u && i - gl_SubgroupInvocationID < pc.count)\n"
+                                           "        tileSums[tileOf(i)] = through;\n"
+                                         : "    if (i < pc.count) counts[i] = matchModule(i);\n",
+                             RuleKind::Step, false);
+        }
         k.match = std::move(s);
     }
     // ---- derivation step: write ----
@@ -373,9 +397,9 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species, 
         for (int a = 0; a < copiedParams; ++a) copyOwn += fmt::format("    slotParam0_{0} = float(ownParam{0});\n", a);
         s += own.declare + findPlant("plantStart", "plantOf");
         if (k.fusedScan || givesAlternatives) s += choiceBits;
+        if (k.fusedScan) s += tileOf;
         if (k.carriesPartners) // module j's first position in the written string
-            s += "uint outputPosition(uint j) { return tileOffsetsAt(j / gl_SubgroupSize) + (matchWordsAt(j) >> kChoiceBits); "
-                 "}\n\n";
+            s += "uint outputPosition(uint j) { return tileOffsetsAt(tileOf(j)) + (matchWordsAt(j) >> kChoiceBits); }\n\n";
         s += codegen::contextPrefetchCode(species, RuleKind::Step, true) + stepFunctions;
         // Every module's successor goes through the slots, a copied module's too, so that each output position
         // is stored once in the kernel's code: drivers that run every branch for the whole subgroup (lavapipe)
@@ -413,7 +437,7 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species, 
              "}\n";
         s += mainCalling(k.fusedScan ? "    if (i < pc.count) {\n"
                                        "        uint matched = matchWordsAt(i);\n"
-                                       "        writeModule(i, tileOffsetsAt(i / gl_SubgroupSize) + (matched >> kChoiceBits),\n"
+                                       "        writeModule(i, tileOffsetsAt(tileOf(i)) + (matched >> kChoiceBits),\n"
                                        "                    matched & ((1u << kChoiceBits) - 1u));\n"
                                        "    }\n"
                                      : "    if (i < pc.count) writeModule(i, offsetsAt(i), choicesAt(i));\n",

@@ -37,14 +37,18 @@ struct GeneratedKernels {
     int maxDecompositionDepth = 0;  // the deepest of the species' decompositions
     uint32_t longestPredecessor = 1; // > 1: the greedy walk decides which modules start a rewrite
     // The step's scan is fused into match and write (see generateDeriveKernels): match also writes each
-    // workgroup's sum of counts, and write takes the scanned sums and counts instead of offsets. Match then
-    // stores one word per module, the counts before it in its subgroup above its choice's choiceBits bits (the
+    // tile's sum of counts, and write takes the scanned sums and counts instead of offsets. Match then
+    // stores one word per module, the counts before it in its tile above its choice's choiceBits bits (the
     // production and, where the write pass is given it, the alternative the match drew).
     bool fusedScan = false;
     uint32_t choiceBits = 1;
     // The step's write pass also writes the partners of the brackets of the string it writes
     // (codegen::carriesBracketPartners), into the binding after its own outputs.
     bool carriesPartners = false;
+    // The step's match pass (with a fused scan) finds its productions' first context modules by chunks of
+    // kContextChunk modules an invocation (compute/derive/context_chunks.glsl), which are then its tiles: where
+    // asked and every module of some symbol walks (codegen::everyModuleOfASymbolWalks).
+    bool chunkedMatch = false;
     // The step's match and write passes find each module's plant for their productions (codegen::plantInputs);
     // otherwise only the match pass specialised for frozen plants (kFrozenPlants) does, and the plant hints are
     // needed only then. Both passes have a variant specialised for a stream of one plant (kSinglePlant), which
@@ -65,8 +69,10 @@ struct GeneratedKernels {
 // species p mod species.size(). Parameter slots per module come at run time, in the push constants. Every
 // species must be supported (gpuUnsupportedReason empty). `texelInputs`: the kernels read the string and the
 // per-module results of earlier passes through uniform texel buffers (codegen::Bindings), which the host
-// binds as such (the dispatch reads the binding types from the kernels).
-GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species, bool texelInputs = false);
+// binds as such (the dispatch reads the binding types from the kernels). `contextChunks`: the step's match pass
+// finds first context modules by chunks where its productions read them (GeneratedKernels::chunkedMatch).
+GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species, bool texelInputs = false,
+                                       bool contextChunks = false);
 
 // The sequential strategy's kernel (sequential_codegen.cpp): one invocation per plant walks the plant's string
 // in order, exactly as the CPU reference does, so productions may write globals and arrays, locals carry over

@@ -30,16 +30,21 @@ bool bracketsBalanced(const cpu::ModuleString& s) {
 
 } // namespace
 
-GpuDeriver::GpuDeriver(const vk::Context& context, const ir::Grammar& g, GpuStrategy strategy, GpuLoads loads)
-    : impl_(std::make_unique<Impl>(context, std::vector<ir::Grammar>{g}, strategy, loads)) {}
+GpuDeriver::GpuDeriver(const vk::Context& context, const ir::Grammar& g, GpuStrategy strategy, GpuLoads loads,
+                       GpuContextMatch contexts)
+    : impl_(std::make_unique<Impl>(context, std::vector<ir::Grammar>{g}, strategy, loads, contexts)) {}
 
 GpuDeriver::GpuDeriver(const vk::Context& context, std::vector<ir::Grammar> species, GpuStrategy strategy,
-                       GpuLoads loads)
-    : impl_(std::make_unique<Impl>(context, std::move(species), strategy, loads)) {}
+                       GpuLoads loads, GpuContextMatch contexts)
+    : impl_(std::make_unique<Impl>(context, std::move(species), strategy, loads, contexts)) {}
 
 GpuStrategy GpuDeriver::strategy() const { return impl_->strategy; }
 
 GpuLoads GpuDeriver::loads() const { return impl_->texelInputs ? GpuLoads::TexelBuffers : GpuLoads::StorageBuffers; }
+
+GpuContextMatch GpuDeriver::contextMatch() const {
+    return impl_->contextChunks ? GpuContextMatch::Chunks : GpuContextMatch::Walks;
+}
 
 GpuDeriver::~GpuDeriver() = default;
 

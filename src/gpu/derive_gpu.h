@@ -36,6 +36,15 @@ enum class GpuStrategy { Auto, Parallel, Sequential };
 // streams are kept within that. Auto takes texel buffers on CPU devices and storage buffers on GPUs.
 enum class GpuLoads { Auto, StorageBuffers, TexelBuffers };
 
+// How a step's match pass finds the first context modules its productions read: a walk for each module, or each
+// invocation matching a chunk of consecutive modules in order, finding each module's context modules from its
+// neighbour's (compute/derive/context_chunks.glsl). Chunks spare a CPU implementation, which runs a subgroup's
+// walks as one loop as long as the longest and gathers every module they pass, most of the walking; a GPU
+// loads consecutive modules together when each invocation matches one. Chunks are taken only where every module
+// of some symbol walks; where the productions' conditions let only modules with given parameters walk, the walks
+// stay. Auto takes chunks on CPU devices and walks on GPUs.
+enum class GpuContextMatch { Auto, Walks, Chunks };
+
 struct GpuDeriveStats {
     uint64_t modules = 0;            // modules of all plants after the last step
     double seconds = 0;              // wall time of the derivation (without kernel compilation)
@@ -50,11 +59,11 @@ class GpuDeriver {
 public:
     // Generates and compiles the grammar's kernels (cached on disk by content hash).
     GpuDeriver(const vk::Context& context, const ir::Grammar& g, GpuStrategy strategy = GpuStrategy::Auto,
-               GpuLoads loads = GpuLoads::Auto);
+               GpuLoads loads = GpuLoads::Auto, GpuContextMatch contexts = GpuContextMatch::Auto);
     // Plants of several species in one stream: the grammars share one alphabet (ir::unifySpecies), plant p is
     // of species p mod species.size(), and each species derives its own derivation length.
     GpuDeriver(const vk::Context& context, std::vector<ir::Grammar> species, GpuStrategy strategy = GpuStrategy::Auto,
-               GpuLoads loads = GpuLoads::Auto);
+               GpuLoads loads = GpuLoads::Auto, GpuContextMatch contexts = GpuContextMatch::Auto);
     ~GpuDeriver();
     GpuDeriver(const GpuDeriver&) = delete;
     GpuDeriver& operator=(const GpuDeriver&) = delete;
@@ -76,6 +85,8 @@ public:
     GpuStrategy strategy() const;
     // StorageBuffers or TexelBuffers: how this deriver's kernels read their inputs.
     GpuLoads loads() const;
+    // Walks or Chunks: how this deriver's match passes find context modules, where their productions read any.
+    GpuContextMatch contextMatch() const;
 
 private:
     struct Impl;

@@ -52,6 +52,7 @@ struct GpuDeriver::Impl {
     GpuStrategy strategy;
     int stride;
     bool texelInputs; // the generated kernels read their inputs through uniform texel buffers (GpuLoads)
+    bool contextChunks; // the step's match pass finds context modules by chunks (GpuContextMatch)
     int lastStream = -1; // the stream the last derive() ended in
     uint32_t globalStride = 0, arrayStride = 0; // globals and array elements per plant (the most of any species)
     GeneratedKernels kernels;
@@ -86,8 +87,8 @@ struct GpuDeriver::Impl {
     vk::Buffer chunkFunctions, chunkEntries; // the greedy walk over predecessors of several modules
     vk::Buffer blockFunctions, blockEntries; // ... and over blocks of chunks
     vk::Buffer plantHints; // of the stream the running kernels find plants in (recordPlantHints)
-    vk::Buffer tileSums, tileOffsets; // a fused scan's sums of counts per subgroup, and their scan
-    uint32_t tileSize = 1;            // a fused scan's tile: the device's subgroup size
+    vk::Buffer tileSums, tileOffsets; // a fused scan's sums of counts per tile, and their scan
+    uint32_t tileSize = 1;            // a fused scan's tile: the device's subgroup size, or a match chunk
     // The sequential strategy: persistent locals, copies of the state for the counting pass, the decomposition
     // stack, and each plant's module count.
     vk::Buffer frames, framesCopy, globalsCopy, arraysCopy, stackSym, stackPar, stackState, plantCounts, countsReadback;
@@ -111,7 +112,8 @@ struct GpuDeriver::Impl {
 
     // ---- kernels and buffers (derive_gpu_resources.cpp) ----
 
-    Impl(const vk::Context& c, std::vector<ir::Grammar> grammars, GpuStrategy requested, GpuLoads loads);
+    Impl(const vk::Context& c, std::vector<ir::Grammar> grammars, GpuStrategy requested, GpuLoads loads,
+         GpuContextMatch contexts);
 
     // The homomorphism's kernels: the decomposition passes of copies of the species whose decomposition is
     // their homomorphism (one pass per depth, contexts in the derived string, no cuts).
@@ -150,7 +152,7 @@ struct GpuDeriver::Impl {
 
     // The bindings every generated derivation kernel starts with (see declarations() in derive_codegen.cpp):
     // the string being rewritten, its brackets, the plants' globals and arrays, function tables, the context
-    // filter and the error word; `rest` follows them.
+    // filter and the error word; `rest` follows them. `n`: the invocations (p.count modules, or its chunks).
     // `parameterVectors`: the kernel reads each module's parameters as one vector too, the last binding
     // (GeneratedKernels::matchReadsParameterVectors, writeReadsParameterVectors).
     void dispatchDerive(VkCommandBuffer cmd, const vk::ComputePipeline& kernel, const Stream& strings,

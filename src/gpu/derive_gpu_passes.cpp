@@ -216,7 +216,9 @@ void GpuDeriver::Impl::matchScanWrite(int cur, int outIndex, uint32_t stepIndex,
             if (kernels.needsBrackets) recordBrackets(cmd, cur);
             const vk::ComputePipeline& matcher = stepMatch();
             if (fused) {
-                dispatchDerive(cmd, matcher, in, {counts, drawStarts, cutDelta, tileSums}, p, n,
+                // A match by chunks runs an invocation per tile.
+                dispatchDerive(cmd, matcher, in, {counts, drawStarts, cutDelta, tileSums}, p,
+                               kernels.chunkedMatch ? static_cast<uint32_t>(tilesFor(n)) : n,
                                kernels.matchReadsParameterVectors);
                 vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
                 scan.record(cmd, tileSums, tileOffsets, static_cast<uint32_t>(tilesFor(n)));

@@ -13,10 +13,13 @@
 
 namespace simeco::gpu {
 
-GpuDeriver::Impl::Impl(const vk::Context& c, std::vector<ir::Grammar> grammars, GpuStrategy requested, GpuLoads loads)
+GpuDeriver::Impl::Impl(const vk::Context& c, std::vector<ir::Grammar> grammars, GpuStrategy requested, GpuLoads loads,
+                       GpuContextMatch contexts)
     : ctx(c), species(std::move(grammars)), strategy(requested), stride(1),
       texelInputs(loads == GpuLoads::TexelBuffers ||
                   (loads == GpuLoads::Auto && c.deviceInfo().type == VK_PHYSICAL_DEVICE_TYPE_CPU)),
+      contextChunks(contexts == GpuContextMatch::Chunks ||
+                    (contexts == GpuContextMatch::Auto && c.deviceInfo().type == VK_PHYSICAL_DEVICE_TYPE_CPU)),
       plantStarts(vk::ComputePipeline::embedded(c, "derive/plant_starts")),
       plantHintsKernel(vk::ComputePipeline::embedded(c, "derive/plant_hints")),
       cutApply(vk::ComputePipeline::embedded(c, "derive/cut_apply")),
@@ -49,7 +52,7 @@ GpuDeriver::Impl::Impl(const vk::Context& c, std::vector<ir::Grammar> grammars, 
         kernels = generateSequentialKernel(species, texelInputs);
         sequential.emplace(build(kernels.sequential, "derive/sequential"));
     } else {
-        kernels = generateDeriveKernels(species, texelInputs);
+        kernels = generateDeriveKernels(species, texelInputs, contextChunks);
         if (kernels.stride != static_cast<uint32_t>(stride))
             throw std::logic_error(fmt::format("the step's write pass stores {} parameter slots per module, the "
                                                "stream has {}", kernels.stride, stride));
@@ -63,8 +66,8 @@ GpuDeriver::Impl::Impl(const vk::Context& c, std::vector<ir::Grammar> grammars, 
     if (kernels.fusedScan) {
         const uint32_t choiceBits[] = {kernels.choiceBits};
         plantStartsTiled = vk::ComputePipeline::embedded(ctx, "derive/plant_starts_tiled", choiceBits);
-        tileSize = ctx.deviceInfo().subgroupSize;
-        if (tileSize == 0 || shared::kDeriveWorkgroupSize % tileSize != 0)
+        tileSize = kernels.chunkedMatch ? shared::kContextChunk : ctx.deviceInfo().subgroupSize;
+        if (tileSize == 0 || (!kernels.chunkedMatch && shared::kDeriveWorkgroupSize % tileSize != 0))
             throw std::runtime_error(fmt::format("the GPU backend needs subgroups that divide its workgroups of {} "
                                                  "invocations; device {} has subgroups of {}",
                                                  shared::kDeriveWorkgroupSize, ctx.deviceInfo().name, tileSize));

@@ -54,7 +54,8 @@ struct Outcome {
 
 // Derives `g` with both engines. Errors other than the CPU outgrowing the module budget propagate.
 Outcome compareEngines(const vk::Context& context, const ir::Grammar& g, const cpu::DeriveOptions& options,
-                       gpu::GpuStrategy strategy = gpu::GpuStrategy::Auto, gpu::GpuLoads loads = gpu::GpuLoads::Auto) {
+                       gpu::GpuStrategy strategy = gpu::GpuStrategy::Auto, gpu::GpuLoads loads = gpu::GpuLoads::Auto,
+                       gpu::GpuContextMatch contexts = gpu::GpuContextMatch::Auto) {
     if (std::optional<std::string> reason = gpu::gpuUnsupportedReason(g)) return {Verdict::Unsupported, *reason};
     cpu::DeriveResult want;
     try {
@@ -62,7 +63,7 @@ Outcome compareEngines(const vk::Context& context, const ir::Grammar& g, const c
     } catch (const ir::LimitError& e) {
         return {Verdict::OverBudget, e.what()};
     }
-    gpu::GpuDeriver deriver(context, g, strategy, loads);
+    gpu::GpuDeriver deriver(context, g, strategy, loads, contexts);
     cpu::DeriveResult got = deriver.derive(options);
     std::string difference = firstDifference(want, got, g.alphabet);
     return {difference.empty() ? Verdict::Match : Verdict::Differ, difference};
@@ -88,11 +89,12 @@ struct Tally {
 };
 
 void compareFile(const vk::Context& context, const fs::path& file, const std::string& name, Tally& tally,
-                 gpu::GpuStrategy strategy = gpu::GpuStrategy::Auto, gpu::GpuLoads loads = gpu::GpuLoads::Auto) {
+                 gpu::GpuStrategy strategy = gpu::GpuStrategy::Auto, gpu::GpuLoads loads = gpu::GpuLoads::Auto,
+                 gpu::GpuContextMatch contexts = gpu::GpuContextMatch::Auto) {
     ++tally.total;
     try {
         ir::Grammar g = lang::loadGrammarFile(file.string());
-        Outcome outcome = compareEngines(context, g, {}, strategy, loads);
+        Outcome outcome = compareEngines(context, g, {}, strategy, loads, contexts);
         switch (outcome.verdict) {
         case Verdict::Match:
             ++tally.matched;
@@ -276,7 +278,8 @@ TEST(RandomGrammarTest, GeneratedGrammarsDeriveOnTheCpu) {
 }
 
 void compareRandomGrammars(const vk::Context& context, std::uint64_t first, std::uint64_t count,
-                           gpu::GpuStrategy strategy, gpu::GpuLoads loads = gpu::GpuLoads::Auto) {
+                           gpu::GpuStrategy strategy, gpu::GpuLoads loads = gpu::GpuLoads::Auto,
+                           gpu::GpuContextMatch contexts = gpu::GpuContextMatch::Auto) {
     constexpr int kTextsShown = 5; // a broken pass tends to break hundreds
     std::uint64_t matched = 0, skipped = 0, failed = 0;
     for (std::uint64_t seed = first; seed < first + count; ++seed) {
@@ -286,7 +289,7 @@ void compareRandomGrammars(const vk::Context& context, std::uint64_t first, std:
             ir::Grammar g = simeco::testing::grammarFromText(text);
             cpu::DeriveOptions options;
             options.maxModules = kRandomModuleBudget;
-            Outcome outcome = compareEngines(context, g, options, strategy, loads);
+            Outcome outcome = compareEngines(context, g, options, strategy, loads, contexts);
             switch (outcome.verdict) {
             case Verdict::Match:
                 ++matched;
@@ -371,6 +374,27 @@ TEST_F(DeriveGpuTest, TheOtherLoadPathMatchesTheCpu) {
     tally.expectSupportedShare("example grammars, the other load path");
     sequential.expectSupportedShare("example grammars, the other load path, sequential strategy");
     compareRandomGrammars(context(), envOr("SIMECO_RANDOM_FIRST_SEED", 1), 100, gpu::GpuStrategy::Auto, other);
+}
+
+// A step's match pass finds context modules by a walk per module or by chunks of modules (gpu::GpuContextMatch).
+// The other tests take the device's choice (chunks on CPU devices, walks on GPUs); here the other one, on the
+// example grammars and on random grammars.
+TEST_F(DeriveGpuTest, TheOtherContextMatchMatchesTheCpu) {
+    std::vector<fs::path> files = exampleGrammarFiles();
+    ASSERT_GE(files.size(), 15u) << "example grammars not found under " << kGrammars;
+    gpu::GpuContextMatch chosen = gpu::GpuDeriver(context(), plantGrammar()).contextMatch();
+    gpu::GpuContextMatch other =
+        chosen == gpu::GpuContextMatch::Chunks ? gpu::GpuContextMatch::Walks : gpu::GpuContextMatch::Chunks;
+    ASSERT_EQ(gpu::GpuDeriver(context(), plantGrammar(), gpu::GpuStrategy::Auto, gpu::GpuLoads::Auto, other)
+                  .contextMatch(),
+              other);
+    Tally tally;
+    for (const fs::path& file : files)
+        compareFile(context(), file, fs::relative(file, kGrammars).string(), tally, gpu::GpuStrategy::Auto,
+                    gpu::GpuLoads::Auto, other);
+    tally.expectSupportedShare("example grammars, the other context match");
+    compareRandomGrammars(context(), envOr("SIMECO_RANDOM_FIRST_SEED", 1), 100, gpu::GpuStrategy::Auto,
+                          gpu::GpuLoads::Auto, other);
 }
 
 // `--plants`: plant k draws from its own random stream on both engines, so any number of plants must match.
@@ -479,12 +503,14 @@ TEST_F(DeriveGpuTest, RingLSystemsMatchTheCpu) {
 // A step whose successors are balanced writes the partners of the brackets it writes, so that only the axioms
 // need a bracket tree: branches nested ten deep and longer than a workgroup, contexts skipping them and entering
 // them, on 40 stochastic plants. A cut, or an unbalanced axiom (which no parser lets through, but a grammar built
-// in code may hold), makes every step build its tree.
+// in code may hold), makes every step build its tree. Contexts found by walks and by chunks, whose partners
+// and walks cross the chunks' ends.
 TEST_F(DeriveGpuTest, CarriedBracketPartnersMatchTheCpu) {
     const std::string rules = "seed: 3\nignore: + - F\n"
                               "A(x) < A(y) > [B(z)] --> A(y+z)\n"
                               "A(x) < B(y) --> B(y+x)F[-B(y)F]\n"
                               "B(y) > A(z) --> B(y+z)\n"
+                              "F > A(z) : z < 0.2 --> G\n"
                               "A(x) --> F[+A(x+1)F[-B(x)]F]A(x*0.5) : 1\n"
                               "A(x) --> A(x)[-F B(x)] : 2\n";
     constexpr int kSteps = 9;
@@ -518,11 +544,15 @@ TEST_F(DeriveGpuTest, CarriedBracketPartnersMatchTheCpu) {
             deepest = std::max(deepest, open.size());
         }
         ASSERT_GT(longest, 4u * shared::kDeriveWorkgroupSize) << "no branch spans several workgroups";
+        ASSERT_GT(longest, 4u * shared::kContextChunk) << "no branch spans several chunks";
         ASSERT_GE(deepest, 8u);
-        gpu::GpuDeriver deriver(context(), g, gpu::GpuStrategy::Parallel);
-        gpu::GpuDeriveStats stats;
-        EXPECT_EQ(firstDifference(want, deriver.derive(options, /*readBack=*/true, &stats), g.alphabet), "");
-        EXPECT_EQ(stats.bracketTrees, c.bracketTrees);
+        for (gpu::GpuContextMatch contexts : {gpu::GpuContextMatch::Walks, gpu::GpuContextMatch::Chunks}) {
+            SCOPED_TRACE(contexts == gpu::GpuContextMatch::Walks ? "walks" : "chunks");
+            gpu::GpuDeriver deriver(context(), g, gpu::GpuStrategy::Parallel, gpu::GpuLoads::Auto, contexts);
+            gpu::GpuDeriveStats stats;
+            EXPECT_EQ(firstDifference(want, deriver.derive(options, /*readBack=*/true, &stats), g.alphabet), "");
+            EXPECT_EQ(stats.bracketTrees, c.bracketTrees);
+        }
     }
 }
 

@@ -135,7 +135,6 @@ std::string walkerCondition(const WalkerSymbols& walkers) {
 // each kind of walk (of the patterns a writing pass walks, when `writing`).
 struct PrefetchedWalks {
     WalkerSymbols right, rightBranch, left;
-    bool any = false;
 };
 
 PrefetchedWalks prefetchedWalks(const std::vector<ir::Grammar>& species, RuleKind kind, bool writing) {
@@ -148,11 +147,9 @@ PrefetchedWalks prefetchedWalks(const std::vector<ir::Grammar>& species, RuleKin
             if (firstRightWalkPrefetched(g, p) && (!writing || writingWalks(p, p.right))) {
                 bool enters = p.right.front().sym == ir::kBranchOpen;
                 (enters ? walks.rightBranch : walks.right)[sp][p.strict.front().sym].insert(guard);
-                walks.any = true;
             }
             if (firstLeftWalkPrefetched(g, p) && (!writing || writingWalks(p, p.left))) {
                 walks.left[sp][p.strict.front().sym].insert(guard);
-                walks.any = true;
             }
         }
     }
@@ -175,7 +172,8 @@ bool anyUnguardedWalker(const WalkerSymbols& walkers) {
 std::string contextPrefetchCode(const std::vector<ir::Grammar>& species, RuleKind kind, bool writing) {
     PrefetchedWalks walks = prefetchedWalks(species, kind, writing);
     std::string code = "void prefetchContexts(uint i, uint species, uint sym, int ctxLeft, uint ctxRight, uint pBegin, uint pEnd) {\n";
-    if (walks.any) code += fmt::format("    uint skipRow = species * {}u;\n", skipWords(species.front()));
+    if (anyWalker(walks.right) || anyWalker(walks.rightBranch) || anyWalker(walks.left))
+        code += fmt::format("    uint skipRow = species * {}u;\n", skipWords(species.front()));
     // One walk: `name` is firstRight, firstRightBranch or firstLeft, `walk` the call that moves it.
     auto prefetch = [&](const WalkerSymbols& walkers, const std::string& name, const std::string& start, const std::string& walk) {
         std::string condition = walkerCondition(walkers);

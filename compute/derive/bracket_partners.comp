@@ -5,7 +5,7 @@
 // Other modules' entries are not written.
 #version 450
 #extension GL_GOOGLE_include_directive : require
-#include "shared/derive_layout.h"
+#include "compute/shared/derive_layout.h"
 
 layout(local_size_x = kDeriveWorkgroupSize) in;
 layout(set = 0, binding = 0, std430) readonly buffer Symbols { uint symbols[]; };
@@ -16,7 +16,7 @@ layout(push_constant) uniform Push { DeriveHelperPush pc; };
 
 uint symOf(uint i) { return symbols[i] & kSymbolMask; }
 
-#include "derive/depth_tree.glsl"
+#include "compute/derive/depth_tree.glsl"
 
 void main() {
     uint i = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * gl_WorkGroupSize.x + gl_LocalInvocationID.x;

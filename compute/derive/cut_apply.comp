@@ -2,7 +2,7 @@
 // is positive) leave the string: no successor, and the write pass skips them.
 #version 450
 #extension GL_GOOGLE_include_directive : require
-#include "shared/derive_layout.h"
+#include "compute/shared/derive_layout.h"
 
 layout(local_size_x = kDeriveWorkgroupSize) in;
 layout(set = 0, binding = 0, std430) readonly buffer CutDelta { uint cutDelta[]; };

@@ -1,7 +1,7 @@
 // Bracket depth, pass 3 (once per level): each node of the min tree is the smaller of its two children.
 #version 450
 #extension GL_GOOGLE_include_directive : require
-#include "shared/derive_layout.h"
+#include "compute/shared/derive_layout.h"
 
 layout(local_size_x = kDeriveWorkgroupSize) in;
 layout(set = 0, binding = 0, std430) buffer Tree { int tree[]; };

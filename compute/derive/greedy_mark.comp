@@ -2,7 +2,7 @@
 // before them produce nothing.
 #version 450
 #extension GL_GOOGLE_include_directive : require
-#include "shared/derive_layout.h"
+#include "compute/shared/derive_layout.h"
 
 layout(local_size_x = kDeriveWorkgroupSize) in;
 layout(set = 0, binding = 0, std430) buffer Choices { uint choices[]; };
@@ -11,7 +11,7 @@ layout(set = 0, binding = 2, std430) readonly buffer Entries { uint entries[]; }
 layout(set = 0, binding = 3, std430) buffer Counts { uint counts[]; };
 layout(push_constant) uniform Push { DeriveHelperPush pc; };
 
-#include "derive/greedy_chunks.glsl"
+#include "compute/derive/greedy_chunks.glsl"
 
 void main() {
     uint chunk = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * gl_WorkGroupSize.x + gl_LocalInvocationID.x;

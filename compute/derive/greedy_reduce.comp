@@ -1,7 +1,7 @@
 // Greedy walk, pass 1: each chunk's state function (see greedy_chunks.glsl).
 #version 450
 #extension GL_GOOGLE_include_directive : require
-#include "shared/derive_layout.h"
+#include "compute/shared/derive_layout.h"
 
 layout(local_size_x = kDeriveWorkgroupSize) in;
 layout(set = 0, binding = 0, std430) readonly buffer Choices { uint choices[]; };
@@ -9,7 +9,7 @@ layout(set = 0, binding = 1, std430) readonly buffer PlantStart { uint plantStar
 layout(set = 0, binding = 2, std430) writeonly buffer Functions { uint functions[]; };
 layout(push_constant) uniform Push { DeriveHelperPush pc; };
 
-#include "derive/greedy_chunks.glsl"
+#include "compute/derive/greedy_chunks.glsl"
 
 void main() {
     uint chunk = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * gl_WorkGroupSize.x + gl_LocalInvocationID.x;

@@ -4,7 +4,7 @@
 // its block's chunks from the block's entry state. pc.level is the phase, pc.count the number of chunks.
 #version 450
 #extension GL_GOOGLE_include_directive : require
-#include "shared/derive_layout.h"
+#include "compute/shared/derive_layout.h"
 
 layout(local_size_x = kDeriveWorkgroupSize) in;
 layout(set = 0, binding = 0, std430) readonly buffer Functions { uint functions[]; };

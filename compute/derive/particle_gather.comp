@@ -2,8 +2,8 @@
 // particle state of the module of the rewritten string it descends from (its origin, which those passes write).
 #version 450
 #extension GL_GOOGLE_include_directive : require
-#include "shared/derive_layout.h"
-#include "shared/particle_layout.h"
+#include "compute/shared/derive_layout.h"
+#include "compute/shared/particle_layout.h"
 
 layout(local_size_x = kDeriveWorkgroupSize) in;
 layout(set = 0, binding = 0, std430) readonly buffer Origin { uint origin[]; };

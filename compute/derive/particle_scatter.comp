@@ -5,8 +5,8 @@
 // whose successor is empty, or that a cut dropped, takes its state away.
 #version 450
 #extension GL_GOOGLE_include_directive : require
-#include "shared/derive_layout.h"
-#include "shared/particle_layout.h"
+#include "compute/shared/derive_layout.h"
+#include "compute/shared/particle_layout.h"
 
 layout(local_size_x = kDeriveWorkgroupSize) in;
 layout(set = 0, binding = 0, std430) readonly buffer Positions { uint positions[]; };

@@ -4,7 +4,7 @@
 // size).
 #version 450
 #extension GL_GOOGLE_include_directive : require
-#include "shared/derive_layout.h"
+#include "compute/shared/derive_layout.h"
 
 layout(local_size_x = kDeriveWorkgroupSize) in;
 layout(set = 0, binding = 0, std430) readonly buffer OldStarts { uint oldStarts[]; };

@@ -14,7 +14,7 @@
 #extension GL_KHR_shader_subgroup_basic : require
 #extension GL_KHR_shader_subgroup_arithmetic : require
 
-#include "shared/config.h"
+#include "compute/shared/config.h"
 
 layout(local_size_x = kScanWorkgroupSize) in;
 
@@ -24,7 +24,7 @@ layout(set = 0, binding = 2, std430) readonly buffer TileOffsets { uint tileOffs
 layout(set = 0, binding = 3, std430) writeonly buffer Total { uint total; };
 layout(push_constant) uniform Push { ScanDownsweepPush pc; };
 
-#include "scan/workgroup_scan.glsl"
+#include "compute/scan/workgroup_scan.glsl"
 
 void main() {
     uint tile = linearWorkgroupIndex();

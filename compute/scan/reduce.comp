@@ -4,7 +4,7 @@
 #extension GL_KHR_shader_subgroup_basic : require
 #extension GL_KHR_shader_subgroup_arithmetic : require
 
-#include "shared/config.h"
+#include "compute/shared/config.h"
 
 layout(local_size_x = kScanWorkgroupSize) in;
 
@@ -12,7 +12,7 @@ layout(set = 0, binding = 0, std430) readonly buffer Input { uint values[]; };
 layout(set = 0, binding = 1, std430) writeonly buffer TileSums { uint tileSums[]; };
 layout(push_constant) uniform Push { ScanReducePush pc; };
 
-#include "scan/workgroup_scan.glsl"
+#include "compute/scan/workgroup_scan.glsl"
 
 void main() {
     uint tile = linearWorkgroupIndex();

@@ -22,7 +22,7 @@
 #extension GL_KHR_shader_subgroup_basic : require
 #extension GL_KHR_shader_subgroup_arithmetic : require
 
-#include "shared/config.h"
+#include "compute/shared/config.h"
 
 layout(local_size_x = kScanWorkgroupSize) in;
 
@@ -32,7 +32,7 @@ layout(set = 0, binding = 2, std430) coherent buffer Status { uint status[]; };
 layout(set = 0, binding = 3, std430) writeonly buffer Total { uint total; };
 layout(push_constant) uniform Push { ScanSinglePassPush pc; };
 
-#include "scan/workgroup_scan.glsl"
+#include "compute/scan/workgroup_scan.glsl"
 
 shared uint sharedTile;
 shared int sharedPredecessor;   // tile the look-back stalled on, or -1 when the prefix is complete

@@ -5,14 +5,9 @@
 #ifndef SIMECO_SHARED_CONFIG_H
 #define SIMECO_SHARED_CONFIG_H
 
-#ifdef __cplusplus
-#include <cstdint>
-namespace simeco::shared {
-using uint = uint32_t;
-#define SIMECO_CONST inline constexpr uint
-#else
-#define SIMECO_CONST const uint
-#endif
+#include "compute/shared/preamble.h"
+
+SIMECO_SHARED_BEGIN
 
 // Prefix sum (compute/scan). A workgroup handles one tile of kScanTileSize consecutive elements in
 // kScanRounds rounds; in each round every invocation owns kScanValuesPerInvocation consecutive elements, so
@@ -59,8 +54,7 @@ struct ScanSinglePassPush {
 static_assert(sizeof(ScanReducePush) == 8);
 static_assert(sizeof(ScanDownsweepPush) == 16);
 static_assert(sizeof(ScanSinglePassPush) == 16);
-} // namespace simeco::shared
 #endif
-#undef SIMECO_CONST
+SIMECO_SHARED_END
 
 #endif

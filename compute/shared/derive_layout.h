@@ -6,14 +6,9 @@
 #ifndef SIMECO_SHARED_DERIVE_LAYOUT_H
 #define SIMECO_SHARED_DERIVE_LAYOUT_H
 
-#ifdef __cplusplus
-#include <cstdint>
-namespace simeco::shared {
-using uint = uint32_t;
-#define SIMECO_CONST inline constexpr uint
-#else
-#define SIMECO_CONST const uint
-#endif
+#include "compute/shared/preamble.h"
+
+SIMECO_SHARED_BEGIN
 
 SIMECO_CONST kDeriveWorkgroupSize = 64u;
 SIMECO_CONST kSymbolBits = 24u;
@@ -88,8 +83,7 @@ struct DeriveHelperPush {
 static_assert(sizeof(DerivePush) == 80);
 static_assert(kLoopProbeTrips < kLoopProbeCounts);
 static_assert(sizeof(DeriveHelperPush) == 16);
-} // namespace simeco::shared
 #endif
-#undef SIMECO_CONST
+SIMECO_SHARED_END
 
 #endif

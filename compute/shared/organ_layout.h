@@ -7,17 +7,9 @@
 #ifndef SIMECO_SHARED_ORGAN_LAYOUT_H
 #define SIMECO_SHARED_ORGAN_LAYOUT_H
 
-#ifdef __cplusplus
-#include <cstdint>
-namespace simeco::shared {
-using uint = uint32_t;
-struct vec4 {
-    float x, y, z, w;
-};
-#define SIMECO_CONST inline constexpr uint
-#else
-#define SIMECO_CONST const uint
-#endif
+#include "compute/shared/preamble.h"
+
+SIMECO_SHARED_BEGIN
 
 // Organ kinds, each drawn with its own mesh.
 SIMECO_CONST kOrganStem = 0u;     // F/G segment: a (tapered) cylinder from position along heading, mitred at joints
@@ -65,8 +57,7 @@ struct OrganTable {
 #ifdef __cplusplus
 static_assert(sizeof(OrganInstance) == 112);
 static_assert(sizeof(OrganTable) == 80);
-} // namespace simeco::shared
 #endif
-#undef SIMECO_CONST
+SIMECO_SHARED_END
 
 #endif

@@ -9,14 +9,9 @@
 #ifndef SIMECO_SHARED_PARTICLE_LAYOUT_H
 #define SIMECO_SHARED_PARTICLE_LAYOUT_H
 
-#ifdef __cplusplus
-#include <cstdint>
-namespace simeco::shared {
-using uint = uint32_t;
-#define SIMECO_CONST inline constexpr uint
-#else
-#define SIMECO_CONST const uint
-#endif
+#include "compute/shared/preamble.h"
+
+SIMECO_SHARED_BEGIN
 
 // Two vec4 per module: the kernels move a module's state as two vector loads and stores.
 SIMECO_CONST kParticleStateFloats = 8u;
@@ -36,8 +31,7 @@ struct ParticleState {
     float value[kParticleStateFloats] = {};
     bool operator==(const ParticleState&) const = default;
 };
-} // namespace simeco::shared
 #endif
-#undef SIMECO_CONST
+SIMECO_SHARED_END
 
 #endif

@@ -6,14 +6,9 @@
 #ifndef SIMECO_SHARED_RANDOM_H
 #define SIMECO_SHARED_RANDOM_H
 
-#ifdef __cplusplus
-#include <cstdint>
-namespace simeco::shared {
-using uint = uint32_t;
-#define SIMECO_FN inline
-#else
-#define SIMECO_FN
-#endif
+#include "compute/shared/preamble.h"
+
+SIMECO_SHARED_BEGIN
 
 SIMECO_FN uint lowbias32(uint x) {
     x ^= x >> 16;
@@ -38,9 +33,6 @@ SIMECO_FN float randomUnit(uint seed, uint plant, uint pass, uint moduleIndex, u
     return float(randomBits(seed, plant, pass, moduleIndex, draw) >> 8u) * (1.0f / 16777216.0f);
 }
 
-#ifdef __cplusplus
-} // namespace simeco::shared
-#endif
-#undef SIMECO_FN
+SIMECO_SHARED_END
 
 #endif

@@ -4,14 +4,9 @@
 #ifndef SIMECO_SHARED_TURTLE_LAYOUT_H
 #define SIMECO_SHARED_TURTLE_LAYOUT_H
 
-#ifdef __cplusplus
-#include <cstdint>
-namespace simeco::shared {
-using uint = uint32_t;
-#define SIMECO_CONST inline constexpr uint
-#else
-#define SIMECO_CONST const uint
-#endif
+#include "compute/shared/preamble.h"
+
+SIMECO_SHARED_BEGIN
 
 SIMECO_CONST kTurtleNone = 0u;          // draws nothing, changes nothing (plain letters, `%`, queries)
 SIMECO_CONST kTurtleBranchOpen = 1u;    // [
@@ -71,9 +66,6 @@ SIMECO_CONST kPairB = 3u; // @bo @bc
 SIMECO_CONST kPairP = 4u; // @PS @PC @PD
 SIMECO_CONST kPairPrefixes = 5u;
 
-#ifdef __cplusplus
-} // namespace simeco::shared
-#endif
-#undef SIMECO_CONST
+SIMECO_SHARED_END
 
 #endif

@@ -10,14 +10,10 @@
 #ifndef SIMECO_SHARED_TURTLE_STATE_LAYOUT_H
 #define SIMECO_SHARED_TURTLE_STATE_LAYOUT_H
 
-#include "shared/organ_layout.h"
+#include "compute/shared/organ_layout.h"
+#include "compute/shared/preamble.h"
 
-#ifdef __cplusplus
-namespace simeco::shared {
-#define SIMECO_CONST inline constexpr uint
-#else
-#define SIMECO_CONST const uint
-#endif
+SIMECO_SHARED_BEGIN
 
 SIMECO_CONST kTurtleWorkgroupSize = 64u;
 // Modules one invocation composes in order before the pointer jumping, which then runs only over the modules
@@ -106,8 +102,7 @@ static_assert(sizeof(TurtleState) == 64);
 static_assert(sizeof(TurtleStep) == 112);
 static_assert(sizeof(TurtleSpecies) == 48);
 static_assert(sizeof(TurtlePush) == 64);
-} // namespace simeco::shared
 #endif
-#undef SIMECO_CONST
+SIMECO_SHARED_END
 
 #endif

@@ -5,8 +5,8 @@
 // anchor, so the targets are closed under their pointers.
 #version 450
 #extension GL_GOOGLE_include_directive : require
-#include "shared/derive_layout.h"
-#include "shared/turtle_state_layout.h"
+#include "compute/shared/derive_layout.h"
+#include "compute/shared/turtle_state_layout.h"
 layout(local_size_x = kTurtleWorkgroupSize) in;
 layout(set = 0, binding = 0, std430) readonly buffer Marks { uint marks[]; };
 layout(set = 0, binding = 1, std430) readonly buffer Parents { uint parents[]; };
@@ -14,7 +14,7 @@ layout(set = 0, binding = 2, std430) buffer Steps { TurtleStep steps[]; };
 layout(set = 0, binding = 3, std430) buffer Pointers { uint pointers[]; };
 layout(set = 0, binding = 4, std430) buffer Targets { uint targets[]; };
 layout(push_constant) uniform Push { TurtlePush pc; };
-#include "turtle/turtle_math.glsl"
+#include "compute/turtle/turtle_math.glsl"
 
 void main() {
     uint c = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * gl_WorkGroupSize.x + gl_LocalInvocationID.x;

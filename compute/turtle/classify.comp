@@ -3,10 +3,10 @@
 // and in module order within a kind. Cylinder points that draw a tube are marked, so the next one can join it.
 #version 450
 #extension GL_GOOGLE_include_directive : require
-#include "shared/derive_layout.h"
-#include "shared/turtle_layout.h"
-#include "shared/turtle_state_layout.h"
-#include "turtle/turtle_buffers.glsl"
+#include "compute/shared/derive_layout.h"
+#include "compute/shared/turtle_layout.h"
+#include "compute/shared/turtle_state_layout.h"
+#include "compute/turtle/turtle_buffers.glsl"
 layout(set = 0, binding = 5, std430) readonly buffer Commands { uint commands[]; };
 layout(set = 0, binding = 6, std430) buffer Marks { uint marks[]; };
 layout(set = 0, binding = 7, std430) readonly buffer TriangleFirst { uint triangleFirst[]; };
@@ -16,8 +16,8 @@ layout(set = 0, binding = 10, std430) readonly buffer States { TurtleState state
 layout(set = 0, binding = 11, std430) writeonly buffer Kinds { uint kinds[]; };
 layout(set = 0, binding = 12, std430) writeonly buffer Flags { uint flags[]; };
 
-#include "turtle/turtle_math.glsl"
-#include "turtle/turtle_modules.glsl"
+#include "compute/turtle/turtle_math.glsl"
+#include "compute/turtle/turtle_modules.glsl"
 
 const uint kNoOrgan = 0xFFFFFFFFu;
 

@@ -2,10 +2,10 @@
 // Mirrors the organs turtle/turtle_cpu.cpp emits: stems and tubes, spheres, discs, leaves and fan triangles.
 #version 450
 #extension GL_GOOGLE_include_directive : require
-#include "shared/derive_layout.h"
-#include "shared/turtle_layout.h"
-#include "shared/turtle_state_layout.h"
-#include "turtle/turtle_buffers.glsl"
+#include "compute/shared/derive_layout.h"
+#include "compute/shared/turtle_layout.h"
+#include "compute/shared/turtle_state_layout.h"
+#include "compute/turtle/turtle_buffers.glsl"
 layout(set = 0, binding = 5, std430) readonly buffer Commands { uint commands[]; };
 layout(set = 0, binding = 6, std430) readonly buffer Parents { uint parents[]; };
 layout(set = 0, binding = 7, std430) readonly buffer Plants { uint plantOfModule[]; };
@@ -25,9 +25,9 @@ layout(set = 0, binding = 19, std430) buffer PlantBounds { int plantBounds[]; };
 // The last instance each module wrote (its first is in slots): a tube's last segment, which the next joins.
 layout(set = 0, binding = 20, std430) writeonly buffer LastSlots { uint lastSlots[]; };
 
-#include "turtle/turtle_math.glsl"
-#include "turtle/turtle_modules.glsl"
-#include "turtle/organ_bounds.glsl"
+#include "compute/turtle/turtle_math.glsl"
+#include "compute/turtle/turtle_modules.glsl"
+#include "compute/turtle/organ_bounds.glsl"
 
 // An up vector for a segment along `heading`: the turtle's up with its heading component removed.
 vec3 perpendicularUp(vec3 heading, TurtleState s) {

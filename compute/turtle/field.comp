@@ -3,8 +3,8 @@
 // empty bounds for place.comp to grow. One workgroup.
 #version 450
 #extension GL_GOOGLE_include_directive : require
-#include "shared/derive_layout.h"
-#include "shared/turtle_state_layout.h"
+#include "compute/shared/derive_layout.h"
+#include "compute/shared/turtle_state_layout.h"
 layout(local_size_x = kTurtleWorkgroupSize) in;
 layout(set = 0, binding = 0, std430) readonly buffer Offsets { uint offsets[]; };
 layout(set = 0, binding = 1, std430) readonly buffer Total { uint total; };
@@ -12,7 +12,7 @@ layout(set = 0, binding = 2, std430) readonly buffer PlantBounds { int plantBoun
 layout(set = 0, binding = 3, std430) writeonly buffer Table { OrganTable table; };
 layout(set = 0, binding = 4, std430) writeonly buffer Field { float spacing; };
 layout(push_constant) uniform Push { TurtlePush pc; };
-#include "turtle/turtle_math.glsl"
+#include "compute/turtle/turtle_math.glsl"
 
 shared float widest[kTurtleWorkgroupSize];
 

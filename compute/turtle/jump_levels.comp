@@ -4,10 +4,10 @@
 // module's parent).
 #version 450
 #extension GL_GOOGLE_include_directive : require
-#include "shared/derive_layout.h"
-#include "shared/turtle_layout.h"
-#include "shared/turtle_state_layout.h"
-#include "turtle/turtle_buffers.glsl"
+#include "compute/shared/derive_layout.h"
+#include "compute/shared/turtle_layout.h"
+#include "compute/shared/turtle_state_layout.h"
+#include "compute/turtle/turtle_buffers.glsl"
 layout(set = 0, binding = 5, std430) readonly buffer Marks { uint marks[]; };
 layout(set = 0, binding = 6, std430) readonly buffer Parents { uint parents[]; };
 layout(set = 0, binding = 7, std430) readonly buffer Targets { uint targets[]; };
@@ -20,9 +20,9 @@ layout(set = 0, binding = 13, std430) readonly buffer States { TurtleState state
 layout(set = 0, binding = 14, std430) readonly buffer LevelsIn { uvec2 levelsIn[]; };
 layout(set = 0, binding = 15, std430) writeonly buffer LevelsOut { uvec2 levelsOut[]; };
 
-#include "turtle/turtle_math.glsl"
-#include "turtle/turtle_modules.glsl"
-#include "turtle/turtle_anchors.glsl"
+#include "compute/turtle/turtle_math.glsl"
+#include "compute/turtle/turtle_modules.glsl"
+#include "compute/turtle/turtle_anchors.glsl"
 
 void main() {
     uint i = invocationIndex();

@@ -4,8 +4,8 @@
 // doubling the path each round covers. Other modules are left alone.
 #version 450
 #extension GL_GOOGLE_include_directive : require
-#include "shared/derive_layout.h"
-#include "shared/turtle_state_layout.h"
+#include "compute/shared/derive_layout.h"
+#include "compute/shared/turtle_state_layout.h"
 layout(local_size_x = kTurtleWorkgroupSize) in;
 layout(set = 0, binding = 0, std430) readonly buffer Marks { uint marks[]; };
 layout(set = 0, binding = 1, std430) readonly buffer Targets { uint targets[]; };
@@ -14,7 +14,7 @@ layout(set = 0, binding = 3, std430) readonly buffer PointersIn { uint pointersI
 layout(set = 0, binding = 4, std430) writeonly buffer StepsOut { TurtleStep stepsOut[]; };
 layout(set = 0, binding = 5, std430) writeonly buffer PointersOut { uint pointersOut[]; };
 layout(push_constant) uniform Push { TurtlePush pc; };
-#include "turtle/turtle_math.glsl"
+#include "compute/turtle/turtle_math.glsl"
 
 void main() {
     uint i = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * gl_WorkGroupSize.x + gl_LocalInvocationID.x;

@@ -1,8 +1,8 @@
 // Places each non-linear module in its level's slice of the resolution order (any order within a level).
 #version 450
 #extension GL_GOOGLE_include_directive : require
-#include "shared/derive_layout.h"
-#include "shared/turtle_state_layout.h"
+#include "compute/shared/derive_layout.h"
+#include "compute/shared/turtle_state_layout.h"
 layout(local_size_x = kTurtleWorkgroupSize) in;
 layout(set = 0, binding = 0, std430) readonly buffer Marks { uint marks[]; };
 layout(set = 0, binding = 1, std430) readonly buffer Levels { uvec2 levels[]; };

@@ -1,16 +1,16 @@
 // Turtle, last pass: moves each instance to its plant's place in the field and grows the table's bounds.
 #version 450
 #extension GL_GOOGLE_include_directive : require
-#include "shared/derive_layout.h"
-#include "shared/turtle_state_layout.h"
+#include "compute/shared/derive_layout.h"
+#include "compute/shared/turtle_state_layout.h"
 layout(local_size_x = kTurtleWorkgroupSize) in;
 layout(set = 0, binding = 0, std430) readonly buffer Total { uint total; };
 layout(set = 0, binding = 1, std430) readonly buffer Field { float spacing; };
 layout(set = 0, binding = 2, std430) buffer Instances { OrganInstance instances[]; };
 layout(set = 0, binding = 3, std430) buffer Table { OrganTable table; };
 layout(push_constant) uniform Push { TurtlePush pc; };
-#include "turtle/turtle_math.glsl"
-#include "turtle/organ_bounds.glsl"
+#include "compute/turtle/turtle_math.glsl"
+#include "compute/turtle/organ_bounds.glsl"
 
 void main() {
     uint s = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * gl_WorkGroupSize.x + gl_LocalInvocationID.x;

@@ -2,10 +2,10 @@
 // composed steps lead to (the anchors on its path lie on earlier levels, or are the plant's root).
 #version 450
 #extension GL_GOOGLE_include_directive : require
-#include "shared/derive_layout.h"
-#include "shared/turtle_layout.h"
-#include "shared/turtle_state_layout.h"
-#include "turtle/turtle_buffers.glsl"
+#include "compute/shared/derive_layout.h"
+#include "compute/shared/turtle_layout.h"
+#include "compute/shared/turtle_state_layout.h"
+#include "compute/turtle/turtle_buffers.glsl"
 layout(set = 0, binding = 5, std430) readonly buffer Marks { uint marks[]; };
 layout(set = 0, binding = 6, std430) readonly buffer Parents { uint parents[]; };
 layout(set = 0, binding = 7, std430) readonly buffer Targets { uint targets[]; };
@@ -18,9 +18,9 @@ layout(set = 0, binding = 13, std430) buffer States { TurtleState states[]; };
 layout(set = 0, binding = 14, std430) readonly buffer Commands { uint commands[]; };
 layout(set = 0, binding = 15, std430) readonly buffer Order { uint order[]; };
 
-#include "turtle/turtle_math.glsl"
-#include "turtle/turtle_modules.glsl"
-#include "turtle/turtle_anchors.glsl"
+#include "compute/turtle/turtle_math.glsl"
+#include "compute/turtle/turtle_modules.glsl"
+#include "compute/turtle/turtle_anchors.glsl"
 
 void main() {
     uint k = invocationIndex();

@@ -4,10 +4,10 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 #extension GL_KHR_shader_subgroup_arithmetic : require
-#include "shared/derive_layout.h"
-#include "shared/turtle_layout.h"
-#include "shared/turtle_state_layout.h"
-#include "turtle/turtle_buffers.glsl"
+#include "compute/shared/derive_layout.h"
+#include "compute/shared/turtle_layout.h"
+#include "compute/shared/turtle_state_layout.h"
+#include "compute/turtle/turtle_buffers.glsl"
 layout(set = 0, binding = 5, std430) readonly buffer DepthTree { int depthTree[]; };
 layout(set = 0, binding = 6, std430) readonly buffer LevelInfo { uint levelInfo[]; };
 layout(set = 0, binding = 7, std430) writeonly buffer Commands { uint commands[]; };
@@ -19,10 +19,10 @@ layout(set = 0, binding = 12, std430) writeonly buffer Plants { uint plantOfModu
 // Every mark some module carries, so the host runs only the searches and levels the string needs.
 layout(set = 0, binding = 13, std430) buffer Present { uint presentMarks; };
 
-#include "turtle/turtle_math.glsl"
-#include "turtle/turtle_modules.glsl"
+#include "compute/turtle/turtle_math.glsl"
+#include "compute/turtle/turtle_modules.glsl"
 uint symOf(uint i) { return symbolAt(i); }
-#include "derive/depth_tree.glsl"
+#include "compute/derive/depth_tree.glsl"
 
 // Writes module i's command, parent, plant, marks, step and first pointer; returns its marks.
 uint setUpModule(uint i) {

@@ -2,10 +2,10 @@
 // steps. The non-linear modules' states are already there.
 #version 450
 #extension GL_GOOGLE_include_directive : require
-#include "shared/derive_layout.h"
-#include "shared/turtle_layout.h"
-#include "shared/turtle_state_layout.h"
-#include "turtle/turtle_buffers.glsl"
+#include "compute/shared/derive_layout.h"
+#include "compute/shared/turtle_layout.h"
+#include "compute/shared/turtle_state_layout.h"
+#include "compute/turtle/turtle_buffers.glsl"
 layout(set = 0, binding = 5, std430) readonly buffer Marks { uint marks[]; };
 layout(set = 0, binding = 6, std430) readonly buffer Targets { uint targets[]; };
 layout(set = 0, binding = 7, std430) readonly buffer ChunkSteps { TurtleStep chunkSteps[]; };
@@ -15,9 +15,9 @@ layout(set = 0, binding = 10, std430) readonly buffer JumpedPointers { uint jump
 layout(set = 0, binding = 11, std430) readonly buffer Plants { uint plantOfModule[]; };
 layout(set = 0, binding = 12, std430) buffer States { TurtleState states[]; };
 
-#include "turtle/turtle_math.glsl"
-#include "turtle/turtle_modules.glsl"
-#include "turtle/turtle_anchors.glsl"
+#include "compute/turtle/turtle_math.glsl"
+#include "compute/turtle/turtle_modules.glsl"
+#include "compute/turtle/turtle_anchors.glsl"
 
 void main() {
     uint i = invocationIndex();

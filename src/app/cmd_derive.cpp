@@ -8,11 +8,11 @@
 
 #include "app/commands.h"
 #include "app/error_report.h"
-#include "app/load_species.h"
+#include "app/field_options.h"
 #include "cpu/derive.h"
-#include "cpu/statistics.h"
+#include "field/field.h"
 #include "gpu/derive_gpu.h"
-#include "ir/species.h"
+#include "stream/statistics.h"
 #include "vk/context.h"
 #include "vk/kernel_profile.h"
 
@@ -25,7 +25,7 @@ struct DeriveArgs {
     int steps = -1;
     int64_t seed = -1;
     uint32_t plants = 0; // 0: one plant per grammar (each species of a scene once)
-    std::string backend = "cpu";
+    field::Backend backend = field::Backend::Cpu;
     std::string format = "string";
     uint64_t maxModules = 0;
     std::string device;
@@ -34,17 +34,17 @@ struct DeriveArgs {
 };
 
 void runDerive(const DeriveArgs& args) {
-    std::vector<ir::Grammar> species = ir::unifySpecies(loadGrammars(args.file));
+    std::vector<ir::Grammar> species = field::loadSpecies(args.file);
     const ir::Alphabet& alphabet = species.front().alphabet;
-    cpu::DeriveOptions options;
+    stream::DeriveOptions options;
     options.steps = args.steps;
     options.seed = args.seed;
     options.plants = args.plants ? args.plants : static_cast<uint32_t>(species.size());
     options.maxModules = args.maxModules;
     auto start = std::chrono::steady_clock::now();
-    cpu::DeriveResult result;
+    stream::DeriveResult result;
     double seconds = 0;
-    if (args.backend == "gpu") {
+    if (args.backend == field::Backend::Gpu) {
         vk::ContextOptions contextOptions;
         contextOptions.device = args.device;
         vk::Context context(contextOptions);
@@ -63,17 +63,17 @@ void runDerive(const DeriveArgs& args) {
     }
 
     // Everything is derived before anything is printed: an error leaves no partial output.
-    const cpu::ModuleString& s = result.string;
+    const stream::ModuleString& s = result.string;
     if (args.format == "string") {
         std::string out;
         for (size_t p = 0; p < s.plants(); ++p) {
-            out += cpu::formatModules(s, alphabet, s.plantStart[p], s.plantStart[p + 1]);
+            out += stream::formatModules(s, alphabet, s.plantStart[p], s.plantStart[p + 1]);
             out.push_back('\n');
         }
         std::fwrite(out.data(), 1, out.size(), stdout);
         return;
     }
-    cpu::StringStatistics total = cpu::computeStatistics(s, alphabet);
+    stream::StringStatistics total = stream::computeStatistics(s, alphabet);
     if (args.format == "stats") {
         std::printf("modules: %llu\n", static_cast<unsigned long long>(total.modules));
         std::printf("plants: %llu\n", static_cast<unsigned long long>(total.plants));
@@ -87,7 +87,7 @@ void runDerive(const DeriveArgs& args) {
     }
     nlohmann::json j;
     j["file"] = args.file;
-    j["backend"] = args.backend;
+    j["backend"] = field::backendName(args.backend);
     j["modules"] = total.modules;
     j["plants"] = total.plants;
     j["steps"] = result.steps;
@@ -109,7 +109,7 @@ void registerDeriveCommand(CLI::App& app, CommandContext& ctx) {
         ->check(CLI::Range(int64_t(0), int64_t(UINT32_MAX)));
     cmd->add_option("--plants", args->plants,
                     "number of plants derived together; a scene's species take turns (default: one of each)")->check(CLI::Range(1u, 1000000u));
-    cmd->add_option("--backend", args->backend, "cpu or gpu")->check(CLI::IsMember({"cpu", "gpu"}));
+    addBackendOption(*cmd, args->backend, "cpu or gpu");
     cmd->add_option("--format", args->format, "string, stats or json")
         ->check(CLI::IsMember({"string", "stats", "json"}));
     cmd->add_option("--max-modules", args->maxModules, "module budget (default: sized to this machine's memory)");

@@ -10,7 +10,7 @@
 
 #include "app/commands.h"
 #include "app/error_report.h"
-#include "app/field_pipeline.h"
+#include "app/field_options.h"
 #include "draw/organ_meshes.h"
 #include "export/gltf_writer.h"
 #include "export/mesh_writers.h"
@@ -22,7 +22,7 @@ namespace simeco::app {
 namespace {
 
 struct ExportArgs {
-    FieldSource source;
+    field::FieldSource source;
     std::string output;
     bool noInstancing = false;
 };
@@ -32,11 +32,11 @@ void runExport(const ExportArgs& args) {
     if (!format) {
         throw std::invalid_argument(fmt::format("-o '{}': the mesh is written as .obj, .ply or .gltf", args.output));
     }
-    const FieldSource& source = args.source;
-    std::unique_ptr<vk::Context> context = contextFor(source);
+    const field::FieldSource& source = args.source;
+    std::unique_ptr<vk::Context> context = field::contextFor(source);
     auto start = std::chrono::steady_clock::now();
-    Field field = deriveField(source, context.get());
-    turtle::Interpretation interp = interpretOnHost(source, field, context.get());
+    field::Field field = field::deriveField(source, context.get());
+    turtle::Interpretation interp = field::interpretOnHost(source, field, context.get());
     if (interp.organs.empty()) throw std::runtime_error(fmt::format("{}: the plants draw nothing", source.file));
 
     exporter::OrganMeshSet meshes(draw::buildOrganMeshes());

@@ -9,12 +9,12 @@
 
 #include "app/commands.h"
 #include "app/error_report.h"
-#include "app/field_pipeline.h"
+#include "app/field_options.h"
 #include "compute/shared/organ_layout.h"
 #include "draw/bounds.h"
 #include "draw/image_writers.h"
 #include "draw/renderer.h"
-#include "gpu/turtle_gpu.h"
+#include "turtle/turtle_gpu.h"
 #include "vk/buffer.h"
 #include "vk/context.h"
 
@@ -23,7 +23,7 @@ namespace simeco::app {
 namespace {
 
 struct RenderArgs {
-    FieldSource source;
+    field::FieldSource source;
     std::string output;
     std::string png;
     std::string size = "960x720";
@@ -68,13 +68,13 @@ void runRender(const RenderArgs& args) {
     draw::RenderSettings settings = renderSettings(args);
 
     // Rendering needs the device whichever backend derives and interprets.
-    const FieldSource& source = args.source;
+    const field::FieldSource& source = args.source;
     vk::ContextOptions contextOptions;
     contextOptions.device = source.device;
     vk::Context context(contextOptions);
     auto start = std::chrono::steady_clock::now();
-    Field field = deriveField(source, &context);
-    gpu::DeviceOrgans organs = interpretOnDevice(source, field, context);
+    field::Field field = field::deriveField(source, &context);
+    const turtle::DeviceOrgans& organs = field::interpretOnDevice(source, field, context);
     // Only the table (counts and bounds) comes back, for framing; the instances stay on the device.
     shared::OrganTable table = vk::downloadVector<shared::OrganTable>(context, organs.table, 1)[0];
     uint32_t organCount = 0;

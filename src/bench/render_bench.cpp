@@ -13,10 +13,10 @@
 #include "cpu/derive.h"
 #include "draw/bounds.h"
 #include "draw/renderer.h"
-#include "gpu/turtle_gpu.h"
 #include "ir/source_loc.h"
 #include "lang/load_grammar.h"
 #include "turtle/turtle_cpu.h"
+#include "turtle/turtle_gpu.h"
 #include "vk/buffer.h"
 #include "vk/context.h"
 #include "vk/device_info.h"
@@ -41,11 +41,11 @@ Timed timed(const RenderBenchOptions& o, std::uint64_t organs, const std::functi
 }
 
 // The most steps (up to kMaxSteps) whose string for `plants` plants stays within `cap` modules.
-cpu::ModuleString deriveField(const ir::Grammar& g, std::uint32_t plants, std::uint64_t cap, int& steps) {
-    cpu::ModuleString best;
+stream::ModuleString deriveField(const ir::Grammar& g, std::uint32_t plants, std::uint64_t cap, int& steps) {
+    stream::ModuleString best;
     steps = 0;
     for (int k = 0; k <= kMaxSteps; ++k) {
-        cpu::DeriveOptions options;
+        stream::DeriveOptions options;
         options.steps = k;
         options.plants = plants;
         options.homomorphism = true;
@@ -87,7 +87,7 @@ RenderBenchReport runRenderBenchmark(const RenderBenchOptions& options,
 
     turtle::TurtleCommands commands = turtle::turtleCommands(g.alphabet);
     std::vector<turtle::TurtleSettings> species{turtle::turtleSettings(g, g.alphabet)};
-    gpu::GpuTurtle gpuTurtle(context, commands, species);
+    turtle::GpuTurtle gpuTurtle(context, commands, species);
     draw::Renderer renderer(context);
 
     std::vector<std::uint32_t> plantCounts =
@@ -96,17 +96,14 @@ RenderBenchReport runRenderBenchmark(const RenderBenchOptions& options,
         RenderEntry e;
         e.plants = plants;
         try {
-            cpu::ModuleString string = deriveField(g, plants, cap, e.steps);
+            stream::ModuleString string = deriveField(g, plants, cap, e.steps);
             e.modules = string.size();
             progress(fmt::format("{} plants: {} steps, {} modules", plants, e.steps, e.modules));
-            gpu::UploadedModules modules(context, string);
-            gpu::DeviceOrgans organs;
-            // The first run's organs are kept for the frames; every run writes the same ones.
-            bool kept = false;
-            e.gpuTurtle = timed(options, 0, [&] {
-                gpu::DeviceOrgans written = gpuTurtle.interpret(modules.view(), {});
-                if (!kept) organs = std::move(written), kept = true;
-            });
+            turtle::UploadedModules modules(context, string);
+            // Every run writes the same organs; the last run's stay in the turtle for the frames.
+            const turtle::DeviceOrgans* written = nullptr;
+            e.gpuTurtle = timed(options, 0, [&] { written = &gpuTurtle.interpret(modules.view(), {}); });
+            const turtle::DeviceOrgans& organs = *written;
             e.levels = gpuTurtle.lastLevels();
             e.bytesMoved = gpuTurtle.lastBytesMoved();
             shared::OrganTable table = vk::downloadVector<shared::OrganTable>(context, organs.table, 1)[0];

@@ -35,7 +35,7 @@ std::vector<std::uint64_t> growthProfile(const ir::Grammar& g, std::uint32_t sam
                                          std::uint64_t cap, int maxSteps) {
     std::vector<std::uint64_t> sizes;
     for (int steps = 0; steps <= maxSteps; ++steps) {
-        cpu::DeriveOptions options;
+        stream::DeriveOptions options;
         options.steps = steps;
         options.plants = sample;
         options.maxModules = cap + 1;
@@ -125,7 +125,7 @@ public:
         derive_.plants = entry.plants;
         cpu_.run = [this, &g] {
             Clock::time_point start = Clock::now();
-            cpu::DeriveResult result = cpu::deriveCpu(g, derive_);
+            stream::DeriveResult result = cpu::deriveCpu(g, derive_);
             double seconds = secondsSince(start);
             cpuModules_ = result.string.size();
             return seconds;
@@ -193,7 +193,7 @@ public:
     }
 
 private:
-    cpu::DeriveOptions derive_;
+    stream::DeriveOptions derive_;
     Measurement cpu_, gpu_;
     std::uint64_t cpuModules_ = 0;
     std::vector<gpu::GpuDeriveStats> gpuStats_;
@@ -269,7 +269,7 @@ BenchReport runBenchmark(const BenchOptions& options, const std::function<void(c
             std::string path = (std::filesystem::path(options.root) / sg.file).string();
             l.grammar = lang::loadGrammarFile(path);
             int stride = std::max(l.grammar.maxParams(), 1);
-            l.cap = options.maxModules ? options.maxModules : cpu::defaultModuleBudget(stride);
+            l.cap = options.maxModules ? options.maxModules : stream::defaultModuleBudget(stride);
             if (context) {
                 // The GPU keeps each module's parameters in one storage buffer (4 bytes per slot).
                 std::uint64_t deviceCap = report.maxStorageBufferRange / (sizeof(float) * std::uint64_t(stride));
@@ -279,7 +279,7 @@ BenchReport runBenchmark(const BenchOptions& options, const std::function<void(c
                 }
             }
             if (context) {
-                if (std::optional<std::string> reason = gpu::gpuUnsupportedReason(l.grammar)) {
+                if (std::optional<std::string> reason = codegen::gpuUnsupportedReason(l.grammar)) {
                     l.gpuStatus = "unsupported";
                     l.gpuReason = *reason;
                 } else {

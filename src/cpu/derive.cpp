@@ -1,26 +1,28 @@
 #include "cpu/derive.h"
 
 #include <algorithm>
-#include <limits>
 #include <optional>
 #include <stdexcept>
 
 #include <fmt/format.h>
-#include <unistd.h>
 
-#include "cpu/evaluator.h"
-#include "ir/species.h"
-#include "shared/random.h"
+#include "compute/shared/random.h"
+#include "stream/evaluator.h"
+#include "stream/plant_control.h"
+#include "stream/random_passes.h"
 
 namespace simeco::cpu {
 
-uint64_t defaultModuleBudget(int stride) {
-    // A quarter of physical memory, for the two strings (current and next) of the derivation.
-    long pages = sysconf(_SC_PHYS_PAGES), pageSize = sysconf(_SC_PAGE_SIZE);
-    uint64_t memory = (pages > 0 && pageSize > 0) ? uint64_t(pages) * uint64_t(pageSize) : (8ull << 30);
-    uint64_t bytesPerModule = sizeof(uint32_t) + sizeof(uint8_t) + sizeof(float) * uint64_t(std::max(stride, 1));
-    return memory / 4 / (2 * bytesPerModule);
-}
+using stream::DeriveOptions;
+using stream::DeriveResult;
+using stream::Evaluator;
+using stream::ModuleString;
+using stream::PlantControl;
+using stream::PlantState;
+using stream::RandomKey;
+using stream::decompositionPass;
+using stream::homomorphismPass;
+using stream::kPassesPerStep;
 
 namespace {
 
@@ -35,54 +37,40 @@ struct ModuleRef {
 
 class PlantDeriver {
 public:
-    PlantDeriver(const ir::Grammar& g, uint32_t plant, uint32_t seed, uint64_t budget)
-        : g_(g), evaluator_(g, state_), budget_(budget) {
-        evaluator_.key.seed = seed;
+    PlantDeriver(PlantControl& control, uint32_t plant, uint64_t budget)
+        : control_(control), plant_(plant), g_(control.speciesOf(plant)), state_(control.state(plant)),
+          evaluator_(g_, state_), budget_(budget) {
+        evaluator_.key.seed = control.seed();
         evaluator_.key.plant = plant;
-        stride_ = std::max(g.maxParams(), 1);
+        stride_ = std::max(g_.maxParams(), 1);
         cur_.stride = next_.stride = stride_;
-        index(g.productions, productionsBySymbol_);
-        makeFrames(g.productions, productionFrames_);
-        decomposition_ = RecursiveRules(g.decomposition);
-        homomorphism_ = RecursiveRules(g.homomorphism);
-        stochastic_ = std::any_of(g.productions.productions.begin(), g.productions.productions.end(),
+        index(g_.productions, productionsBySymbol_);
+        makeFrames(g_.productions, productionFrames_);
+        decomposition_ = RecursiveRules(g_.decomposition);
+        homomorphism_ = RecursiveRules(g_.homomorphism);
+        stochastic_ = std::any_of(g_.productions.productions.begin(), g_.productions.productions.end(),
                                   [](const ir::Production& p) { return p.weight >= 0; });
-        if (auto eq = g.alphabet.find("=")) equalsSym_ = int64_t(*eq);
+        if (auto eq = g_.alphabet.find("=")) equalsSym_ = int64_t(*eq);
         percentSym_ = ir::kCut;
     }
 
     // `particles`: the state of the axiom's modules, when the derivation carries particle state.
-    int run(int steps, const std::optional<std::vector<shared::ParticleState>>& particles) {
-        state_.reset(g_);
-        runBlock(g_.startBlock, 0, ControlBlock::Start);
-        // The axiom's parameters may use globals of the Start block.
-        std::vector<float> values;
-        for (const ir::SuccessorModule& m : g_.axiom) {
-            values.clear();
-            for (const ir::Expr& e : m.args) values.push_back(static_cast<float>(evaluator_.eval(e, nullptr)));
-            cur_.push(m.sym, values.data(), values.size());
-        }
+    void run(const std::optional<std::vector<shared::ParticleState>>& particles) {
+        control_.start(plant_, &cur_);
         if (particles) cur_.particles = *particles;
         carries_ = particles.has_value();
         checkBudget(cur_.size());
-        int done = 0;
-        for (int step = 1; step <= steps; ++step) {
+        for (int step = 1; control_.beginStep(plant_, step); ++step) {
             step_ = static_cast<uint32_t>(step);
-            if (!state_.globals.empty() && g_.globalNames.front() == "Q") state_.globals[0] = step;
-            runBlock(g_.startEachBlock, step_, ControlBlock::StartEach);
             rewrite();
-            runBlock(g_.endEachBlock, step_, ControlBlock::EndEach);
-            ++done;
-            if (state_.stopRequested) break;
+            control_.endStep(plant_, step);
         }
-        runBlock(g_.endBlock, 0, ControlBlock::End);
-        return done;
+        control_.finish(plant_);
     }
 
     // Takes modules [begin, end) of `s` as the derived string, with the globals as the Start block leaves them.
     void adopt(const ModuleString& s, size_t begin, size_t end) {
-        state_.reset(g_);
-        runBlock(g_.startBlock, 0, ControlBlock::Start);
+        control_.start(plant_, nullptr);
         cur_.clear();
         cur_.reserve(end - begin);
         for (size_t i = begin; i < end; ++i) cur_.push(s.sym[i], s.paramsOf(i), s.paramCount[i]);
@@ -111,13 +99,10 @@ public:
     ModuleString& result() { return cur_; }
 
 private:
-    void runBlock(const std::vector<ir::Stmt>& block, uint32_t step, ControlBlock which) {
-        evaluator_.key = controlBlockKey(evaluator_.key.seed, evaluator_.key.plant, step, which);
-        evaluator_.exec(block, nullptr);
-    }
-
+    PlantControl& control_;
+    uint32_t plant_;
     const ir::Grammar& g_;
-    PlantState state_;
+    PlantState& state_;
     Evaluator evaluator_;
     uint64_t budget_;
     int stride_ = 1;
@@ -488,70 +473,43 @@ void appendPlant(ModuleString& out, const ModuleString& s) {
 
 } // namespace
 
-std::vector<std::vector<shared::ParticleState>> splitAxiomParticles(const std::vector<ir::Grammar>& species,
-                                                                   uint32_t plants,
-                                                                   const std::vector<shared::ParticleState>& initial) {
-    std::vector<std::vector<shared::ParticleState>> perPlant(plants);
-    size_t total = 0;
-    for (uint32_t plant = 0; plant < plants; ++plant) {
-        perPlant[plant].resize(species[ir::speciesOfPlant(plant, species.size())].axiom.size());
-        total += perPlant[plant].size();
-    }
-    if (initial.empty()) return perPlant;
-    if (initial.size() != total)
-        throw std::invalid_argument(fmt::format("{} initial particle states for {} axiom modules", initial.size(), total));
-    auto next = initial.begin();
-    for (std::vector<shared::ParticleState>& states : perPlant) {
-        std::copy_n(next, states.size(), states.begin());
-        next += static_cast<std::ptrdiff_t>(states.size());
-    }
-    return perPlant;
-}
-
 DeriveResult deriveCpu(const ir::Grammar& g, const DeriveOptions& options) {
     return deriveSpeciesCpu({g}, options);
 }
 
 DeriveResult deriveSpeciesCpu(const std::vector<ir::Grammar>& species, const DeriveOptions& options) {
-    if (species.empty()) throw std::invalid_argument("deriveSpeciesCpu: no species");
-    uint32_t seed = options.seed >= 0 ? uint32_t(options.seed) : species.front().seed;
-    int stride = 1;
-    for (const ir::Grammar& g : species) stride = std::max(stride, g.maxParams());
-    uint64_t budget = options.maxModules ? options.maxModules : defaultModuleBudget(stride);
+    PlantControl control(species, options);
     DeriveResult result;
-    result.string.stride = stride;
+    result.string.stride = control.stride();
     result.string.plantStart.push_back(0);
     uint64_t used = 0;
-    uint32_t plants = std::max<uint32_t>(options.plants, 1);
     std::vector<std::vector<shared::ParticleState>> axiomParticles =
-        options.particles ? splitAxiomParticles(species, plants, options.initialParticles)
+        options.particles ? stream::splitAxiomParticles(species, control.plants(), options.initialParticles)
                           : std::vector<std::vector<shared::ParticleState>>{};
-    for (uint32_t plant = 0; plant < plants; ++plant) {
-        const ir::Grammar& g = species[ir::speciesOfPlant(plant, species.size())];
-        PlantDeriver deriver(g, plant, seed, budget - used);
+    for (uint32_t plant = 0; plant < control.plants(); ++plant) {
+        PlantDeriver deriver(control, plant, control.budget() - used);
         std::optional<std::vector<shared::ParticleState>> particles;
         if (options.particles) particles = std::move(axiomParticles[plant]);
-        result.steps =
-            std::max(result.steps, deriver.run(options.steps >= 0 ? options.steps : g.derivationLength, particles));
+        deriver.run(particles);
         if (options.homomorphism) deriver.applyHomomorphism();
         used += deriver.result().size();
         appendPlant(result.string, deriver.result());
     }
+    result.steps = control.mostStepsDerived();
     return result;
 }
 
 ModuleString applyHomomorphismCpu(const std::vector<ir::Grammar>& species, const ModuleString& derived,
                                   const DeriveOptions& options) {
-    if (species.empty()) throw std::invalid_argument("applyHomomorphismCpu: no species");
-    uint32_t seed = options.seed >= 0 ? uint32_t(options.seed) : species.front().seed;
-    uint64_t budget = options.maxModules ? options.maxModules : defaultModuleBudget(derived.stride);
+    DeriveOptions adopted = options;
+    adopted.plants = static_cast<uint32_t>(derived.plants());
+    PlantControl control(species, adopted);
+    uint64_t budget = options.maxModules ? options.maxModules : stream::defaultModuleBudget(derived.stride);
     ModuleString out;
-    out.stride = derived.stride;
-    for (const ir::Grammar& g : species) out.stride = std::max(out.stride, g.maxParams());
+    out.stride = std::max(derived.stride, control.stride());
     out.plantStart.push_back(0);
     for (uint32_t plant = 0; plant < derived.plants(); ++plant) {
-        const ir::Grammar& g = species[ir::speciesOfPlant(plant, species.size())];
-        PlantDeriver deriver(g, plant, seed, budget - std::min<uint64_t>(budget, out.size()));
+        PlantDeriver deriver(control, plant, budget - std::min<uint64_t>(budget, out.size()));
         deriver.adopt(derived, derived.plantStart[plant], derived.plantStart[plant + 1]);
         deriver.applyHomomorphism();
         appendPlant(out, deriver.result());

@@ -5,8 +5,8 @@
 #include <string_view>
 #include <vector>
 
-#include "render/draw_layout.h"
-#include "render/render_shaders.h"
+#include "compute/shaders.h"
+#include "render/shared/draw_layout.h"
 #include "vk/buffer.h"
 #include "vk/context.h"
 #include "vk/layouts.h"
@@ -18,7 +18,7 @@ namespace {
 enum class PassKind { Base, Volume, Sun };
 
 vk::UniqueShaderModule shaderModule(VkDevice device, std::string_view name) {
-    std::span<const std::uint32_t> words = render_shaders::spirv(name);
+    std::span<const std::uint32_t> words = shaders::spirv(name);
     VkShaderModuleCreateInfo info{};
     info.sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO;
     info.codeSize = words.size_bytes();
@@ -31,7 +31,7 @@ vk::UniqueShaderModule shaderModule(VkDevice device, std::string_view name) {
 vk::UniquePipeline createPipeline(VkDevice device, VkPipelineLayout layout, VkRenderPass renderPass, PassKind pass,
                                   Culling culling) {
     bool volume = pass == PassKind::Volume;
-    vk::UniqueShaderModule vertex = shaderModule(device, volume ? "shadow_volume.vert" : "organ.vert");
+    vk::UniqueShaderModule vertex = shaderModule(device, volume ? "shadows/shadow_volume.vert" : "organs/organ.vert");
     vk::UniqueShaderModule fragment;
     std::vector<VkPipelineShaderStageCreateInfo> stages(1);
     stages[0].sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
@@ -39,7 +39,7 @@ vk::UniquePipeline createPipeline(VkDevice device, VkPipelineLayout layout, VkRe
     stages[0].module = vertex.get();
     stages[0].pName = "main";
     if (!volume) { // volumes only touch the stencil
-        fragment = shaderModule(device, "organ.frag");
+        fragment = shaderModule(device, "organs/organ.frag");
         VkPipelineShaderStageCreateInfo stage = stages[0];
         stage.stage = VK_SHADER_STAGE_FRAGMENT_BIT;
         stage.module = fragment.get();

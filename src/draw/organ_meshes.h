@@ -1,5 +1,5 @@
 // The procedural meshes organs are drawn with, one per organ kind, in organ-local coordinates (x along the
-// heading, y along left = up x heading, z along up; see render/organ_transform.glsl), plus the low-poly hulls
+// heading, y along left = up x heading, z along up; see render/organs/organ_transform.glsl), plus the low-poly hulls
 // that cast their shadows and the ground plane, all in one vertex buffer and one index buffer on the device.
 #pragma once
 
@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "render/draw_layout.h"
+#include "render/shared/draw_layout.h"
 #include "vk/buffer.h"
 
 namespace simeco::vk {

@@ -11,11 +11,11 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "compute/shaders.h"
 #include "draw/draw_pipelines.h"
 #include "draw/organ_meshes.h"
 #include "draw/render_target.h"
-#include "render/draw_layout.h"
-#include "render/render_shaders.h"
+#include "render/shared/draw_layout.h"
 #include "vk/buffer.h"
 #include "vk/context.h"
 #include "vk/pipeline.h"
@@ -39,7 +39,7 @@ shared::vec4 vec4Of(glm::vec3 v, float w = 0.0f) {
 }
 
 vk::ComputePipeline kernel(const vk::Context& context, const char* name) {
-    return vk::ComputePipeline(context, render_shaders::spirv(name), name);
+    return vk::ComputePipeline(context, shaders::spirv(name), name);
 }
 
 void requireFeatures(const vk::Context& context) {
@@ -68,8 +68,8 @@ void requireFeatures(const vk::Context& context) {
 struct Renderer::Resources {
     explicit Resources(const vk::Context& context)
         : meshes(context), renderPass(createRenderPass(context)), pipelines(context, renderPass.get()),
-          drawArgs(kernel(context, "draw_args.comp")), shadowVolumes(kernel(context, "shadow_volumes.comp")),
-          toonOutline(kernel(context, "toon_outline.comp")),
+          drawArgs(kernel(context, "organs/draw_args")), shadowVolumes(kernel(context, "shadows/shadow_volumes")),
+          toonOutline(kernel(context, "styles/toon_outline")),
           frameConstants(context, sizeof(shared::DrawFrame), vk::MemoryUsage::Upload,
                          VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT),
           drawCommands(context, kOrganKinds * kDrawCommandSize, vk::MemoryUsage::DeviceLocal,
@@ -89,6 +89,10 @@ struct Renderer::Resources {
     vk::Buffer volumeVertices;
     std::uint32_t volumeCapacity = 0; // vertices
     std::unique_ptr<RenderTarget> target;
+
+    // Room for the shadow volumes of organs counted in `counts` (at most maxBytes); returns the capacity.
+    std::uint32_t volumeVerticesFor(const vk::Context& context, const shared::OrganTable& counts,
+                                    std::uint64_t maxBytes);
 };
 
 CameraView frameCamera(const Bounds& bounds, const RenderSettings& settings) {
@@ -103,8 +107,35 @@ Renderer::Renderer(const vk::Context& context) : context_(context) {
 
 Renderer::~Renderer() = default;
 
-Frame Renderer::render(const vk::Buffer& instances, const vk::Buffer& table, const Bounds& bounds,
-                       const RenderSettings& settings) {
+std::uint32_t Renderer::Resources::volumeVerticesFor(const vk::Context& context, const shared::OrganTable& counts,
+                                                     std::uint64_t maxBytes) {
+    const OrganMeshData& data = meshes.data();
+    std::uint64_t needed = 0;
+    for (std::uint32_t kind = 0; kind < kOrganKinds; ++kind)
+        needed += std::uint64_t{counts.count[kind]} * data.castingTriangles[kind] * shared::kVolumeVerticesPerTriangle;
+    std::uint64_t affordable = maxBytes / sizeof(shared::vec4);
+    std::uint64_t limit = std::min<std::uint64_t>(affordable, std::numeric_limits<std::uint32_t>::max());
+    needed = std::clamp<std::uint64_t>(needed, shared::kVolumeVerticesPerTriangle, limit);
+    needed -= needed % shared::kVolumeVerticesPerTriangle;
+    if (needed > volumeCapacity) {
+        volumeVertices = vk::Buffer();
+        volumeVertices = vk::Buffer(context, needed * sizeof(shared::vec4), vk::MemoryUsage::DeviceLocal,
+                                    VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+        volumeCapacity = static_cast<std::uint32_t>(needed);
+    }
+    return volumeCapacity;
+}
+
+RenderTarget& Renderer::offscreenTarget(std::uint32_t width, std::uint32_t height) {
+    Resources& r = *resources_;
+    if (!r.target || r.target->width() != width || r.target->height() != height) {
+        r.target.reset();
+        r.target = std::make_unique<RenderTarget>(context_, r.renderPass.get(), width, height);
+    }
+    return *r.target;
+}
+
+FrameSetup Renderer::prepare(const vk::Buffer& table, const Bounds& bounds, const RenderSettings& settings) {
     const VkPhysicalDeviceLimits& limits = context_.limits();
     if (settings.width == 0 || settings.height == 0 || settings.width > limits.maxFramebufferWidth ||
         settings.height > limits.maxFramebufferHeight) {
@@ -116,57 +147,48 @@ Frame Renderer::render(const vk::Buffer& instances, const vk::Buffer& table, con
     if (!(sunLength > 0.0f) || !std::isfinite(sunLength)) {
         throw std::invalid_argument("the sun direction must be a nonzero finite vector");
     }
-    glm::vec3 towardsSun = settings.sunDirection / sunLength;
     Resources& r = *resources_;
-    if (!r.target || r.target->width() != settings.width || r.target->height() != settings.height) {
-        r.target.reset();
-        r.target = std::make_unique<RenderTarget>(context_, r.renderPass.get(), settings.width, settings.height);
-    }
-    const RenderTarget& target = *r.target;
-    const OrganMeshData& meshes = r.meshes.data();
-    bool shadows = settings.shadows == Shadows::Volume;
-    bool toon = settings.style == Style::Toon;
-
-    CameraView camera = frameCamera(bounds, settings);
+    FrameSetup setup;
+    setup.settings = settings;
+    setup.towardsSun = settings.sunDirection / sunLength;
+    setup.camera = frameCamera(bounds, settings);
     Bounds box = framedBounds(bounds);
     float radius = 0.5f * glm::length(box.extent());
 
-    shared::DrawFrame frame{};
-    std::memcpy(&frame.viewProj, glm::value_ptr(camera.viewProj), sizeof(frame.viewProj));
-    frame.cameraPosition = vec4Of(camera.position, 1.0f);
-    frame.cameraRight = vec4Of(camera.right);
-    frame.cameraUp = vec4Of(camera.up);
-    frame.sunDirection = vec4Of(towardsSun);
+    shared::DrawFrame& frame = setup.constants;
+    std::memcpy(&frame.viewProj, glm::value_ptr(setup.camera.viewProj), sizeof(frame.viewProj));
+    frame.cameraPosition = vec4Of(setup.camera.position, 1.0f);
+    frame.cameraRight = vec4Of(setup.camera.right);
+    frame.cameraUp = vec4Of(setup.camera.up);
+    frame.sunDirection = vec4Of(setup.towardsSun);
     frame.sunColor = vec4Of(settings.sunColor);
     frame.skyColor = vec4Of(settings.skyColor);
     frame.groundBounce = vec4Of(settings.groundBounce);
     frame.groundColor = vec4Of(settings.groundColor);
     glm::vec3 centre = box.centre();
     frame.groundPlane = {centre.x, box.min.y, centre.z, 2.5f * radius};
-    frame.options = {toon ? shared::kStyleToon : shared::kStyleLit, settings.toonBands, 0, 0};
+    frame.options = {settings.style == Style::Toon ? shared::kStyleToon : shared::kStyleLit, settings.toonBands, 0, 0};
     std::memcpy(r.frameConstants.mapped(), &frame, sizeof(frame));
 
     // The host reads the table's counts (not the instances) to size the shadow volumes.
-    shared::OrganTable counts{};
-    if (shadows) {
-        counts = vk::downloadVector<shared::OrganTable>(context_, table, 1)[0];
-        std::uint64_t needed = 0;
-        for (std::uint32_t kind = 0; kind < kOrganKinds; ++kind) {
-            needed +=
-                std::uint64_t{counts.count[kind]} * meshes.castingTriangles[kind] * shared::kVolumeVerticesPerTriangle;
-        }
-        std::uint64_t affordable = settings.maxShadowVolumeBytes / sizeof(shared::vec4);
-        std::uint64_t limit = std::min<std::uint64_t>(affordable, std::numeric_limits<std::uint32_t>::max());
-        needed = std::clamp<std::uint64_t>(needed, shared::kVolumeVerticesPerTriangle, limit);
-        needed -= needed % shared::kVolumeVerticesPerTriangle;
-        if (needed > r.volumeCapacity) {
-            r.volumeVertices = vk::Buffer();
-            r.volumeVertices = vk::Buffer(context_, needed * sizeof(shared::vec4), vk::MemoryUsage::DeviceLocal,
-                                          VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
-            r.volumeCapacity = static_cast<std::uint32_t>(needed);
-        }
+    if (settings.shadows == Shadows::Volume) {
+        setup.counts = vk::downloadVector<shared::OrganTable>(context_, table, 1)[0];
+        r.volumeVerticesFor(context_, setup.counts, settings.maxShadowVolumeBytes);
     }
+    return setup;
+}
 
+void Renderer::record(VkCommandBuffer cmd, const RenderTarget& target, const vk::Buffer& instances,
+                      const vk::Buffer& table, const FrameSetup& setup) {
+    Resources& r = *resources_;
+    const OrganMeshData& meshes = r.meshes.data();
+    const RenderSettings& settings = setup.settings;
+    const shared::OrganTable& counts = setup.counts;
+    const shared::DrawFrame& frame = setup.constants;
+    const CameraView& camera = setup.camera;
+    const glm::vec3 towardsSun = setup.towardsSun;
+    bool shadows = settings.shadows == Shadows::Volume;
+    bool toon = settings.style == Style::Toon;
     shared::DrawArgsPush args{};
     for (std::uint32_t kind = 0; kind < kOrganKinds; ++kind) {
         args.indexCount[kind] = meshes.organs[kind].indexCount;
@@ -175,135 +197,135 @@ Frame Renderer::render(const vk::Buffer& instances, const vk::Buffer& table, con
     }
     args.volumeCapacity = shadows ? r.volumeCapacity : 0;
 
-    context_.submitAndWait([&](VkCommandBuffer cmd) {
-        // The instances and table come from earlier submissions of other passes.
-        memoryDependency(cmd, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_ACCESS_MEMORY_WRITE_BIT,
-                         VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT |
-                             VK_PIPELINE_STAGE_VERTEX_SHADER_BIT,
-                         VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT);
-        vk::cmdFill(cmd, r.volumeDraw, 0);
-        memoryDependency(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
-                         VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
-        if (shadows) {
-            for (std::uint32_t kind = 0; kind < kOrganKinds; ++kind) {
-                if (counts.count[kind] == 0) {
-                    continue;
-                }
-                const MeshRange& hull = meshes.hulls[kind];
-                shared::ShadowVolumePush push{};
-                push.awayFromSun = vec4Of(-towardsSun, kOpenSurfaceShift);
-                push.cameraRight = frame.cameraRight;
-                push.cameraUp = frame.cameraUp;
-                push.kind = kind;
-                push.firstIndex = hull.firstIndex;
-                push.triangleCount = hull.triangleCount();
-                push.vertexOffset = hull.vertexOffset;
-                push.capacity = r.volumeCapacity;
-                push.closedHull = meshes.closedHull[kind] ? 1u : 0u;
-                r.shadowVolumes.dispatch(
-                    cmd, {instances, table, r.meshes.vertices(), r.meshes.indices(), r.volumeDraw, r.volumeVertices},
-                    push, r.shadowVolumes.groupsFor(counts.count[kind]));
+    // The instances and table come from earlier submissions of other passes.
+    memoryDependency(cmd, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_ACCESS_MEMORY_WRITE_BIT,
+                     VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT |
+                         VK_PIPELINE_STAGE_VERTEX_SHADER_BIT,
+                     VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT);
+    vk::cmdFill(cmd, r.volumeDraw, 0);
+    memoryDependency(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                     VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+    if (shadows) {
+        for (std::uint32_t kind = 0; kind < kOrganKinds; ++kind) {
+            if (counts.count[kind] == 0) {
+                continue;
             }
-            memoryDependency(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
-                             VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-                             VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+            const MeshRange& hull = meshes.hulls[kind];
+            shared::ShadowVolumePush push{};
+            push.awayFromSun = vec4Of(-towardsSun, kOpenSurfaceShift);
+            push.cameraRight = frame.cameraRight;
+            push.cameraUp = frame.cameraUp;
+            push.kind = kind;
+            push.firstIndex = hull.firstIndex;
+            push.triangleCount = hull.triangleCount();
+            push.vertexOffset = hull.vertexOffset;
+            push.capacity = r.volumeCapacity;
+            push.closedHull = meshes.closedHull[kind] ? 1u : 0u;
+            r.shadowVolumes.dispatch(
+                cmd, {instances, table, r.meshes.vertices(), r.meshes.indices(), r.volumeDraw, r.volumeVertices},
+                push, r.shadowVolumes.groupsFor(counts.count[kind]));
         }
-        r.drawArgs.dispatch(cmd, {table, r.drawCommands, r.volumeDraw}, args, 1);
         memoryDependency(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
-                         VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_VERTEX_INPUT_BIT,
-                         VK_ACCESS_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_VERTEX_ATTRIBUTE_READ_BIT);
+                         VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                         VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+    }
+    r.drawArgs.dispatch(cmd, {table, r.drawCommands, r.volumeDraw}, args, 1);
+    memoryDependency(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
+                     VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_VERTEX_INPUT_BIT,
+                     VK_ACCESS_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_VERTEX_ATTRIBUTE_READ_BIT);
 
-        std::array<VkClearValue, 4> clears{};
-        clears[kColorAttachment].color = {{settings.background.r, settings.background.g, settings.background.b, 0}};
-        clears[kPlantAttachment].color.uint32[0] = Frame::kNoId;
-        clears[kOrganAttachment].color.uint32[0] = Frame::kNoId;
-        clears[kDepthAttachment].depthStencil = {1.0f, 0};
-        VkRenderPassBeginInfo begin{};
-        begin.sType = VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO;
-        begin.renderPass = r.renderPass.get();
-        begin.framebuffer = target.framebuffer();
-        begin.renderArea = {{0, 0}, {target.width(), target.height()}};
-        begin.clearValueCount = static_cast<std::uint32_t>(clears.size());
-        begin.pClearValues = clears.data();
-        vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
-        VkViewport viewport{0, 0, static_cast<float>(target.width()), static_cast<float>(target.height()), 0, 1};
-        VkRect2D scissor{{0, 0}, {target.width(), target.height()}};
-        vkCmdSetViewport(cmd, 0, 1, &viewport);
-        vkCmdSetScissor(cmd, 0, 1, &scissor);
-        r.pipelines.pushDescriptors(cmd, instances, r.frameConstants);
+    std::array<VkClearValue, 4> clears{};
+    clears[kColorAttachment].color = {{settings.background.r, settings.background.g, settings.background.b, 0}};
+    clears[kPlantAttachment].color.uint32[0] = Frame::kNoId;
+    clears[kOrganAttachment].color.uint32[0] = Frame::kNoId;
+    clears[kDepthAttachment].depthStencil = {1.0f, 0};
+    VkRenderPassBeginInfo begin{};
+    begin.sType = VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO;
+    begin.renderPass = r.renderPass.get();
+    begin.framebuffer = target.framebuffer();
+    begin.renderArea = {{0, 0}, {target.width(), target.height()}};
+    begin.clearValueCount = static_cast<std::uint32_t>(clears.size());
+    begin.pClearValues = clears.data();
+    vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
+    VkViewport viewport{0, 0, static_cast<float>(target.width()), static_cast<float>(target.height()), 0, 1};
+    VkRect2D scissor{{0, 0}, {target.width(), target.height()}};
+    vkCmdSetViewport(cmd, 0, 1, &viewport);
+    vkCmdSetScissor(cmd, 0, 1, &scissor);
+    r.pipelines.pushDescriptors(cmd, instances, r.frameConstants);
 
-        auto drawScene = [&](std::uint32_t pass) {
-            bool sunPass = pass == shared::kPassSun;
-            VkDeviceSize zero = 0;
-            VkBuffer meshVertices = r.meshes.vertices().handle();
-            vkCmdBindVertexBuffers(cmd, 0, 1, &meshVertices, &zero);
-            vkCmdBindIndexBuffer(cmd, r.meshes.indices().handle(), 0, VK_INDEX_TYPE_UINT32);
-            auto push = [&](std::uint32_t kind) {
-                shared::DrawPush constants{kind, pass};
-                vkCmdPushConstants(cmd, r.pipelines.layout(), VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT,
-                                   0, sizeof(constants), &constants);
-            };
-            auto drawKind = [&](std::uint32_t kind) {
-                push(kind);
-                vkCmdDrawIndexedIndirect(cmd, r.drawCommands.handle(), kind * kDrawCommandSize, 1,
-                                         static_cast<std::uint32_t>(kDrawCommandSize));
-            };
-            for (Culling culling : {Culling::Back, Culling::None}) {
-                vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
-                                  sunPass ? r.pipelines.sun(culling) : r.pipelines.base(culling));
-                for (std::uint32_t kind = 0; kind < kOrganKinds; ++kind) {
-                    if (meshes.closedHull[kind] == (culling == Culling::Back)) {
-                        drawKind(kind);
-                    }
+    auto drawScene = [&](std::uint32_t pass) {
+        bool sunPass = pass == shared::kPassSun;
+        VkDeviceSize zero = 0;
+        VkBuffer meshVertices = r.meshes.vertices().handle();
+        vkCmdBindVertexBuffers(cmd, 0, 1, &meshVertices, &zero);
+        vkCmdBindIndexBuffer(cmd, r.meshes.indices().handle(), 0, VK_INDEX_TYPE_UINT32);
+        auto push = [&](std::uint32_t kind) {
+            shared::DrawPush constants{kind, pass};
+            vkCmdPushConstants(cmd, r.pipelines.layout(), VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT,
+                               0, sizeof(constants), &constants);
+        };
+        auto drawKind = [&](std::uint32_t kind) {
+            push(kind);
+            vkCmdDrawIndexedIndirect(cmd, r.drawCommands.handle(), kind * kDrawCommandSize, 1,
+                                     static_cast<std::uint32_t>(kDrawCommandSize));
+        };
+        for (Culling culling : {Culling::Back, Culling::None}) {
+            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
+                              sunPass ? r.pipelines.sun(culling) : r.pipelines.base(culling));
+            for (std::uint32_t kind = 0; kind < kOrganKinds; ++kind) {
+                if (meshes.closedHull[kind] == (culling == Culling::Back)) {
+                    drawKind(kind);
                 }
             }
-            if (settings.ground) {
-                push(shared::kDrawGround);
-                vkCmdDrawIndexed(cmd, meshes.ground.indexCount, 1, meshes.ground.firstIndex, meshes.ground.vertexOffset,
-                                 0);
-            }
-        };
-        if (shadows) {
-            drawScene(shared::kPassAmbient);
-            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, r.pipelines.volume());
-            VkDeviceSize zero = 0;
-            VkBuffer volumeVertices = r.volumeVertices.handle();
-            vkCmdBindVertexBuffers(cmd, 0, 1, &volumeVertices, &zero);
-            vkCmdDrawIndirect(cmd, r.volumeDraw.handle(), offsetof(shared::VolumeDraw, vertexCount), 1,
-                              sizeof(VkDrawIndirectCommand));
-            drawScene(shared::kPassSun);
-        } else {
-            drawScene(shared::kPassFull);
         }
-        vkCmdEndRenderPass(cmd);
-
-        target.cmdCopyToBuffers(cmd);
-        memoryDependency(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
-                         VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_HOST_BIT,
-                         VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_HOST_READ_BIT);
-        if (toon) {
-            shared::OutlinePush outline{};
-            outline.lineColor = vec4Of(settings.outlineColor, 1.0f);
-            outline.width = target.width();
-            outline.height = target.height();
-            outline.radius = static_cast<std::uint32_t>(
-                std::max(1.0f, std::round(kOutlinePixelsPer600 * static_cast<float>(target.height()) / 600.0f)));
-            outline.threshold = kOutlineThreshold;
-            outline.nearPlane = camera.nearPlane;
-            outline.farPlane = camera.farPlane;
-            std::uint64_t pixels = std::uint64_t{target.width()} * target.height();
-            r.toonOutline.dispatch(cmd, {target.color(), target.depth(), target.plant(), target.outlined()}, outline,
-                                   r.toonOutline.groupsFor(pixels));
-            memoryDependency(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
-                             VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT);
+        if (settings.ground) {
+            push(shared::kDrawGround);
+            vkCmdDrawIndexed(cmd, meshes.ground.indexCount, 1, meshes.ground.firstIndex, meshes.ground.vertexOffset,
+                             0);
         }
-    });
+    };
+    if (shadows) {
+        drawScene(shared::kPassAmbient);
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, r.pipelines.volume());
+        VkDeviceSize zero = 0;
+        VkBuffer volumeVertices = r.volumeVertices.handle();
+        vkCmdBindVertexBuffers(cmd, 0, 1, &volumeVertices, &zero);
+        vkCmdDrawIndirect(cmd, r.volumeDraw.handle(), offsetof(shared::VolumeDraw, vertexCount), 1,
+                          sizeof(VkDrawIndirectCommand));
+        drawScene(shared::kPassSun);
+    } else {
+        drawScene(shared::kPassFull);
+    }
+    vkCmdEndRenderPass(cmd);
 
+    target.cmdCopyToBuffers(cmd);
+    memoryDependency(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                     VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_HOST_BIT,
+                     VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_HOST_READ_BIT);
+    if (toon) {
+        shared::OutlinePush outline{};
+        outline.lineColor = vec4Of(settings.outlineColor, 1.0f);
+        outline.width = target.width();
+        outline.height = target.height();
+        outline.radius = static_cast<std::uint32_t>(
+            std::max(1.0f, std::round(kOutlinePixelsPer600 * static_cast<float>(target.height()) / 600.0f)));
+        outline.threshold = kOutlineThreshold;
+        outline.nearPlane = camera.nearPlane;
+        outline.farPlane = camera.farPlane;
+        std::uint64_t pixels = std::uint64_t{target.width()} * target.height();
+        r.toonOutline.dispatch(cmd, {target.color(), target.depth(), target.plant(), target.outlined()}, outline,
+                               r.toonOutline.groupsFor(pixels));
+        memoryDependency(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
+                         VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT);
+    }
+}
+
+Frame Renderer::readBack(const RenderTarget& target, const FrameSetup& setup) const {
     Frame result;
     result.width = target.width();
     result.height = target.height();
     std::size_t pixels = result.pixelCount();
-    const vk::Buffer& color = toon ? target.outlined() : target.color();
+    const vk::Buffer& color = setup.settings.style == Style::Toon ? target.outlined() : target.color();
     result.rgba.resize(4 * pixels);
     std::memcpy(result.rgba.data(), color.mapped(), result.rgba.size() * sizeof(float));
     result.plant.resize(pixels);
@@ -313,13 +335,21 @@ Frame Renderer::render(const vk::Buffer& instances, const vk::Buffer& table, con
     // Depth buffer values back to distances along the view axis (the inverse of the [0, 1] projection).
     result.depth.resize(pixels);
     const auto* depth = reinterpret_cast<const float*>(target.depth().mapped());
-    float n = camera.nearPlane;
-    float f = camera.farPlane;
+    float n = setup.camera.nearPlane;
+    float f = setup.camera.farPlane;
     for (std::size_t i = 0; i < pixels; ++i) {
         float d = depth[i];
         result.depth[i] = d >= 1.0f ? std::numeric_limits<float>::infinity() : f * n / (f - d * (f - n));
     }
     return result;
+}
+
+Frame Renderer::render(const vk::Buffer& instances, const vk::Buffer& table, const Bounds& bounds,
+                       const RenderSettings& settings) {
+    FrameSetup setup = prepare(table, bounds, settings);
+    const RenderTarget& target = offscreenTarget(settings.width, settings.height);
+    context_.submitAndWait([&](VkCommandBuffer cmd) { record(cmd, target, instances, table, setup); });
+    return readBack(target, setup);
 }
 
 } // namespace simeco::draw

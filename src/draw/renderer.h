@@ -11,10 +11,15 @@
 #include <cstdint>
 #include <memory>
 
+#include <glm/vec3.hpp>
+#include <vulkan/vulkan.h>
+
 #include "draw/bounds.h"
 #include "draw/camera.h"
 #include "draw/frame.h"
 #include "draw/render_settings.h"
+#include "draw/render_target.h"
+#include "render/shared/draw_layout.h"
 
 namespace simeco::vk {
 class Buffer;
@@ -22,6 +27,15 @@ class Context;
 } // namespace simeco::vk
 
 namespace simeco::draw {
+
+// What the host prepared for a frame and the device's recording reads.
+struct FrameSetup {
+    RenderSettings settings;
+    CameraView camera;
+    glm::vec3 towardsSun{0, 1, 0};
+    shared::DrawFrame constants{};
+    shared::OrganTable counts{}; // the table's counts, read back only for shadow volumes
+};
 
 // The camera a frame is rendered with: settings.camera, or the default angles framed on `bounds`.
 CameraView frameCamera(const Bounds& bounds, const RenderSettings& settings);
@@ -38,10 +52,23 @@ public:
 
     // Renders the instances (an array of OrganInstance grouped by kind) as `table` (one OrganTable) describes
     // them, framing `bounds` (the table's bounds, decoded on the host) unless settings.camera says otherwise.
-    // Waits for the device and returns the frame. Throws std::invalid_argument for a zero or too large size.
-    // With shadow volumes the table's counts are read back to size the volume buffer.
+    // Waits for the device and returns the frame: prepare(), record() into the offscreen target, readBack().
+    // Throws std::invalid_argument for a zero or too large size.
     Frame render(const vk::Buffer& instances, const vk::Buffer& table, const Bounds& bounds,
                  const RenderSettings& settings);
+
+    // The host's part of a frame: the camera and per-frame constants; with shadow volumes the table's counts are
+    // read back to size the volume buffer. Throws std::invalid_argument for a zero or too large size.
+    FrameSetup prepare(const vk::Buffer& table, const Bounds& bounds, const RenderSettings& settings);
+    // Records the frame into `cmd`, drawing into `target` (one of this renderer's render pass), with explicit
+    // barriers before (the instances and table may come from passes recorded earlier) and after (the target's
+    // copies are ready for the host). The caller submits.
+    void record(VkCommandBuffer cmd, const RenderTarget& target, const vk::Buffer& instances, const vk::Buffer& table,
+                const FrameSetup& setup);
+    // The frame `record` drew into `target`, once its submission has completed.
+    Frame readBack(const RenderTarget& target, const FrameSetup& setup) const;
+    // The offscreen target of the given size, made on first use and kept while the size stays.
+    RenderTarget& offscreenTarget(std::uint32_t width, std::uint32_t height);
 
 private:
     struct Resources;

@@ -1,5 +1,5 @@
 // Organ instances as world-space triangles on the CPU: the geometry `simeco render` draws, for mesh files.
-// The placement of a mesh vertex by an instance mirrors render/organ_transform.glsl; keep the two in step.
+// The placement of a mesh vertex by an instance mirrors render/organs/organ_transform.glsl; keep the two in step.
 #pragma once
 
 #include <array>
@@ -22,7 +22,7 @@ struct PlacedVertex {
     bool present;     // false: the vertex belongs to another leaf shape of the shared leaf mesh
 };
 
-// organVertex of render/organ_transform.glsl on the CPU. One difference: a disc that faces the viewer (@o)
+// organVertex of render/organs/organ_transform.glsl on the CPU. One difference: a disc that faces the viewer (@o)
 // lies in the heading-left plane like an @c disc, because a mesh file has no viewer to face.
 PlacedVertex placeVertex(const shared::OrganInstance& o, std::uint32_t kind, const shared::MeshVertex& local);
 

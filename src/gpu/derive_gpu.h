@@ -9,20 +9,16 @@
 #include <string>
 #include <vector>
 
-#include "cpu/derive.h"
-#include "gpu/device_modules.h"
+#include "codegen/derive_support.h"
 #include "ir/grammar.h"
+#include "stream/derive_options.h"
+#include "stream/device_modules.h"
 
 namespace simeco::vk {
 class Context;
 }
 
 namespace simeco::gpu {
-
-// Why a grammar cannot be derived on the GPU at all, or nothing when it can.
-std::optional<std::string> gpuUnsupportedReason(const ir::Grammar& g);
-// Why a grammar needs the sequential strategy rather than the parallel passes, or nothing.
-std::optional<std::string> gpuParallelUnsupportedReason(const ir::Grammar& g);
 
 // How the device rewrites: every module at once (match/count, scan, write over the whole stream), or one
 // invocation per plant walking its string in order, for grammars whose productions depend on the order of
@@ -73,13 +69,14 @@ public:
     // asked; callers read the string back and apply cpu::applyHomomorphismCpu instead.
     bool appliesHomomorphism() const;
 
-    // Derives options.plants plants in one buffer (copies of the grammar, or the species in turn). The string is read back only when
-    // `readBack`; otherwise the result's string is empty and `stats` tells the sizes.
-    cpu::DeriveResult derive(const cpu::DeriveOptions& options, bool readBack = true, GpuDeriveStats* stats = nullptr);
+    // Derives options.plants plants in one buffer (copies of the grammar, or the species in turn). The string is read
+    // back only when `readBack`; otherwise the result's string is empty and `stats` tells the sizes.
+    stream::DeriveResult derive(const stream::DeriveOptions& options, bool readBack = true,
+                                GpuDeriveStats* stats = nullptr);
 
     // The string the last derive() left on the device (read back or not), valid until the next derive() or the
     // deriver's end: what the turtle kernels interpret without a round trip through the host.
-    DeviceModules lastString() const;
+    stream::DeviceModules lastString() const;
 
     // Parallel or Sequential: the strategy this deriver uses.
     GpuStrategy strategy() const;

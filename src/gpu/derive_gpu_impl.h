@@ -15,13 +15,14 @@
 
 #include <vulkan/vulkan.h>
 
+#include "codegen/derive_codegen.h"
 #include "compute/shared/derive_layout.h"
 #include "gpu/bracket_tree.h"
-#include "gpu/derive_codegen.h"
 #include "gpu/derive_gpu.h"
 #include "gpu/scan.h"
 #include "ir/grammar.h"
 #include "ir/source_loc.h"
+#include "stream/plant_control.h"
 #include "vk/buffer.h"
 #include "vk/context.h"
 #include "vk/pipeline.h"
@@ -55,7 +56,7 @@ struct GpuDeriver::Impl {
     bool contextChunks; // the step's match pass finds context modules by chunks (GpuContextMatch)
     int lastStream = -1; // the stream the last derive() ended in
     uint32_t globalStride = 0, arrayStride = 0; // globals and array elements per plant (the most of any species)
-    GeneratedKernels kernels;
+    codegen::GeneratedKernels kernels;
     std::optional<vk::ComputePipeline> decompositionMatch, decompositionWrite, sequential;
     // The step's match and write passes, specialised for what the step needs (stepMatch(), stepWrite()): to copy
     // the modules of frozen plants (kFrozenPlants) and for a stream of one plant (kSinglePlant). Each variant is
@@ -67,11 +68,11 @@ struct GpuDeriver::Impl {
     bool anyFrozen = false; // some plant is frozen in the step being derived
     // The homomorphism, generated as the decomposition of grammars whose decomposition is their homomorphism;
     // empty when no species has one, or when its productions need the host (homomorphismHostReason).
-    GeneratedKernels homomorphismKernels;
+    codegen::GeneratedKernels homomorphismKernels;
     std::optional<vk::ComputePipeline> homomorphismMatch, homomorphismWrite;
     std::optional<std::string> homomorphismHostReason;
     // The error sites of the kernels being run (the homomorphism's while it runs).
-    const std::vector<ErrorSite>* activeErrors = nullptr;
+    const std::vector<codegen::ErrorSite>* activeErrors = nullptr;
     vk::ComputePipeline plantStarts, plantHintsKernel, cutApply;
     std::optional<vk::ComputePipeline> plantStartsTiled; // with a fused scan, specialised for its match words
     vk::ComputePipeline greedyReduce, greedyScan, greedyMark, homomorphismStart;
@@ -134,6 +135,17 @@ struct GpuDeriver::Impl {
     bool singlePlant(bool findsPlants) const { return plants == 1 && findsPlants; }
     const vk::ComputePipeline& stepMatch();
     const vk::ComputePipeline& stepWrite();
+
+    // ---- the host's side of a derivation (derive_gpu.cpp) ----
+
+    // The axioms (and their particle state) into streams[0], and the per-plant buffers sized to `plants`.
+    void uploadAxioms(const stream::ModuleString& axioms, const stream::DeriveOptions& options);
+    // The plants' globals and arrays, and which plants grow in the step (the others are copied).
+    void uploadPlantState(const stream::PlantControl& control, const std::vector<uint8_t>& growing);
+    // What the sequential kernel's productions wrote to the globals and arrays, and the stop() calls.
+    void downloadPlantState(stream::PlantControl& control) const;
+    // Stream `s` read back to the host, with its particle state when `particles`.
+    stream::ModuleString readBack(const Stream& s, bool particles) const;
 
     // ---- the parallel passes (derive_gpu_passes.cpp) ----
 

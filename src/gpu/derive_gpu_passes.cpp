@@ -7,7 +7,7 @@
 
 #include <fmt/format.h>
 
-#include "cpu/derive.h"
+#include "stream/random_passes.h"
 #include "vk/barriers.h"
 
 namespace simeco::gpu {
@@ -63,7 +63,7 @@ uint32_t GpuDeriver::Impl::submit(const std::function<void(VkCommandBuffer)>& re
     lastUnfinished = words[3] != 0;
     if (words[1] != 0) {
         uint32_t site = words[1] - 1;
-        const std::vector<ErrorSite>& sites = *activeErrors;
+        const std::vector<codegen::ErrorSite>& sites = *activeErrors;
         if (site < sites.size()) throw ir::InputError(sites[site].loc, sites[site].message);
         throw std::runtime_error("a derivation kernel reported an unknown error");
     }
@@ -297,7 +297,7 @@ int GpuDeriver::Impl::decompose(int old, int x, uint32_t stepIndex, uint32_t see
             },
             timer, millis);
         if (live == 0) break;
-        uint32_t pass = cpu::decompositionPass(stepIndex, depth);
+        uint32_t pass = stream::decompositionPass(stepIndex, depth);
         DerivePush p = push(n, stepIndex, seed, pass, oldStream.count, uint32_t(depth));
         uint32_t total = submit(
             [&](VkCommandBuffer cmd) {

@@ -7,9 +7,9 @@
 
 #include <fmt/format.h>
 
+#include "codegen/context_codegen.h"
+#include "codegen/glsl_compiler.h"
 #include "compute/shared/particle_layout.h"
-#include "gpu/context_codegen.h"
-#include "gpu/glsl_compiler.h"
 
 namespace simeco::gpu {
 
@@ -29,10 +29,10 @@ GpuDeriver::Impl::Impl(const vk::Context& c, std::vector<ir::Grammar> grammars, 
       homomorphismStart(vk::ComputePipeline::embedded(c, "derive/homomorphism_start")), scan(c), brackets(c, scan) {
     if (species.empty()) throw std::invalid_argument("GpuDeriver: no species");
     for (const ir::Grammar& g : species) {
-        if (std::optional<std::string> reason = gpuUnsupportedReason(g))
+        if (std::optional<std::string> reason = codegen::gpuUnsupportedReason(g))
             throw std::runtime_error("the GPU backend cannot derive this grammar: " + *reason +
                                      " (use --backend cpu)");
-        std::optional<std::string> parallelReason = gpuParallelUnsupportedReason(g);
+        std::optional<std::string> parallelReason = codegen::gpuParallelUnsupportedReason(g);
         if (parallelReason && strategy == GpuStrategy::Parallel)
             throw std::runtime_error("the parallel GPU passes cannot derive this grammar: " + *parallelReason);
         if (parallelReason) strategy = GpuStrategy::Sequential;
@@ -45,19 +45,19 @@ GpuDeriver::Impl::Impl(const vk::Context& c, std::vector<ir::Grammar> grammars, 
     if (strategy == GpuStrategy::Auto) strategy = GpuStrategy::Parallel;
     auto start = std::chrono::steady_clock::now();
     auto build = [&](const std::string& source, const char* name) {
-        std::vector<uint32_t> spirv = cachedComputeKernel(source, name);
+        std::vector<uint32_t> spirv = codegen::cachedComputeKernel(source, name);
         return vk::ComputePipeline(ctx, spirv, name);
     };
     if (strategy == GpuStrategy::Sequential) {
-        kernels = generateSequentialKernel(species, texelInputs);
+        kernels = codegen::generateSequentialKernel(species, texelInputs);
         sequential.emplace(build(kernels.sequential, "derive/sequential"));
     } else {
-        kernels = generateDeriveKernels(species, texelInputs, contextChunks);
+        kernels = codegen::generateDeriveKernels(species, texelInputs, contextChunks);
         if (kernels.stride != static_cast<uint32_t>(stride))
             throw std::logic_error(fmt::format("the step's write pass stores {} parameter slots per module, the "
                                                "stream has {}", kernels.stride, stride));
-        matchSpirv = cachedComputeKernel(kernels.match, "derive/match");
-        writeSpirv = cachedComputeKernel(kernels.write, "derive/write");
+        matchSpirv = codegen::cachedComputeKernel(kernels.match, "derive/match");
+        writeSpirv = codegen::cachedComputeKernel(kernels.write, "derive/write");
     }
     if (kernels.hasDecomposition && strategy == GpuStrategy::Parallel) {
         decompositionMatch.emplace(build(kernels.decompositionMatch, "derive/decomposition_match"));
@@ -92,15 +92,15 @@ template <typename Build> void GpuDeriver::Impl::buildHomomorphism(Build& build)
         any = any || !g.homomorphism.productions.empty();
         g.decomposition = g.homomorphism;
         g.productions = ir::RuleSet{};
-        if (!homomorphismHostReason) homomorphismHostReason = gpuUnsupportedReason(g);
-        if (!homomorphismHostReason) homomorphismHostReason = gpuParallelUnsupportedReason(g);
+        if (!homomorphismHostReason) homomorphismHostReason = codegen::gpuUnsupportedReason(g);
+        if (!homomorphismHostReason) homomorphismHostReason = codegen::gpuParallelUnsupportedReason(g);
     }
     if (!any) {
         homomorphismHostReason.reset(); // nothing to apply, on the device or elsewhere
         return;
     }
     if (homomorphismHostReason) return;
-    homomorphismKernels = generateDeriveKernels(images, texelInputs);
+    homomorphismKernels = codegen::generateDeriveKernels(images, texelInputs);
     homomorphismMatch.emplace(build(homomorphismKernels.decompositionMatch, "derive/homomorphism_match"));
     homomorphismWrite.emplace(build(homomorphismKernels.decompositionWrite, "derive/homomorphism_write"));
 }

@@ -5,11 +5,11 @@
 #include <fmt/format.h>
 
 #include "lang/color_map.h"
-#include "lang/material_file.h"
 #include "lang/cpfg_parser.h"
 #include "lang/cpfg_preprocessor.h"
 #include "lang/cpfg_view.h"
 #include "lang/eco_parser.h"
+#include "lang/material_file.h"
 #include "lang/quick_grammar.h"
 #include "lang/source_text.h"
 
@@ -36,17 +36,9 @@ std::string findModelFile(const std::string& lsystemPath, const std::string& ext
     return only;
 }
 
-ir::Grammar loadGrammarFile(const std::string& path) {
-    std::string ext = fs::path(path).extension().string();
-    if (ext == ".eco") {
-        ir::EcoScene scene = parseEcoFile(path);
-        if (scene.plants.empty()) throw ir::InputError({path, 0, 0}, "the scene has no plant");
-        return compileEcoPlant(scene, 0);
-    }
-    if (ext == ".lsys") return parseQuickGrammar(readSourceFile(path), path);
-    if (ext != ".l")
-        throw ir::InputError({path, 0, 0},
-                             fmt::format("unknown grammar file type '{}' (expected .l, .lsys or .eco)", ext));
+namespace {
+
+ir::Grammar loadCpfgModel(const std::string& path) {
     CpfgView view;
     std::string viewPath = findViewFile(path);
     if (!viewPath.empty()) view = readCpfgView(viewPath);
@@ -57,6 +49,31 @@ ir::Grammar loadGrammarFile(const std::string& path) {
     if (std::string map = findModelFile(path, ".map"); !map.empty()) g.view.palette = readColorMap(map);
     else if (std::string mat = findModelFile(path, ".mat"); !mat.empty()) g.view.palette = readMaterialColors(mat);
     return g;
+}
+
+} // namespace
+
+std::vector<ir::Grammar> loadSpecies(const std::string& path, std::vector<ir::EcoWarning>* warnings) {
+    std::string ext = fs::path(path).extension().string();
+    std::vector<ir::Grammar> species;
+    if (ext == ".eco") {
+        ir::EcoScene scene = parseEcoFile(path);
+        if (warnings) warnings->insert(warnings->end(), scene.warnings.begin(), scene.warnings.end());
+        if (scene.plants.empty()) throw ir::InputError(scene.loc, "the scene has no plant");
+        for (size_t i = 0; i < scene.plants.size(); ++i) species.push_back(compileEcoPlant(scene, i));
+    } else if (ext == ".lsys") {
+        species.push_back(parseQuickGrammar(readSourceFile(path), path));
+    } else if (ext == ".l") {
+        species.push_back(loadCpfgModel(path));
+    } else {
+        throw ir::InputError({path, 0, 0},
+                             fmt::format("unknown grammar file type '{}' (expected .l, .lsys or .eco)", ext));
+    }
+    return species;
+}
+
+ir::Grammar loadGrammarFile(const std::string& path) {
+    return std::move(loadSpecies(path).front());
 }
 
 } // namespace simeco::lang

@@ -2,13 +2,19 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
+#include "ir/eco_scene.h"
 #include "ir/grammar.h"
 
 namespace simeco::lang {
 
-// `.l`: cpfg / L-studio (with the model's view file from the same folder, when there is one);
-// `.lsys`: quick (Houdini-style) grammar; `.eco`: SimEco script (the first plant's Grow block).
+// The one entry point for every input language, chosen by the file's extension: `.l`: cpfg / L-studio (with the
+// model's view file from the same folder, when there is one); `.lsys`: quick (Houdini-style) grammar; `.eco`:
+// SimEco scene, one grammar per plant (species) of the scene, its warnings added to `warnings` when given.
+std::vector<ir::Grammar> loadSpecies(const std::string& path, std::vector<ir::EcoWarning>* warnings = nullptr);
+
+// The first of loadSpecies(path): the grammar of an `.l` or `.lsys` file, or an `.eco` scene's first plant.
 ir::Grammar loadGrammarFile(const std::string& path);
 
 // The cpfg view file that belongs to an `.l` file: `<name>.v` beside it, else the only `.v` there.

@@ -10,7 +10,7 @@
 #include <glm/vec3.hpp>
 
 #include "compute/shared/organ_layout.h"
-#include "cpu/module_string.h"
+#include "stream/module_string.h"
 #include "turtle/turtle_settings.h"
 
 namespace simeco::turtle {

@@ -106,7 +106,7 @@ TurtleCommands turtleCommands(const ir::Alphabet& alphabet) {
     return t;
 }
 
-uint32_t TurtleCommands::commandAt(const cpu::ModuleString& s, size_t begin, size_t end, size_t i) const {
+uint32_t TurtleCommands::commandAt(const stream::ModuleString& s, size_t begin, size_t end, size_t i) const {
     uint32_t sym = s.sym[i];
     if (sym >= symbols) return kTurtleNone;
     if (i == begin) return plain[sym];

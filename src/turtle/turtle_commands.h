@@ -7,8 +7,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "cpu/module_string.h"
 #include "ir/grammar.h"
+#include "stream/module_string.h"
 
 namespace simeco::turtle {
 
@@ -24,7 +24,7 @@ struct TurtleCommands {
     uint32_t at = kNoSymbol, tilde = kNoSymbol, query = kNoSymbol;
 
     // The command of module i of a plant's modules [begin, end).
-    uint32_t commandAt(const cpu::ModuleString& s, size_t begin, size_t end, size_t i) const;
+    uint32_t commandAt(const stream::ModuleString& s, size_t begin, size_t end, size_t i) const;
 };
 
 TurtleCommands turtleCommands(const ir::Alphabet& alphabet);

@@ -53,7 +53,7 @@ glm::vec3 perpendicularUp(glm::vec3 heading, const Frame& f) {
 // to `organs` (plant-local positions).
 class PlantTurtle {
 public:
-    PlantTurtle(const cpu::ModuleString& s, const TurtleCommands& commands, const TurtleSettings& t,
+    PlantTurtle(const stream::ModuleString& s, const TurtleCommands& commands, const TurtleSettings& t,
                 uint32_t plant, std::vector<OrganInstance>& organs)
         : s_(s), commands_(commands), t_(t), plant_(plant), organs_(organs) {}
 
@@ -83,7 +83,7 @@ public:
     }
 
 private:
-    const cpu::ModuleString& s_;
+    const stream::ModuleString& s_;
     const TurtleCommands& commands_;
     const TurtleSettings& t_;
     uint32_t plant_;
@@ -297,7 +297,7 @@ void translate(OrganInstance& o, glm::vec3 d) {
 
 } // namespace
 
-Interpretation interpretCpu(const cpu::ModuleString& string, const TurtleCommands& commands,
+Interpretation interpretCpu(const stream::ModuleString& string, const TurtleCommands& commands,
                             const std::vector<TurtleSettings>& species, const FieldOptions& field) {
     Interpretation result;
     uint32_t plants = uint32_t(string.plants());
@@ -328,7 +328,8 @@ Interpretation interpretCpu(const cpu::ModuleString& string, const TurtleCommand
     return result;
 }
 
-void fillQueries(cpu::ModuleString& string, const TurtleCommands& commands, const std::vector<TurtleSettings>& species) {
+void fillQueries(stream::ModuleString& string, const TurtleCommands& commands,
+                 const std::vector<TurtleSettings>& species) {
     std::vector<OrganInstance> unused;
     for (uint32_t p = 0; p < string.plants(); ++p) {
         PlantTurtle turtle(string, commands, species[p % species.size()], p, unused);

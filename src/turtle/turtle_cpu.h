@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "cpu/module_string.h"
+#include "stream/module_string.h"
 #include "turtle/interpretation.h"
 #include "turtle/turtle_commands.h"
 #include "turtle/turtle_settings.h"
@@ -14,11 +14,12 @@ namespace simeco::turtle {
 
 // `species[p % species.size()]` holds plant p's settings; `commands` tells each module's kTurtle* command.
 // `string` is what the turtle reads: the derived string after the homomorphism.
-Interpretation interpretCpu(const cpu::ModuleString& string, const TurtleCommands& commands,
+Interpretation interpretCpu(const stream::ModuleString& string, const TurtleCommands& commands,
                             const std::vector<TurtleSettings>& species, const FieldOptions& field = {});
 
 // Query modules ?P, ?H, ?L, ?U get the turtle's position or vector where they stand (in the plant's own
 // space), as cpfg fills them after interpreting the string: two parameters get x and y, three x, y and z.
-void fillQueries(cpu::ModuleString& string, const TurtleCommands& commands, const std::vector<TurtleSettings>& species);
+void fillQueries(stream::ModuleString& string, const TurtleCommands& commands,
+                 const std::vector<TurtleSettings>& species);
 
 } // namespace simeco::turtle

@@ -107,8 +107,8 @@ TEST_F(CorpusTest, ExactModelsMatchCpfgAndStructureModelsDerive) {
         std::vector<ParsedModule> got;
         try {
             simeco::ir::Grammar g = simeco::lang::loadGrammarFile(file.string());
-            simeco::cpu::DeriveResult result = simeco::cpu::deriveCpu(g, {});
-            got = parseCpfgString(simeco::cpu::formatModules(result.string, g.alphabet, 0, result.string.size()));
+            simeco::stream::DeriveResult result = simeco::cpu::deriveCpu(g, {});
+            got = parseCpfgString(simeco::stream::formatModules(result.string, g.alphabet, 0, result.string.size()));
         } catch (const simeco::ir::InputError& e) {
             ADD_FAILURE() << model.folder << ": " << e.formatted();
             continue;

@@ -9,8 +9,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "cpu/module_string.h"
 #include "lang/load_grammar.h"
+#include "stream/module_string.h"
 #include "turtle/turtle_commands.h"
 #include "turtle/turtle_cpu.h"
 
@@ -21,8 +21,8 @@ namespace fs = std::filesystem;
 const fs::path kCorpus = fs::path(SIMECO_SHARED_DIR) / "corpus" / "cpfg-vlab";
 
 // Splits a cpfg string into the alphabet's modules, taking the longest name that matches at each place.
-simeco::cpu::ModuleString readString(const std::string& text, const simeco::ir::Alphabet& alphabet) {
-    simeco::cpu::ModuleString s;
+simeco::stream::ModuleString readString(const std::string& text, const simeco::ir::Alphabet& alphabet) {
+    simeco::stream::ModuleString s;
     s.stride = 8;
     s.plantStart = {0};
     size_t longest = 0;
@@ -64,8 +64,8 @@ TEST_P(TurtleQueries, MatchCpfg) {
     std::ifstream in(kCorpus / "expected" / m.expected);
     std::stringstream text;
     text << in.rdbuf();
-    simeco::cpu::ModuleString want = readString(text.str(), g.alphabet);
-    simeco::cpu::ModuleString got = want;
+    simeco::stream::ModuleString want = readString(text.str(), g.alphabet);
+    simeco::stream::ModuleString got = want;
     simeco::turtle::TurtleCommands commands = simeco::turtle::turtleCommands(g.alphabet);
     // cpfg derived these strings without the models' view files: the positions show its default 45-degree
     // angle where the view files ask for others. So the turtle runs with the default view here.

@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
+#include "codegen/derive_codegen.h"
 #include "compare_strings.h"
 #include "cpu/derive.h"
-#include "gpu/derive_codegen.h"
 #include "gpu/derive_gpu.h"
 #include "gpu_fixture.h"
 #include "ir/species.h"
@@ -53,7 +53,7 @@ ir::Grammar lantanaPlant() {
 
 // Whether the write pass generated for these species is given the alternatives (it reads no draw starts then).
 bool writeIsGivenAlternatives(const std::vector<ir::Grammar>& species) {
-    gpu::GeneratedKernels k = gpu::generateDeriveKernels(species, true);
+    codegen::GeneratedKernels k = codegen::generateDeriveKernels(species, true);
     bool given = k.write.find("givenAlternative = choice >> kProductionBits;") != std::string::npos;
     bool draws = k.write.find("drawStartsAt(i)") != std::string::npos;
     EXPECT_NE(given, draws) << "a write pass either is given the alternatives or draws them";
@@ -67,11 +67,11 @@ void expectEnginesAgree(const vk::Context& context, const std::vector<ir::Gramma
     const ir::Alphabet& alphabet = species.front().alphabet;
     for (std::uint32_t plants : {1u, 9u, 300u}) {
         SCOPED_TRACE(std::to_string(plants) + " plants");
-        cpu::DeriveOptions options;
+        stream::DeriveOptions options;
         options.plants = plants;
-        cpu::DeriveResult want = cpu::deriveSpeciesCpu(species, options);
+        stream::DeriveResult want = cpu::deriveSpeciesCpu(species, options);
         if (plants == 300u) {
-            std::string text = cpu::formatModules(want.string, alphabet, 0, want.string.size());
+            std::string text = stream::formatModules(want.string, alphabet, 0, want.string.size());
             for (const std::string& module : seen) EXPECT_NE(text.find(module), std::string::npos) << module;
         }
         gpu::GpuDeriver deriver(context, species);

@@ -16,17 +16,18 @@ bool sameParameter(float want, float got) {
     return difference <= 1e-6 || difference <= 1e-5 * std::max(std::fabs(double{want}), std::fabs(double{got}));
 }
 
-std::string moduleText(const cpu::ModuleString& s, const ir::Alphabet& alphabet, std::size_t i) {
-    return cpu::formatModules(s, alphabet, i, i + 1);
+std::string moduleText(const stream::ModuleString& s, const ir::Alphabet& alphabet, std::size_t i) {
+    return stream::formatModules(s, alphabet, i, i + 1);
 }
 
 } // namespace
 
-std::string firstDifference(const cpu::DeriveResult& want, const cpu::DeriveResult& got, const ir::Alphabet& alphabet) {
+std::string firstDifference(const stream::DeriveResult& want, const stream::DeriveResult& got,
+                            const ir::Alphabet& alphabet) {
     std::ostringstream out;
     if (want.steps != got.steps) out << "steps " << got.steps << ", expected " << want.steps << "; ";
-    const cpu::ModuleString& a = want.string;
-    const cpu::ModuleString& b = got.string;
+    const stream::ModuleString& a = want.string;
+    const stream::ModuleString& b = got.string;
     std::size_t common = std::min(a.size(), b.size());
     for (std::size_t i = 0; i < common; ++i) {
         bool same = a.sym[i] == b.sym[i] && a.paramCount[i] == b.paramCount[i];
@@ -37,7 +38,7 @@ std::string firstDifference(const cpu::DeriveResult& want, const cpu::DeriveResu
         auto plant = std::upper_bound(a.plantStart.begin(), a.plantStart.end(), std::uint64_t{i});
         out << "module " << i << " of " << a.size() << " (plant " << (plant - a.plantStart.begin() - 1)
             << "): " << moduleText(b, alphabet, i) << ", expected " << moduleText(a, alphabet, i) << " (after \""
-            << cpu::formatModules(a, alphabet, from, i) << "\"); ";
+            << stream::formatModules(a, alphabet, from, i) << "\"); ";
         break;
     }
     if (a.size() != b.size()) out << "module count " << b.size() << ", expected " << a.size() << "; ";

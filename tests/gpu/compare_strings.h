@@ -9,6 +9,7 @@ namespace simeco::test {
 
 // Empty when `got` equals `want`; else the first differing module with what precedes it, and any difference
 // in module count, plant segments or steps.
-std::string firstDifference(const cpu::DeriveResult& want, const cpu::DeriveResult& got, const ir::Alphabet& alphabet);
+std::string firstDifference(const stream::DeriveResult& want, const stream::DeriveResult& got,
+                            const ir::Alphabet& alphabet);
 
 } // namespace simeco::test

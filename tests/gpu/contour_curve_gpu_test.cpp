@@ -73,8 +73,8 @@ TEST_F(CurveModelGpuTest, EveryCurveTypeMatchesTheCpu) {
                          "\nT(c,t) --> C(c,curveX(c,t),curveY(c,t),curveZ(c,t),curveGAL(c))\nendlsystem\n");
     ir::Grammar g = load();
     ASSERT_EQ(g.curves.size(), 6u);
-    ASSERT_FALSE(gpu::gpuUnsupportedReason(g).has_value()) << *gpu::gpuUnsupportedReason(g);
-    cpu::DeriveResult want = cpu::deriveCpu(g, {});
+    ASSERT_FALSE(codegen::gpuUnsupportedReason(g).has_value()) << *codegen::gpuUnsupportedReason(g);
+    stream::DeriveResult want = cpu::deriveCpu(g, {});
     ASSERT_EQ(want.string.size(), 60u);
     for (gpu::GpuStrategy strategy : {gpu::GpuStrategy::Parallel, gpu::GpuStrategy::Sequential}) {
         SCOPED_TRACE(strategy == gpu::GpuStrategy::Parallel ? "parallel" : "sequential");

@@ -16,11 +16,11 @@
 #include <vector>
 
 #include "../unit/grammar_text.h"
+#include "codegen/derive_codegen.h"
+#include "compare_strings.h"
 #include "compute/shared/derive_layout.h"
 #include "cpu/derive.h"
-#include "gpu/derive_codegen.h"
 #include "gpu/derive_gpu.h"
-#include "compare_strings.h"
 #include "gpu_fixture.h"
 #include "ir/source_loc.h"
 #include "lang/load_grammar.h"
@@ -53,18 +53,18 @@ struct Outcome {
 };
 
 // Derives `g` with both engines. Errors other than the CPU outgrowing the module budget propagate.
-Outcome compareEngines(const vk::Context& context, const ir::Grammar& g, const cpu::DeriveOptions& options,
+Outcome compareEngines(const vk::Context& context, const ir::Grammar& g, const stream::DeriveOptions& options,
                        gpu::GpuStrategy strategy = gpu::GpuStrategy::Auto, gpu::GpuLoads loads = gpu::GpuLoads::Auto,
                        gpu::GpuContextMatch contexts = gpu::GpuContextMatch::Auto) {
-    if (std::optional<std::string> reason = gpu::gpuUnsupportedReason(g)) return {Verdict::Unsupported, *reason};
-    cpu::DeriveResult want;
+    if (std::optional<std::string> reason = codegen::gpuUnsupportedReason(g)) return {Verdict::Unsupported, *reason};
+    stream::DeriveResult want;
     try {
         want = cpu::deriveCpu(g, options);
     } catch (const ir::LimitError& e) {
         return {Verdict::OverBudget, e.what()};
     }
     gpu::GpuDeriver deriver(context, g, strategy, loads, contexts);
-    cpu::DeriveResult got = deriver.derive(options);
+    stream::DeriveResult got = deriver.derive(options);
     std::string difference = firstDifference(want, got, g.alphabet);
     return {difference.empty() ? Verdict::Match : Verdict::Differ, difference};
 }
@@ -118,7 +118,7 @@ class DeriveGpuTest : public GpuTest {
 protected:
     // `plants` plants of g derived by the parallel strategy must match the CPU reference's.
     void expectParallelMatch(const ir::Grammar& g, std::uint32_t plants) {
-        cpu::DeriveOptions options;
+        stream::DeriveOptions options;
         options.plants = plants;
         Outcome outcome = compareEngines(context(), g, options, gpu::GpuStrategy::Parallel);
         EXPECT_EQ(outcome.verdict, Verdict::Match) << outcome.detail;
@@ -231,7 +231,7 @@ TEST(RandomGrammarTest, GeneratedGrammarsDeriveOnTheCpu) {
         std::string text = randomGrammarText(seed);
         try {
             ir::Grammar g = simeco::testing::grammarFromText(text);
-            cpu::DeriveOptions options;
+            stream::DeriveOptions options;
             options.maxModules = kRandomModuleBudget;
             try {
                 cpu::deriveCpu(g, options);
@@ -287,7 +287,7 @@ void compareRandomGrammars(const vk::Context& context, std::uint64_t first, std:
         std::string failure;
         try {
             ir::Grammar g = simeco::testing::grammarFromText(text);
-            cpu::DeriveOptions options;
+            stream::DeriveOptions options;
             options.maxModules = kRandomModuleBudget;
             Outcome outcome = compareEngines(context, g, options, strategy, loads, contexts);
             switch (outcome.verdict) {
@@ -400,18 +400,18 @@ TEST_F(DeriveGpuTest, TheOtherContextMatchMatchesTheCpu) {
 // `--plants`: plant k draws from its own random stream on both engines, so any number of plants must match.
 TEST_F(DeriveGpuTest, ManyPlantsMatchTheCpu) {
     ir::Grammar g = plantGrammar();
-    ASSERT_FALSE(gpu::gpuUnsupportedReason(g).has_value()) << *gpu::gpuUnsupportedReason(g);
+    ASSERT_FALSE(codegen::gpuUnsupportedReason(g).has_value()) << *codegen::gpuUnsupportedReason(g);
     for (std::uint32_t plants : {1u, 7u, 1000u}) {
         SCOPED_TRACE(std::to_string(plants) + " plants");
-        cpu::DeriveOptions options;
+        stream::DeriveOptions options;
         options.plants = plants;
-        cpu::DeriveResult want = cpu::deriveCpu(g, options);
+        stream::DeriveResult want = cpu::deriveCpu(g, options);
         ASSERT_EQ(want.string.plants(), plants);
         if (plants > 1) {
             // The plants differ, or the test would not see streams mixed up between plants.
             std::set<std::string> distinct;
             for (std::uint32_t p = 0; p < std::min(plants, 7u); ++p)
-                distinct.insert(cpu::formatModules(want.string, g.alphabet, want.string.plantStart[p],
+                distinct.insert(stream::formatModules(want.string, g.alphabet, want.string.plantStart[p],
                                                    want.string.plantStart[p + 1]));
             ASSERT_GT(distinct.size(), 1u);
         }
@@ -427,7 +427,7 @@ TEST_F(DeriveGpuTest, PredecessorsOfSeveralModulesMatchTheCpu) {
     ir::Grammar g = simeco::testing::grammarFromText(
         simeco::testing::lsystem("XA(0)A(1)A(2)",
                                  "A(a)A(b)A(c) --> A(a+1)A(b)A(c)B(a)A(b+c)A(a)A(c)\nB(n) --> A(n)\n", 16));
-    cpu::DeriveResult want = cpu::deriveCpu(g, {});
+    stream::DeriveResult want = cpu::deriveCpu(g, {});
     ASSERT_GT(want.string.size(), 4u * 256u * 256u);
     gpu::GpuDeriver deriver(context(), g);
     EXPECT_EQ(firstDifference(want, deriver.derive({}), g.alphabet), "");
@@ -491,7 +491,7 @@ TEST_F(DeriveGpuTest, RingLSystemsMatchTheCpu) {
         SCOPED_TRACE(text);
         ir::Grammar g = simeco::testing::grammarFromText(text);
         ASSERT_TRUE(g.ring);
-        cpu::DeriveOptions options;
+        stream::DeriveOptions options;
         options.plants = 3;
         for (gpu::GpuStrategy strategy : {gpu::GpuStrategy::Parallel, gpu::GpuStrategy::Sequential}) {
             Outcome outcome = compareEngines(context(), g, options, strategy);
@@ -530,9 +530,9 @@ TEST_F(DeriveGpuTest, CarriedBracketPartnersMatchTheCpu) {
             open.sym = ir::kBranchOpen;
             g.axiom.push_back(open);
         }
-        cpu::DeriveOptions options;
+        stream::DeriveOptions options;
         options.plants = 40;
-        cpu::DeriveResult want = cpu::deriveCpu(g, options);
+        stream::DeriveResult want = cpu::deriveCpu(g, options);
         std::vector<std::size_t> open;
         std::size_t longest = 0, deepest = 0;
         for (std::size_t i = 0; i < want.string.size(); ++i) {
@@ -568,14 +568,14 @@ TEST_F(DeriveGpuTest, LongSuccessorsMatchTheCpu) {
         "B(x) --> B(x+1)[C(x)]\n"
         "D --> *\n";
     ir::Grammar g = simeco::testing::grammarFromText(simeco::testing::lsystem("A(1)B(2)[C(0)]A(3)", rules, 9));
-    gpu::GeneratedKernels kernels = gpu::generateDeriveKernels({g});
+    codegen::GeneratedKernels kernels = codegen::generateDeriveKernels({g});
     ASSERT_NE(kernels.write.find("slotWordAt"), std::string::npos) << "the successor of 26 modules is not stored in a loop";
     ASSERT_TRUE(kernels.carriesPartners);
     for (std::uint32_t plants : {1u, 37u}) {
         SCOPED_TRACE(std::to_string(plants) + " plants");
-        cpu::DeriveOptions options;
+        stream::DeriveOptions options;
         options.plants = plants;
-        cpu::DeriveResult want = cpu::deriveCpu(g, options);
+        stream::DeriveResult want = cpu::deriveCpu(g, options);
         ASSERT_GT(want.string.size(), 5000u * plants);
         gpu::GpuDeriver deriver(context(), g, gpu::GpuStrategy::Parallel);
         EXPECT_EQ(firstDifference(want, deriver.derive(options), g.alphabet), "");
@@ -588,13 +588,13 @@ TEST_F(DeriveGpuTest, DeriverDerivesRepeatedly) {
     gpu::GpuDeriver deriver(context(), g);
     for (std::uint32_t plants : {7u, 1u, 1000u, 7u}) {
         SCOPED_TRACE(std::to_string(plants) + " plants");
-        cpu::DeriveOptions options;
+        stream::DeriveOptions options;
         options.plants = plants;
-        cpu::DeriveResult want = cpu::deriveCpu(g, options);
+        stream::DeriveResult want = cpu::deriveCpu(g, options);
         EXPECT_EQ(firstDifference(want, deriver.derive(options), g.alphabet), "");
 
         gpu::GpuDeriveStats stats;
-        cpu::DeriveResult sizesOnly = deriver.derive(options, /*readBack=*/false, &stats);
+        stream::DeriveResult sizesOnly = deriver.derive(options, /*readBack=*/false, &stats);
         EXPECT_EQ(sizesOnly.string.size(), 0u);
         EXPECT_EQ(stats.modules, want.string.size());
     }

@@ -3,9 +3,9 @@
 #include <stdexcept>
 #include <vector>
 
+#include "codegen/glsl_compiler.h"
 #include "compute/shaders.h"
 #include "compute/shared/config.h"
-#include "gpu/glsl_compiler.h"
 #include "gpu_fixture.h"
 #include "vk/barriers.h"
 #include "vk/buffer.h"
@@ -105,7 +105,7 @@ void main() {
     if (i < pc.count) result[i] = float(texelFetch(words, int(i)).x) + texelFetch(values, int(i)).x;
 }
 )";
-    vk::ComputePipeline kernel(context(), gpu::compileComputeKernel(source, "test/texel_read"), "test/texel_read");
+    vk::ComputePipeline kernel(context(), codegen::compileComputeKernel(source, "test/texel_read"), "test/texel_read");
     const std::vector<vk::ShaderBinding>& bindings = kernel.reflection().bindings;
     ASSERT_EQ(bindings.size(), 3u);
     EXPECT_EQ(bindings[0].type, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER);

@@ -30,13 +30,13 @@ void compareHomomorphism(const vk::Context& context, const fs::path& file, const
     SCOPED_TRACE(name);
     ir::Grammar g = lang::loadGrammarFile(file.string());
     if (!g.homomorphism.present || g.homomorphism.productions.empty()) return;
-    if (gpu::gpuUnsupportedReason(g)) return; // the GPU does not derive it at all
+    if (codegen::gpuUnsupportedReason(g)) return; // the GPU does not derive it at all
     ++tally.withHomomorphism;
-    cpu::DeriveOptions options;
+    stream::DeriveOptions options;
     options.homomorphism = true;
     options.plants = 3;
     options.maxModules = 2'000'000;
-    cpu::DeriveResult want;
+    stream::DeriveResult want;
     try {
         want = cpu::deriveCpu(g, options);
     } catch (const ir::LimitError&) {
@@ -47,7 +47,7 @@ void compareHomomorphism(const vk::Context& context, const fs::path& file, const
         tally.onHost.push_back(name);
         return;
     }
-    cpu::DeriveResult got = deriver.derive(options);
+    stream::DeriveResult got = deriver.derive(options);
     std::string difference = firstDifference(want, got, g.alphabet);
     EXPECT_EQ(difference, "");
     if (difference.empty()) ++tally.matched;

@@ -30,10 +30,10 @@ const Strategy kStrategies[] = {{gpu::GpuStrategy::Parallel, "parallel"}, {gpu::
 // Derives `g` on the device; true when it matched the CPU, false when it refused because the driver cut a loop.
 // Anything else fails the test.
 bool matchesOrRefuses(const vk::Context& context, const ir::Grammar& g, gpu::GpuStrategy strategy) {
-    cpu::DeriveResult want = cpu::deriveCpu(g, {});
+    stream::DeriveResult want = cpu::deriveCpu(g, {});
     gpu::GpuDeriver deriver(context, g, strategy);
     try {
-        cpu::DeriveResult got = deriver.derive({});
+        stream::DeriveResult got = deriver.derive({});
         EXPECT_EQ(firstDifference(want, got, g.alphabet), "");
         return true;
     } catch (const ir::LimitError& e) {
@@ -70,7 +70,7 @@ TEST_F(LongWorkGpuTest, DeepSequentialDecompositionMatchesTheCpu) {
                                              "decomposition\nmaximum depth: 5000\n"
                                              "A(n) : n < 100000 --> [B(n)C]A(n+1)\n"
                                              "endlsystem\n");
-    cpu::DeriveResult want = cpu::deriveCpu(g, {});
+    stream::DeriveResult want = cpu::deriveCpu(g, {});
     ASSERT_EQ(want.string.size(), 20001u);
     gpu::GpuDeriver deriver(context(), g, gpu::GpuStrategy::Sequential);
     EXPECT_EQ(firstDifference(want, deriver.derive({}), g.alphabet), "");

@@ -5,15 +5,15 @@
 #include <string>
 
 #include "../unit/grammar_text.h"
-#include "gpu/derive_codegen.h"
+#include "codegen/derive_codegen.h"
 
 namespace simeco {
 namespace {
 
 bool probes(const std::string& kernel) { return kernel.find("    reportLoopsCut();\n}") != std::string::npos; }
 
-gpu::GeneratedKernels kernelsOf(const std::string& rules) {
-    return gpu::generateDeriveKernels({simeco::testing::grammarFromText(simeco::testing::lsystem("A(1)B(2)", rules))});
+codegen::GeneratedKernels kernelsOf(const std::string& rules) {
+    return codegen::generateDeriveKernels({simeco::testing::grammarFromText(simeco::testing::lsystem("A(1)B(2)", rules))});
 }
 
 // `count` calls of exp(), summed in one successor parameter.
@@ -43,14 +43,14 @@ TEST(LoopProbeTest, OnlyKernelsWhoseLoopsMayRunLongProbe) {
     };
     for (const Case& c : cases) {
         SCOPED_TRACE(c.what);
-        gpu::GeneratedKernels k = kernelsOf(c.rules);
+        codegen::GeneratedKernels k = kernelsOf(c.rules);
         EXPECT_EQ(probes(k.match), c.matchProbes);
         EXPECT_EQ(probes(k.write), c.writeProbes);
     }
 }
 
 TEST(LoopProbeTest, DecompositionKernelsProbeForTheirOwnRules) {
-    gpu::GeneratedKernels k = kernelsOf("A(x) --> A(x+1)\ndecomposition\nmaximum depth: 3\nC(z) < B(y) --> B(y+z)\n");
+    codegen::GeneratedKernels k = kernelsOf("A(x) --> A(x+1)\ndecomposition\nmaximum depth: 3\nC(z) < B(y) --> B(y+z)\n");
     EXPECT_FALSE(probes(k.match));
     EXPECT_TRUE(probes(k.decompositionMatch));
     EXPECT_TRUE(probes(k.decompositionWrite));

@@ -44,12 +44,12 @@ std::vector<shared::ParticleState> axiomStates(const std::vector<ir::Grammar>& s
 
 // Empty when both engines give the same string and the same particle states; else the first difference.
 std::string compareParticles(const vk::Context& context, const std::vector<ir::Grammar>& species,
-                             cpu::DeriveOptions options, gpu::GpuStrategy strategy) {
+                             stream::DeriveOptions options, gpu::GpuStrategy strategy) {
     options.particles = true;
     options.initialParticles = axiomStates(species, std::max<std::uint32_t>(options.plants, 1));
-    cpu::DeriveResult want = cpu::deriveSpeciesCpu(species, options);
+    stream::DeriveResult want = cpu::deriveSpeciesCpu(species, options);
     gpu::GpuDeriver deriver(context, species, strategy);
-    cpu::DeriveResult got = deriver.derive(options);
+    stream::DeriveResult got = deriver.derive(options);
     std::string difference = firstDifference(want, got, species.front().alphabet);
     if (!difference.empty()) return difference;
     if (want.string.particles.size() != want.string.size())
@@ -66,10 +66,10 @@ std::string compareParticles(const vk::Context& context, const std::vector<ir::G
 class ParticleCarryGpuTest : public GpuTest {
 protected:
     // Both strategies (the parallel one where the grammar allows it) must carry as the CPU does.
-    void expectCarried(const std::vector<ir::Grammar>& species, const cpu::DeriveOptions& options,
+    void expectCarried(const std::vector<ir::Grammar>& species, const stream::DeriveOptions& options,
                        const std::string& what) {
         bool parallel = std::none_of(species.begin(), species.end(), [](const ir::Grammar& g) {
-            return gpu::gpuParallelUnsupportedReason(g).has_value();
+            return codegen::gpuParallelUnsupportedReason(g).has_value();
         });
         if (parallel) {
             EXPECT_EQ(compareParticles(context(), species, options, gpu::GpuStrategy::Parallel), "") << what;
@@ -78,7 +78,7 @@ protected:
             << what << ", sequential strategy";
     }
     void expectCarried(const std::string& text, std::uint32_t plants = 1, bool homomorphism = false) {
-        cpu::DeriveOptions options;
+        stream::DeriveOptions options;
         options.plants = plants;
         options.homomorphism = homomorphism;
         expectCarried({testing::grammarFromText(text)}, options, text);
@@ -115,7 +115,7 @@ TEST_F(ParticleCarryGpuTest, SpeciesThatStopAtDifferentSteps) {
     std::vector<ir::Grammar> species = ir::unifySpecies(grammars);
     species[0].derivationLength = 3;
     species[1].derivationLength = 6;
-    cpu::DeriveOptions options;
+    stream::DeriveOptions options;
     options.plants = 5;
     expectCarried(species, options, "fig1.24d and fig1.31a");
 }
@@ -124,16 +124,16 @@ TEST_F(ParticleCarryGpuTest, SpeciesThatStopAtDifferentSteps) {
 TEST_F(ParticleCarryGpuTest, TheDeviceStringHoldsTheStates) {
     ir::Grammar g = testing::grammarFromText(testing::lsystem("AB", "A --> AB[A]", 4));
     gpu::GpuDeriver deriver(context(), g);
-    cpu::DeriveOptions options;
+    stream::DeriveOptions options;
     options.particles = true;
     options.initialParticles = axiomStates({g}, 1);
-    cpu::DeriveResult carried = deriver.derive(options);
-    gpu::DeviceModules modules = deriver.lastString();
+    stream::DeriveResult carried = deriver.derive(options);
+    stream::DeviceModules modules = deriver.lastString();
     ASSERT_NE(modules.particles, nullptr);
     ASSERT_EQ(modules.count, carried.string.size());
     EXPECT_EQ(vk::downloadVector<shared::ParticleState>(context(), *modules.particles, modules.count),
               carried.string.particles);
-    deriver.derive(cpu::DeriveOptions{});
+    deriver.derive(stream::DeriveOptions{});
     EXPECT_EQ(deriver.lastString().particles, nullptr);
 }
 
@@ -147,8 +147,8 @@ TEST_F(ParticleCarryGpuTest, ExampleGrammars) {
     int compared = 0;
     for (const fs::path& file : files) {
         ir::Grammar g = lang::loadGrammarFile(file.string());
-        if (gpu::gpuUnsupportedReason(g)) continue;
-        cpu::DeriveOptions options;
+        if (codegen::gpuUnsupportedReason(g)) continue;
+        stream::DeriveOptions options;
         options.steps = std::min(g.derivationLength, 5); // the paths, not the sizes, matter here
         expectCarried({g}, options, file.filename().string());
         ++compared;

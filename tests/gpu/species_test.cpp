@@ -24,17 +24,17 @@ const fs::path kSource = fs::path(SIMECO_SOURCE_DIR);
 
 using SpeciesGpuTest = GpuTest;
 
-std::string plantText(const cpu::DeriveResult& r, const ir::Alphabet& alphabet, std::size_t plant) {
-    const cpu::ModuleString& s = r.string;
-    return cpu::formatModules(s, alphabet, s.plantStart[plant], s.plantStart[plant + 1]);
+std::string plantText(const stream::DeriveResult& r, const ir::Alphabet& alphabet, std::size_t plant) {
+    const stream::ModuleString& s = r.string;
+    return stream::formatModules(s, alphabet, s.plantStart[plant], s.plantStart[plant + 1]);
 }
 
 // Derives `species` with `plants` plants on both engines and expects the same strings.
 void expectEnginesAgree(const vk::Context& context, const std::vector<ir::Grammar>& species, std::uint32_t plants) {
     SCOPED_TRACE(std::to_string(plants) + " plants");
-    cpu::DeriveOptions options;
+    stream::DeriveOptions options;
     options.plants = plants;
-    cpu::DeriveResult want = cpu::deriveSpeciesCpu(species, options);
+    stream::DeriveResult want = cpu::deriveSpeciesCpu(species, options);
     ASSERT_EQ(want.string.plants(), plants);
     gpu::GpuDeriver deriver(context, species);
     EXPECT_EQ(firstDifference(want, deriver.derive(options), species.front().alphabet), "");
@@ -48,9 +48,9 @@ TEST_F(SpeciesGpuTest, SceneSpeciesDeriveInOnePass) {
     std::vector<ir::Grammar> species = ir::unifySpecies(grammars);
 
     // The species really differ: three distinct strings, and rules that are not all alike.
-    cpu::DeriveOptions three;
+    stream::DeriveOptions three;
     three.plants = 3;
-    cpu::DeriveResult r = cpu::deriveSpeciesCpu(species, three);
+    stream::DeriveResult r = cpu::deriveSpeciesCpu(species, three);
     std::set<std::string> distinct;
     for (std::size_t p = 0; p < 3; ++p) distinct.insert(plantText(r, species.front().alphabet, p));
     EXPECT_EQ(distinct.size(), 3u);
@@ -66,10 +66,10 @@ TEST_F(SpeciesGpuTest, CpfgModelsOfDifferentLengthsShareTheStream) {
     std::vector<ir::Grammar> species = ir::unifySpecies(grammars);
     for (std::size_t i = 0; i < grammars.size(); ++i) {
         // Each species alone, as its own grammar derives it: unification changes no plant.
-        cpu::DeriveResult alone = cpu::deriveCpu(grammars[i], {});
-        cpu::DeriveOptions options;
+        stream::DeriveResult alone = cpu::deriveCpu(grammars[i], {});
+        stream::DeriveOptions options;
         options.plants = static_cast<std::uint32_t>(i + 1);
-        cpu::DeriveResult together = cpu::deriveSpeciesCpu(species, options);
+        stream::DeriveResult together = cpu::deriveSpeciesCpu(species, options);
         EXPECT_EQ(plantText(together, species.front().alphabet, i), plantText(alone, grammars[i].alphabet, 0))
             << "species " << i;
     }
@@ -85,9 +85,9 @@ TEST_F(SpeciesGpuTest, PlantsStopAtTheirOwnStep) {
                                                      "A --> F[+A]A\n"
                                                      "endlsystem\n");
     std::vector<ir::Grammar> species{g};
-    cpu::DeriveOptions options;
+    stream::DeriveOptions options;
     options.plants = 40;
-    cpu::DeriveResult want = cpu::deriveSpeciesCpu(species, options);
+    stream::DeriveResult want = cpu::deriveSpeciesCpu(species, options);
     std::set<std::uint64_t> lengths;
     for (std::size_t p = 0; p < 40; ++p) lengths.insert(want.string.plantStart[p + 1] - want.string.plantStart[p]);
     EXPECT_GE(lengths.size(), 3u) << "the plants should stop at different steps";
@@ -107,15 +107,15 @@ TEST_F(SpeciesGpuTest, OrderDependentProductionsDeriveSequentially) {
                                                      "A(x) : n > 60 { stop(); } --> B(n)\n"
                                                      "F(l) : l > 4 --> F(l - 1)\n"
                                                      "endlsystem\n");
-    ASSERT_TRUE(gpu::gpuParallelUnsupportedReason(g).has_value());
-    ASSERT_FALSE(gpu::gpuUnsupportedReason(g).has_value()) << *gpu::gpuUnsupportedReason(g);
+    ASSERT_TRUE(codegen::gpuParallelUnsupportedReason(g).has_value());
+    ASSERT_FALSE(codegen::gpuUnsupportedReason(g).has_value()) << *codegen::gpuUnsupportedReason(g);
     gpu::GpuDeriver deriver(context(), g);
     EXPECT_EQ(deriver.strategy(), gpu::GpuStrategy::Sequential);
     for (std::uint32_t plants : {1u, 250u}) {
         SCOPED_TRACE(std::to_string(plants) + " plants");
-        cpu::DeriveOptions options;
+        stream::DeriveOptions options;
         options.plants = plants;
-        cpu::DeriveResult want = cpu::deriveCpu(g, options);
+        stream::DeriveResult want = cpu::deriveCpu(g, options);
         std::set<std::uint64_t> lengths;
         for (std::size_t p = 0; p < plants; ++p) lengths.insert(want.string.plantStart[p + 1] - want.string.plantStart[p]);
         if (plants > 1) {

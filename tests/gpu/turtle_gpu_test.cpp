@@ -15,11 +15,11 @@
 #include "compute/shared/organ_layout.h"
 #include "cpu/derive.h"
 #include "gpu/derive_gpu.h"
-#include "gpu/turtle_gpu.h"
 #include "gpu_fixture.h"
 #include "lang/load_grammar.h"
 #include "turtle/turtle_commands.h"
 #include "turtle/turtle_cpu.h"
+#include "turtle/turtle_gpu.h"
 
 namespace simeco::test {
 namespace {
@@ -105,11 +105,11 @@ void compareTurtles(const vk::Context& context, const fs::path& file, const std:
                     Tally& tally) {
     SCOPED_TRACE(name);
     ir::Grammar g = lang::loadGrammarFile(file.string());
-    cpu::DeriveOptions options;
+    stream::DeriveOptions options;
     options.homomorphism = true;
     options.plants = plants;
     options.maxModules = kModuleBudget;
-    cpu::ModuleString string;
+    stream::ModuleString string;
     try {
         string = cpu::deriveCpu(g, options).string;
     } catch (const ir::LimitError&) {
@@ -121,16 +121,16 @@ void compareTurtles(const vk::Context& context, const fs::path& file, const std:
     turtle::Interpretation want = turtle::interpretCpu(string, commands, species, {});
     if (string.size() == 0) return;
 
-    gpu::GpuTurtle turtle(context, commands, species);
-    gpu::UploadedModules modules(context, string);
-    gpu::DeviceOrgans organs = turtle.interpret(modules.view(), {});
-    turtle::Interpretation got = gpu::readBack(context, organs, uint32_t(string.plants()));
+    turtle::GpuTurtle turtle(context, commands, species);
+    turtle::UploadedModules modules(context, string);
+    const turtle::DeviceOrgans& organs = turtle.interpret(modules.view(), {});
+    turtle::Interpretation got = turtle::readBack(context, organs, uint32_t(string.plants()));
     std::string difference = firstDifference(want, got);
     if (size_t at = difference.rfind("module "); at != std::string::npos) {
         // The modules around the first difference, to see which commands are involved.
         size_t module = std::strtoull(difference.c_str() + at + 7, nullptr, 10);
         size_t from = module >= 8 ? module - 8 : 0, to = std::min(string.size(), module + 4);
-        difference += fmt::format("; modules {}..{}: {}", from, to, cpu::formatModules(string, g.alphabet, from, to));
+        difference += fmt::format("; modules {}..{}: {}", from, to, stream::formatModules(string, g.alphabet, from, to));
     }
     EXPECT_EQ(difference, "") << name << " (" << string.size() << " modules, " << turtle.lastLevels()
                               << " levels of non-linear commands)";
@@ -226,19 +226,19 @@ TEST_F(TurtleGpuTest, TheDerivedStringOnTheDeviceMatchesTheCpuTurtle) {
         SCOPED_TRACE(file);
         ir::Grammar g = lang::loadGrammarFile((kGrammars / file).string());
         ASSERT_FALSE(g.homomorphism.present && !g.homomorphism.productions.empty());
-        cpu::DeriveOptions options;
+        stream::DeriveOptions options;
         options.plants = 5;
-        cpu::ModuleString string = cpu::deriveCpu(g, options).string;
+        stream::ModuleString string = cpu::deriveCpu(g, options).string;
         turtle::TurtleCommands commands = turtle::turtleCommands(g.alphabet);
         std::vector<turtle::TurtleSettings> species{turtle::turtleSettings(g, g.alphabet)};
         turtle::Interpretation want = turtle::interpretCpu(string, commands, species, {});
 
         gpu::GpuDeriver deriver(context(), g);
         deriver.derive(options, /*readBack=*/false);
-        gpu::DeviceModules modules = deriver.lastString();
+        stream::DeviceModules modules = deriver.lastString();
         ASSERT_EQ(modules.count, string.size());
-        gpu::GpuTurtle turtle(context(), commands, species);
-        turtle::Interpretation got = gpu::readBack(context(), turtle.interpret(modules, {}), modules.plants);
+        turtle::GpuTurtle turtle(context(), commands, species);
+        turtle::Interpretation got = turtle::readBack(context(), turtle.interpret(modules, {}), modules.plants);
         EXPECT_EQ(firstDifference(want, got), "");
         EXPECT_GT(want.organs.size(), 100u);
         ++compared;
@@ -249,12 +249,12 @@ TEST_F(TurtleGpuTest, TheDerivedStringOnTheDeviceMatchesTheCpuTurtle) {
 // Plants without modules: an empty table, no instances, nothing dispatched over nothing.
 TEST_F(TurtleGpuTest, EmptyPlantsDrawNothing) {
     ir::Grammar g = lang::loadGrammarFile((kGrammars / "abop" / "fig1.24a.l").string());
-    cpu::ModuleString empty;
+    stream::ModuleString empty;
     empty.plantStart = {0, 0, 0};
     turtle::TurtleCommands commands = turtle::turtleCommands(g.alphabet);
-    gpu::GpuTurtle turtle(context(), commands, {turtle::turtleSettings(g, g.alphabet)});
-    gpu::UploadedModules modules(context(), empty);
-    turtle::Interpretation got = gpu::readBack(context(), turtle.interpret(modules.view(), {}), 2);
+    turtle::GpuTurtle turtle(context(), commands, {turtle::turtleSettings(g, g.alphabet)});
+    turtle::UploadedModules modules(context(), empty);
+    turtle::Interpretation got = turtle::readBack(context(), turtle.interpret(modules.view(), {}), 2);
     EXPECT_TRUE(got.organs.empty());
     for (uint32_t k = 0; k < shared::kOrganKinds; ++k) EXPECT_EQ(got.count[k], 0u);
     EXPECT_TRUE(got.bounds.empty());

@@ -6,15 +6,15 @@
 #include <string>
 
 #include "../unit/grammar_text.h"
-#include "gpu/derive_codegen.h"
+#include "codegen/derive_codegen.h"
 
 namespace simeco {
 namespace {
 
 // The generated prefetchContexts() of the step's match pass.
 std::string matchPrefetch(const std::string& rules) {
-    gpu::GeneratedKernels k =
-        gpu::generateDeriveKernels({simeco::testing::grammarFromText(simeco::testing::lsystem("B(1)A(2)", rules))});
+    codegen::GeneratedKernels k =
+        codegen::generateDeriveKernels({simeco::testing::grammarFromText(simeco::testing::lsystem("B(1)A(2)", rules))});
     size_t begin = k.match.find("void prefetchContexts(");
     EXPECT_NE(begin, std::string::npos);
     return k.match.substr(begin, k.match.find("\n}\n", begin) - begin);

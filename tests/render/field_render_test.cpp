@@ -8,9 +8,9 @@
 
 #include "cpu/derive.h"
 #include "draw/renderer.h"
+#include "gpu_fixture.h"
 #include "lang/load_grammar.h"
 #include "test_scene.h"
-#include "gpu_fixture.h"
 #include "turtle/turtle_commands.h"
 #include "turtle/turtle_cpu.h"
 
@@ -22,11 +22,11 @@ class FieldRender : public test::GpuTest {};
 
 TEST_F(FieldRender, PlantsShowWithTheirIdsWhereTheTurtlePutThem) {
     ir::Grammar g = lang::loadGrammarFile(std::string(SIMECO_SOURCE_DIR) + "/grammars/abop/fig1.24d.l");
-    cpu::DeriveOptions options;
+    stream::DeriveOptions options;
     options.plants = 4;
     options.steps = 4;
     options.homomorphism = true;
-    cpu::ModuleString string = cpu::deriveCpu(g, options).string;
+    stream::ModuleString string = cpu::deriveCpu(g, options).string;
     turtle::Interpretation interp = turtle::interpretCpu(string, turtle::turtleCommands(g.alphabet),
                                                          {turtle::turtleSettings(g, g.alphabet)});
     ASSERT_GT(interp.count[shared::kOrganStem], 0u);

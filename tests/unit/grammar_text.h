@@ -28,11 +28,11 @@ inline ir::Grammar grammarFromText(const std::string& text, const std::string& f
 // The derived string of the first plant in cpfg notation.
 inline std::string deriveText(const std::string& text, int steps = -1, int64_t seed = -1) {
     ir::Grammar g = grammarFromText(text);
-    cpu::DeriveOptions options;
+    stream::DeriveOptions options;
     options.steps = steps;
     options.seed = seed;
-    cpu::DeriveResult r = cpu::deriveCpu(g, options);
-    return cpu::formatModules(r.string, g.alphabet, r.string.plantStart[0], r.string.plantStart[1]);
+    stream::DeriveResult r = cpu::deriveCpu(g, options);
+    return stream::formatModules(r.string, g.alphabet, r.string.plantStart[0], r.string.plantStart[1]);
 }
 
 // Wraps productions into a minimal cpfg file.

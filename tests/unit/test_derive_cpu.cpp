@@ -159,9 +159,9 @@ TEST(DeriveCpu, RanDrawsFromTheCounterBasedStream) {
 
 TEST(DeriveCpu, PlantsHaveTheirOwnRandomStreams) {
     simeco::ir::Grammar g = simeco::testing::grammarFromText(lsystem("A(0)", "A(x) --> A(ran(1))", 1));
-    simeco::cpu::DeriveOptions options;
+    simeco::stream::DeriveOptions options;
     options.plants = 3;
-    simeco::cpu::DeriveResult r = simeco::cpu::deriveCpu(g, options);
+    simeco::stream::DeriveResult r = simeco::cpu::deriveCpu(g, options);
     ASSERT_EQ(r.string.plants(), 3u);
     EXPECT_NE(r.string.params[0], r.string.params[static_cast<size_t>(r.string.stride)]);
 }

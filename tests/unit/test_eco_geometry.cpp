@@ -21,9 +21,9 @@ using namespace simeco;
 turtle::Interpretation interpretEco(const std::string& text) {
     ir::EcoScene scene = lang::parseEcoText(text, "test.eco");
     ir::Grammar g = lang::compileEcoPlant(scene, 0);
-    cpu::DeriveOptions options;
+    stream::DeriveOptions options;
     options.homomorphism = true;
-    cpu::DeriveResult r = cpu::deriveCpu(g, options);
+    stream::DeriveResult r = cpu::deriveCpu(g, options);
     return turtle::interpretCpu(r.string, turtle::turtleCommands(g.alphabet), {turtle::turtleSettings(g, g.alphabet)});
 }
 
@@ -91,9 +91,9 @@ TEST(EcoGeometry, SeedScenesDrawStemsAndLeaves) {
         ir::EcoScene s = lang::parseEcoFile(std::string(SIMECO_SOURCE_DIR) + "/scenes/" + scene);
         ir::Grammar g = lang::compileEcoPlant(s, 0);
         EXPECT_TRUE(g.homomorphism.present);
-        cpu::DeriveOptions options;
+        stream::DeriveOptions options;
         options.homomorphism = true;
-        cpu::DeriveResult d = cpu::deriveCpu(g, options);
+        stream::DeriveResult d = cpu::deriveCpu(g, options);
         turtle::Interpretation r =
             turtle::interpretCpu(d.string, turtle::turtleCommands(g.alphabet), {turtle::turtleSettings(g, g.alphabet)});
         EXPECT_GT(r.count[shared::kOrganStem], 10u);

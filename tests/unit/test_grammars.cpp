@@ -35,7 +35,7 @@ const std::string kGrammarDir = std::string(SIMECO_SOURCE_DIR) + "/grammars/";
 
 struct Derived {
     ir::Grammar grammar;
-    cpu::DeriveResult result;
+    stream::DeriveResult result;
     std::string text; // cpfg notation
 
     size_t modules() const { return result.string.size(); }
@@ -55,11 +55,11 @@ void derive(const std::string& relative, Derived& out, int steps = -1, int64_t s
     std::string view = path.substr(0, path.size() - 2) + ".v";
     ASSERT_TRUE(std::filesystem::is_regular_file(view)) << view << " is missing";
     out.grammar = lang::loadGrammarFile(path);
-    cpu::DeriveOptions options;
+    stream::DeriveOptions options;
     options.steps = steps;
     options.seed = seed;
     out.result = cpu::deriveCpu(out.grammar, options);
-    out.text = cpu::formatModules(out.result.string, out.grammar.alphabet, 0, out.result.string.size());
+    out.text = stream::formatModules(out.result.string, out.grammar.alphabet, 0, out.result.string.size());
 }
 
 // Plain D0L rewriting of one-character symbols, independent of simeco's engine.

@@ -32,7 +32,7 @@ std::optional<simeco::ir::InputError> loadAndDerive(const std::string& text, con
     }
     try {
         simeco::ir::Grammar g = simeco::lang::loadGrammarFile(pathOut.string());
-        simeco::cpu::DeriveOptions options;
+        simeco::stream::DeriveOptions options;
         options.maxModules = 100000;
         simeco::cpu::deriveCpu(g, options);
     } catch (const simeco::ir::InputError& e) {
@@ -127,7 +127,7 @@ TEST(MalformedInputCatalogue, ModuleBudgetEndsRunawayGrowth) {
     fs::path file = dir / "runaway.l";
     std::ofstream(file) << "Lsystem: 1\nderivation length: 40\nAxiom: F\nF --> FF\nendlsystem\n";
     simeco::ir::Grammar g = simeco::lang::loadGrammarFile(file.string());
-    simeco::cpu::DeriveOptions options;
+    simeco::stream::DeriveOptions options;
     options.maxModules = 1000;
     try {
         simeco::cpu::deriveCpu(g, options);

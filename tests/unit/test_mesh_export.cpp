@@ -37,11 +37,11 @@ using simeco::testing::grammarFromText;
 using simeco::testing::lsystem;
 
 turtle::Interpretation interpret(const ir::Grammar& g, uint32_t plants, int steps = -1) {
-    cpu::DeriveOptions options;
+    stream::DeriveOptions options;
     options.plants = plants;
     options.steps = steps;
     options.homomorphism = true;
-    cpu::DeriveResult r = cpu::deriveCpu(g, options);
+    stream::DeriveResult r = cpu::deriveCpu(g, options);
     return turtle::interpretCpu(r.string, turtle::turtleCommands(g.alphabet), {turtle::turtleSettings(g, g.alphabet)});
 }
 

@@ -10,7 +10,7 @@
 
 namespace {
 
-using simeco::cpu::DeriveOptions;
+using simeco::stream::DeriveOptions;
 using simeco::shared::ParticleState;
 using simeco::testing::grammarFromText;
 using simeco::testing::lsystem;
@@ -36,9 +36,9 @@ Carried derive(const std::string& text, std::vector<float> axiomAges, uint32_t p
     options.particles = true;
     options.homomorphism = homomorphism;
     for (float age : axiomAges) options.initialParticles.push_back(state(age));
-    simeco::cpu::DeriveResult r = simeco::cpu::deriveCpu(g, options);
+    simeco::stream::DeriveResult r = simeco::cpu::deriveCpu(g, options);
     Carried c;
-    c.modules = simeco::cpu::formatModules(r.string, g.alphabet, 0, r.string.size());
+    c.modules = simeco::stream::formatModules(r.string, g.alphabet, 0, r.string.size());
     EXPECT_EQ(r.string.particles.size(), r.string.size());
     for (const ParticleState& s : r.string.particles) {
         c.ages.push_back(s.value[simeco::shared::kParticleAge]);
@@ -95,7 +95,7 @@ TEST(ParticleCarry, AxiomsStartAtZeroUnlessGiven) {
     simeco::ir::Grammar g = grammarFromText(lsystem("AB", "A --> AA", 2));
     DeriveOptions options;
     options.particles = true;
-    simeco::cpu::DeriveResult r = simeco::cpu::deriveCpu(g, options);
+    simeco::stream::DeriveResult r = simeco::cpu::deriveCpu(g, options);
     ASSERT_EQ(r.string.particles.size(), 5u);
     for (const ParticleState& s : r.string.particles) EXPECT_EQ(s, ParticleState{});
 }

@@ -12,7 +12,7 @@ namespace {
 namespace fs = std::filesystem;
 
 uint64_t derivedModules(const simeco::ir::Grammar& g, int64_t seed = -1) {
-    simeco::cpu::DeriveOptions options;
+    simeco::stream::DeriveOptions options;
     options.seed = seed;
     return simeco::cpu::deriveCpu(g, options).string.size();
 }
@@ -27,7 +27,7 @@ TEST(SeedScripts, EveryPlantOfTheSeedScenesDerives) {
         ASSERT_FALSE(scene.plants.empty()) << name;
         for (size_t p = 0; p < scene.plants.size(); ++p) {
             simeco::ir::Grammar g = simeco::lang::compileEcoPlant(scene, p);
-            simeco::cpu::DeriveResult r = simeco::cpu::deriveCpu(g, {});
+            simeco::stream::DeriveResult r = simeco::cpu::deriveCpu(g, {});
             // Growth: the plant has more modules than its axiom, with balanced branches.
             EXPECT_GT(r.string.size(), g.axiom.size()) << name;
             int depth = 0;
@@ -45,9 +45,9 @@ TEST(SeedScripts, EveryPlantOfTheSeedScenesDerives) {
 TEST(SeedScripts, StochasticPlantsRepeatForASeed) {
     fs::path file = fs::path(SIMECO_SHARED_DIR) / "seed-scripts" / "rosa-rugosa.eco";
     simeco::ir::Grammar g = simeco::lang::compileEcoPlant(simeco::lang::parseEcoFile(file.string()), 0);
-    simeco::cpu::DeriveOptions options;
+    simeco::stream::DeriveOptions options;
     options.seed = 5;
-    simeco::cpu::DeriveResult a = simeco::cpu::deriveCpu(g, options), b = simeco::cpu::deriveCpu(g, options);
+    simeco::stream::DeriveResult a = simeco::cpu::deriveCpu(g, options), b = simeco::cpu::deriveCpu(g, options);
     EXPECT_EQ(a.string.sym, b.string.sym);
     EXPECT_EQ(a.string.params, b.string.params);
 }

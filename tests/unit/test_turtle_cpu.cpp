@@ -16,10 +16,10 @@ using simeco::testing::lsystem;
 
 turtle::Interpretation interpret(const std::string& text, uint32_t plants = 1) {
     ir::Grammar g = grammarFromText(text);
-    cpu::DeriveOptions options;
+    stream::DeriveOptions options;
     options.plants = plants;
     options.homomorphism = true;
-    cpu::DeriveResult r = cpu::deriveCpu(g, options);
+    stream::DeriveResult r = cpu::deriveCpu(g, options);
     return turtle::interpretCpu(r.string, turtle::turtleCommands(g.alphabet), {turtle::turtleSettings(g, g.alphabet)});
 }
 
@@ -119,7 +119,7 @@ TEST(TurtleCpu, TropismBendsTheNextSegmentTowardTheDirection) {
     ir::Grammar g = grammarFromText(lsystem("F+(90)FF", "", 0));
     g.view.tropismDirection = {0, -1, 0};
     g.view.initialElasticity = 0.5f;
-    cpu::DeriveResult d = cpu::deriveCpu(g, {});
+    stream::DeriveResult d = cpu::deriveCpu(g, {});
     turtle::Interpretation r =
         turtle::interpretCpu(d.string, turtle::turtleCommands(g.alphabet), {turtle::turtleSettings(g, g.alphabet)});
     ASSERT_EQ(r.count[shared::kOrganStem], 3u);

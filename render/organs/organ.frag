@@ -1,0 +1,48 @@
+#version 460
+// Lighting of organs and ground: the sun (Lambert) plus a sky/ground hemisphere ambient, or the toon style's
+// colour bands. Surfaces are lit from the side the camera sees, since leaves and discs are single sheets.
+#extension GL_GOOGLE_include_directive : require
+
+#include "render/shared/draw_layout.h"
+
+layout(location = 0) in vec3 inWorld;
+layout(location = 1) in vec3 inNormal;
+layout(location = 2) flat in vec3 inAlbedo;
+layout(location = 3) flat in uint inPlant;
+layout(location = 4) flat in uint inOrgan;
+
+layout(std140, set = 0, binding = 1) uniform Frame {
+    DrawFrame frame;
+};
+layout(push_constant) uniform Push {
+    DrawPush push;
+};
+
+layout(location = 0) out vec4 outColor;
+layout(location = 1) out uint outPlant;
+layout(location = 2) out uint outOrgan;
+
+void main() {
+    vec3 normal = normalize(inNormal);
+    if (dot(normal, frame.cameraPosition.xyz - inWorld) < 0.0) {
+        normal = -normal;
+    }
+    float sun = max(dot(normal, frame.sunDirection.xyz), 0.0);
+    float skyWeight = 0.5 + 0.5 * normal.y;  // world up is +y
+    if (frame.options.x == kStyleToon) {
+        float bands = float(max(frame.options.y, 1u));
+        sun = min(floor(sun * bands + 0.5), bands) / bands;
+        skyWeight = skyWeight > 0.5 ? 1.0 : 0.5;
+    }
+    vec3 light = vec3(0.0);
+    if (push.pass != kPassSun) {
+        light += mix(frame.groundBounce.rgb, frame.skyColor.rgb, skyWeight);
+    }
+    if (push.pass != kPassAmbient) {
+        light += sun * frame.sunColor.rgb;
+    }
+    // The sun pass adds to the ambient pass's colour, alpha included, so it adds no alpha.
+    outColor = vec4(light * inAlbedo, push.pass == kPassSun ? 0.0 : 1.0);
+    outPlant = inPlant;
+    outOrgan = inOrgan;
+}

@@ -1,0 +1,108 @@
+#version 460
+// Stencil shadow volumes for the sun (a directional light), built from the instance buffer: each triangle of
+// an organ's shadow hull that faces away from the sun becomes a closed volume of its own — the triangle as the
+// near cap, and its three edges extruded to the point at infinity opposite the sun, where the sides meet, so
+// no far cap is needed. A point whose way to the sun crosses such a triangle lies inside its volume, and the
+// z-fail stencil count of the overlapping volumes is nonzero exactly there (Carmack's reverse; Everitt and
+// Kilgard, "Practical and Robust Stenciled Shadow Volumes for Hardware-Accelerated Rendering", 2002).
+//
+// Closed hulls (stems, spheres) are inscribed in the drawn mesh and cast from their faces turned away from the
+// sun, so no lit surface lies on a near cap. Open surfaces (leaves, discs, polygon triangles) cast from every
+// triangle, turned away from the sun and pushed a little along the light: the thin prism of a leaf.
+#extension GL_GOOGLE_include_directive : require
+
+#include "render/shared/draw_layout.h"
+#include "render/organs/organ_transform.glsl"
+
+layout(local_size_x = kDrawWorkgroupSize) in;
+
+layout(std430, binding = 0) readonly buffer Instances {
+    OrganInstance instances[];
+};
+layout(std430, binding = 1) readonly buffer Table {
+    OrganTable table;
+};
+layout(std430, binding = 2) readonly buffer MeshVertices {
+    MeshVertex meshVertices[];
+};
+layout(std430, binding = 3) readonly buffer MeshIndices {
+    uint meshIndices[];
+};
+layout(std430, binding = 4) buffer Volumes {
+    VolumeDraw volumes;
+};
+layout(std430, binding = 5) writeonly buffer VolumeVertices {
+    vec4 volumeVertices[];
+};
+layout(push_constant) uniform Push {
+    ShadowVolumePush push;
+};
+
+OrganVertex hullVertex(OrganInstance o, uint corner) {
+    MeshVertex m = meshVertices[uint(int(meshIndices[push.firstIndex + corner]) + push.vertexOffset)];
+    return organVertex(o, push.kind, m.position, m.normal, push.cameraRight.xyz, push.cameraUp.xyz);
+}
+
+void main() {
+    uint group = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
+    uint index = group * gl_WorkGroupSize.x + gl_LocalInvocationID.x;
+    if (index >= table.count[push.kind]) {
+        return;
+    }
+    OrganInstance o = instances[table.first[push.kind] + index];
+    vec3 away = push.awayFromSun.xyz;
+    vec4 infinity = vec4(away, 0.0);
+
+    for (uint t = 0u; t < push.triangleCount; ++t) {
+        OrganVertex va = hullVertex(o, 3u * t);
+        OrganVertex vb = hullVertex(o, 3u * t + 1u);
+        OrganVertex vc = hullVertex(o, 3u * t + 2u);
+        if (!va.present || !vb.present || !vc.present) {
+            continue;
+        }
+        vec3 a = va.position;
+        vec3 b = vb.position;
+        vec3 c = vc.position;
+        float facing = dot(cross(b - a, c - a), away);
+        if (push.closedHull != 0u) {
+            if (!(facing > 0.0)) {
+                continue;  // lit (or edge-on, or degenerate): the volume starts at the far side of the hull
+            }
+        } else {
+            if (facing == 0.0 || isnan(facing)) {
+                continue;
+            }
+            if (facing < 0.0) {
+                vec3 swap = b;
+                b = c;
+                c = swap;
+            }
+            // The push is relative to the organ, so it stays small next to the organ at any scene scale.
+            float size = push.kind == kOrganTriangle ? max(distance(a, b), max(distance(b, c), distance(c, a)))
+                                                     : o.heading.w;
+            vec3 shift = push.awayFromSun.w * size * away;
+            a += shift;
+            b += shift;
+            c += shift;
+        }
+        // The capacity is a multiple of the vertices per triangle, so a claim either fits whole or starts past
+        // the end; draw_args.comp clamps the draw to the capacity.
+        uint base = atomicAdd(volumes.allocated, kVolumeVerticesPerTriangle);
+        if (base + kVolumeVerticesPerTriangle > push.capacity) {
+            continue;
+        }
+        // Faces wound outwards: the near cap looks towards the sun, each side away from the triangle.
+        volumeVertices[base + 0u] = vec4(a, 1.0);
+        volumeVertices[base + 1u] = vec4(c, 1.0);
+        volumeVertices[base + 2u] = vec4(b, 1.0);
+        volumeVertices[base + 3u] = vec4(a, 1.0);
+        volumeVertices[base + 4u] = vec4(b, 1.0);
+        volumeVertices[base + 5u] = infinity;
+        volumeVertices[base + 6u] = vec4(b, 1.0);
+        volumeVertices[base + 7u] = vec4(c, 1.0);
+        volumeVertices[base + 8u] = infinity;
+        volumeVertices[base + 9u] = vec4(c, 1.0);
+        volumeVertices[base + 10u] = vec4(a, 1.0);
+        volumeVertices[base + 11u] = infinity;
+    }
+}

@@ -1,0 +1,130 @@
+// Layouts shared by the renderer's C++ host code, its graphics shaders and its compute kernels: the per-frame
+// uniform block, push constants, the organ mesh vertex, and the indirect draw records the kernels write.
+//
+// Only vec4/mat4-sized members in uniform blocks and 16-byte groups in push blocks, so std140/std430 and C++
+// agree without padding rules; the static_asserts at the end hold the C++ side to it.
+#ifndef SIMECO_RENDER_DRAW_LAYOUT_H
+#define SIMECO_RENDER_DRAW_LAYOUT_H
+
+#include "compute/shared/organ_layout.h"
+#include "compute/shared/preamble.h"
+
+SIMECO_SHARED_BEGIN
+#ifdef __cplusplus
+struct mat4 {
+    vec4 columns[4];
+};
+struct uvec4 {
+    uint x, y, z, w;
+};
+#endif
+
+// DrawPush.kind beyond the organ kinds: the ground plane, which reads no instance.
+SIMECO_CONST kDrawGround = kOrganKinds;
+
+// DrawPush.pass: which light a draw adds. Without shadows one pass adds both; with shadow volumes the ambient
+// pass lays down depth and ids, and the sun pass adds the sun where the stencil says a point is lit.
+SIMECO_CONST kPassFull = 0u;
+SIMECO_CONST kPassAmbient = 1u;
+SIMECO_CONST kPassSun = 2u;
+
+// DrawFrame.options.x
+SIMECO_CONST kStyleLit = 0u;
+SIMECO_CONST kStyleToon = 1u;
+
+// Local size of the renderer's 1D kernels and the 2D tile of the outline kernel.
+SIMECO_CONST kDrawWorkgroupSize = 64u;
+SIMECO_CONST kOutlineTile = 8u;
+
+// Each shadow-casting triangle becomes a closed volume of 4 triangles (12 vertices): itself as the near cap
+// and one side per edge, extruded to the point at infinity opposite the sun.
+SIMECO_CONST kVolumeVerticesPerTriangle = 12u;
+
+// A vertex of the organ meshes, in organ-local coordinates: x along the heading, y along left, z along up.
+// Stem vertices carry in position.w which ring they belong to (0 bottom, 1 top) and in normal.w 1 for the end
+// caps, so the vertex shader can taper the stem and cut its ends on the joint planes.
+struct MeshVertex {
+    vec4 position;
+    vec4 normal;
+};
+
+// The per-frame uniform block of the organ shaders (std140).
+struct DrawFrame {
+    mat4 viewProj;
+    vec4 cameraPosition;  // xyz
+    vec4 cameraRight;     // xyz: the image's x axis in the world, for discs that face the viewer
+    vec4 cameraUp;        // xyz: the image's y axis (upwards) in the world
+    vec4 sunDirection;    // xyz: unit vector towards the sun
+    vec4 sunColor;        // rgb: irradiance from the sun
+    vec4 skyColor;        // rgb: ambient light from above
+    vec4 groundBounce;    // rgb: ambient light from below
+    vec4 groundColor;     // rgb: albedo of the ground plane
+    vec4 groundPlane;     // xyz: centre of the ground square; w: half its side
+    uvec4 options;        // x: style (kStyle*); y: toon colour bands
+};
+
+struct DrawPush {
+    uint kind;  // kOrgan* or kDrawGround
+    uint pass;  // kPass*
+};
+
+// draw_args.comp: the index range of each kind's mesh, and how many volume vertices fit in their buffer.
+struct DrawArgsPush {
+    uint indexCount[kOrganKinds];
+    uint firstIndex[kOrganKinds];
+    int vertexOffset[kOrganKinds];
+    uint volumeCapacity;  // vertices; a multiple of kVolumeVerticesPerTriangle
+};
+
+// The indirect draw of the shadow volumes, preceded by the counter the volume kernel allocates with.
+struct VolumeDraw {
+    uint allocated;  // vertices claimed by the volume kernel (may exceed the capacity: those were dropped)
+    uint pad0;
+    uint pad1;
+    uint pad2;
+    uint vertexCount;  // VkDrawIndirectCommand, at byte 16
+    uint instanceCount;
+    uint firstVertex;
+    uint firstInstance;
+};
+
+// shadow_volumes.comp: one dispatch per organ kind, one invocation per instance of it.
+struct ShadowVolumePush {
+    vec4 awayFromSun;  // xyz: unit direction the sunlight travels; w: open surfaces' push along it, per organ size
+    vec4 cameraRight;  // xyz: as DrawFrame, so viewer-facing discs cast the shadow of what is drawn
+    vec4 cameraUp;
+    uint kind;
+    uint firstIndex;     // the kind's hull triangles in the mesh index buffer
+    uint triangleCount;
+    int vertexOffset;
+    uint capacity;       // vertices in the volume buffer
+    uint closedHull;     // 1: a closed hull (casts from the faces turned away from the sun); 0: an open surface
+    uint pad0;
+    uint pad1;
+};
+
+// toon_outline.comp: dark lines where depth or plant changes, over the copied frame buffers.
+struct OutlinePush {
+    vec4 lineColor;   // rgb, linear
+    uint width;
+    uint height;
+    uint radius;      // line half-width in pixels
+    float threshold;  // relative change of the depth's second difference that makes an edge
+    float nearPlane;
+    float farPlane;
+    uint pad0;
+    uint pad1;
+};
+
+#ifdef __cplusplus
+static_assert(sizeof(MeshVertex) == 32);
+static_assert(sizeof(DrawFrame) == 64 + 10 * 16);
+static_assert(sizeof(DrawPush) == 8);
+static_assert(sizeof(DrawArgsPush) == 64);
+static_assert(sizeof(VolumeDraw) == 32);
+static_assert(sizeof(ShadowVolumePush) == 80);
+static_assert(sizeof(OutlinePush) == 48);
+#endif
+SIMECO_SHARED_END
+
+#endif

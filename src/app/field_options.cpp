@@ -1,0 +1,29 @@
+#include "app/field_options.h"
+
+#include <cstdint>
+#include <string>
+
+namespace simeco::app {
+
+CLI::Option* addBackendOption(CLI::App& cmd, field::Backend& backend, const std::string& description) {
+    auto read = [&backend](const std::string& name) { backend = *field::backendNamed(name); };
+    return cmd.add_option_function<std::string>("--backend", read, description)->check(CLI::IsMember({"cpu", "gpu"}));
+}
+
+void addFieldOptions(CLI::App& cmd, field::FieldSource& source) {
+    cmd.add_option("file", source.file, "grammar (.l, .lsys) or scene (.eco)")->required();
+    cmd.add_option("-n,--steps", source.steps, "derivation steps (default: the file's derivation length)")
+        ->check(CLI::Range(0, 1000000));
+    cmd.add_option("--seed", source.seed, "seed of the random streams (default: the file's seed, else 0)")
+        ->check(CLI::Range(int64_t(0), int64_t(UINT32_MAX)));
+    cmd.add_option("--plants", source.plants,
+                   "plants in the field; a scene's species take turns (default: one of each)")
+        ->check(CLI::Range(1u, 1000000u));
+    cmd.add_option("--spacing", source.spacing, "distance between plants (default: from the widest plant)")
+        ->check(CLI::Range(0.0f, 1e6f));
+    addBackendOption(cmd, source.backend, "derivation and turtle: gpu (compute kernels) or cpu (reference)");
+    cmd.add_option("--max-modules", source.maxModules, "module budget (default: sized to this machine's memory)");
+    cmd.add_option("--device", source.device, "Vulkan device: an index or a name part (see `simeco devices`)");
+}
+
+} // namespace simeco::app

@@ -1,0 +1,42 @@
+#include "stream/derive_options.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include "ir/species.h"
+
+namespace simeco::stream {
+
+uint64_t defaultModuleBudget(int stride) {
+    // A quarter of physical memory, for the two strings (current and next) of the derivation.
+    long pages = sysconf(_SC_PHYS_PAGES), pageSize = sysconf(_SC_PAGE_SIZE);
+    uint64_t memory = (pages > 0 && pageSize > 0) ? uint64_t(pages) * uint64_t(pageSize) : (8ull << 30);
+    uint64_t bytesPerModule = sizeof(uint32_t) + sizeof(uint8_t) + sizeof(float) * uint64_t(std::max(stride, 1));
+    return memory / 4 / (2 * bytesPerModule);
+}
+
+std::vector<std::vector<shared::ParticleState>> splitAxiomParticles(const std::vector<ir::Grammar>& species,
+                                                                    uint32_t plants,
+                                                                    const std::vector<shared::ParticleState>& initial) {
+    std::vector<std::vector<shared::ParticleState>> perPlant(plants);
+    size_t total = 0;
+    for (uint32_t plant = 0; plant < plants; ++plant) {
+        perPlant[plant].resize(species[ir::speciesOfPlant(plant, species.size())].axiom.size());
+        total += perPlant[plant].size();
+    }
+    if (initial.empty()) return perPlant;
+    if (initial.size() != total)
+        throw std::invalid_argument(
+            fmt::format("{} initial particle states for {} axiom modules", initial.size(), total));
+    auto next = initial.begin();
+    for (std::vector<shared::ParticleState>& states : perPlant) {
+        std::copy_n(next, states.size(), states.begin());
+        next += static_cast<std::ptrdiff_t>(states.size());
+    }
+    return perPlant;
+}
+
+} // namespace simeco::stream

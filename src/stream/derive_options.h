@@ -1,0 +1,41 @@
+// What every derivation engine is asked and what it returns: the options of a derivation (steps, seed,
+// plants, module budget, homomorphism, particle state) and its result, the module stream of all plants.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "compute/shared/particle_layout.h"
+#include "ir/grammar.h"
+#include "stream/module_string.h"
+
+namespace simeco::stream {
+
+// A default module budget sized to this machine's memory.
+uint64_t defaultModuleBudget(int stride);
+
+struct DeriveOptions {
+    int steps = -1;            // -1: the grammar's derivation length
+    int64_t seed = -1;         // -1: the grammar's `seed:` (or 0)
+    uint32_t plants = 1;       // independent copies, each with its own random stream
+    uint64_t maxModules = 0;   // 0: defaultModuleBudget
+    bool homomorphism = false; // return the string the turtle interprets: the result under the homomorphism
+    // Carry each module's particle state (compute/shared/particle_layout.h) through the derivation, into the
+    // result's string.particles. The axioms' modules, all plants' in order, start with initialParticles, or
+    // at zero when it is empty.
+    bool particles = false;
+    std::vector<shared::ParticleState> initialParticles;
+};
+
+struct DeriveResult {
+    ModuleString string; // all plants, one segment each
+    int steps = 0;       // steps performed by the plant that went furthest (fewer when a model called stop())
+};
+
+// DeriveOptions::initialParticles cut into each plant's axiom (zeros when it is empty). Throws
+// std::invalid_argument unless it has one state for each module of the plants' axioms.
+std::vector<std::vector<shared::ParticleState>> splitAxiomParticles(const std::vector<ir::Grammar>& species,
+                                                                    uint32_t plants,
+                                                                    const std::vector<shared::ParticleState>& initial);
+
+} // namespace simeco::stream

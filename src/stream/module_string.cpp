@@ -1,0 +1,27 @@
+#include "stream/module_string.h"
+
+#include <cstdio>
+
+namespace simeco::stream {
+
+std::string formatModules(const ModuleString& s, const ir::Alphabet& alphabet, size_t begin, size_t end) {
+    std::string out;
+    out.reserve((end - begin) * 2);
+    char buffer[32];
+    for (size_t i = begin; i < end; ++i) {
+        out += alphabet.name(s.sym[i]);
+        size_t count = s.paramCount[i];
+        if (count == 0) continue;
+        out.push_back('(');
+        const float* p = s.paramsOf(i);
+        for (size_t k = 0; k < count; ++k) {
+            if (k) out.push_back(',');
+            std::snprintf(buffer, sizeof buffer, "%.9g", static_cast<double>(p[k]));
+            out += buffer;
+        }
+        out.push_back(')');
+    }
+    return out;
+}
+
+} // namespace simeco::stream

@@ -1,0 +1,507 @@
+#include "turtle/turtle_gpu.h"
+
+#include <algorithm>
+#include <bit>
+#include <cstring>
+#include <span>
+#include <utility>
+
+#include <fmt/format.h>
+
+#include "compute/shared/derive_layout.h"
+#include "compute/shared/turtle_layout.h"
+#include "compute/shared/turtle_state_layout.h"
+#include "draw/bounds.h"
+#include "gpu/bracket_tree.h"
+#include "gpu/scan.h"
+#include "ir/source_loc.h"
+#include "vk/barriers.h"
+#include "vk/context.h"
+#include "vk/pipeline.h"
+
+namespace simeco::turtle {
+
+using namespace shared;
+using vk::Hazard;
+
+namespace {
+
+VkDeviceSize bytes(std::uint64_t count, std::uint64_t size) { return std::max<VkDeviceSize>(count * size, 4); }
+
+// Whether the alphabet can spell an elasticity command: then a segment may bend even where the view file
+// gives no elasticity.
+bool hasElasticityCommands(const turtle::TurtleCommands& c) {
+    auto elastic = [](std::uint32_t command) {
+        return command == kTurtleElasticitySet || command == kTurtleElasticityUp || command == kTurtleElasticityDown;
+    };
+    if (c.at == turtle::kNoSymbol) return false;
+    return std::any_of(c.afterAt.begin(), c.afterAt.end(), elastic) ||
+           std::any_of(c.pairs.begin(), c.pairs.end(), elastic);
+}
+
+std::vector<std::uint32_t> commandTableOf(const turtle::TurtleCommands& c) {
+    std::vector<std::uint32_t> table;
+    for (const auto* row : {&c.plain, &c.afterAt, &c.afterQuery, &c.pairPrefix, &c.pairs})
+        table.insert(table.end(), row->begin(), row->end());
+    return table;
+}
+
+TurtleSpecies speciesOf(const turtle::TurtleSettings& t, bool elasticityCommands) {
+    TurtleSpecies s{};
+    s.angleDegrees = t.angleDegrees;
+    s.step = t.step;
+    s.width = t.width;
+    s.widthIncrement = t.widthIncrement;
+    s.colorIncrement = t.colorIncrement;
+    s.initialColor = t.initialColor;
+    s.elasticity = t.elasticity;
+    s.elasticityIncrement = t.elasticityIncrement;
+    bool mayBend = t.elasticity != 0.0f || elasticityCommands;
+    s.tropism = {t.tropism.x, t.tropism.y, t.tropism.z, mayBend ? 1.0f : 0.0f};
+    return s;
+}
+
+
+// Rounds of pointer jumping that resolve any path of up to `count` modules (each round doubles the reach),
+// made odd so that a ping-pong starting in the first buffer ends in the second.
+std::uint32_t jumpRounds(std::uint32_t count) {
+    std::uint32_t rounds = std::bit_width(std::max(count, 1u)) + 1;
+    return rounds | 1u;
+}
+
+} // namespace
+
+UploadedModules::UploadedModules(const vk::Context& context, const stream::ModuleString& s)
+    : count_(static_cast<std::uint32_t>(s.size())),
+      plants_(static_cast<std::uint32_t>(s.plants())),
+      stride_(static_cast<std::uint32_t>(s.stride)) {
+    std::vector<std::uint32_t> words(s.size());
+    for (size_t i = 0; i < s.size(); ++i) words[i] = s.sym[i] | (std::uint32_t(s.paramCount[i]) << kSymbolBits);
+    std::vector<std::uint32_t> starts(s.plantStart.begin(), s.plantStart.end());
+    symbols_ = vk::deviceBufferWith(context, std::span<const std::uint32_t>(words));
+    params_ = vk::deviceBufferWith(context, std::span<const float>(s.params));
+    plantStarts_ = vk::deviceBufferWith(context, std::span<const std::uint32_t>(starts));
+}
+
+stream::DeviceModules UploadedModules::view() const {
+    return stream::DeviceModules{&symbols_, &params_, &plantStarts_, count_, plants_, stride_};
+}
+
+struct GpuTurtle::Impl {
+    const vk::Context& ctx;
+    gpu::GpuScan scan;
+    gpu::BracketTree brackets;
+    vk::ComputePipeline setup, polygons, chunkSteps, jumpSteps, chunkSearch, jumpSearch, searchFinish, jumpLevels,
+        levelCount, levelScatter, resolveLevel, states, classify, emit, links, field, place;
+    vk::Buffer commandTable, speciesTable, palettes, surfaceScales, surfaceShapes;
+    TurtlePush base{};
+    std::uint32_t levels = 0;
+    std::uint64_t bytesMoved = 0;
+
+    // The passes' per-module arrays, allocated once and grown (by half again) when a stream outgrows them.
+    struct Scratch {
+        vk::Buffer commands, parents, plantOf, marks, kinds, slots, lastSlots;
+        vk::Buffer steps[2], pointers[2];
+        vk::Buffer states;
+        vk::Buffer triangleFirst, trianglePrevious;
+        vk::Buffer stemBelow, tubeBelow, cylinderAnchors, cylinderStarts;
+        vk::Buffer stepTargets, searchTargets, searchChunk;
+        vk::Buffer searchJumps[2];
+        vk::Buffer levels[2];
+        vk::Buffer counts, order;
+        vk::Buffer flags, offsets;
+        std::uint64_t modules = 0; // capacity
+    } scratch;
+    vk::Buffer plantBounds, cursors, present;
+    std::uint64_t plantCapacity = 0, cursorCapacity = 0;
+    // What the last interpretation left: its instances grow like the scratch arrays.
+    DeviceOrgans organs;
+
+    Impl(const vk::Context& c, const turtle::TurtleCommands& commands, const std::vector<turtle::TurtleSettings>& species)
+        : ctx(c),
+          scan(c),
+          brackets(c, scan),
+          setup(vk::ComputePipeline::embedded(c, "turtle/setup")),
+          polygons(vk::ComputePipeline::embedded(c, "turtle/polygons")),
+          chunkSteps(vk::ComputePipeline::embedded(c, "turtle/chunk_steps")),
+          jumpSteps(vk::ComputePipeline::embedded(c, "turtle/jump_steps")),
+          chunkSearch(vk::ComputePipeline::embedded(c, "turtle/chunk_search")),
+          jumpSearch(vk::ComputePipeline::embedded(c, "turtle/jump_search")),
+          searchFinish(vk::ComputePipeline::embedded(c, "turtle/search_finish")),
+          jumpLevels(vk::ComputePipeline::embedded(c, "turtle/jump_levels")),
+          levelCount(vk::ComputePipeline::embedded(c, "turtle/level_count")),
+          levelScatter(vk::ComputePipeline::embedded(c, "turtle/level_scatter")),
+          resolveLevel(vk::ComputePipeline::embedded(c, "turtle/resolve_level")),
+          states(vk::ComputePipeline::embedded(c, "turtle/states")),
+          classify(vk::ComputePipeline::embedded(c, "turtle/classify")),
+          emit(vk::ComputePipeline::embedded(c, "turtle/emit")),
+          links(vk::ComputePipeline::embedded(c, "turtle/links")),
+          field(vk::ComputePipeline::embedded(c, "turtle/field")),
+          place(vk::ComputePipeline::embedded(c, "turtle/place")) {
+        bool elastic = hasElasticityCommands(commands);
+        std::vector<TurtleSpecies> table;
+        std::vector<float> scales;
+        std::vector<std::uint32_t> shapes;
+        std::vector<shared::vec4> colors;
+        for (const turtle::TurtleSettings& t : species) {
+            table.push_back(speciesOf(t, elastic));
+            std::vector<float> s = t.surfaceScale;
+            std::vector<std::uint32_t> k = t.surfaceShape;
+            s.resize(commands.symbols, 1.0f);
+            k.resize(commands.symbols, 0u);
+            scales.insert(scales.end(), s.begin(), s.end());
+            shapes.insert(shapes.end(), k.begin(), k.end());
+            for (std::uint32_t e = 0; e < kPaletteEntries; ++e) {
+                glm::vec4 v = e < t.palette.size() ? t.palette[e] : glm::vec4(1.0f);
+                colors.push_back({v.r, v.g, v.b, v.a});
+            }
+        }
+        std::vector<std::uint32_t> commandWords = commandTableOf(commands);
+        commandTable = vk::deviceBufferWith(c, std::span<const std::uint32_t>(commandWords));
+        speciesTable = vk::deviceBufferWith(c, std::span<const TurtleSpecies>(table));
+        palettes = vk::deviceBufferWith(c, std::span<const shared::vec4>(colors));
+        surfaceScales = vk::deviceBufferWith(c, std::span<const float>(scales));
+        surfaceShapes = vk::deviceBufferWith(c, std::span<const std::uint32_t>(shapes));
+        base.species = static_cast<std::uint32_t>(species.size());
+        base.symbols = commands.symbols;
+        base.atSymbol = commands.at;
+        base.tildeSymbol = commands.tilde;
+        base.querySymbol = commands.query;
+    }
+
+    void checkRange(std::uint64_t count, std::uint64_t size, const char* what) const {
+        std::uint64_t limit = ctx.limits().maxStorageBufferRange;
+        if (count * size > limit)
+            throw ir::LimitError(fmt::format("the device binds at most {} MiB per buffer; the turtle's {} for {} "
+                                             "modules need {} MiB (interpret fewer steps or plants)",
+                                             limit >> 20, what, count, (count * size) >> 20));
+    }
+
+    vk::Buffer deviceBuffer(std::uint64_t count, std::uint64_t size) const {
+        return vk::Buffer(ctx, bytes(count, size), vk::MemoryUsage::DeviceLocal);
+    }
+
+    // Room for n modules of `plants` plants (n within the device's binding limit: checkRange).
+    void reserve(std::uint64_t n, std::uint64_t plants);
+    // Room for the organ instances, and the organ table and field spacing, kept between interpretations.
+    void reserveOrgans(std::uint64_t count);
+
+    const DeviceOrgans& interpret(const stream::DeviceModules& m, const turtle::FieldOptions& options);
+
+    // The main arrays each pass reads and writes, per module (organs counted as if every module drew one, the
+    // buffers' capacity): a model of the traffic, not a measurement.
+    static std::uint64_t trafficOf(std::uint64_t n, std::uint64_t stride, std::uint64_t rounds,
+                                   std::uint64_t nonlinear) {
+        const std::uint64_t step = sizeof(TurtleStep), state = sizeof(TurtleState), organ = sizeof(OrganInstance);
+        std::uint64_t perModule = 0;
+        perModule += 4 * 9;                                 // bracket depths: deltas, scan, leaves, levels
+        perModule += 4 + 4 * stride + 4 * 5 + step;         // setup: module in; command, parent, plant, marks,
+                                                            // pointer and step out
+        perModule += 4;                                     // polygons: commands
+        // Chunk passes (step composition and four searches) and the jumps among their targets, counted as one
+        // target per chunk (the chunk boundary); every round reads each module's target flag.
+        perModule += 2 * (step + 4) + 4 * 4 * 4;
+        perModule += rounds * 5 * 4 + rounds * (3 * (step + 4) + 4 * 3 * 4) / kTurtleChunk;
+        perModule += 4 * 4 * 3;                             // searches' final answers
+        perModule += rounds * 4 + 2 * 4;                    // levels: marks; counting and scattering
+        perModule += 4 + step + 4 + 2 * state;              // states: marks, step, anchor, anchor's and own state
+        perModule += 4 * 4 + state + 4 * kOrganKinds;       // classify: commands, marks, polygon, cylinders; flags
+        perModule += 3 * 4 * kOrganKinds;                   // scan of the flags
+        perModule += 4 * 3 + 2 * state + 4 + organ + 4;     // emit: kinds, commands, parents; states; offset,
+                                                            // instance and slot
+        perModule += 4 * 4 + organ;                         // links: kinds, commands, marks, slots; instance
+        perModule += 2 * organ;                             // place: instance read and written
+        std::uint64_t perNonlinear = 4 * 3 + step + 4 + 2 * state; // resolve: order, parent, command, step,
+                                                                   // anchor, anchor's and own state
+        return n * perModule + nonlinear * perNonlinear;
+    }
+};
+
+const DeviceOrgans& GpuTurtle::Impl::interpret(const stream::DeviceModules& m, const turtle::FieldOptions& options) {
+    const std::uint32_t n = m.count;
+    levels = 0;
+    bytesMoved = 0;
+    if (n == 0) { // nothing to interpret: an empty table, as the CPU turtle leaves
+        turtle::Interpretation empty;
+        empty.spacing = options.spacing > 0 ? options.spacing : 1.0f;
+        organs = uploadOrgans(ctx, empty);
+        return organs;
+    }
+    checkRange(n, sizeof(TurtleStep), "steps");
+    checkRange(std::uint64_t(n) * kOrganKinds, 4, "organ flags");
+    TurtlePush push = base;
+    push.count = n;
+    push.plants = m.plants;
+    push.stride = m.stride;
+    push.spacing = options.spacing;
+
+    reserve(n, m.plants);
+    Scratch& b = scratch;
+    const vk::Buffer &commands = b.commands, &parents = b.parents, &plantOf = b.plantOf, &marks = b.marks,
+                     &kinds = b.kinds, &slots = b.slots, &lastSlots = b.lastSlots;
+    const vk::Buffer(&steps)[2] = b.steps;
+    const vk::Buffer(&pointers)[2] = b.pointers;
+    const vk::Buffer& statesBuffer = b.states;
+    const vk::Buffer &triangleFirst = b.triangleFirst, &trianglePrevious = b.trianglePrevious;
+    const vk::Buffer &stemBelow = b.stemBelow, &tubeBelow = b.tubeBelow, &cylinderAnchors = b.cylinderAnchors,
+                     &cylinderStarts = b.cylinderStarts;
+    const vk::Buffer &stepTargets = b.stepTargets, &searchTargets = b.searchTargets, &searchChunk = b.searchChunk;
+    const vk::Buffer(&searchJumps)[2] = b.searchJumps;
+    const vk::Buffer(&levelsBuffers)[2] = b.levels;
+    const vk::Buffer &counts = b.counts, &order = b.order;
+    const vk::Buffer &flags = b.flags, &offsets = b.offsets;
+    if (scan.capacity() < n * kOrganKinds) scan.reserve(n * kOrganKinds);
+
+    const vk::Buffer& symbols = *m.symbols;
+    const vk::Buffer& params = *m.params;
+    const vk::Buffer& starts = *m.plantStarts;
+    const std::uint64_t groups = setup.groupsFor(n);
+    const std::uint64_t chunkGroups = setup.groupsFor((std::uint64_t(n) + kTurtleChunk - 1) / kTurtleChunk);
+    // Chains of targets are at most n long; odd, so that the jumps end in the second buffer of each pair.
+    const std::uint32_t rounds = jumpRounds(n);
+
+    // Nearest strict ancestor with a hit or stop mark, into `result`: within chunks, then among the targets the
+    // chunks point at (searchChunk -> searchJumps[0] -> [1] -> [0] ...; the last round writes [0]), then for all.
+    auto search = [&](VkCommandBuffer cmd, std::uint32_t hit, std::uint32_t stop, const vk::Buffer& result) {
+        TurtlePush p = push;
+        p.hitMask = hit;
+        p.stopMask = stop;
+        vk::memoryBarrier(cmd, Hazard::ComputeToTransfer);
+        vkCmdFillBuffer(cmd, searchTargets.handle(), 0, VK_WHOLE_SIZE, 0);
+        vk::memoryBarrier(cmd, Hazard::TransferToCompute);
+        chunkSearch.dispatch(cmd, {marks, parents, searchChunk, searchTargets}, p, chunkGroups);
+        vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+        for (std::uint32_t r = 0; r < rounds; ++r) {
+            const vk::Buffer& in = r == 0 ? searchChunk : searchJumps[r % 2 == 1 ? 0 : 1];
+            jumpSearch.dispatch(cmd, {marks, searchTargets, in, searchJumps[r % 2 == 1 ? 1 : 0]}, p, groups);
+            vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+        }
+        searchFinish.dispatch(cmd, {marks, searchChunk, searchJumps[0], result}, p, groups);
+        vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+    };
+
+    // Pass 1: commands, parents, steps and marks; polygons; which marks occur at all.
+    ctx.submitAndWait([&](VkCommandBuffer cmd) {
+        vkCmdFillBuffer(cmd, present.handle(), 0, VK_WHOLE_SIZE, 0);
+        vkCmdFillBuffer(cmd, triangleFirst.handle(), 0, VK_WHOLE_SIZE, kNoModule);
+        vkCmdFillBuffer(cmd, stepTargets.handle(), 0, VK_WHOLE_SIZE, 0);
+        vkCmdFillBuffer(cmd, counts.handle(), 0, VK_WHOLE_SIZE, 0);
+        VkDeviceSize half = std::uint64_t(m.plants) * 16;
+        if (m.plants > 0) {
+            vkCmdFillBuffer(cmd, plantBounds.handle(), 0, half, 0x7FFFFFFFu);
+            vkCmdFillBuffer(cmd, plantBounds.handle(), half, half, 0x80000000u);
+        }
+        vk::memoryBarrier(cmd, Hazard::TransferToCompute);
+        brackets.record(cmd, symbols, n);
+        setup.dispatch(cmd, {symbols, params, starts, commandTable, speciesTable, brackets.tree(), brackets.levelInfo(),
+                             commands, parents, steps[0], pointers[0], marks, plantOf, present},
+                       push, groups);
+        vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+        polygons.dispatch(cmd, {commands, plantOf, marks, triangleFirst, trianglePrevious}, push, groups);
+        vk::memoryBarrier(cmd, Hazard::ComputeToHost);
+    });
+    std::uint32_t marked = 0;
+    std::memcpy(&marked, present.mapped(), sizeof marked);
+    const bool nonlinear = (marked & kMarkNonlinear) != 0;
+    const bool cylinders = (marked & (kMarkCylinderStart | kMarkCylinderPoint)) != 0;
+
+    // Pass 2: steps composed up to the anchors; the searches that need only marks; the levels of the non-linear
+    // modules and their counts. Searches for marks no module carries are skipped (their readers never look).
+    ctx.submitAndWait([&](VkCommandBuffer cmd) {
+        chunkSteps.dispatch(cmd, {marks, parents, steps[0], pointers[0], stepTargets}, push, chunkGroups);
+        vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+        // The targets' entries alternate between the buffers; the other modules' stay in the first (chunks).
+        for (std::uint32_t r = 0; r < rounds; ++r) {
+            std::uint32_t from = r % 2, to = 1 - from;
+            jumpSteps.dispatch(cmd, {marks, stepTargets, steps[from], pointers[from], steps[to], pointers[to]}, push,
+                               groups);
+            vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+        }
+        if (marked & kMarkStem) search(cmd, kMarkStem, kMarkStemBreak, stemBelow);
+        if (cylinders) {
+            search(cmd, kMarkCylinderStart | kMarkCylinderPoint, 0, cylinderAnchors);
+            search(cmd, kMarkCylinderStart, 0, cylinderStarts);
+        }
+        if (nonlinear) {
+            for (std::uint32_t r = 0; r < rounds; ++r) {
+                TurtlePush p = push;
+                p.first = r;
+                jumpLevels.dispatch(cmd, {symbols, params, starts, commandTable, speciesTable, marks, parents,
+                                          stepTargets, steps[0], pointers[0], steps[1], pointers[1], plantOf,
+                                          statesBuffer, levelsBuffers[(r + 1) % 2], levelsBuffers[r % 2]},
+                                    p, groups);
+                vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+            }
+            levelCount.dispatch(cmd, {marks, levelsBuffers[0], counts}, push, groups);
+        }
+        vk::memoryBarrier(cmd, Hazard::ComputeToHost);
+    });
+    const vk::Buffer& levelsOf = levelsBuffers[0];
+
+    // The levels' sizes: the only thing the host reads, to lay the levels out and dispatch them in turn.
+    std::uint32_t deepest = nonlinear ? vk::downloadVector<std::uint32_t>(ctx, counts, 1)[0] : 0;
+    levels = deepest;
+    std::vector<std::uint32_t> levelStarts(std::size_t(deepest) + 1, 0), levelSizes(std::size_t(deepest) + 1, 0);
+    if (cursorCapacity < std::uint64_t(deepest) + 1) {
+        cursorCapacity = std::max<std::uint64_t>(std::uint64_t(deepest) + 1, 64);
+        cursors = deviceBuffer(cursorCapacity, 4);
+    }
+    if (deepest > 0) {
+        std::vector<std::uint32_t> sizes(std::size_t(deepest) + 1);
+        vk::download(ctx, counts, std::as_writable_bytes(std::span(sizes)));
+        std::uint32_t next = 0;
+        for (std::uint32_t level = 1; level <= deepest; ++level) {
+            levelStarts[level] = next;
+            levelSizes[level] = sizes[level];
+            next += sizes[level];
+        }
+        vk::uploadSpan(ctx, cursors, std::span<const std::uint32_t>(levelStarts));
+    }
+
+    bytesMoved = trafficOf(n, m.stride, rounds, levelStarts.empty() ? 0 : levelStarts.back() + levelSizes.back());
+
+    // Pass 3: non-linear modules level by level, then every state; organs classified and counted (a tube
+    // may draw several segments) and placed by a scan, whose total sizes the instance buffer.
+    ctx.submitAndWait([&](VkCommandBuffer cmd) {
+        if (deepest > 0) {
+            levelScatter.dispatch(cmd, {marks, levelsOf, cursors, order}, push, groups);
+            vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+            for (std::uint32_t level = 1; level <= deepest; ++level) {
+                if (levelSizes[level] == 0) continue;
+                TurtlePush p = push;
+                p.first = levelStarts[level];
+                p.items = levelSizes[level];
+                resolveLevel.dispatch(cmd, {symbols, params, starts, commandTable, speciesTable, marks, parents,
+                                            stepTargets, steps[0], pointers[0], steps[1], pointers[1], plantOf,
+                                            statesBuffer, commands, order},
+                                      p, resolveLevel.groupsFor(p.items));
+                vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+            }
+        }
+        states.dispatch(cmd, {symbols, params, starts, commandTable, speciesTable, marks, stepTargets, steps[0],
+                              pointers[0], steps[1], pointers[1], plantOf, statesBuffer},
+                        push, groups);
+        vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+        classify.dispatch(cmd, {symbols, params, starts, commandTable, speciesTable, commands, marks, triangleFirst,
+                                cylinderAnchors, cylinderStarts, statesBuffer, kinds, flags},
+                          push, groups);
+        vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+        if (marked & kMarkCylinderStart) search(cmd, kMarkTube, kMarkTubeBreak, tubeBelow);
+        scan.record(cmd, flags, offsets, n * kOrganKinds);
+        vk::memoryBarrier(cmd, Hazard::ComputeToHost);
+    });
+    std::uint32_t organCount = vk::downloadVector<std::uint32_t>(ctx, scan.totalBuffer(), 1)[0];
+    checkRange(organCount, sizeof(OrganInstance), "organ instances");
+    reserveOrgans(organCount);
+    DeviceOrgans& out = organs;
+
+    // Pass 4: organs written, joined, and moved to their plants' places in the field.
+    ctx.submitAndWait([&](VkCommandBuffer cmd) {
+        emit.dispatch(cmd, {symbols, params, starts, commandTable, speciesTable, commands, parents, plantOf,
+                            statesBuffer, kinds, offsets, triangleFirst, trianglePrevious, cylinderAnchors, palettes,
+                            surfaceScales, surfaceShapes, out.instances, slots, plantBounds, lastSlots},
+                      push, groups);
+        vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+        links.dispatch(cmd, {commands, marks, kinds, slots, stemBelow, tubeBelow, out.instances, lastSlots}, push,
+                       groups);
+        field.dispatch(cmd, {offsets, scan.totalBuffer(), plantBounds, out.table, out.field}, push, 1);
+        vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+        place.dispatch(cmd, {scan.totalBuffer(), out.field, out.instances, out.table}, push, groups);
+        vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+    });
+    return out;
+}
+
+void GpuTurtle::Impl::reserve(std::uint64_t n, std::uint64_t plants) {
+    if (plants * 8 > plantCapacity || !plantBounds) {
+        plantCapacity = std::max<std::uint64_t>(plants * 8 + plants * 4, 64);
+        plantBounds = deviceBuffer(plantCapacity, 4);
+    }
+    if (!present) present = vk::Buffer(ctx, 4, vk::MemoryUsage::Readback);
+    if (n <= scratch.modules) return;
+    // Half again as much, within what the device binds for the largest per-module array (the steps).
+    std::uint64_t largest = std::max<std::uint64_t>({sizeof(TurtleStep), sizeof(TurtleState), 4ull * kOrganKinds});
+    std::uint64_t capacity = std::min<std::uint64_t>(std::max<std::uint64_t>(n + n / 2, 1024),
+                                                     ctx.limits().maxStorageBufferRange / largest);
+    capacity = std::max(capacity, n);
+    scratch = Scratch();
+    Scratch& b = scratch;
+    for (vk::Buffer* one : {&b.commands, &b.parents, &b.plantOf, &b.marks, &b.kinds, &b.slots, &b.lastSlots,
+                            &b.pointers[0], &b.pointers[1], &b.triangleFirst, &b.trianglePrevious, &b.stemBelow,
+                            &b.tubeBelow, &b.cylinderAnchors, &b.cylinderStarts, &b.stepTargets, &b.searchTargets,
+                            &b.searchChunk, &b.searchJumps[0], &b.searchJumps[1], &b.order})
+        *one = deviceBuffer(capacity, 4);
+    b.steps[0] = deviceBuffer(capacity, sizeof(TurtleStep));
+    b.steps[1] = deviceBuffer(capacity, sizeof(TurtleStep));
+    b.states = deviceBuffer(capacity, sizeof(TurtleState));
+    b.levels[0] = deviceBuffer(capacity, 8);
+    b.levels[1] = deviceBuffer(capacity, 8);
+    b.counts = deviceBuffer(capacity + 1, 4);
+    b.flags = deviceBuffer(capacity * kOrganKinds, 4);
+    b.offsets = deviceBuffer(capacity * kOrganKinds, 4);
+    b.modules = capacity;
+}
+
+void GpuTurtle::Impl::reserveOrgans(std::uint64_t count) {
+    if (!organs.table) organs.table = vk::Buffer(ctx, sizeof(OrganTable), vk::MemoryUsage::DeviceLocal);
+    if (!organs.field) organs.field = vk::Buffer(ctx, 4, vk::MemoryUsage::DeviceLocal);
+    if (organs.instances && count <= organs.capacity) return;
+    std::uint64_t limit = ctx.limits().maxStorageBufferRange / sizeof(OrganInstance);
+    std::uint64_t capacity = std::max<std::uint64_t>(std::min<std::uint64_t>(count + count / 2, limit), count);
+    capacity = std::max<std::uint64_t>(capacity, 64);
+    organs.instances = vk::Buffer(ctx, bytes(capacity, sizeof(OrganInstance)), vk::MemoryUsage::DeviceLocal);
+    organs.capacity = static_cast<std::uint32_t>(capacity);
+}
+
+GpuTurtle::GpuTurtle(const vk::Context& context, const turtle::TurtleCommands& commands,
+                     const std::vector<turtle::TurtleSettings>& species)
+    : impl_(std::make_unique<Impl>(context, commands, species)) {}
+
+GpuTurtle::~GpuTurtle() = default;
+
+const DeviceOrgans& GpuTurtle::interpret(const stream::DeviceModules& modules, const turtle::FieldOptions& field) {
+    return impl_->interpret(modules, field);
+}
+
+std::uint32_t GpuTurtle::lastLevels() const { return impl_->levels; }
+
+std::uint64_t GpuTurtle::lastBytesMoved() const { return impl_->bytesMoved; }
+
+DeviceOrgans uploadOrgans(const vk::Context& context, const turtle::Interpretation& interpretation) {
+    OrganTable table{};
+    for (std::uint32_t k = 0; k < kOrganKinds; ++k) {
+        table.count[k] = interpretation.count[k];
+        table.first[k] = interpretation.first[k];
+    }
+    draw::encodeBounds(draw::Bounds{interpretation.bounds.min, interpretation.bounds.max}, table);
+    float spacing = interpretation.spacing;
+    DeviceOrgans organs;
+    organs.capacity = static_cast<std::uint32_t>(interpretation.organs.size());
+    organs.instances = vk::deviceBufferWith(context, std::span<const OrganInstance>(interpretation.organs));
+    organs.table = vk::deviceBufferWith(context, std::span<const OrganTable>(&table, 1));
+    organs.field = vk::deviceBufferWith(context, std::span<const float>(&spacing, 1));
+    return organs;
+}
+
+turtle::Interpretation readBack(const vk::Context& context, const DeviceOrgans& organs, std::uint32_t plants) {
+    OrganTable table = vk::downloadVector<OrganTable>(context, organs.table, 1)[0];
+    float spacing = vk::downloadVector<float>(context, organs.field, 1)[0];
+    turtle::Interpretation result;
+    std::uint32_t total = 0;
+    for (std::uint32_t k = 0; k < kOrganKinds; ++k) {
+        result.count[k] = table.count[k];
+        result.first[k] = table.first[k];
+        total += table.count[k];
+    }
+    result.organs = vk::downloadVector<OrganInstance>(context, organs.instances, total);
+    if (total > 0) {
+        draw::Bounds b = draw::decodeBounds(table);
+        result.bounds.add(b.min);
+        result.bounds.add(b.max);
+    }
+    result.spacing = spacing;
+    for (std::uint32_t p = 0; p < plants; ++p) result.plantOrigins.push_back(turtle::fieldCell(p, plants) * spacing);
+    return result;
+}
+
+} // namespace simeco::turtle

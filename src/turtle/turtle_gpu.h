@@ -1,0 +1,76 @@
+// The turtle on the device: organ instances and their table (compute/shared/organ_layout.h) written by compute
+// passes over the module stream, the same organs, in the same order, as the CPU reference turtle
+// (turtle/turtle_cpu.h). The kernels are in compute/turtle; the method is described in
+// compute/shared/turtle_state_layout.h. The host reads back only which marks occur (to skip searches nothing
+// needs), the sizes of the levels of non-linear commands, and the number of organs (to size their buffer).
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "stream/device_modules.h"
+#include "stream/module_string.h"
+#include "turtle/interpretation.h"
+#include "turtle/turtle_commands.h"
+#include "turtle/turtle_settings.h"
+#include "vk/buffer.h"
+
+namespace simeco::vk {
+class Context;
+}
+
+namespace simeco::turtle {
+
+// A host string copied to the device in that layout.
+class UploadedModules {
+public:
+    UploadedModules(const vk::Context& context, const stream::ModuleString& string);
+    stream::DeviceModules view() const;
+
+private:
+    vk::Buffer symbols_, params_, plantStarts_;
+    std::uint32_t count_ = 0, plants_ = 0, stride_ = 1;
+};
+
+// What the turtle leaves on the device: the instances, and the table that says how many of each kind were
+// written, where they start and their bounds.
+struct DeviceOrgans {
+    vk::Buffer instances;
+    vk::Buffer table;
+    vk::Buffer field; // one float: the spacing of the plants' grid
+    std::uint32_t capacity = 0; // instances the buffer holds
+};
+
+class GpuTurtle {
+public:
+    // `species[p % species.size()]` interprets plant p; all share the alphabet `commands` was built from.
+    GpuTurtle(const vk::Context& context, const turtle::TurtleCommands& commands,
+              const std::vector<turtle::TurtleSettings>& species);
+    ~GpuTurtle();
+    GpuTurtle(const GpuTurtle&) = delete;
+    GpuTurtle& operator=(const GpuTurtle&) = delete;
+
+    // Interprets every plant of `modules` and places the plants in the field. Throws ir::LimitError when the
+    // stream needs larger buffers than the device binds. The organs stay the turtle's, valid until its next
+    // interpretation: their buffers, like the passes' own, are allocated once and grown.
+    const DeviceOrgans& interpret(const stream::DeviceModules& modules, const turtle::FieldOptions& field);
+
+    // Levels of non-linear commands the last interpretation resolved one after another.
+    std::uint32_t lastLevels() const;
+    // Bytes the last interpretation's passes read and wrote in their per-module and per-organ arrays, as the
+    // host counts them (for the benchmark's comparison with the copy bandwidth).
+    std::uint64_t lastBytesMoved() const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+// The CPU turtle's organs on the device in the layout the turtle kernels leave.
+DeviceOrgans uploadOrgans(const vk::Context& context, const turtle::Interpretation& interpretation);
+
+// The instances and table read back, in the CPU turtle's form (for tests and tools).
+turtle::Interpretation readBack(const vk::Context& context, const DeviceOrgans& organs, std::uint32_t plants);
+
+} // namespace simeco::turtle

@@ -1,6 +1,7 @@
 // `simeco derive`: derive a grammar and print the string, statistics or JSON.
 #include <chrono>
 #include <cstdio>
+#include <optional>
 #include <string>
 
 #include <fmt/format.h>
@@ -12,6 +13,7 @@
 #include "cpu/derive.h"
 #include "field/field.h"
 #include "gpu/derive_gpu.h"
+#include "gpu/stream_statistics.h"
 #include "stream/statistics.h"
 #include "vk/context.h"
 #include "vk/kernel_profile.h"
@@ -43,6 +45,7 @@ void runDerive(const DeriveArgs& args) {
     options.maxModules = args.maxModules;
     auto start = std::chrono::steady_clock::now();
     stream::DeriveResult result;
+    std::optional<stream::StringStatistics> total; // counted on the device, where the string stays
     double seconds = 0;
     if (args.backend == field::Backend::Gpu) {
         vk::ContextOptions contextOptions;
@@ -54,8 +57,15 @@ void runDerive(const DeriveArgs& args) {
                                                                     : gpu::GpuStrategy::Auto;
         gpu::GpuDeriver deriver(context, species, strategy);
         gpu::GpuDeriveStats stats;
-        result = deriver.derive(options, true, &stats);
+        // Only a printed string comes back to the host; statistics are counted where the string is.
+        bool readBack = args.format == "string";
+        result = deriver.derive(options, readBack, &stats);
         seconds = stats.seconds;
+        if (!readBack) {
+            auto counting = std::chrono::steady_clock::now();
+            total = gpu::StreamStatistics(context).compute(deriver.lastString(), alphabet);
+            seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - counting).count();
+        }
         if (args.profile) std::fputs(context.kernelProfile()->table().c_str(), stderr);
     } else {
         result = cpu::deriveSpeciesCpu(species, options);
@@ -73,27 +83,27 @@ void runDerive(const DeriveArgs& args) {
         std::fwrite(out.data(), 1, out.size(), stdout);
         return;
     }
-    stream::StringStatistics total = stream::computeStatistics(s, alphabet);
+    if (!total) total = stream::computeStatistics(s, alphabet);
     if (args.format == "stats") {
-        std::printf("modules: %llu\n", static_cast<unsigned long long>(total.modules));
-        std::printf("plants: %llu\n", static_cast<unsigned long long>(total.plants));
+        std::printf("modules: %llu\n", static_cast<unsigned long long>(total->modules));
+        std::printf("plants: %llu\n", static_cast<unsigned long long>(total->plants));
         std::printf("steps: %d\n", result.steps);
-        std::printf("max branch depth: %d\n", total.maxBranchDepth);
+        std::printf("max branch depth: %d\n", total->maxBranchDepth);
         std::printf("time: %.6f s\n", seconds);
         std::printf("symbols:\n");
-        for (const auto& [name, count] : total.perSymbol)
+        for (const auto& [name, count] : total->perSymbol)
             std::printf("  %s %llu\n", name.c_str(), static_cast<unsigned long long>(count));
         return;
     }
     nlohmann::json j;
     j["file"] = args.file;
     j["backend"] = field::backendName(args.backend);
-    j["modules"] = total.modules;
-    j["plants"] = total.plants;
+    j["modules"] = total->modules;
+    j["plants"] = total->plants;
     j["steps"] = result.steps;
-    j["max_branch_depth"] = total.maxBranchDepth;
+    j["max_branch_depth"] = total->maxBranchDepth;
     j["seconds"] = seconds;
-    j["symbols"] = total.perSymbol;
+    j["symbols"] = total->perSymbol;
     std::printf("%s\n", j.dump(2).c_str());
 }
 

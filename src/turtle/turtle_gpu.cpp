@@ -188,6 +188,39 @@ struct GpuTurtle::Impl {
 
     const DeviceOrgans& interpret(const stream::DeviceModules& m, const turtle::FieldOptions& options);
 
+    // What one interpretation's passes share: the stream, its sizes and push constants, and what the host read
+    // between the passes.
+    struct Run {
+        Run(const vk::Buffer& s, const vk::Buffer& p, const vk::Buffer& t) : symbols(s), params(p), starts(t) {}
+
+        const vk::Buffer& symbols;
+        const vk::Buffer& params;
+        const vk::Buffer& starts;
+        std::uint32_t n = 0, plants = 0, rounds = 0;
+        std::uint64_t groups = 0, chunkGroups = 0;
+        TurtlePush push{};
+        std::uint32_t marked = 0;  // the marks that occur
+        std::uint32_t deepest = 0; // levels of non-linear commands
+        std::vector<std::uint32_t> levelStarts, levelSizes;
+    };
+
+    // Nearest strict ancestor with a hit or stop mark, into `result`: within chunks, then among the targets the
+    // chunks point at (searchChunk -> searchJumps[0] -> [1] -> [0] ...; the last round writes [0]), then for all.
+    void recordSearch(VkCommandBuffer cmd, const Run& run, std::uint32_t hit, std::uint32_t stop,
+                      const vk::Buffer& result);
+    // Pass 1: commands, parents, steps and marks; polygons; which marks occur at all (into `present`).
+    void recordSetup(VkCommandBuffer cmd, const Run& run);
+    // Pass 2: steps composed up to the anchors; the searches that need only marks; the levels of the non-linear
+    // modules and their counts. Searches for marks no module carries are skipped (their readers never look).
+    void recordComposition(VkCommandBuffer cmd, const Run& run);
+    // The levels' sizes read back and laid out one after another (the cursors the scatter fills them by).
+    void layOutLevels(Run& run);
+    // Pass 3: non-linear modules level by level, then every state; organs classified and counted (a tube may
+    // draw several segments) and placed by a scan, whose total sizes the instance buffer.
+    void recordStates(VkCommandBuffer cmd, const Run& run);
+    // Pass 4: organs written, joined, and moved to their plants' places in the field.
+    void recordOrgans(VkCommandBuffer cmd, const Run& run);
+
     // The main arrays each pass reads and writes, per module (organs counted as if every module drew one, the
     // buffers' capacity): a model of the traffic, not a measurement.
     static std::uint64_t trafficOf(std::uint64_t n, std::uint64_t stride, std::uint64_t rounds,
@@ -229,187 +262,184 @@ const DeviceOrgans& GpuTurtle::Impl::interpret(const stream::DeviceModules& m, c
     }
     checkRange(n, sizeof(TurtleStep), "steps");
     checkRange(std::uint64_t(n) * kOrganKinds, 4, "organ flags");
-    TurtlePush push = base;
-    push.count = n;
-    push.plants = m.plants;
-    push.stride = m.stride;
-    push.spacing = options.spacing;
-
     reserve(n, m.plants);
-    Scratch& b = scratch;
-    const vk::Buffer &commands = b.commands, &parents = b.parents, &plantOf = b.plantOf, &marks = b.marks,
-                     &kinds = b.kinds, &slots = b.slots, &lastSlots = b.lastSlots;
-    const vk::Buffer(&steps)[2] = b.steps;
-    const vk::Buffer(&pointers)[2] = b.pointers;
-    const vk::Buffer& statesBuffer = b.states;
-    const vk::Buffer &triangleFirst = b.triangleFirst, &trianglePrevious = b.trianglePrevious;
-    const vk::Buffer &stemBelow = b.stemBelow, &tubeBelow = b.tubeBelow, &cylinderAnchors = b.cylinderAnchors,
-                     &cylinderStarts = b.cylinderStarts;
-    const vk::Buffer &stepTargets = b.stepTargets, &searchTargets = b.searchTargets, &searchChunk = b.searchChunk;
-    const vk::Buffer(&searchJumps)[2] = b.searchJumps;
-    const vk::Buffer(&levelsBuffers)[2] = b.levels;
-    const vk::Buffer &counts = b.counts, &order = b.order;
-    const vk::Buffer &flags = b.flags, &offsets = b.offsets;
     if (scan.capacity() < n * kOrganKinds) scan.reserve(n * kOrganKinds);
-
-    const vk::Buffer& symbols = *m.symbols;
-    const vk::Buffer& params = *m.params;
-    const vk::Buffer& starts = *m.plantStarts;
-    const std::uint64_t groups = setup.groupsFor(n);
-    const std::uint64_t chunkGroups = setup.groupsFor((std::uint64_t(n) + kTurtleChunk - 1) / kTurtleChunk);
+    Run run(*m.symbols, *m.params, *m.plantStarts);
+    run.n = n;
+    run.plants = m.plants;
+    run.push = base;
+    run.push.count = n;
+    run.push.plants = m.plants;
+    run.push.stride = m.stride;
+    run.push.spacing = options.spacing;
+    run.groups = setup.groupsFor(n);
+    run.chunkGroups = setup.groupsFor((std::uint64_t(n) + kTurtleChunk - 1) / kTurtleChunk);
     // Chains of targets are at most n long; odd, so that the jumps end in the second buffer of each pair.
-    const std::uint32_t rounds = jumpRounds(n);
+    run.rounds = jumpRounds(n);
 
-    // Nearest strict ancestor with a hit or stop mark, into `result`: within chunks, then among the targets the
-    // chunks point at (searchChunk -> searchJumps[0] -> [1] -> [0] ...; the last round writes [0]), then for all.
-    auto search = [&](VkCommandBuffer cmd, std::uint32_t hit, std::uint32_t stop, const vk::Buffer& result) {
-        TurtlePush p = push;
-        p.hitMask = hit;
-        p.stopMask = stop;
-        vk::memoryBarrier(cmd, Hazard::ComputeToTransfer);
-        vkCmdFillBuffer(cmd, searchTargets.handle(), 0, VK_WHOLE_SIZE, 0);
-        vk::memoryBarrier(cmd, Hazard::TransferToCompute);
-        chunkSearch.dispatch(cmd, {marks, parents, searchChunk, searchTargets}, p, chunkGroups);
-        vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
-        for (std::uint32_t r = 0; r < rounds; ++r) {
-            const vk::Buffer& in = r == 0 ? searchChunk : searchJumps[r % 2 == 1 ? 0 : 1];
-            jumpSearch.dispatch(cmd, {marks, searchTargets, in, searchJumps[r % 2 == 1 ? 1 : 0]}, p, groups);
-            vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
-        }
-        searchFinish.dispatch(cmd, {marks, searchChunk, searchJumps[0], result}, p, groups);
-        vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
-    };
-
-    // Pass 1: commands, parents, steps and marks; polygons; which marks occur at all.
-    ctx.submitAndWait([&](VkCommandBuffer cmd) {
-        vkCmdFillBuffer(cmd, present.handle(), 0, VK_WHOLE_SIZE, 0);
-        vkCmdFillBuffer(cmd, triangleFirst.handle(), 0, VK_WHOLE_SIZE, kNoModule);
-        vkCmdFillBuffer(cmd, stepTargets.handle(), 0, VK_WHOLE_SIZE, 0);
-        vkCmdFillBuffer(cmd, counts.handle(), 0, VK_WHOLE_SIZE, 0);
-        VkDeviceSize half = std::uint64_t(m.plants) * 16;
-        if (m.plants > 0) {
-            vkCmdFillBuffer(cmd, plantBounds.handle(), 0, half, 0x7FFFFFFFu);
-            vkCmdFillBuffer(cmd, plantBounds.handle(), half, half, 0x80000000u);
-        }
-        vk::memoryBarrier(cmd, Hazard::TransferToCompute);
-        brackets.record(cmd, symbols, n);
-        setup.dispatch(cmd, {symbols, params, starts, commandTable, speciesTable, brackets.tree(), brackets.levelInfo(),
-                             commands, parents, steps[0], pointers[0], marks, plantOf, present},
-                       push, groups);
-        vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
-        polygons.dispatch(cmd, {commands, plantOf, marks, triangleFirst, trianglePrevious}, push, groups);
-        vk::memoryBarrier(cmd, Hazard::ComputeToHost);
-    });
-    std::uint32_t marked = 0;
-    std::memcpy(&marked, present.mapped(), sizeof marked);
-    const bool nonlinear = (marked & kMarkNonlinear) != 0;
-    const bool cylinders = (marked & (kMarkCylinderStart | kMarkCylinderPoint)) != 0;
-
-    // Pass 2: steps composed up to the anchors; the searches that need only marks; the levels of the non-linear
-    // modules and their counts. Searches for marks no module carries are skipped (their readers never look).
-    ctx.submitAndWait([&](VkCommandBuffer cmd) {
-        chunkSteps.dispatch(cmd, {marks, parents, steps[0], pointers[0], stepTargets}, push, chunkGroups);
-        vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
-        // The targets' entries alternate between the buffers; the other modules' stay in the first (chunks).
-        for (std::uint32_t r = 0; r < rounds; ++r) {
-            std::uint32_t from = r % 2, to = 1 - from;
-            jumpSteps.dispatch(cmd, {marks, stepTargets, steps[from], pointers[from], steps[to], pointers[to]}, push,
-                               groups);
-            vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
-        }
-        if (marked & kMarkStem) search(cmd, kMarkStem, kMarkStemBreak, stemBelow);
-        if (cylinders) {
-            search(cmd, kMarkCylinderStart | kMarkCylinderPoint, 0, cylinderAnchors);
-            search(cmd, kMarkCylinderStart, 0, cylinderStarts);
-        }
-        if (nonlinear) {
-            for (std::uint32_t r = 0; r < rounds; ++r) {
-                TurtlePush p = push;
-                p.first = r;
-                jumpLevels.dispatch(cmd, {symbols, params, starts, commandTable, speciesTable, marks, parents,
-                                          stepTargets, steps[0], pointers[0], steps[1], pointers[1], plantOf,
-                                          statesBuffer, levelsBuffers[(r + 1) % 2], levelsBuffers[r % 2]},
-                                    p, groups);
-                vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
-            }
-            levelCount.dispatch(cmd, {marks, levelsBuffers[0], counts}, push, groups);
-        }
-        vk::memoryBarrier(cmd, Hazard::ComputeToHost);
-    });
-    const vk::Buffer& levelsOf = levelsBuffers[0];
-
-    // The levels' sizes: the only thing the host reads, to lay the levels out and dispatch them in turn.
-    std::uint32_t deepest = nonlinear ? vk::downloadVector<std::uint32_t>(ctx, counts, 1)[0] : 0;
-    levels = deepest;
-    std::vector<std::uint32_t> levelStarts(std::size_t(deepest) + 1, 0), levelSizes(std::size_t(deepest) + 1, 0);
-    if (cursorCapacity < std::uint64_t(deepest) + 1) {
-        cursorCapacity = std::max<std::uint64_t>(std::uint64_t(deepest) + 1, 64);
-        cursors = deviceBuffer(cursorCapacity, 4);
-    }
-    if (deepest > 0) {
-        std::vector<std::uint32_t> sizes(std::size_t(deepest) + 1);
-        vk::download(ctx, counts, std::as_writable_bytes(std::span(sizes)));
-        std::uint32_t next = 0;
-        for (std::uint32_t level = 1; level <= deepest; ++level) {
-            levelStarts[level] = next;
-            levelSizes[level] = sizes[level];
-            next += sizes[level];
-        }
-        vk::uploadSpan(ctx, cursors, std::span<const std::uint32_t>(levelStarts));
-    }
-
-    bytesMoved = trafficOf(n, m.stride, rounds, levelStarts.empty() ? 0 : levelStarts.back() + levelSizes.back());
-
-    // Pass 3: non-linear modules level by level, then every state; organs classified and counted (a tube
-    // may draw several segments) and placed by a scan, whose total sizes the instance buffer.
-    ctx.submitAndWait([&](VkCommandBuffer cmd) {
-        if (deepest > 0) {
-            levelScatter.dispatch(cmd, {marks, levelsOf, cursors, order}, push, groups);
-            vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
-            for (std::uint32_t level = 1; level <= deepest; ++level) {
-                if (levelSizes[level] == 0) continue;
-                TurtlePush p = push;
-                p.first = levelStarts[level];
-                p.items = levelSizes[level];
-                resolveLevel.dispatch(cmd, {symbols, params, starts, commandTable, speciesTable, marks, parents,
-                                            stepTargets, steps[0], pointers[0], steps[1], pointers[1], plantOf,
-                                            statesBuffer, commands, order},
-                                      p, resolveLevel.groupsFor(p.items));
-                vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
-            }
-        }
-        states.dispatch(cmd, {symbols, params, starts, commandTable, speciesTable, marks, stepTargets, steps[0],
-                              pointers[0], steps[1], pointers[1], plantOf, statesBuffer},
-                        push, groups);
-        vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
-        classify.dispatch(cmd, {symbols, params, starts, commandTable, speciesTable, commands, marks, triangleFirst,
-                                cylinderAnchors, cylinderStarts, statesBuffer, kinds, flags},
-                          push, groups);
-        vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
-        if (marked & kMarkCylinderStart) search(cmd, kMarkTube, kMarkTubeBreak, tubeBelow);
-        scan.record(cmd, flags, offsets, n * kOrganKinds);
-        vk::memoryBarrier(cmd, Hazard::ComputeToHost);
-    });
+    // The host reads three things between the passes: which marks occur (to skip the searches nothing needs),
+    // the levels' sizes (to dispatch them in turn) and the organs' count (to size the instances).
+    ctx.submitAndWait([&](VkCommandBuffer cmd) { recordSetup(cmd, run); });
+    std::memcpy(&run.marked, present.mapped(), sizeof run.marked);
+    ctx.submitAndWait([&](VkCommandBuffer cmd) { recordComposition(cmd, run); });
+    layOutLevels(run);
+    bytesMoved = trafficOf(n, m.stride, run.rounds,
+                           run.levelStarts.empty() ? 0 : run.levelStarts.back() + run.levelSizes.back());
+    ctx.submitAndWait([&](VkCommandBuffer cmd) { recordStates(cmd, run); });
     std::uint32_t organCount = vk::downloadVector<std::uint32_t>(ctx, scan.totalBuffer(), 1)[0];
     checkRange(organCount, sizeof(OrganInstance), "organ instances");
     reserveOrgans(organCount);
-    DeviceOrgans& out = organs;
+    ctx.submitAndWait([&](VkCommandBuffer cmd) { recordOrgans(cmd, run); });
+    return organs;
+}
 
-    // Pass 4: organs written, joined, and moved to their plants' places in the field.
-    ctx.submitAndWait([&](VkCommandBuffer cmd) {
-        emit.dispatch(cmd, {symbols, params, starts, commandTable, speciesTable, commands, parents, plantOf,
-                            statesBuffer, kinds, offsets, triangleFirst, trianglePrevious, cylinderAnchors, palettes,
-                            surfaceScales, surfaceShapes, out.instances, slots, plantBounds, lastSlots},
-                      push, groups);
+void GpuTurtle::Impl::recordSearch(VkCommandBuffer cmd, const Run& run, std::uint32_t hit, std::uint32_t stop,
+                                   const vk::Buffer& result) {
+    const Scratch& b = scratch;
+    TurtlePush p = run.push;
+    p.hitMask = hit;
+    p.stopMask = stop;
+    vk::memoryBarrier(cmd, Hazard::ComputeToTransfer);
+    vkCmdFillBuffer(cmd, b.searchTargets.handle(), 0, VK_WHOLE_SIZE, 0);
+    vk::memoryBarrier(cmd, Hazard::TransferToCompute);
+    chunkSearch.dispatch(cmd, {b.marks, b.parents, b.searchChunk, b.searchTargets}, p, run.chunkGroups);
+    vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+    for (std::uint32_t r = 0; r < run.rounds; ++r) {
+        const vk::Buffer& in = r == 0 ? b.searchChunk : b.searchJumps[r % 2 == 1 ? 0 : 1];
+        jumpSearch.dispatch(cmd, {b.marks, b.searchTargets, in, b.searchJumps[r % 2 == 1 ? 1 : 0]}, p, run.groups);
         vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
-        links.dispatch(cmd, {commands, marks, kinds, slots, stemBelow, tubeBelow, out.instances, lastSlots}, push,
-                       groups);
-        field.dispatch(cmd, {offsets, scan.totalBuffer(), plantBounds, out.table, out.field}, push, 1);
+    }
+    searchFinish.dispatch(cmd, {b.marks, b.searchChunk, b.searchJumps[0], result}, p, run.groups);
+    vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+}
+
+void GpuTurtle::Impl::recordSetup(VkCommandBuffer cmd, const Run& run) {
+    const Scratch& b = scratch;
+    vkCmdFillBuffer(cmd, present.handle(), 0, VK_WHOLE_SIZE, 0);
+    vkCmdFillBuffer(cmd, b.triangleFirst.handle(), 0, VK_WHOLE_SIZE, kNoModule);
+    vkCmdFillBuffer(cmd, b.stepTargets.handle(), 0, VK_WHOLE_SIZE, 0);
+    vkCmdFillBuffer(cmd, b.counts.handle(), 0, VK_WHOLE_SIZE, 0);
+    VkDeviceSize half = std::uint64_t(run.plants) * 16;
+    if (run.plants > 0) {
+        vkCmdFillBuffer(cmd, plantBounds.handle(), 0, half, 0x7FFFFFFFu);
+        vkCmdFillBuffer(cmd, plantBounds.handle(), half, half, 0x80000000u);
+    }
+    vk::memoryBarrier(cmd, Hazard::TransferToCompute);
+    brackets.record(cmd, run.symbols, run.n);
+    setup.dispatch(cmd,
+                   {run.symbols, run.params, run.starts, commandTable, speciesTable, brackets.tree(),
+                    brackets.levelInfo(), b.commands, b.parents, b.steps[0], b.pointers[0], b.marks, b.plantOf,
+                    present},
+                   run.push, run.groups);
+    vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+    polygons.dispatch(cmd, {b.commands, b.plantOf, b.marks, b.triangleFirst, b.trianglePrevious}, run.push, run.groups);
+    vk::memoryBarrier(cmd, Hazard::ComputeToHost);
+}
+
+void GpuTurtle::Impl::recordComposition(VkCommandBuffer cmd, const Run& run) {
+    const Scratch& b = scratch;
+    chunkSteps.dispatch(cmd, {b.marks, b.parents, b.steps[0], b.pointers[0], b.stepTargets}, run.push, run.chunkGroups);
+    vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+    // The targets' entries alternate between the buffers; the other modules' stay in the first (chunks).
+    for (std::uint32_t r = 0; r < run.rounds; ++r) {
+        std::uint32_t from = r % 2, to = 1 - from;
+        jumpSteps.dispatch(cmd, {b.marks, b.stepTargets, b.steps[from], b.pointers[from], b.steps[to], b.pointers[to]},
+                           run.push, run.groups);
         vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
-        place.dispatch(cmd, {scan.totalBuffer(), out.field, out.instances, out.table}, push, groups);
+    }
+    if (run.marked & kMarkStem) recordSearch(cmd, run, kMarkStem, kMarkStemBreak, b.stemBelow);
+    if (run.marked & (kMarkCylinderStart | kMarkCylinderPoint)) {
+        recordSearch(cmd, run, kMarkCylinderStart | kMarkCylinderPoint, 0, b.cylinderAnchors);
+        recordSearch(cmd, run, kMarkCylinderStart, 0, b.cylinderStarts);
+    }
+    if (run.marked & kMarkNonlinear) {
+        for (std::uint32_t r = 0; r < run.rounds; ++r) {
+            TurtlePush p = run.push;
+            p.first = r;
+            jumpLevels.dispatch(cmd,
+                                {run.symbols, run.params, run.starts, commandTable, speciesTable, b.marks, b.parents,
+                                 b.stepTargets, b.steps[0], b.pointers[0], b.steps[1], b.pointers[1], b.plantOf,
+                                 b.states, b.levels[(r + 1) % 2], b.levels[r % 2]},
+                                p, run.groups);
+            vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+        }
+        levelCount.dispatch(cmd, {b.marks, b.levels[0], b.counts}, run.push, run.groups);
+    }
+    vk::memoryBarrier(cmd, Hazard::ComputeToHost);
+}
+
+void GpuTurtle::Impl::layOutLevels(Run& run) {
+    const Scratch& b = scratch;
+    run.deepest = (run.marked & kMarkNonlinear) ? vk::downloadVector<std::uint32_t>(ctx, b.counts, 1)[0] : 0;
+    levels = run.deepest;
+    run.levelStarts.assign(std::size_t(run.deepest) + 1, 0);
+    run.levelSizes.assign(std::size_t(run.deepest) + 1, 0);
+    if (cursorCapacity < std::uint64_t(run.deepest) + 1) {
+        cursorCapacity = std::max<std::uint64_t>(std::uint64_t(run.deepest) + 1, 64);
+        cursors = deviceBuffer(cursorCapacity, 4);
+    }
+    if (run.deepest > 0) {
+        std::vector<std::uint32_t> sizes(std::size_t(run.deepest) + 1);
+        vk::download(ctx, b.counts, std::as_writable_bytes(std::span(sizes)));
+        std::uint32_t next = 0;
+        for (std::uint32_t level = 1; level <= run.deepest; ++level) {
+            run.levelStarts[level] = next;
+            run.levelSizes[level] = sizes[level];
+            next += sizes[level];
+        }
+        vk::uploadSpan(ctx, cursors, std::span<const std::uint32_t>(run.levelStarts));
+    }
+}
+
+void GpuTurtle::Impl::recordStates(VkCommandBuffer cmd, const Run& run) {
+    const Scratch& b = scratch;
+    if (run.deepest > 0) {
+        levelScatter.dispatch(cmd, {b.marks, b.levels[0], cursors, b.order}, run.push, run.groups);
         vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
-    });
-    return out;
+        for (std::uint32_t level = 1; level <= run.deepest; ++level) {
+            if (run.levelSizes[level] == 0) continue;
+            TurtlePush p = run.push;
+            p.first = run.levelStarts[level];
+            p.items = run.levelSizes[level];
+            resolveLevel.dispatch(cmd,
+                                  {run.symbols, run.params, run.starts, commandTable, speciesTable, b.marks, b.parents,
+                                   b.stepTargets, b.steps[0], b.pointers[0], b.steps[1], b.pointers[1], b.plantOf,
+                                   b.states, b.commands, b.order},
+                                  p, resolveLevel.groupsFor(p.items));
+            vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+        }
+    }
+    states.dispatch(cmd,
+                    {run.symbols, run.params, run.starts, commandTable, speciesTable, b.marks, b.stepTargets,
+                     b.steps[0], b.pointers[0], b.steps[1], b.pointers[1], b.plantOf, b.states},
+                    run.push, run.groups);
+    vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+    classify.dispatch(cmd,
+                      {run.symbols, run.params, run.starts, commandTable, speciesTable, b.commands, b.marks,
+                       b.triangleFirst, b.cylinderAnchors, b.cylinderStarts, b.states, b.kinds, b.flags},
+                      run.push, run.groups);
+    vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+    if (run.marked & kMarkCylinderStart) recordSearch(cmd, run, kMarkTube, kMarkTubeBreak, b.tubeBelow);
+    scan.record(cmd, b.flags, b.offsets, run.n * kOrganKinds);
+    vk::memoryBarrier(cmd, Hazard::ComputeToHost);
+}
+
+void GpuTurtle::Impl::recordOrgans(VkCommandBuffer cmd, const Run& run) {
+    const Scratch& b = scratch;
+    emit.dispatch(cmd, {run.symbols,   run.params,      run.starts,         commandTable,      speciesTable,
+                        b.commands,    b.parents,       b.plantOf,          b.states,          b.kinds,
+                        b.offsets,     b.triangleFirst, b.trianglePrevious, b.cylinderAnchors, palettes,
+                        surfaceScales, surfaceShapes,   organs.instances,   b.slots,           plantBounds,
+                        b.lastSlots},
+                  run.push, run.groups);
+    vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+    links.dispatch(cmd,
+                   {b.commands, b.marks, b.kinds, b.slots, b.stemBelow, b.tubeBelow, organs.instances, b.lastSlots},
+                   run.push, run.groups);
+    field.dispatch(cmd, {b.offsets, scan.totalBuffer(), plantBounds, organs.table, organs.field}, run.push, 1);
+    vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+    place.dispatch(cmd, {scan.totalBuffer(), organs.field, organs.instances, organs.table}, run.push, run.groups);
+    vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
 }
 
 void GpuTurtle::Impl::reserve(std::uint64_t n, std::uint64_t plants) {

@@ -246,6 +246,34 @@ TEST_F(TurtleGpuTest, TheDerivedStringOnTheDeviceMatchesTheCpuTurtle) {
     EXPECT_EQ(compared, 4);
 }
 
+// One turtle interprets fields that grow and shrink in turn: its buffers, kept and grown between
+// interpretations, hold what a larger field left beyond a smaller one's modules, which must change nothing.
+TEST_F(TurtleGpuTest, OneTurtleInterpretsFieldsOfEverySize) {
+    ir::Grammar g = lang::loadGrammarFile((kGrammars / "abop" / "fig2.8-ternary.l").string());
+    turtle::TurtleCommands commands = turtle::turtleCommands(g.alphabet);
+    std::vector<turtle::TurtleSettings> species{turtle::turtleSettings(g, g.alphabet)};
+    turtle::GpuTurtle turtle(context(), commands, species);
+    struct Field {
+        int steps;
+        uint32_t plants;
+    };
+    int compared = 0;
+    for (Field f : {Field{5, 3}, Field{2, 1}, Field{6, 4}, Field{1, 2}, Field{4, 9}}) {
+        SCOPED_TRACE(fmt::format("{} steps, {} plants", f.steps, f.plants));
+        stream::DeriveOptions options;
+        options.steps = f.steps;
+        options.plants = f.plants;
+        stream::ModuleString string = cpu::deriveCpu(g, options).string;
+        turtle::Interpretation want = turtle::interpretCpu(string, commands, species, {});
+        turtle::UploadedModules modules(context(), string);
+        turtle::Interpretation got = turtle::readBack(context(), turtle.interpret(modules.view(), {}), f.plants);
+        EXPECT_EQ(firstDifference(want, got), "");
+        EXPECT_GT(want.organs.size(), 0u);
+        ++compared;
+    }
+    EXPECT_EQ(compared, 5);
+}
+
 // Plants without modules: an empty table, no instances, nothing dispatched over nothing.
 TEST_F(TurtleGpuTest, EmptyPlantsDrawNothing) {
     ir::Grammar g = lang::loadGrammarFile((kGrammars / "abop" / "fig1.24a.l").string());

@@ -4,6 +4,7 @@
 #include <bit>
 #include <cstring>
 #include <span>
+#include <stdexcept>
 #include <utility>
 
 #include <fmt/format.h>
@@ -112,7 +113,7 @@ struct GpuTurtle::Impl {
         vk::Buffer flags, offsets;
         std::uint64_t modules = 0; // capacity
     } scratch;
-    vk::Buffer plantBounds, cursors, present;
+    vk::Buffer plantBounds, cursors, cursorStarts, present; // cursorStarts: the levels' starts, host-visible
     std::uint64_t plantCapacity = 0, cursorCapacity = 0;
     // What the last interpretation left: its instances grow like the scratch arrays.
     DeviceOrgans organs;
@@ -221,6 +222,17 @@ struct GpuTurtle::Impl {
     // Pass 4: organs written, joined, and moved to their plants' places in the field.
     void recordOrgans(VkCommandBuffer cmd, const Run& run);
 
+    // A run over `m`, before the host has read anything.
+    Run begin(const stream::DeviceModules& m, const turtle::FieldOptions& options) const;
+    // What the host read between the passes of the last interpretation, which hold for every string of the same
+    // symbols and parameters: record() runs the passes again in one recording.
+    struct Shape {
+        bool valid = false;
+        std::uint32_t n = 0, plants = 0, marked = 0, deepest = 0;
+        std::vector<std::uint32_t> levelStarts, levelSizes;
+    } shape;
+    const DeviceOrgans& record(VkCommandBuffer cmd, const stream::DeviceModules& m, const turtle::FieldOptions& options);
+
     // The main arrays each pass reads and writes, per module (organs counted as if every module drew one, the
     // buffers' capacity): a model of the traffic, not a measurement.
     static std::uint64_t trafficOf(std::uint64_t n, std::uint64_t stride, std::uint64_t rounds,
@@ -258,27 +270,18 @@ const DeviceOrgans& GpuTurtle::Impl::interpret(const stream::DeviceModules& m, c
         turtle::Interpretation empty;
         empty.spacing = options.spacing > 0 ? options.spacing : 1.0f;
         organs = uploadOrgans(ctx, empty);
+        shape = Shape{true, 0, m.plants, 0, 0, {}, {}};
         return organs;
     }
     checkRange(n, sizeof(TurtleStep), "steps");
     checkRange(std::uint64_t(n) * kOrganKinds, 4, "organ flags");
     reserve(n, m.plants);
     if (scan.capacity() < n * kOrganKinds) scan.reserve(n * kOrganKinds);
-    Run run(*m.symbols, *m.params, *m.plantStarts);
-    run.n = n;
-    run.plants = m.plants;
-    run.push = base;
-    run.push.count = n;
-    run.push.plants = m.plants;
-    run.push.stride = m.stride;
-    run.push.spacing = options.spacing;
-    run.groups = setup.groupsFor(n);
-    run.chunkGroups = setup.groupsFor((std::uint64_t(n) + kTurtleChunk - 1) / kTurtleChunk);
-    // Chains of targets are at most n long; odd, so that the jumps end in the second buffer of each pair.
-    run.rounds = jumpRounds(n);
+    Run run = begin(m, options);
 
     // The host reads three things between the passes: which marks occur (to skip the searches nothing needs),
     // the levels' sizes (to dispatch them in turn) and the organs' count (to size the instances).
+    shape.valid = false;
     ctx.submitAndWait([&](VkCommandBuffer cmd) { recordSetup(cmd, run); });
     std::memcpy(&run.marked, present.mapped(), sizeof run.marked);
     ctx.submitAndWait([&](VkCommandBuffer cmd) { recordComposition(cmd, run); });
@@ -290,6 +293,46 @@ const DeviceOrgans& GpuTurtle::Impl::interpret(const stream::DeviceModules& m, c
     checkRange(organCount, sizeof(OrganInstance), "organ instances");
     reserveOrgans(organCount);
     ctx.submitAndWait([&](VkCommandBuffer cmd) { recordOrgans(cmd, run); });
+    shape = Shape{true, n, m.plants, run.marked, run.deepest, run.levelStarts, run.levelSizes};
+    return organs;
+}
+
+GpuTurtle::Impl::Run GpuTurtle::Impl::begin(const stream::DeviceModules& m, const turtle::FieldOptions& options) const {
+    Run run(*m.symbols, *m.params, *m.plantStarts);
+    run.n = m.count;
+    run.plants = m.plants;
+    run.push = base;
+    run.push.count = m.count;
+    run.push.plants = m.plants;
+    run.push.stride = m.stride;
+    run.push.spacing = options.spacing;
+    run.groups = setup.groupsFor(m.count);
+    run.chunkGroups = setup.groupsFor((std::uint64_t(m.count) + kTurtleChunk - 1) / kTurtleChunk);
+    // Chains of targets are at most n long; odd, so that the jumps end in the second buffer of each pair.
+    run.rounds = jumpRounds(m.count);
+    return run;
+}
+
+const DeviceOrgans& GpuTurtle::Impl::record(VkCommandBuffer cmd, const stream::DeviceModules& m,
+                                            const turtle::FieldOptions& options) {
+    if (!shape.valid || shape.n != m.count || shape.plants != m.plants)
+        throw std::logic_error("GpuTurtle::record: the turtle interpreted another string last");
+    if (m.count == 0) return organs;
+    Run run = begin(m, options);
+    run.marked = shape.marked;
+    run.deepest = shape.deepest;
+    run.levelStarts = shape.levelStarts;
+    run.levelSizes = shape.levelSizes;
+    levels = run.deepest;
+    // The stream, and this turtle's buffers, may be in use by what was recorded before.
+    vk::memoryBarrier(cmd, Hazard::AnyToAny);
+    recordSetup(cmd, run);
+    vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+    recordComposition(cmd, run);
+    vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+    recordStates(cmd, run);
+    vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+    recordOrgans(cmd, run);
     return organs;
 }
 
@@ -377,6 +420,7 @@ void GpuTurtle::Impl::layOutLevels(Run& run) {
     if (cursorCapacity < std::uint64_t(run.deepest) + 1) {
         cursorCapacity = std::max<std::uint64_t>(std::uint64_t(run.deepest) + 1, 64);
         cursors = deviceBuffer(cursorCapacity, 4);
+        cursorStarts = vk::Buffer(ctx, bytes(cursorCapacity, 4), vk::MemoryUsage::Upload);
     }
     if (run.deepest > 0) {
         std::vector<std::uint32_t> sizes(std::size_t(run.deepest) + 1);
@@ -387,13 +431,17 @@ void GpuTurtle::Impl::layOutLevels(Run& run) {
             run.levelSizes[level] = sizes[level];
             next += sizes[level];
         }
-        vk::uploadSpan(ctx, cursors, std::span<const std::uint32_t>(run.levelStarts));
+        // The scatter advances the cursors: recordStates copies the starts into them each time.
+        std::memcpy(cursorStarts.mapped(), run.levelStarts.data(), run.levelStarts.size() * sizeof(std::uint32_t));
     }
 }
 
 void GpuTurtle::Impl::recordStates(VkCommandBuffer cmd, const Run& run) {
     const Scratch& b = scratch;
     if (run.deepest > 0) {
+        VkBufferCopy starts{0, 0, 4ull * (run.deepest + 1)};
+        vkCmdCopyBuffer(cmd, cursorStarts.handle(), cursors.handle(), 1, &starts);
+        vk::memoryBarrier(cmd, Hazard::TransferToCompute);
         levelScatter.dispatch(cmd, {b.marks, b.levels[0], cursors, b.order}, run.push, run.groups);
         vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
         for (std::uint32_t level = 1; level <= run.deepest; ++level) {
@@ -491,6 +539,11 @@ GpuTurtle::~GpuTurtle() = default;
 
 const DeviceOrgans& GpuTurtle::interpret(const stream::DeviceModules& modules, const turtle::FieldOptions& field) {
     return impl_->interpret(modules, field);
+}
+
+const DeviceOrgans& GpuTurtle::record(VkCommandBuffer cmd, const stream::DeviceModules& modules,
+                                      const turtle::FieldOptions& field) {
+    return impl_->record(cmd, modules, field);
 }
 
 std::uint32_t GpuTurtle::lastLevels() const { return impl_->levels; }

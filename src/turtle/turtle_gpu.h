@@ -9,6 +9,8 @@
 #include <memory>
 #include <vector>
 
+#include <vulkan/vulkan.h>
+
 #include "stream/device_modules.h"
 #include "stream/module_string.h"
 #include "turtle/interpretation.h"
@@ -55,6 +57,14 @@ public:
     // stream needs larger buffers than the device binds. The organs stay the turtle's, valid until its next
     // interpretation: their buffers, like the passes' own, are allocated once and grown.
     const DeviceOrgans& interpret(const stream::DeviceModules& modules, const turtle::FieldOptions& field);
+
+    // Records interpreting `modules` into `cmd`, reading nothing back, where the last interpret() was of a string
+    // with the same symbols and parameters (what the host read between its passes holds for it): a growth tick
+    // interprets again the string its last derivation left while only the modules' particle state changes.
+    // Starts with a barrier after everything recorded before; the caller submits. Throws std::logic_error
+    // when the turtle interpreted another string last.
+    const DeviceOrgans& record(VkCommandBuffer cmd, const stream::DeviceModules& modules,
+                               const turtle::FieldOptions& field);
 
     // Levels of non-linear commands the last interpretation resolved one after another.
     std::uint32_t lastLevels() const;

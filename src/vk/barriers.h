@@ -16,6 +16,7 @@ enum class Hazard {
     TransferToAny,      // anything after a copy (staging helpers)
     AnyToHost,          // the host maps what kernels or copies wrote
     TransferToHost,     // the host maps what a copy wrote
+    AnyToAny,           // a stage recorded after others in one submission: all earlier writes before any access
 };
 
 // A dependency covering all memory: cheap on every driver and right when several buffers are involved.

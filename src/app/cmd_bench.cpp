@@ -37,7 +37,7 @@ void runRenderBench(const BenchArgs& args) {
     char x = 0;
     if (std::sscanf(args.size.c_str(), "%u%c%u", &o.width, &x, &o.height) != 3 || x != 'x' || o.width == 0 ||
         o.height == 0 || o.width > 16384 || o.height > 16384)
-        throw std::invalid_argument(fmt::format("--size '{}': expected WIDTHxHEIGHT, each 1 to 16384", args.size));
+        throw CommandLineError(fmt::format("--size '{}': expected WIDTHxHEIGHT, each 1 to 16384", args.size));
     bench::RenderBenchReport report = bench::runRenderBenchmark(
         o, [](const std::string& line) { std::fprintf(stderr, "bench: %s\n", line.c_str()); });
     if (!args.json.empty()) bench::writeJsonAtomically(args.json, bench::renderReportJson(report));
@@ -46,7 +46,7 @@ void runRenderBench(const BenchArgs& args) {
 
 void runBench(BenchArgs args) {
     if (args.render) {
-        if (args.noGpu) throw std::invalid_argument("--render measures the device: it cannot run with --no-gpu");
+        if (args.noGpu) throw CommandLineError("--render measures the device: it cannot run with --no-gpu");
         return runRenderBench(args);
     }
     if (args.options.root.empty()) {

@@ -30,7 +30,7 @@ struct ExportArgs {
 void runExport(const ExportArgs& args) {
     std::optional<exporter::MeshFormat> format = exporter::meshFormatOf(args.output);
     if (!format) {
-        throw std::invalid_argument(fmt::format("-o '{}': the mesh is written as .obj, .ply or .gltf", args.output));
+        throw CommandLineError(fmt::format("-o '{}': the mesh is written as .obj, .ply or .gltf", args.output));
     }
     const field::FieldSource& source = args.source;
     std::unique_ptr<vk::Context> context = field::contextFor(source);

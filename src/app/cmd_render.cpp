@@ -42,14 +42,14 @@ draw::RenderSettings renderSettings(const RenderArgs& args) {
     char x = 0;
     if (std::sscanf(args.size.c_str(), "%u%c%u", &w, &x, &h) != 3 || x != 'x' || w == 0 || h == 0 || w > 16384 ||
         h > 16384)
-        throw std::invalid_argument(fmt::format("--size '{}': expected WIDTHxHEIGHT, each 1 to 16384", args.size));
+        throw CommandLineError(fmt::format("--size '{}': expected WIDTHxHEIGHT, each 1 to 16384", args.size));
     s.width = w;
     s.height = h;
     if (!args.camera.empty()) {
         draw::Camera c;
         int read = std::sscanf(args.camera.c_str(), "%f,%f,%f", &c.azimuthDegrees, &c.elevationDegrees, &c.distance);
         if (read < 2 || c.elevationDegrees <= -90 || c.elevationDegrees >= 90)
-            throw std::invalid_argument(fmt::format(
+            throw CommandLineError(fmt::format(
                 "--camera '{}': expected azimuth,elevation[,distance] in degrees, elevation within (-90, 90)",
                 args.camera));
         s.camera = c;
@@ -62,9 +62,9 @@ draw::RenderSettings renderSettings(const RenderArgs& args) {
 void runRender(const RenderArgs& args) {
     bool exr = hasExtension(args.output, ".exr");
     if (!exr && !hasExtension(args.output, ".png"))
-        throw std::invalid_argument(fmt::format("-o '{}': the image is written as .exr or .png", args.output));
+        throw CommandLineError(fmt::format("-o '{}': the image is written as .exr or .png", args.output));
     if (!args.png.empty() && !hasExtension(args.png, ".png"))
-        throw std::invalid_argument(fmt::format("--png '{}': expected a .png file name", args.png));
+        throw CommandLineError(fmt::format("--png '{}': expected a .png file name", args.png));
     draw::RenderSettings settings = renderSettings(args);
 
     // Rendering needs the device whichever backend derives and interprets.
@@ -84,9 +84,12 @@ void runRender(const RenderArgs& args) {
 
     draw::Renderer renderer(context);
     draw::Frame frame = renderer.render(organs.instances, organs.table, bounds, settings);
-    if (exr) draw::writeExr(args.output, frame);
-    else draw::writePng(args.output, frame);
-    if (!args.png.empty()) draw::writePng(args.png, frame);
+    // Both files appear, or neither.
+    draw::OutputBatch outputs;
+    if (exr) draw::writeExr(outputs, args.output, frame);
+    else draw::writePng(outputs, args.output, frame);
+    if (!args.png.empty()) draw::writePng(outputs, args.png, frame);
+    outputs.commit();
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::printf("%s: %zu plants, %zu modules, %zu organs, %ux%u, %.2f s -> %s%s%s\n", source.file.c_str(),
                 size_t(field.plants), size_t(field.modules), size_t(organCount), settings.width, settings.height, seconds,

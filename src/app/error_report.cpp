@@ -16,6 +16,9 @@ int runReportingErrors(const std::function<void()>& body) {
     } catch (const ir::InputError& e) {
         std::fprintf(stderr, "%s\n", e.formatted().c_str());
         return kExitBadInput;
+    } catch (const CommandLineError& e) {
+        std::fprintf(stderr, "simeco: error: %s\n", e.what());
+        return kExitBadInput;
     } catch (const ir::LimitError& e) {
         std::fprintf(stderr, "simeco: error: %s\n", e.what());
         return kExitRuntime;

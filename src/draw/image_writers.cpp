@@ -38,6 +38,18 @@ std::uint8_t previewByte(float linear) {
 }
 
 void writePng(const std::filesystem::path& path, const Frame& frame) {
+    OutputBatch batch;
+    writePng(batch, path, frame);
+    batch.commit();
+}
+
+void writeExr(const std::filesystem::path& path, const Frame& frame) {
+    OutputBatch batch;
+    writeExr(batch, path, frame);
+    batch.commit();
+}
+
+void writePng(OutputBatch& batch, const std::filesystem::path& path, const Frame& frame) {
     checkFrame(path, frame);
     std::vector<std::uint8_t> bytes(4 * frame.pixelCount());
     for (std::size_t i = 0; i < frame.pixelCount(); ++i) {
@@ -46,7 +58,7 @@ void writePng(const std::filesystem::path& path, const Frame& frame) {
         }
         bytes[4 * i + 3] = 255;
     }
-    writeAtomically(path, [&](const std::filesystem::path& temporary) {
+    batch.write(path, [&](const std::filesystem::path& temporary) {
         png_image image{};
         image.version = PNG_IMAGE_VERSION;
         image.width = frame.width;
@@ -61,12 +73,12 @@ void writePng(const std::filesystem::path& path, const Frame& frame) {
     });
 }
 
-void writeExr(const std::filesystem::path& path, const Frame& frame) {
+void writeExr(OutputBatch& batch, const std::filesystem::path& path, const Frame& frame) {
     checkFrame(path, frame);
     std::vector<Imath::half> rgba(frame.rgba.size());
     std::transform(frame.rgba.begin(), frame.rgba.end(), rgba.begin(), [](float v) { return Imath::half(v); });
 
-    writeAtomically(path, [&](const std::filesystem::path& temporary) {
+    batch.write(path, [&](const std::filesystem::path& temporary) {
         int width = static_cast<int>(frame.width);
         int height = static_cast<int>(frame.height);
         Imf::Header header(width, height);

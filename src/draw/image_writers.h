@@ -1,5 +1,5 @@
 // Frames to files: PNG previews (tone-mapped 8-bit sRGB) and OpenEXR images with everything the frame holds
-// (half RGBA, float Z, uint plant and organ ids). Both write atomically (see atomic_file.h) and throw an
+// (half RGBA, float Z, uint plant and organ ids). Both write atomically (see atomic_file.h), alone or with other files and throw an
 // OutputError with the destination's name when the frame is inconsistent or the file cannot be written.
 #pragma once
 
@@ -20,5 +20,9 @@ void writePng(const std::filesystem::path& path, const Frame& frame);
 
 // Channels R, G, B, A (HALF, linear), Z (FLOAT, the frame's depth), plant and organ (UINT); ZIP compressed.
 void writeExr(const std::filesystem::path& path, const Frame& frame);
+
+// The same, as a file of `batch`: it appears when the batch is committed, with the batch's other files.
+void writePng(OutputBatch& batch, const std::filesystem::path& path, const Frame& frame);
+void writeExr(OutputBatch& batch, const std::filesystem::path& path, const Frame& frame);
 
 } // namespace simeco::draw

@@ -112,6 +112,17 @@ code=$?
 [ $code -ne 0 ] && [ ! -e "$work/bad.png" ] && [ -z "$(ls "$work" | grep -i 'bad.*tmp')" ]
 check "render refuses a bad size and writes nothing (code $code)" $?
 
+"$simeco" render "$source_dir/grammars/abop/fig1.24d.l" --size 20x -o "$work/bad.png" >/dev/null 2>&1
+code=$?
+[ $code -eq 2 ]
+check "a malformed size is bad input: exit code 2 (code $code)" $?
+
+"$simeco" render "$source_dir/grammars/abop/fig1.24a.l" -n 2 --size 80x60 --shadows none -o "$work/half.exr" \
+  --png "$work/no-such-folder/half.png" >/dev/null 2>&1
+code=$?
+[ $code -ne 0 ] && [ -z "$(ls "$work" | grep half)" ]
+check "render writes both of its images or neither (code $code)" $?
+
 # fig. 1.24a at two steps: 25 stems a plant, 50 vertices a stem.
 "$simeco" export "$source_dir/grammars/abop/fig1.24a.l" -n 2 --plants 2 -o "$work/plants.obj" >"$work/export.txt" 2>&1
 [ "$(grep -c '^v ' "$work/plants.obj")" -eq 2500 ] && [ "$(grep -c '^vn ' "$work/plants.obj")" -eq 2500 ] &&

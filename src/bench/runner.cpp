@@ -22,7 +22,7 @@
 namespace simeco::bench {
 namespace {
 
-// Bytes of one module in the module stream (cpu/module_string.h): symbol, parameter count, parameter slots.
+// Bytes of one module in the module stream (stream/module_string.h): symbol, parameter count, parameter slots.
 std::uint64_t moduleBytes(int stride) {
     return sizeof(std::uint32_t) + sizeof(std::uint8_t) + sizeof(float) * static_cast<std::uint64_t>(stride);
 }

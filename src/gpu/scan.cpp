@@ -47,7 +47,7 @@ GpuScan::GpuScan(const vk::Context& context)
       downsweep_(vk::ComputePipeline::embedded(context, "scan/downsweep")),
       singlePass_(vk::ComputePipeline::embedded(context, "scan/single_pass")),
       total_(context, sizeof(std::uint32_t), vk::MemoryUsage::DeviceLocal) {
-    // The tile shape in shared/config.h and the kernels' local size must agree; both come from the same header,
+    // The tile shape in compute/shared/config.h and the kernels' local size must agree; both come from the same header,
     // so this only fails if a kernel stops using it.
     for (const vk::ComputePipeline* pipeline : {&reduce_, &downsweep_, &singlePass_}) {
         if (pipeline->reflection().localSize[0] != shared::kScanWorkgroupSize) {

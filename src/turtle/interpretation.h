@@ -1,4 +1,4 @@
-// Turtle interpretation of a module stream into organ instances (shared/organ_layout.h), and the field the
+// Turtle interpretation of a module stream into organ instances (compute/shared/organ_layout.h), and the field the
 // plants stand in.
 #pragma once
 

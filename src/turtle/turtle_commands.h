@@ -1,4 +1,4 @@
-// What each module of a string does to the turtle (shared/turtle_layout.h): cpfg's predefined modules, `~`
+// What each module of a string does to the turtle (compute/shared/turtle_layout.h): cpfg's predefined modules, `~`
 // surfaces, queries and SimEco's rotations. A module's command depends on its symbol and on the one or two
 // modules before it (`@` `O(d)` is a sphere, a lone `O` nothing), so the tables below are looked up per
 // symbol and per prefix; the turtle kernels read the same tables.

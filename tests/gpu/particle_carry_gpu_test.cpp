@@ -1,4 +1,4 @@
-// The GPU derivation moves each module's particle state as the CPU reference does (shared/particle_layout.h):
+// The GPU derivation moves each module's particle state as the CPU reference does (compute/shared/particle_layout.h):
 // the fused and the separate scan, cuts, predecessors of several modules, decomposition, the homomorphism, the
 // sequential strategy, and plants of several species that stop at different steps.
 #include <algorithm>

@@ -1,4 +1,4 @@
-// The CPU reference engine moves each module's particle state with the module (shared/particle_layout.h):
+// The CPU reference engine moves each module's particle state with the module (compute/shared/particle_layout.h):
 // copies keep theirs, successors take their predecessor's, deleted and cut modules take theirs away.
 #include <gtest/gtest.h>
 

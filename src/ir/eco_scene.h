@@ -71,6 +71,8 @@ struct EcoStage {
 // The organ kinds of appendix B, in the order of their segment letters A S L F T R.
 enum class EcoOrganKind : int { Apex, Stem, Leaf, Flower, Fruit, Root };
 inline constexpr int kEcoOrganKinds = 6;
+// The largest stage number a script may use (stages are numbered from 0).
+inline constexpr int kMostStage = 1000000;
 
 // The Grow-block segment letter of each organ kind: A apex, S stem, L leaf, F flower, T fruit (the thesis
 // leaves F and T unassigned; F = flower and T = fruit follow the order of its organ list), R root.

@@ -2,11 +2,13 @@
 
 #include <array>
 #include <cctype>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <sstream>
 
 #include <fmt/format.h>
+#include <unistd.h>
 
 #include "lang/cpfg_contour.h"
 #include "lang/source_text.h"
@@ -53,6 +55,35 @@ float number(const std::string& text, const std::string& file, size_t line, cons
     }
 }
 
+// Limits on the counts a view's files give: far above any model's, far below what exhausts memory.
+constexpr long kMostSamples = 1 << 20;
+constexpr long kMostControlPoints = 1 << 16;
+constexpr long kMostFunctions = 4096;
+
+// The file a view line names, in the view's folder; when it cannot be opened, the error points at that line.
+std::string namedFile(const std::filesystem::path& dir, const std::string& name, const std::string& view,
+                      const std::string& line, size_t index, const char* what) {
+    std::filesystem::path file = dir / name;
+    std::error_code error;
+    if (name.empty() || !std::filesystem::is_regular_file(file, error) || ::access(file.c_str(), R_OK) != 0) {
+        size_t at = name.empty() ? std::string::npos : line.find(name);
+        int col = at == std::string::npos ? 1 : static_cast<int>(at) + 1;
+        throw ir::InputError({view, static_cast<int>(index + 1), col},
+                             fmt::format("cannot open the {} file '{}' named here", what, file.string()));
+    }
+    return file.string();
+}
+
+// A count read from a file: a whole number within [low, high], else a located error (so that a file cannot ask
+// for billions of samples, or overflow an int, before anything is said).
+int wholeNumber(const std::string& text, const std::string& file, size_t line, const char* what, long low, long high) {
+    float v = number(text, file, line, what);
+    if (!(v >= float(low) && v <= float(high)) || v != std::floor(v))
+        throw ir::InputError({file, static_cast<int>(line + 1), 1},
+                             fmt::format("{} is a whole number from {} to {}, found {}", what, low, high, trim(text)));
+    return static_cast<int>(v);
+}
+
 // View settings only shape the picture: a value that is not a number keeps the default, with a warning,
 // as cpfg reads it (exercise models ship placeholders such as `angle increment: ?`).
 void viewNumber(const std::string& text, const std::string& file, size_t line, const char* what, float& value) {
@@ -73,7 +104,7 @@ void readFunctionSet(const std::string& path, CpfgView& out) {
     std::string value;
     if (next >= lines.size() || !field(lines[next], "items", value))
         throw ir::InputError({path, static_cast<int>(next + 1), 1}, "expected 'items: N'");
-    int items = static_cast<int>(number(value, path, next, "items"));
+    int items = wholeNumber(value, path, next, "items", 0, kMostFunctions);
     ++next;
     for (int i = 0; i < items; ++i) {
         ir::FunctionCurve f = parseFunctionCurve(lines, next, path, -1);
@@ -140,7 +171,7 @@ ir::FunctionCurve parseFunctionCurve(const std::vector<std::string>& lines, size
         while (next < lines.size()) {
             std::string line = trim(lines[next]);
             if (field(line, "name", value)) f.name = value;
-            else if (field(line, "samples", value)) f.samples = static_cast<int>(number(value, file, next, "samples"));
+            else if (field(line, "samples", value)) f.samples = wholeNumber(value, file, next, "samples", 0, kMostSamples);
             else if (field(line, "points", value)) break;
             ++next; // flip, markers and background lines do not change the values
         }
@@ -151,7 +182,7 @@ ir::FunctionCurve parseFunctionCurve(const std::vector<std::string>& lines, size
         fail("expected 'fver 1 1' or 'range:' at the start of a function");
     }
     if (next >= lines.size() || !field(trim(lines[next]), "points", value)) fail("expected 'points: N'");
-    int count = static_cast<int>(number(value, file, next, "points"));
+    int count = wholeNumber(value, file, next, "points", 0, kMostControlPoints);
     ++next;
     if (count < 4) fail("a function needs at least 4 control points");
     for (int i = 0; i < count; ++i, ++next) {
@@ -179,21 +210,21 @@ CpfgView readCpfgView(const std::string& path) {
         std::string line = trim(lines[i]), value;
         if (field(line, "function", value)) {
             std::istringstream in(value);
-            std::string name;
-            int samples = -1;
-            in >> name >> samples;
-            std::string funcPath = (dir / name).string();
+            std::string name, count;
+            in >> name >> count;
+            int samples = count.empty() ? -1 : wholeNumber(count, path, i, "samples", 0, kMostSamples);
+            std::string funcPath = namedFile(dir, name, path, lines[i], i, "function");
             std::vector<std::string> funcLines = splitLines(readSourceFile(funcPath));
             size_t next = 0;
             out.functions.push_back(parseFunctionCurve(funcLines, next, funcPath, samples));
         } else if (field(line, "function set", value)) {
-            readFunctionSet((dir / value).string(), out);
+            readFunctionSet(namedFile(dir, value, path, lines[i], i, "function set"), out);
         } else if (field(line, "curve", value)) {
             std::istringstream in(value);
-            std::string name;
-            int samples = 0;
-            in >> name >> samples;
-            out.curves.push_back(parseContourFile((dir / name).string()));
+            std::string name, count;
+            in >> name >> count;
+            int samples = count.empty() ? 0 : wholeNumber(count, path, i, "samples", 0, kMostSamples);
+            out.curves.push_back(parseContourFile(namedFile(dir, name, path, lines[i], i, "curve")));
             if (samples > 1) ir::sampleContourCurve(out.curves.back(), samples);
         } else if (field(line, "angle increment", value)) {
             viewNumber(value, path, i, "angle increment", out.view.angleIncrement);

@@ -211,8 +211,8 @@ private:
     }
 
     int stageNumber(const EcoToken& t) {
-        if (t.text.find_first_not_of("0123456789") != std::string::npos || t.number > 1e6)
-            cur_.failAt(t, fmt::format("a stage is a whole number from 0, found {}", t.text));
+        if (t.text.find_first_not_of("0123456789") != std::string::npos || t.number > ir::kMostStage)
+            cur_.failAt(t, fmt::format("a stage is a whole number from 0 to {}, found {}", ir::kMostStage, t.text));
         return static_cast<int>(t.number);
     }
 

@@ -301,8 +301,9 @@ private:
         } else {
             const EcoToken& n = cur_.next();
             if (n.kind != EcoTokenKind::Number || n.text.find_first_not_of("0123456789") != std::string::npos ||
-                n.number > 1e6)
-                cur_.failAt(n, fmt::format("a stage is a whole number from 0, found {}", EcoTokenCursor::describe(n)));
+                n.number > ir::kMostStage)
+                cur_.failAt(n, fmt::format("a stage is a whole number from 0 to {}, found {}", ir::kMostStage,
+                                           EcoTokenCursor::describe(n)));
             number = static_cast<int>(n.number);
             auto it = o.stages.find(*number);
             if (it != o.stages.end())

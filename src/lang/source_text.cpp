@@ -41,6 +41,10 @@ std::string readSourceFile(const std::string& path) {
     if (in.bad()) throw ir::InputError({path, 0, 0}, "cannot read file");
     std::string text = buffer.str();
     requireText(text, path);
+    // Line ends of every kind: a lone CR (classic Mac OS) ends a line as LF does; CR LF stays, the CR then
+    // being white space. The text keeps its length, so columns stay where they were.
+    for (size_t i = 0; i < text.size(); ++i)
+        if (text[i] == '\r' && (i + 1 == text.size() || text[i + 1] != '\n')) text[i] = '\n';
     return text;
 }
 

@@ -473,6 +473,7 @@ TEST(EcoParser, MalformedScriptsReportLineAndColumn) {
          "GrowRate is set twice"},
         {"stage defined twice", withStem("      Stage 1 { }\n      Stage 1 { }"), 5, 13, "Stage 1 is defined twice"},
         {"fractional stage", withStem("      Stage 1.5 { }"), 4, 13, "whole number"},
+        {"stage past the largest", withStem("      Stage 2147483647 { }"), 4, 13, "from 0 to 1000000, found number 2147483647"},
         {"rand bounds reversed", withStem("      Stage 1 { ConeNoise = rand(0.5, 0.1); }"), 4, 29,
          "lower bound is above the upper"},
         {"colour with three numbers", withStem("      Stage 1 { Color = RGBA(1.0, 1.0, 1.0); }"), 4, 43,

@@ -138,4 +138,99 @@ TEST(MalformedInputCatalogue, ModuleBudgetEndsRunawayGrowth) {
     fs::remove_all(dir);
 }
 
+// A model folder of its own under the temporary directory, removed at the end of the test.
+class ModelFolder : public ::testing::Test {
+protected:
+    void SetUp() override {
+        dir_ = fs::temp_directory_path() / ("simeco-model-" + std::to_string(::getpid()));
+        fs::remove_all(dir_);
+        fs::create_directories(dir_);
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+    void write(const std::string& name, const std::string& text) {
+        std::ofstream out(dir_ / name, std::ios::binary);
+        out << text;
+    }
+    // The error loading the folder's m.l reports.
+    simeco::ir::InputError loadError() {
+        try {
+            simeco::lang::loadGrammarFile((dir_ / "m.l").string());
+        } catch (const simeco::ir::InputError& e) {
+            return e;
+        }
+        ADD_FAILURE() << "m.l loaded without error";
+        return simeco::ir::InputError({}, "");
+    }
+    fs::path dir_;
+};
+
+const char* const kModel = "#define STEPS 3\nLsystem: 1\nderivation length: STEPS\nAxiom: A(1)\n"
+                           "A(x) --> F(func(1, x / 2)) [+A(x + 1)] A(x + 1)\nendlsystem\n";
+const char* const kFunction = "fver 1 1\nname: f\nsamples: 10\nflip: off\npoints: 4\n"
+                              "0 0 1\n0.3 0.5 1\n0.7 0.5 1\n1 1 1\n";
+
+using LineEnds = ModelFolder;
+
+// A file whose lines end in a lone CR (classic Mac OS) reads as the same file with LF or CR LF ends.
+TEST_F(LineEnds, CrOnlyCrLfAndLfFilesDeriveAlike) {
+    std::vector<std::string> strings;
+    for (const char* end : {"\n", "\r\n", "\r"}) {
+        auto withEnds = [&](std::string text) {
+            std::string out;
+            for (char c : text) out += c == '\n' ? std::string(end) : std::string(1, c);
+            return out;
+        };
+        write("m.l", withEnds(kModel));
+        write("m.v", withEnds("angle increment: 30\nfunction: f.func\n"));
+        write("f.func", withEnds(kFunction));
+        simeco::ir::Grammar g = simeco::lang::loadGrammarFile((dir_ / "m.l").string());
+        simeco::stream::DeriveOptions options;
+        simeco::stream::ModuleString s = simeco::cpu::deriveCpu(g, options).string;
+        strings.push_back(simeco::stream::formatModules(s, g.alphabet, 0, s.size()));
+        EXPECT_EQ(g.view.angleIncrement, 30.0f) << "line ends " << int(end[0]);
+    }
+    EXPECT_GT(strings[0].size(), 20u);
+    EXPECT_EQ(strings[1], strings[0]);
+    EXPECT_EQ(strings[2], strings[0]);
+}
+
+using ViewFiles = ModelFolder;
+
+TEST_F(ViewFiles, AFileTheViewNamesThatCannotBeOpenedIsReportedAtItsLine) {
+    write("m.l", kModel);
+    write("m.v", "angle increment: 30\nfunction: missing.func 100\n");
+    simeco::ir::InputError e = loadError();
+    EXPECT_EQ(fs::path(e.loc().file).filename(), "m.v");
+    EXPECT_EQ(e.loc().line, 2);
+    EXPECT_EQ(e.loc().col, 11);
+    EXPECT_NE(std::string(e.what()).find("cannot open the function file"), std::string::npos) << e.formatted();
+}
+
+TEST_F(ViewFiles, CountsReadFromFilesAreBounded) {
+    write("m.l", kModel);
+    write("m.v", "angle increment: 30\nfunction: f.func\n");
+    std::string huge = kFunction;
+    huge.replace(huge.find("samples: 10"), 11, "samples: 2000000000");
+    write("f.func", huge);
+    simeco::ir::InputError e = loadError();
+    EXPECT_EQ(fs::path(e.loc().file).filename(), "f.func");
+    EXPECT_EQ(e.loc().line, 3);
+    EXPECT_NE(std::string(e.what()).find("samples is a whole number from 0 to 1048576"), std::string::npos)
+        << e.formatted();
+
+    write("f.func", kFunction);
+    write("m.v", "angle increment: 30\nfunction: f.func 2000000000\n");
+    e = loadError();
+    EXPECT_EQ(fs::path(e.loc().file).filename(), "m.v");
+    EXPECT_EQ(e.loc().line, 2);
+
+    std::string manyPoints = kFunction;
+    manyPoints.replace(manyPoints.find("points: 4"), 9, "points: 3000000000");
+    write("f.func", manyPoints);
+    write("m.v", "angle increment: 30\nfunction: f.func\n");
+    e = loadError();
+    EXPECT_EQ(e.loc().line, 5);
+    EXPECT_NE(std::string(e.what()).find("points is a whole number"), std::string::npos) << e.formatted();
+}
+
 } // namespace

@@ -7,6 +7,7 @@
 
 #include "cpu/derive.h"
 #include "lang/load_grammar.h"
+#include "temporary_folder.h"
 
 namespace {
 
@@ -138,15 +139,9 @@ TEST(MalformedInputCatalogue, ModuleBudgetEndsRunawayGrowth) {
     fs::remove_all(dir);
 }
 
-// A model folder of its own under the temporary directory, removed at the end of the test.
-class ModelFolder : public ::testing::Test {
+// A model folder of its own (see temporary_folder.h).
+class ModelFolder : public simeco::testing::TemporaryFolderTest {
 protected:
-    void SetUp() override {
-        dir_ = fs::temp_directory_path() / ("simeco-model-" + std::to_string(::getpid()));
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
     void write(const std::string& name, const std::string& text) {
         std::ofstream out(dir_ / name, std::ios::binary);
         out << text;
@@ -161,7 +156,6 @@ protected:
         ADD_FAILURE() << "m.l loaded without error";
         return simeco::ir::InputError({}, "");
     }
-    fs::path dir_;
 };
 
 const char* const kModel = "#define STEPS 3\nLsystem: 1\nderivation length: STEPS\nAxiom: A(1)\n"

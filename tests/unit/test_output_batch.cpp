@@ -3,6 +3,7 @@
 // temporaries that processes no longer running left behind are removed by the next write of their file.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <csignal>
 #include <filesystem>
 #include <fstream>
@@ -13,6 +14,7 @@
 #include <unistd.h>
 
 #include "draw/atomic_file.h"
+#include "temporary_folder.h"
 
 namespace {
 
@@ -20,15 +22,8 @@ namespace fs = std::filesystem;
 using simeco::draw::OutputBatch;
 using simeco::draw::OutputError;
 
-class OutputBatchTest : public ::testing::Test {
+class OutputBatchTest : public simeco::testing::TemporaryFolderTest {
 protected:
-    void SetUp() override {
-        dir_ = fs::temp_directory_path() / ("simeco-output-batch-" + std::to_string(::getpid()));
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
-
     // The folder's file names, sorted.
     std::vector<std::string> files() const {
         std::vector<std::string> names;
@@ -36,8 +31,6 @@ protected:
         std::sort(names.begin(), names.end());
         return names;
     }
-
-    fs::path dir_;
 };
 
 void writeText(const fs::path& path, const std::string& text) {

@@ -90,6 +90,15 @@ struct Renderer::Resources {
     std::uint32_t volumeCapacity = 0; // vertices
     std::unique_ptr<RenderTarget> target;
 
+    // A frame's commands: the shadow volumes and the indirect draws from the instances and their table; the
+    // render pass (ground and organs, with shadow volumes in the stencil between an ambient and a sun pass);
+    // the toon style's outlines over the copied target.
+    void recordDrawInputs(VkCommandBuffer cmd, const vk::Buffer& instances, const vk::Buffer& table,
+                          const FrameSetup& setup);
+    void recordScene(VkCommandBuffer cmd, const RenderTarget& target, const vk::Buffer& instances,
+                     const FrameSetup& setup);
+    void recordOutlines(VkCommandBuffer cmd, const RenderTarget& target, const FrameSetup& setup);
+
     // Room for the shadow volumes of organs counted in `counts` (at most maxBytes); returns the capacity.
     std::uint32_t volumeVerticesFor(const vk::Context& context, const shared::OrganTable& counts,
                                     std::uint64_t maxBytes);
@@ -178,22 +187,19 @@ FrameSetup Renderer::prepare(const vk::Buffer& table, const Bounds& bounds, cons
     return setup;
 }
 
-void Renderer::record(VkCommandBuffer cmd, const RenderTarget& target, const vk::Buffer& instances,
-                      const vk::Buffer& table, const FrameSetup& setup) {
-    Resources& r = *resources_;
-    const OrganMeshData& meshes = r.meshes.data();
-    const RenderSettings& settings = setup.settings;
+void Renderer::Resources::recordDrawInputs(VkCommandBuffer cmd, const vk::Buffer& instances, const vk::Buffer& table,
+                                           const FrameSetup& setup) {
+    Resources& r = *this;
+    const OrganMeshData& mesh = r.meshes.data();
     const shared::OrganTable& counts = setup.counts;
     const shared::DrawFrame& frame = setup.constants;
-    const CameraView& camera = setup.camera;
     const glm::vec3 towardsSun = setup.towardsSun;
-    bool shadows = settings.shadows == Shadows::Volume;
-    bool toon = settings.style == Style::Toon;
+    bool shadows = setup.settings.shadows == Shadows::Volume;
     shared::DrawArgsPush args{};
     for (std::uint32_t kind = 0; kind < kOrganKinds; ++kind) {
-        args.indexCount[kind] = meshes.organs[kind].indexCount;
-        args.firstIndex[kind] = meshes.organs[kind].firstIndex;
-        args.vertexOffset[kind] = meshes.organs[kind].vertexOffset;
+        args.indexCount[kind] = mesh.organs[kind].indexCount;
+        args.firstIndex[kind] = mesh.organs[kind].firstIndex;
+        args.vertexOffset[kind] = mesh.organs[kind].vertexOffset;
     }
     args.volumeCapacity = shadows ? r.volumeCapacity : 0;
 
@@ -210,7 +216,7 @@ void Renderer::record(VkCommandBuffer cmd, const RenderTarget& target, const vk:
             if (counts.count[kind] == 0) {
                 continue;
             }
-            const MeshRange& hull = meshes.hulls[kind];
+            const MeshRange& hull = mesh.hulls[kind];
             shared::ShadowVolumePush push{};
             push.awayFromSun = vec4Of(-towardsSun, kOpenSurfaceShift);
             push.cameraRight = frame.cameraRight;
@@ -220,20 +226,26 @@ void Renderer::record(VkCommandBuffer cmd, const RenderTarget& target, const vk:
             push.triangleCount = hull.triangleCount();
             push.vertexOffset = hull.vertexOffset;
             push.capacity = r.volumeCapacity;
-            push.closedHull = meshes.closedHull[kind] ? 1u : 0u;
+            push.closedHull = mesh.closedHull[kind] ? 1u : 0u;
             r.shadowVolumes.dispatch(
-                cmd, {instances, table, r.meshes.vertices(), r.meshes.indices(), r.volumeDraw, r.volumeVertices},
-                push, r.shadowVolumes.groupsFor(counts.count[kind]));
+                cmd, {instances, table, r.meshes.vertices(), r.meshes.indices(), r.volumeDraw, r.volumeVertices}, push,
+                r.shadowVolumes.groupsFor(counts.count[kind]));
         }
         memoryDependency(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
-                         VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-                         VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+                         VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
     }
     r.drawArgs.dispatch(cmd, {table, r.drawCommands, r.volumeDraw}, args, 1);
     memoryDependency(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
                      VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_VERTEX_INPUT_BIT,
                      VK_ACCESS_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_VERTEX_ATTRIBUTE_READ_BIT);
+}
 
+void Renderer::Resources::recordScene(VkCommandBuffer cmd, const RenderTarget& into, const vk::Buffer& instances,
+                                      const FrameSetup& setup) {
+    Resources& r = *this;
+    const OrganMeshData& mesh = r.meshes.data();
+    const RenderSettings& settings = setup.settings;
+    bool shadows = settings.shadows == Shadows::Volume;
     std::array<VkClearValue, 4> clears{};
     clears[kColorAttachment].color = {{settings.background.r, settings.background.g, settings.background.b, 0}};
     clears[kPlantAttachment].color.uint32[0] = Frame::kNoId;
@@ -242,13 +254,13 @@ void Renderer::record(VkCommandBuffer cmd, const RenderTarget& target, const vk:
     VkRenderPassBeginInfo begin{};
     begin.sType = VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO;
     begin.renderPass = r.renderPass.get();
-    begin.framebuffer = target.framebuffer();
-    begin.renderArea = {{0, 0}, {target.width(), target.height()}};
+    begin.framebuffer = into.framebuffer();
+    begin.renderArea = {{0, 0}, {into.width(), into.height()}};
     begin.clearValueCount = static_cast<std::uint32_t>(clears.size());
     begin.pClearValues = clears.data();
     vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
-    VkViewport viewport{0, 0, static_cast<float>(target.width()), static_cast<float>(target.height()), 0, 1};
-    VkRect2D scissor{{0, 0}, {target.width(), target.height()}};
+    VkViewport viewport{0, 0, static_cast<float>(into.width()), static_cast<float>(into.height()), 0, 1};
+    VkRect2D scissor{{0, 0}, {into.width(), into.height()}};
     vkCmdSetViewport(cmd, 0, 1, &viewport);
     vkCmdSetScissor(cmd, 0, 1, &scissor);
     r.pipelines.pushDescriptors(cmd, instances, r.frameConstants);
@@ -261,8 +273,8 @@ void Renderer::record(VkCommandBuffer cmd, const RenderTarget& target, const vk:
         vkCmdBindIndexBuffer(cmd, r.meshes.indices().handle(), 0, VK_INDEX_TYPE_UINT32);
         auto push = [&](std::uint32_t kind) {
             shared::DrawPush constants{kind, pass};
-            vkCmdPushConstants(cmd, r.pipelines.layout(), VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT,
-                               0, sizeof(constants), &constants);
+            vkCmdPushConstants(cmd, r.pipelines.layout(), VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
+                               sizeof(constants), &constants);
         };
         auto drawKind = [&](std::uint32_t kind) {
             push(kind);
@@ -273,23 +285,22 @@ void Renderer::record(VkCommandBuffer cmd, const RenderTarget& target, const vk:
             vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
                               sunPass ? r.pipelines.sun(culling) : r.pipelines.base(culling));
             for (std::uint32_t kind = 0; kind < kOrganKinds; ++kind) {
-                if (meshes.closedHull[kind] == (culling == Culling::Back)) {
+                if (mesh.closedHull[kind] == (culling == Culling::Back)) {
                     drawKind(kind);
                 }
             }
         }
         if (settings.ground) {
             push(shared::kDrawGround);
-            vkCmdDrawIndexed(cmd, meshes.ground.indexCount, 1, meshes.ground.firstIndex, meshes.ground.vertexOffset,
-                             0);
+            vkCmdDrawIndexed(cmd, mesh.ground.indexCount, 1, mesh.ground.firstIndex, mesh.ground.vertexOffset, 0);
         }
     };
     if (shadows) {
         drawScene(shared::kPassAmbient);
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, r.pipelines.volume());
         VkDeviceSize zero = 0;
-        VkBuffer volumeVertices = r.volumeVertices.handle();
-        vkCmdBindVertexBuffers(cmd, 0, 1, &volumeVertices, &zero);
+        VkBuffer volumes = r.volumeVertices.handle();
+        vkCmdBindVertexBuffers(cmd, 0, 1, &volumes, &zero);
         vkCmdDrawIndirect(cmd, r.volumeDraw.handle(), offsetof(shared::VolumeDraw, vertexCount), 1,
                           sizeof(VkDrawIndirectCommand));
         drawScene(shared::kPassSun);
@@ -297,27 +308,38 @@ void Renderer::record(VkCommandBuffer cmd, const RenderTarget& target, const vk:
         drawScene(shared::kPassFull);
     }
     vkCmdEndRenderPass(cmd);
+}
 
+void Renderer::Resources::recordOutlines(VkCommandBuffer cmd, const RenderTarget& into, const FrameSetup& setup) {
+    Resources& r = *this;
+    const RenderSettings& settings = setup.settings;
+    const CameraView& camera = setup.camera;
+    shared::OutlinePush outline{};
+    outline.lineColor = vec4Of(settings.outlineColor, 1.0f);
+    outline.width = into.width();
+    outline.height = into.height();
+    outline.radius = static_cast<std::uint32_t>(
+        std::max(1.0f, std::round(kOutlinePixelsPer600 * static_cast<float>(into.height()) / 600.0f)));
+    outline.threshold = kOutlineThreshold;
+    outline.nearPlane = camera.nearPlane;
+    outline.farPlane = camera.farPlane;
+    std::uint64_t pixels = std::uint64_t{into.width()} * into.height();
+    r.toonOutline.dispatch(cmd, {into.color(), into.depth(), into.plant(), into.outlined()}, outline,
+                           r.toonOutline.groupsFor(pixels));
+    memoryDependency(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_HOST_BIT,
+                     VK_ACCESS_HOST_READ_BIT);
+}
+
+void Renderer::record(VkCommandBuffer cmd, const RenderTarget& target, const vk::Buffer& instances,
+                      const vk::Buffer& table, const FrameSetup& setup) {
+    Resources& r = *resources_;
+    r.recordDrawInputs(cmd, instances, table, setup);
+    r.recordScene(cmd, target, instances, setup);
     target.cmdCopyToBuffers(cmd);
     memoryDependency(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
                      VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_HOST_BIT,
                      VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_HOST_READ_BIT);
-    if (toon) {
-        shared::OutlinePush outline{};
-        outline.lineColor = vec4Of(settings.outlineColor, 1.0f);
-        outline.width = target.width();
-        outline.height = target.height();
-        outline.radius = static_cast<std::uint32_t>(
-            std::max(1.0f, std::round(kOutlinePixelsPer600 * static_cast<float>(target.height()) / 600.0f)));
-        outline.threshold = kOutlineThreshold;
-        outline.nearPlane = camera.nearPlane;
-        outline.farPlane = camera.farPlane;
-        std::uint64_t pixels = std::uint64_t{target.width()} * target.height();
-        r.toonOutline.dispatch(cmd, {target.color(), target.depth(), target.plant(), target.outlined()}, outline,
-                               r.toonOutline.groupsFor(pixels));
-        memoryDependency(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
-                         VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT);
-    }
+    if (setup.settings.style == Style::Toon) r.recordOutlines(cmd, target, setup);
 }
 
 Frame Renderer::readBack(const RenderTarget& target, const FrameSetup& setup) const {

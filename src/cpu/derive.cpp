@@ -37,9 +37,10 @@ struct ModuleRef {
 
 class PlantDeriver {
 public:
-    PlantDeriver(PlantControl& control, uint32_t plant, uint64_t budget)
+    // `room`: the modules this plant may still use of the field's `budget`, which earlier plants share.
+    PlantDeriver(PlantControl& control, uint32_t plant, uint64_t room, uint64_t budget)
         : control_(control), plant_(plant), g_(control.speciesOf(plant)), state_(control.state(plant)),
-          evaluator_(g_, state_), budget_(budget) {
+          evaluator_(g_, state_), room_(room), budget_(budget) {
         evaluator_.key.seed = control.seed();
         evaluator_.key.plant = plant;
         stride_ = std::max(g_.maxParams(), 1);
@@ -104,7 +105,7 @@ private:
     const ir::Grammar& g_;
     PlantState& state_;
     Evaluator evaluator_;
-    uint64_t budget_;
+    uint64_t room_, budget_;
     int stride_ = 1;
     ModuleString cur_, next_;
     std::vector<ModuleString> recursionLevels_; // rewriteRecursively's stack, kept between calls
@@ -133,9 +134,9 @@ private:
     }
 
     void checkBudget(size_t size) const {
-        if (size > budget_)
+        if (size > room_)
             throw ir::LimitError(fmt::format("the string outgrew the module budget of {} modules in step {} "
-                                             "(raise it with --max-modules, or derive fewer steps)",
+                                             "(raise it with --max-modules, or derive fewer steps or plants)",
                                              budget_, step_));
     }
 
@@ -487,7 +488,7 @@ DeriveResult deriveSpeciesCpu(const std::vector<ir::Grammar>& species, const Der
         options.particles ? stream::splitAxiomParticles(species, control.plants(), options.initialParticles)
                           : std::vector<std::vector<shared::ParticleState>>{};
     for (uint32_t plant = 0; plant < control.plants(); ++plant) {
-        PlantDeriver deriver(control, plant, control.budget() - used);
+        PlantDeriver deriver(control, plant, control.budget() - used, control.budget());
         std::optional<std::vector<shared::ParticleState>> particles;
         if (options.particles) particles = std::move(axiomParticles[plant]);
         deriver.run(particles);
@@ -509,7 +510,7 @@ ModuleString applyHomomorphismCpu(const std::vector<ir::Grammar>& species, const
     out.stride = std::max(derived.stride, control.stride());
     out.plantStart.push_back(0);
     for (uint32_t plant = 0; plant < derived.plants(); ++plant) {
-        PlantDeriver deriver(control, plant, budget - std::min<uint64_t>(budget, out.size()));
+        PlantDeriver deriver(control, plant, budget - std::min<uint64_t>(budget, out.size()), budget);
         deriver.adopt(derived, derived.plantStart[plant], derived.plantStart[plant + 1]);
         deriver.applyHomomorphism();
         appendPlant(out, deriver.result());

@@ -136,6 +136,16 @@ TEST(MalformedInputCatalogue, ModuleBudgetEndsRunawayGrowth) {
     } catch (const simeco::ir::LimitError& e) {
         EXPECT_NE(std::string(e.what()).find("module budget of 1000"), std::string::npos) << e.what();
     }
+    // Several plants share the budget; the message names the field's whole budget, not what the last plant had
+    // left of it.
+    options.plants = 3;
+    options.steps = 9; // 512 modules a plant: the second plant fits, the third does not
+    try {
+        simeco::cpu::deriveCpu(g, options);
+        ADD_FAILURE() << "the module budget did not stop the derivation of three plants";
+    } catch (const simeco::ir::LimitError& e) {
+        EXPECT_NE(std::string(e.what()).find("module budget of 1000 modules"), std::string::npos) << e.what();
+    }
     fs::remove_all(dir);
 }
 

@@ -8,8 +8,6 @@
 
 #include "compute/shared/particle_layout.h"
 #include "gpu/derive_gpu_impl.h"
-#include "ir/species.h"
-#include "stream/evaluator.h"
 
 namespace simeco::gpu {
 

@@ -37,7 +37,7 @@ void chunkPlant(uint i, out uint plant, out uint pBegin, out uint pEnd) {
     pEnd = kSinglePlant ? pc.count : plantStartAt(plant + 1u);
 }
 
-uint skipRowOf(uint plant) { return (plant % kSpeciesCount) * kSkipWords; }
+uint skipRowOf(uint plant) { return speciesOf(plant) * kSkipWords; }
 
 // Fills chunkRight and chunkRightBranch (and chunkWords, chunkPartners) from the chunk's end.
 void chunkRightContexts(uint first, uint last) {

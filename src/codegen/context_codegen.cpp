@@ -219,9 +219,9 @@ std::vector<uint32_t> contextSkipBits(const std::vector<ir::Grammar>& species) {
 }
 
 std::string contextSkipCode(const std::vector<uint32_t>& bits) {
-    // Few words become constants, so a walk tests a symbol without a load; many stay in the contextSkip buffer.
+    // Few words become constants, so a walk tests a symbol without a load; many stay in the speciesTable buffer.
     constexpr size_t kMostConstantWords = 16;
-    if (bits.size() > kMostConstantWords) return "uint contextSkipWord(uint word) { return contextSkip[word]; }\n";
+    if (bits.size() > kMostConstantWords) return "uint contextSkipWord(uint word) { return speciesTable[word]; }\n";
     std::string code = "uint contextSkipWord(uint word) {\n    uint bits = 0u;\n";
     for (size_t w = 0; w < bits.size(); ++w)
         if (bits[w] != 0) code += fmt::format("    bits = word == {}u ? 0x{:08x}u : bits;\n", w, bits[w]);

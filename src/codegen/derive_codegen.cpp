@@ -10,6 +10,7 @@
 #include "codegen/curve_codegen.h"
 #include "codegen/kernel_traits.h"
 #include "codegen/production_codegen.h"
+#include "codegen/species_classes.h"
 #include "codegen/successor_slots.h"
 #include "compute/shaders.h"
 #include "compute/shared/derive_layout.h"
@@ -178,7 +179,7 @@ std::string stepPlantLookup(const codegen::PlantInputs& in, bool frozenCheck, bo
         s += "    uint plant = 0u;\n";
         if (frozenCheck) s += "    if (kFrozenPlants) {\n        plant = kSinglePlant ? 0u : plantOf(i);\n" + frozen + "    }\n";
     }
-    s += "    uint species = plant % kSpeciesCount;\n";
+    s += "    uint species = speciesOf(plant);\n";
     s += in.bounds ? "    uint pBegin = kSinglePlant ? 0u : plantStartAt(plant);\n"
                      "    uint pEnd = kSinglePlant ? pc.count : plantStartAt(plant + 1u);\n"
                    : "    uint pBegin = 0u, pEnd = pc.count; // unread\n";
@@ -263,12 +264,13 @@ std::string decompositionSelection(const std::vector<ir::Grammar>& species, size
 }
 
 // The plan of the species' kernels; fills k's decisions (stride, choiceBits, fusedScan, ...) and error sites.
-DerivePlan planDeriveKernels(const std::vector<ir::Grammar>& species, bool texelInputs, bool contextChunks,
-                             GeneratedKernels& k) {
+// `species`: the classes' representatives, whose code the kernels hold.
+DerivePlan planDeriveKernels(const std::vector<ir::Grammar>& species, const SpeciesClasses& classes,
+                             bool texelInputs, bool contextChunks, GeneratedKernels& k) {
     DerivePlan plan(species);
     plan.texelInputs = texelInputs;
-    plan.prelude = codegen::kernelPrelude(species.size()) + "uint currentPass() { return pc.pass; }\n";
-    plan.library = codegen::deriveLibrary(species);
+    plan.prelude = codegen::kernelPrelude(classes.classOf.size()) + "uint currentPass() { return pc.pass; }\n";
+    plan.library = codegen::deriveLibrary(classes);
     for (size_t sp = 0; sp < species.size(); ++sp) {
         const ir::Grammar& g = species[sp];
         plan.functions += codegen::functionTableCode(g, sp, k.functionTables);
@@ -367,7 +369,7 @@ std::string stepMatchKernel(const DerivePlan& plan, const GeneratedKernels& k) {
              "    if (kFrozenPlants) {\n"
              "        if (plantFrozen[plant] == kPlantFrozen) { matchedChoice = kChoiceCopy; return 1u; }\n"
              "    }\n"
-             "    uint species = plant % kSpeciesCount;\n"
+             "    uint species = speciesOf(plant);\n"
              "    uint sym = word & kSymbolMask, count = word >> kSymbolBits;\n";
     } else {
         s += "uint matchModule(uint i) {\n" + stepPlantLookup(plan.matchInputs, true, k.fusedScan);
@@ -474,7 +476,7 @@ const std::string kFrozenCopy =
 
 // What a decomposition pass knows of module i: its plant, species, origin and contexts.
 const std::string kDecompositionSetup =
-    "    uint species = plant % kSpeciesCount;\n"
+    "    uint species = speciesOf(plant);\n"
     "    uint pBegin = plantStartAt(plant), pEnd = plantStartAt(plant + 1u);\n"
     "    uint origin = originX[i];\n"
     "    uint key = examined[i] - examined[plantStartXAt(plant)];\n"
@@ -534,8 +536,11 @@ std::string decompositionWriteKernel(const DerivePlan& plan) {
 } // namespace
 
 GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species, bool texelInputs, bool contextChunks) {
-    GeneratedKernels k = codegen::speciesTraits(species);
-    DerivePlan plan = planDeriveKernels(species, texelInputs, contextChunks, k);
+    SpeciesClasses classes = classifySpecies(species);
+    const std::vector<ir::Grammar>& code = classes.representatives;
+    GeneratedKernels k = codegen::speciesTraits(code);
+    k.speciesTable = codegen::speciesTable(classes);
+    DerivePlan plan = planDeriveKernels(code, classes, texelInputs, contextChunks, k);
     k.match = stepMatchKernel(plan, k);
     k.write = stepWriteKernel(plan, k);
     if (k.hasDecomposition) {

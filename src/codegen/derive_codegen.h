@@ -56,6 +56,9 @@ struct GeneratedKernels {
     bool matchFindsPlants = false;
     bool writeFindsPlants = false;
     std::vector<double> functionTables; // the sampled func() tables and the contour curves, concatenated
+    // The speciesTable buffer the kernels read (codegen::speciesTable): the context filter's rows of the classes
+    // of species that share code (species_classes.h) and, where some do, each species' class.
+    std::vector<uint32_t> speciesTable;
     // Parameter slots per module that the step's write pass was generated for (it stores them as vectors where
     // it can): the species' most parameters, at least 1, the host's stride.
     uint32_t stride = 1;
@@ -66,7 +69,7 @@ struct GeneratedKernels {
 };
 
 // The GLSL of the kernels for plants of the given species (one alphabet: ir::unifySpecies); plant p is of
-// species p mod species.size(). Parameter slots per module come at run time, in the push constants. Every
+// species p mod species.size(). Species with the same rules share their code (classifySpecies). Parameter slots per module come at run time, in the push constants. Every
 // species must be supported (gpuUnsupportedReason empty). `texelInputs`: the kernels read the string and the
 // per-module results of earlier passes through uniform texel buffers (codegen::Bindings), which the host
 // binds as such (the dispatch reads the binding types from the kernels). `contextChunks`: the step's match pass

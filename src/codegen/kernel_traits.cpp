@@ -131,13 +131,27 @@ GeneratedKernels speciesTraits(const std::vector<ir::Grammar>& species) {
     return k;
 }
 
-std::string deriveLibrary(const std::vector<ir::Grammar>& species) {
-    return contextSkipCode(contextSkipBits(species)) +
+std::string deriveLibrary(const SpeciesClasses& classes) {
+    return speciesCode(classes) +
            std::string(shaders::glslSource("compute/derive/depth_tree.glsl")) +
            std::string(shaders::glslSource("compute/derive/derive_lib.glsl")) +
            std::string(shaders::glslSource("compute/derive/contour_curve.glsl"));
 }
 
+std::vector<uint32_t> speciesTable(const SpeciesClasses& classes) {
+    std::vector<uint32_t> table = contextSkipBits(classes.representatives);
+    if (!classes.distinct()) table.insert(table.end(), classes.classOf.begin(), classes.classOf.end());
+    return table;
+}
+
+std::string speciesCode(const SpeciesClasses& classes) {
+    std::vector<uint32_t> skipBits = contextSkipBits(classes.representatives);
+    std::string code = contextSkipCode(skipBits);
+    if (classes.distinct()) return code + "uint speciesOf(uint plant) { return plant % kSpeciesCount; }\n";
+    // A constant array would be copied into every invocation's private memory by some drivers (lavapipe).
+    return code + fmt::format("uint speciesOf(uint plant) {{ return speciesTable[{}u + plant % kSpeciesCount]; }}\n",
+                              skipBits.size());
+}
 std::string kernelPrelude(size_t speciesCount) {
     std::string s = "#version 460\n"
                     "#extension GL_EXT_shader_explicit_arithmetic_types_float64 : require\n"

@@ -9,6 +9,7 @@
 
 #include "codegen/derive_codegen.h"
 #include "codegen/production_codegen.h"
+#include "codegen/species_classes.h"
 #include "ir/grammar.h"
 
 namespace simeco::codegen {
@@ -46,8 +47,15 @@ GeneratedKernels speciesTraits(const std::vector<ir::Grammar>& species);
 // The common start of every generated kernel: version, extensions, layouts, push constants, kSpeciesCount.
 std::string kernelPrelude(size_t speciesCount);
 
-// The functions every generated kernel shares after its buffers: the species' context filter, bracket matching,
-// derive_lib.glsl and the contour curves' evaluation.
-std::string deriveLibrary(const std::vector<ir::Grammar>& species);
+// The functions every generated kernel shares after its buffers: speciesCode, bracket matching, derive_lib.glsl
+// and the contour curves' evaluation.
+std::string deriveLibrary(const SpeciesClasses& classes);
 
+// What the kernels' speciesTable buffer holds: the context filter's rows of the classes' representatives
+// (contextSkipBits), then, where species share code, each species' class.
+std::vector<uint32_t> speciesTable(const SpeciesClasses& classes);
+
+// `uint contextSkipWord(uint word)` (contextSkipCode) and `uint speciesOf(uint plant)`: the class whose code
+// plant runs, which is its species where every species is its own class.
+std::string speciesCode(const SpeciesClasses& classes);
 } // namespace simeco::codegen

@@ -346,7 +346,7 @@ void Bindings::addShared(bool stateWritable) {
     add(state, "double", "globals");
     add(state, "double", "arrays");
     add("readonly", "double", "funcTables"); // func() samples and contour curves (derive/contour_curve.glsl)
-    add("readonly", "uint", "contextSkip");
+    add("readonly", "uint", "speciesTable"); // context filter rows, species classes (kernel_traits.h)
     add("", "uint", "errors");
     add(state, "uint", "plantFrozen"); // the sequential kernel marks 2 when a production calls stop()
 }

@@ -12,6 +12,7 @@
 #include "codegen/derive_codegen.h"
 #include "codegen/kernel_traits.h"
 #include "codegen/production_codegen.h"
+#include "codegen/species_classes.h"
 
 namespace simeco::codegen {
 
@@ -328,8 +329,11 @@ std::string deriveFunction(const ir::Grammar& g, size_t sp, const FrameLayout& f
 
 } // namespace
 
-GeneratedKernels generateSequentialKernel(const std::vector<ir::Grammar>& species, bool texelInputs) {
+GeneratedKernels generateSequentialKernel(const std::vector<ir::Grammar>& all, bool texelInputs) {
+    SpeciesClasses classes = classifySpecies(all);
+    const std::vector<ir::Grammar>& species = classes.representatives; // whose code the kernel holds
     GeneratedKernels k = codegen::speciesTraits(species);
+    k.speciesTable = codegen::speciesTable(classes);
     FrameLayout frames = layoutFrames(species);
     k.frameSlots = frames.slots;
     for (const ir::Grammar& g : species)
@@ -338,11 +342,11 @@ GeneratedKernels generateSequentialKernel(const std::vector<ir::Grammar>& specie
                 for (const ir::Alternative& alt : p.alternatives)
                     k.stackWidth = std::max(k.stackWidth, static_cast<uint32_t>(alt.modules.size()));
 
-    std::string s = codegen::kernelPrelude(species.size());
+    std::string s = codegen::kernelPrelude(all.size());
     s += fmt::format("const uint kFrameSlots = {}u;\nconst uint kStackWidth = {}u;\n", std::max(k.frameSlots, 1u),
                      k.stackWidth);
     s += declarations(texelInputs);
-    s += codegen::deriveLibrary(species);
+    s += codegen::deriveLibrary(classes);
     s += kMachinery;
     std::string productions;
     for (size_t sp = 0; sp < species.size(); ++sp) {
@@ -382,7 +386,7 @@ GeneratedKernels generateSequentialKernel(const std::vector<ir::Grammar>& specie
          "    if (plantFrozen[plant] == kPlantFrozen) {\n"
          "        for (; i < pEnd && gWork < pc.chunk; ++i, ++gWork) outputFromInput(i, next);\n"
          "    } else {\n"
-         "        uint species = plant % kSpeciesCount;\n";
+         "        uint species = speciesOf(plant);\n";
     s += codegen::perSpecies(species.size(), [](size_t sp) {
         return fmt::format("        s{}Derive(plant, pBegin, pEnd, i, next, pending, pendingFirst);\n", sp);
     });

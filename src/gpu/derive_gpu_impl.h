@@ -71,8 +71,17 @@ struct GpuDeriver::Impl {
     codegen::GeneratedKernels homomorphismKernels;
     std::optional<vk::ComputePipeline> homomorphismMatch, homomorphismWrite;
     std::optional<std::string> homomorphismHostReason;
-    // The error sites of the kernels being run (the homomorphism's while it runs).
-    const std::vector<codegen::ErrorSite>* activeErrors = nullptr;
+    // What the kernels read besides the stream and report by index: their species table (context filter and
+    // classes of species), func() tables and error sites. The derivation's kernels and the homomorphism's lay
+    // them out each for its own classes of species (codegen::classifySpecies). `active`: those of the kernels
+    // being run (the homomorphism's while it runs).
+    struct KernelTables {
+        const std::vector<codegen::ErrorSite>* errors = nullptr;
+        vk::Buffer speciesTable, funcTables;
+    };
+    KernelTables derivationTables, homomorphismTables;
+    const KernelTables* active = &derivationTables;
+    KernelTables tablesOf(const codegen::GeneratedKernels& k) const;
     vk::ComputePipeline plantStarts, plantHintsKernel, cutApply;
     std::optional<vk::ComputePipeline> plantStartsTiled; // with a fused scan, specialised for its match words
     vk::ComputePipeline greedyReduce, greedyScan, greedyMark, homomorphismStart;
@@ -82,7 +91,7 @@ struct GpuDeriver::Impl {
     bool carriesParticles = false; // the derivation running carries particle state (DeriveOptions::particles)
     GpuScan scan;
     BracketTree brackets; // after scan, which it uses
-    vk::Buffer contextSkip, funcTables, errors, readback;
+    vk::Buffer errors, readback;
     vk::Buffer globals, arrays, plantFrozen;
     vk::Buffer counts, choices, drawStarts, offsets, cutDelta, cutBefore, examined;
     vk::Buffer chunkFunctions, chunkEntries; // the greedy walk over predecessors of several modules

@@ -63,7 +63,7 @@ uint32_t GpuDeriver::Impl::submit(const std::function<void(VkCommandBuffer)>& re
     lastUnfinished = words[3] != 0;
     if (words[1] != 0) {
         uint32_t site = words[1] - 1;
-        const std::vector<codegen::ErrorSite>& sites = *activeErrors;
+        const std::vector<codegen::ErrorSite>& sites = *active->errors;
         if (site < sites.size()) throw ir::InputError(sites[site].loc, sites[site].message);
         throw std::runtime_error("a derivation kernel reported an unknown error");
     }
@@ -106,8 +106,8 @@ void GpuDeriver::Impl::dispatchDerive(VkCommandBuffer cmd, const vk::ComputePipe
                                       std::initializer_list<vk::BufferRange> rest, const DerivePush& p, uint32_t n,
                                       bool parameterVectors) {
     std::vector<vk::BufferRange> buffers{strings.sym, strings.par, plantTable(strings), brackets.tree(),
-                                         brackets.levelInfo(), brackets.partners(), globals, arrays, funcTables, contextSkip, errors,
-                                         plantFrozen};
+                                         brackets.levelInfo(), brackets.partners(), globals, arrays,
+                                         active->funcTables, active->speciesTable, errors, plantFrozen};
     buffers.insert(buffers.end(), rest.begin(), rest.end());
     buffers.push_back(plantHints);
     if (parameterVectors)
@@ -361,10 +361,16 @@ int GpuDeriver::Impl::applyHomomorphism(int cur, uint32_t seed, uint64_t budget,
         },
         timer, millis);
     X.count = n;
-    activeErrors = &homomorphismKernels.errors;
+    active = &homomorphismTables;
     RecursivePasses passes{&*homomorphismMatch, &*homomorphismWrite, homomorphismKernels.maxDecompositionDepth};
-    int result = decompose(cur, x, 0, seed, budget, timer, millis, stats, passes);
-    activeErrors = &kernels.errors;
+    int result;
+    try {
+        result = decompose(cur, x, 0, seed, budget, timer, millis, stats, passes);
+    } catch (...) {
+        active = &derivationTables;
+        throw;
+    }
+    active = &derivationTables;
     if (carriesParticles) gatherParticles(cur, result, timer, millis);
     return result;
 }

@@ -7,7 +7,6 @@
 
 #include <fmt/format.h>
 
-#include "codegen/context_codegen.h"
 #include "codegen/glsl_compiler.h"
 #include "compute/shared/particle_layout.h"
 
@@ -72,15 +71,10 @@ GpuDeriver::Impl::Impl(const vk::Context& c, std::vector<ir::Grammar> grammars, 
                                                  "invocations; device {} has subgroups of {}",
                                                  shared::kDeriveWorkgroupSize, ctx.deviceInfo().name, tileSize));
     }
-    activeErrors = &kernels.errors;
+    derivationTables = tablesOf(kernels);
     buildHomomorphism(build);
     compileSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-    std::vector<uint32_t> skipBits = codegen::contextSkipBits(species);
-    contextSkip = vk::deviceBufferWith(ctx, std::span<const uint32_t>(skipBits));
-    std::vector<double> tables = kernels.functionTables;
-    if (tables.empty()) tables.push_back(0.0);
-    funcTables = vk::deviceBufferWith(ctx, std::span<const double>(tables));
     errors = vk::Buffer(ctx, 16, vk::MemoryUsage::DeviceLocal);
     readback = vk::Buffer(ctx, 16, vk::MemoryUsage::Readback);
 }
@@ -103,6 +97,19 @@ template <typename Build> void GpuDeriver::Impl::buildHomomorphism(Build& build)
     homomorphismKernels = codegen::generateDeriveKernels(images, texelInputs);
     homomorphismMatch.emplace(build(homomorphismKernels.decompositionMatch, "derive/homomorphism_match"));
     homomorphismWrite.emplace(build(homomorphismKernels.decompositionWrite, "derive/homomorphism_write"));
+    homomorphismTables = tablesOf(homomorphismKernels);
+}
+
+GpuDeriver::Impl::KernelTables GpuDeriver::Impl::tablesOf(const codegen::GeneratedKernels& k) const {
+    KernelTables tables;
+    tables.errors = &k.errors;
+    std::vector<uint32_t> species = k.speciesTable;
+    if (species.empty()) species.push_back(0);
+    tables.speciesTable = vk::deviceBufferWith(ctx, std::span<const uint32_t>(species));
+    std::vector<double> functions = k.functionTables;
+    if (functions.empty()) functions.push_back(0.0);
+    tables.funcTables = vk::deviceBufferWith(ctx, std::span<const double>(functions));
+    return tables;
 }
 
 uint64_t GpuDeriver::Impl::bufferLimit() const {

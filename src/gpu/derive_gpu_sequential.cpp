@@ -52,7 +52,8 @@ void GpuDeriver::Impl::dispatchSequential(VkCommandBuffer cmd, uint32_t mode, co
     std::vector<vk::BufferRange> buffers{in.sym, in.par, plantTable(in), brackets.tree(), brackets.levelInfo(),
                                          brackets.partners(),
                                          counting ? globalsCopy : globals, counting ? arraysCopy : arrays,
-                                         funcTables, contextSkip, errors, plantFrozen,
+                                         derivationTables.funcTables, derivationTables.speciesTable, errors,
+                                         plantFrozen,
                                          counting ? framesCopy : frames, stackSym, stackPar, stackState,
                                          plantCounts, plantTable(out), out.sym, out.par, resume, out.origin};
     for (p.dispatch = first; p.dispatch < first + count; ++p.dispatch) {

@@ -7,6 +7,8 @@
 #include <vector>
 
 #include "../unit/grammar_text.h"
+#include "codegen/derive_codegen.h"
+#include "codegen/species_classes.h"
 #include "compare_strings.h"
 #include "cpu/derive.h"
 #include "gpu/derive_gpu.h"
@@ -21,6 +23,7 @@ namespace {
 namespace fs = std::filesystem;
 
 const fs::path kSource = fs::path(SIMECO_SOURCE_DIR);
+const fs::path kCorpusModels = fs::path(SIMECO_SHARED_DIR) / "corpus" / "cpfg-vlab" / "models";
 
 using SpeciesGpuTest = GpuTest;
 
@@ -29,15 +32,80 @@ std::string plantText(const stream::DeriveResult& r, const ir::Alphabet& alphabe
     return stream::formatModules(s, alphabet, s.plantStart[plant], s.plantStart[plant + 1]);
 }
 
-// Derives `species` with `plants` plants on both engines and expects the same strings.
-void expectEnginesAgree(const vk::Context& context, const std::vector<ir::Grammar>& species, std::uint32_t plants) {
-    SCOPED_TRACE(std::to_string(plants) + " plants");
+// Derives `species` with `plants` plants on both engines and expects the same strings (under the homomorphism
+// too, when asked).
+void expectEnginesAgree(const vk::Context& context, const std::vector<ir::Grammar>& species, std::uint32_t plants,
+                        bool homomorphism = false) {
+    SCOPED_TRACE(std::to_string(plants) + " plants" + (homomorphism ? ", under the homomorphism" : ""));
     stream::DeriveOptions options;
     options.plants = plants;
+    options.homomorphism = homomorphism;
     stream::DeriveResult want = cpu::deriveSpeciesCpu(species, options);
     ASSERT_EQ(want.string.plants(), plants);
     gpu::GpuDeriver deriver(context, species);
+    ASSERT_TRUE(!homomorphism || deriver.appliesHomomorphism());
     EXPECT_EQ(firstDifference(want, deriver.derive(options), species.front().alphabet), "");
+}
+
+// An ecosystem's species, several of them copies of one another: a decomposition with a homomorphism (cpfg
+// corpus), a func() table (corpus), a context filter (ABOP 1.31a, which ignores + - F), the same filter's
+// grammar with another derivation length, which the host alone reads, and the decomposition's grammar without
+// its productions, whose homomorphism is still the first one's: the homomorphism's kernels class the species
+// otherwise than the derivation's.
+std::vector<ir::Grammar> speciesWithCopies() {
+    ir::Grammar decomposed = lang::loadGrammarFile((kCorpusModels / "01-Introduction" / "09-continuous-decomp" /
+                                                    "leaf.l").string());
+    ir::Grammar tabled = lang::loadGrammarFile((kCorpusModels / "02-Mod-vis-3D" / "05-monopodial" / "leaf.l").string());
+    ir::Grammar filtered = lang::loadGrammarFile((kSource / "grammars" / "abop" / "fig1.31a.l").string());
+    ir::Grammar shorter = filtered;
+    shorter.derivationLength -= 3;
+    ir::Grammar unproductive = decomposed;
+    unproductive.productions = ir::RuleSet{};
+    return ir::unifySpecies({decomposed, tabled, filtered, decomposed, shorter, unproductive, tabled, decomposed});
+}
+
+// Copies of a species share its code: one class each, whatever their place among the species, while a species
+// that differs in a single number is a class of its own.
+TEST(SpeciesClasses, CopiesShareTheirCodeAndOneNumberSetsASpeciesApart) {
+    std::vector<ir::Grammar> species = speciesWithCopies();
+    codegen::SpeciesClasses classes = codegen::classifySpecies(species);
+    EXPECT_EQ(classes.classOf, (std::vector<std::uint32_t>{0, 1, 2, 0, 2, 3, 1, 0}));
+    ASSERT_EQ(classes.representatives.size(), 4u);
+    EXPECT_FALSE(classes.distinct());
+
+    ir::Grammar g = simeco::testing::grammarFromText("Lsystem: 1\nderivation length: 4\nAxiom: A(1)\n"
+                                                     "A(x) --> F(x)[+A(x * 0.5)]A(x * 0.5)\nendlsystem\n");
+    ir::Grammar other = simeco::testing::grammarFromText("Lsystem: 1\nderivation length: 4\nAxiom: A(1)\n"
+                                                         "A(x) --> F(x)[+A(x * 0.5)]A(x * 0.6)\nendlsystem\n");
+    EXPECT_EQ(codegen::classifySpecies(ir::unifySpecies({g, other, g})).classOf,
+              (std::vector<std::uint32_t>{0, 1, 0}));
+}
+
+// The kernels' size follows the distinct rules, not the species: thirty copies of three species generate
+// kernels about as large as the three do (a table of classes aside).
+TEST(SpeciesClasses, KernelsGrowWithDistinctRulesNotWithSpecies) {
+    std::vector<ir::Grammar> three = speciesWithCopies(); // distinct species
+    three.resize(3);
+    std::vector<ir::Grammar> thirty;
+    for (int copy = 0; copy < 10; ++copy) thirty.insert(thirty.end(), three.begin(), three.end());
+    codegen::GeneratedKernels few = codegen::generateDeriveKernels(three, true);
+    codegen::GeneratedKernels many = codegen::generateDeriveKernels(thirty, true);
+    using K = codegen::GeneratedKernels;
+    for (auto kernel : {&K::match, &K::write, &K::decompositionMatch, &K::decompositionWrite}) {
+        ASSERT_GT((few.*kernel).size(), 1000u);
+        EXPECT_LT((many.*kernel).size(), (few.*kernel).size() + 200);
+    }
+    EXPECT_EQ(many.errors.size(), few.errors.size());
+    EXPECT_EQ(many.functionTables, few.functionTables);
+    EXPECT_EQ(many.speciesTable.size(), few.speciesTable.size() + thirty.size());
+}
+
+// Plants of species that share code derive as the CPU reference derives each species, with each class's
+// func() tables, context filter and decomposition, and under each class's homomorphism.
+TEST_F(SpeciesGpuTest, SpeciesThatShareCodeDeriveAsTheirOwn) {
+    std::vector<ir::Grammar> species = speciesWithCopies();
+    for (std::uint32_t plants : {8u, 19u}) expectEnginesAgree(context(), species, plants);
+    expectEnginesAgree(context(), species, 8, true);
 }
 
 TEST_F(SpeciesGpuTest, SceneSpeciesDeriveInOnePass) {
@@ -123,6 +191,10 @@ TEST_F(SpeciesGpuTest, OrderDependentProductionsDeriveSequentially) {
         }
         EXPECT_EQ(firstDifference(want, deriver.derive(options), g.alphabet), "");
     }
+    // Copies of it among other species share the sequential kernel's code.
+    ir::Grammar other = g;
+    other.derivationLength = 5;
+    expectEnginesAgree(context(), ir::unifySpecies({g, other, g}), 30);
 }
 
 } // namespace

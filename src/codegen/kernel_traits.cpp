@@ -156,7 +156,13 @@ std::string kernelPrelude(size_t speciesCount) {
     std::string s = "#version 460\n"
                     "#extension GL_EXT_shader_explicit_arithmetic_types_float64 : require\n"
                     "#extension GL_KHR_shader_subgroup_basic : require\n"
-                    "#extension GL_KHR_shader_subgroup_arithmetic : require\n";
+                    "#extension GL_KHR_shader_subgroup_arithmetic : require\n"
+                    "#extension GL_EXT_spirv_intrinsics : require\n";
+    // Expressions are evaluated in doubles as IEEE arithmetic, as the CPU reference (and cpfg) evaluates them:
+    // infinities and NaN stay what they are (inf - inf is NaN), where a driver may otherwise fold x - x to 0.
+    // SignedZeroInfNanPreserve (4461) for 64-bit floats, with its capability (4466); devices without it are
+    // unsuitable (vk::listPhysicalDevices).
+    s += "spirv_execution_mode(extensions = [\"SPV_KHR_float_controls\"], capabilities = [4466], 4461, 64);\n";
     s += std::string(shaders::glslSource("compute/shared/derive_layout.h"));
     s += std::string(shaders::glslSource("compute/shared/random.h"));
     s += "layout(local_size_x = kDeriveWorkgroupSize) in;\n"

@@ -103,9 +103,9 @@ template <typename Build> void GpuDeriver::Impl::buildHomomorphism(Build& build)
 GpuDeriver::Impl::KernelTables GpuDeriver::Impl::tablesOf(const codegen::GeneratedKernels& k) const {
     KernelTables tables;
     tables.errors = &k.errors;
-    std::vector<uint32_t> species = k.speciesTable;
-    if (species.empty()) species.push_back(0);
-    tables.speciesTable = vk::deviceBufferWith(ctx, std::span<const uint32_t>(species));
+    std::vector<uint32_t> table = k.speciesTable;
+    if (table.empty()) table.push_back(0);
+    tables.speciesTable = vk::deviceBufferWith(ctx, std::span<const uint32_t>(table));
     std::vector<double> functions = k.functionTables;
     if (functions.empty()) functions.push_back(0.0);
     tables.funcTables = vk::deviceBufferWith(ctx, std::span<const double>(functions));

@@ -1,5 +1,6 @@
 #include "stream/module_string.h"
 
+#include <cmath>
 #include <cstdio>
 
 namespace simeco::stream {
@@ -16,6 +17,10 @@ std::string formatModules(const ModuleString& s, const ir::Alphabet& alphabet, s
         const float* p = s.paramsOf(i);
         for (size_t k = 0; k < count; ++k) {
             if (k) out.push_back(',');
+            if (std::isnan(p[k])) {
+                out += "nan"; // whatever its sign bit, which devices set differently
+                continue;
+            }
             std::snprintf(buffer, sizeof buffer, "%.9g", static_cast<double>(p[k]));
             out += buffer;
         }

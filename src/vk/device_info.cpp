@@ -33,7 +33,9 @@ bool hasComputeQueue(VkPhysicalDevice device) {
                        [](const VkQueueFamilyProperties& f) { return (f.queueFlags & VK_QUEUE_COMPUTE_BIT) != 0; });
 }
 
-std::string whyUnsuitable(const PhysicalDeviceInfo& info, VkShaderStageFlags subgroupStages) {
+// `keepsNonFinite`: shaderSignedZeroInfNanPreserveFloat64, which the derivation kernels ask for so that their
+// double arithmetic keeps infinities and NaN as the CPU reference does (codegen::kernelPrelude).
+std::string whyUnsuitable(const PhysicalDeviceInfo& info, VkShaderStageFlags subgroupStages, bool keepsNonFinite) {
     if (info.apiVersion < Instance::kApiVersion) {
         return "needs Vulkan 1.2";
     }
@@ -46,6 +48,9 @@ std::string whyUnsuitable(const PhysicalDeviceInfo& info, VkShaderStageFlags sub
     }
     if (!hasDeviceExtension(info.handle, VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME)) {
         return "no VK_KHR_push_descriptor";
+    }
+    if (!keepsNonFinite) {
+        return "double arithmetic does not keep infinities and NaN";
     }
     return {};
 }
@@ -114,6 +119,8 @@ std::vector<PhysicalDeviceInfo> listPhysicalDevices(VkInstance instance) {
         subgroup.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES;
         VkPhysicalDeviceDriverProperties driver{};
         driver.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES;
+        VkPhysicalDeviceFloatControlsProperties floats{};
+        floats.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FLOAT_CONTROLS_PROPERTIES;
         VkPhysicalDeviceProperties2 properties{};
         properties.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2;
         VkPhysicalDeviceProperties basic{};
@@ -123,6 +130,7 @@ std::vector<PhysicalDeviceInfo> listPhysicalDevices(VkInstance instance) {
         if (modern) {
             properties.pNext = &subgroup;
             subgroup.pNext = &driver;
+            driver.pNext = &floats;
             vkGetPhysicalDeviceProperties2(handles[i], &properties);
         } else {
             properties.properties = basic;
@@ -146,7 +154,9 @@ std::vector<PhysicalDeviceInfo> listPhysicalDevices(VkInstance instance) {
             info.heaps.push_back({memory.memoryHeaps[h].size,
                                   (memory.memoryHeaps[h].flags & VK_MEMORY_HEAP_DEVICE_LOCAL_BIT) != 0});
         }
-        info.unsuitableReason = whyUnsuitable(info, modern ? subgroup.supportedStages : 0);
+        info.unsuitableReason =
+            whyUnsuitable(info, modern ? subgroup.supportedStages : 0,
+                          modern && floats.shaderSignedZeroInfNanPreserveFloat64);
         devices.push_back(std::move(info));
     }
     return devices;

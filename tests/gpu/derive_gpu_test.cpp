@@ -433,6 +433,25 @@ TEST_F(DeriveGpuTest, PredecessorsOfSeveralModulesMatchTheCpu) {
     EXPECT_EQ(firstDifference(want, deriver.derive({}), g.alphabet), "");
 }
 
+// Parameters that overflow to infinity and then become NaN (inf - inf) follow IEEE arithmetic on both engines, as
+// cpfg's: a driver may fold x - x to 0 unless told to keep infinities and NaN. Conditions then compare NaN as
+// false, so B(nan) takes neither production.
+TEST_F(DeriveGpuTest, InfinitiesAndNanMatchTheCpu) {
+    ir::Grammar g = simeco::testing::grammarFromText(
+        simeco::testing::lsystem("A(1e30)",
+                                 "A(x) --> B(x - x)A(x * 1e30)\n"
+                                 "B(x) : x == x --> D(x)\n"
+                                 "B(x) : x > 0 --> E\n",
+                                 3));
+    stream::DeriveResult want = cpu::deriveCpu(g, {});
+    std::string text = stream::formatModules(want.string, g.alphabet, 0, want.string.size());
+    EXPECT_EQ(text, "D(0)B(nan)B(nan)A(inf)");
+    for (int strategy : {0, 1}) {
+        gpu::GpuDeriver deriver(context(), g, strategy ? gpu::GpuStrategy::Sequential : gpu::GpuStrategy::Parallel);
+        EXPECT_EQ(firstDifference(want, deriver.derive({}), g.alphabet), "") << (strategy ? "sequential" : "parallel");
+    }
+}
+
 // The write pass applies the production its match chose without evaluating a pure condition again, but one that
 // draws random numbers it evaluates again, so that the successor's draws follow the condition's as on the CPU,
 // walking the context whose parameter only that condition reads.

@@ -152,6 +152,7 @@ std::string speciesCode(const SpeciesClasses& classes) {
     return code + fmt::format("uint speciesOf(uint plant) {{ return speciesTable[{}u + plant % kSpeciesCount]; }}\n",
                               skipBits.size());
 }
+
 std::string kernelPrelude(size_t speciesCount) {
     std::string s = "#version 460\n"
                     "#extension GL_EXT_shader_explicit_arithmetic_types_float64 : require\n"

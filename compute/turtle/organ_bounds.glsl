@@ -11,7 +11,22 @@ void addPoint(inout Box b, vec3 p, float radius) {
     b.hi = max(b.hi, p + radius);
 }
 
+// Whether every float of the organ is finite (turtle/finite_organs.h), tested on the bits, which no driver may
+// assume away as it may assume a float is never infinite or NaN.
+bool finiteBits(vec4 v) {
+    return all(notEqual(floatBitsToUint(v) & uvec4(0x7F800000u), uvec4(0x7F800000u)));
+}
+
+bool organIsFinite(OrganInstance o) {
+    return finiteBits(o.position) && finiteBits(o.heading) && finiteBits(o.up) && finiteBits(o.color) &&
+           finiteBits(o.previousHeading) && finiteBits(o.nextHeading);
+}
+
 Box organBox(OrganInstance o) {
+    if (!organIsFinite(o)) { // infinite bounds, which the outputs refuse
+        float infinity = uintBitsToFloat(0x7F800000u);
+        return Box(vec3(-infinity), vec3(infinity));
+    }
     Box b = Box(vec3(1e30), vec3(-1e30));
     vec3 p = o.position.xyz, h = o.heading.xyz;
     if (o.kind == kOrganStem) {

@@ -14,6 +14,7 @@
 #include "draw/bounds.h"
 #include "draw/image_writers.h"
 #include "draw/renderer.h"
+#include "turtle/finite_organs.h"
 #include "turtle/turtle_gpu.h"
 #include "vk/buffer.h"
 #include "vk/context.h"
@@ -81,6 +82,7 @@ void runRender(const RenderArgs& args) {
     for (uint32_t k = 0; k < shared::kOrganKinds; ++k) organCount += table.count[k];
     if (organCount == 0) throw std::runtime_error(fmt::format("{}: the plants draw nothing", source.file));
     draw::Bounds bounds = draw::decodeBounds(table);
+    if (!bounds.finite()) throw turtle::nonFiniteOrganError();
 
     draw::Renderer renderer(context);
     draw::Frame frame = renderer.render(organs.instances, organs.table, bounds, settings);

@@ -3,6 +3,7 @@
 // them as floats.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 
 #include <glm/vec3.hpp>
@@ -19,6 +20,13 @@ struct Bounds {
     bool empty() const { return min.x > max.x || min.y > max.y || min.z > max.z; }
     glm::vec3 centre() const { return 0.5f * (min + max); }
     glm::vec3 extent() const { return max - min; }
+    // Every coordinate is a finite number: the turtles make a non-finite organ's bounds infinite
+    // (turtle/finite_organs.h).
+    bool finite() const {
+        for (int axis = 0; axis < 3; ++axis)
+            if (!std::isfinite(min[axis]) || !std::isfinite(max[axis])) return false;
+        return true;
+    }
 };
 
 std::int32_t boundsKey(float value);

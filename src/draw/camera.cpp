@@ -14,14 +14,10 @@ namespace {
 // The frame keeps this fraction of its half-size around the projected box.
 constexpr float kFrameFill = 0.92f;
 
-bool finite(glm::vec3 v) {
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
-
 } // namespace
 
 Bounds framedBounds(const Bounds& bounds) {
-    if (bounds.empty() || !finite(bounds.min) || !finite(bounds.max)) {
+    if (bounds.empty() || !bounds.finite()) {
         return {{-0.5f, 0.0f, -0.5f}, {0.5f, 1.0f, 0.5f}};
     }
     Bounds b = bounds;

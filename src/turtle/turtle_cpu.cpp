@@ -7,6 +7,7 @@
 
 #include "compute/shared/turtle_layout.h"
 #include "compute/shared/turtle_state_layout.h"
+#include "turtle/finite_organs.h"
 #include "turtle/frame.h"
 #include "turtle/turtle_commands.h"
 
@@ -265,6 +266,11 @@ private:
 
 Bounds organBounds(const OrganInstance& o) {
     Bounds b;
+    if (!organIsFinite(o)) { // infinite bounds, which the outputs refuse (finite_organs.h)
+        b.add(glm::vec3(-INFINITY));
+        b.add(glm::vec3(INFINITY));
+        return b;
+    }
     glm::vec3 p = v3(o.position), h = v3(o.heading);
     switch (o.kind) {
     case kOrganStem: {

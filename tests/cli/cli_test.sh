@@ -138,5 +138,19 @@ check "export refuses another extension and writes nothing (code $code)" $?
 python3 -c "import json,sys; d=json.load(open('$work/clouds.gltf')); sys.exit(0 if d['asset']['version']=='2.0' and d['meshes'] else 1)"
 check "export writes a glTF with its meshes" $?
 
+# A parameter that overflows to infinity draws a stem of infinite length: every output refuses it alike.
+printf 'Lsystem: 1\nderivation length: 2\nAxiom: A(1e30)\nA(x) --> F(1)[+F(x * 1e30)]F(1)A(x)\nendlsystem\n' \
+  >"$work/infinite.l"
+for backend in gpu cpu; do
+  for output in infinite.exr infinite.obj infinite.ply infinite.gltf; do
+    command=export
+    [ "$output" = infinite.exr ] && command=render
+    "$simeco" "$command" "$work/infinite.l" --backend $backend -o "$work/$output" >/dev/null 2>"$work/err.txt"
+    code=$?
+    [ $code -eq 1 ] && [ -z "$(ls "$work" | grep 'infinite\.[eopg]')" ] && grep -q "not a finite number" "$work/err.txt"
+    check "$command -o $output --backend $backend refuses non-finite geometry, writes nothing (code $code)" $?
+  done
+done
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

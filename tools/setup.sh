@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Installs what simeco needs from Debian's packages (when missing) and builds it into build/ (Release).
+# Installs what simeco needs from Debian's packages (when missing) and builds it into build/ (Release), with the
+# readers' fuzz targets in build-fuzz/.
 # Usage: tools/setup.sh [--sanitize]   (--sanitize builds an AddressSanitizer/UBSan tree into build-asan/)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -11,6 +12,7 @@ packages=(
   libglm-dev libglfw3-dev libopenexr-dev libpng-dev
   libgtest-dev libcli11-dev nlohmann-json3-dev libfmt-dev
   gnuplot-nox
+  clang libclang-rt-dev
 )
 missing=()
 for p in "${packages[@]}"; do
@@ -32,3 +34,5 @@ if [ "${1:-}" = "--sanitize" ]; then
 fi
 cmake -S . -B "$build" "${flags[@]}" >/dev/null
 cmake --build "$build" -j "$(nproc)"
+# The readers' fuzz targets (clang, libFuzzer), which a test runs for a minute.
+[ "$build" = build ] && ./tools/fuzz.sh --build-only

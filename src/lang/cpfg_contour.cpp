@@ -104,8 +104,8 @@ private:
 
     long integer(std::string_view line, size_t from, const char* label, long low, long high) {
         double v = numbers(line, from, 1, label)[0];
-        if (v != static_cast<double>(static_cast<long>(v)) || v < static_cast<double>(low) ||
-            v > static_cast<double>(high))
+        // The range first: converting a double outside long's range is undefined.
+        if (!(v >= static_cast<double>(low) && v <= static_cast<double>(high)) || v != std::floor(v))
             fail(tokens(line, from)[0].col, fmt::format("'{}' expects a whole number from {} to {}", label, low, high));
         return static_cast<long>(v);
     }
@@ -195,7 +195,7 @@ private:
         p.y = v[1];
         if (dimension > 2) p.z = v[2];
         if (dimension > 3) {
-            if (v[3] < 0 || v[3] >= static_cast<double>(kMaxMultiplicity + 1))
+            if (!(v[3] >= 0 && v[3] < static_cast<double>(kMaxMultiplicity + 1))) // NaN too
                 fail(words[3].col, fmt::format("multiplicity must be from 0 to {}", kMaxMultiplicity));
             p.multiplicity = static_cast<int>(v[3]); // cpfg truncates
         }

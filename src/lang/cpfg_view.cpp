@@ -3,6 +3,7 @@
 #include <array>
 #include <cctype>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <sstream>
@@ -58,6 +59,9 @@ float number(const std::string& text, const std::string& file, size_t line, cons
 // Limits on the counts a view's files give: far above any model's, far below what exhausts memory.
 constexpr long kMostSamples = 1 << 20;
 constexpr long kMostControlPoints = 1 << 16;
+// Sampling a function evaluates its curve about ten times a sample, and a contour curve once, each time over
+// its control points: their product bounds the work (a few seconds at most), which either bound alone does not.
+constexpr uint64_t kMostSampledPoints = 1 << 21;
 constexpr long kMostFunctions = 4096;
 
 // The file a view line names, in the view's folder; when it cannot be opened, the error points at that line.
@@ -183,6 +187,9 @@ ir::FunctionCurve parseFunctionCurve(const std::vector<std::string>& lines, size
     }
     if (next >= lines.size() || !field(trim(lines[next]), "points", value)) fail("expected 'points: N'");
     int count = wholeNumber(value, file, next, "points", 0, kMostControlPoints);
+    if (static_cast<uint64_t>(std::max(f.samples, 0)) * static_cast<uint64_t>(count) > kMostSampledPoints)
+        fail(fmt::format("{} samples of {} control points: their product may be at most {}", f.samples, count,
+                         kMostSampledPoints));
     ++next;
     if (count < 4) fail("a function needs at least 4 control points");
     for (int i = 0; i < count; ++i, ++next) {
@@ -191,8 +198,9 @@ ir::FunctionCurve parseFunctionCurve(const std::vector<std::string>& lines, size
         float x = 0, y = 0, multiplicity = 1;
         if (!(in >> x >> y)) fail("expected 'x y [multiplicity]'");
         if (!(in >> multiplicity)) multiplicity = 1;
+        // Checked as a float first: converting one outside int's range is undefined.
+        if (!(multiplicity >= 1 && multiplicity < 17)) fail("multiplicity out of range (1 to 16)");
         int m = static_cast<int>(multiplicity);
-        if (m < 1 || m > 16) fail("multiplicity out of range");
         for (int k = 0; k < m; ++k) {
             f.xs.push_back(x);
             f.ys.push_back(y);
@@ -225,6 +233,11 @@ CpfgView readCpfgView(const std::string& path) {
             in >> name >> count;
             int samples = count.empty() ? 0 : wholeNumber(count, path, i, "samples", 0, kMostSamples);
             out.curves.push_back(parseContourFile(namedFile(dir, name, path, lines[i], i, "curve")));
+            uint64_t points = out.curves.back().xs.size();
+            if (samples > 1 && static_cast<uint64_t>(samples) * points > kMostSampledPoints)
+                throw ir::InputError({path, static_cast<int>(i + 1), 1},
+                                     fmt::format("{} samples of a curve of {} points: their product may be at most {}",
+                                                 samples, points, kMostSampledPoints));
             if (samples > 1) ir::sampleContourCurve(out.curves.back(), samples);
         } else if (field(line, "angle increment", value)) {
             viewNumber(value, path, i, "angle increment", out.view.angleIncrement);

@@ -210,6 +210,10 @@ TEST_F(ContourFiles, MalformedFilesReportLineAndColumn) {
         {"points: 3\n0 0\n1 1\n", 1, 1, "declares 3 points but lists 2"},
         {"points: four\n", 1, 9, "'points:' expected a number, found 'four'"},
         {"points: 2\ndimension: 7\n", 2, 12, "from 2 to 4"},
+        // Far outside long's range (found by the fuzzer: its conversion was undefined), and NaN.
+        {"points: 2\ndimension: 5e44\n", 2, 12, "from 2 to 4"},
+        {"points: 2\ndimension: nan\n", 2, 12, "expected a number, found 'nan'"},
+        {"points: 1\ndimension: 4\n0 0 0 nan\n", 3, 7, "expected a number, found 'nan'"},
         {"contact: 0 0\n", 1, 13, "'contact:' needs 3 number(s)"},
         {"points: 1\ndimension: 4\n0 0 0 -2\n", 3, 7, "multiplicity"},
         {"points: 16\ntype: bezier-surface\n", 2, 7, "bezier-surface"},

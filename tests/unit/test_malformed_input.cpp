@@ -235,6 +235,24 @@ TEST_F(ViewFiles, CountsReadFromFilesAreBounded) {
     e = loadError();
     EXPECT_EQ(e.loc().line, 5);
     EXPECT_NE(std::string(e.what()).find("points is a whole number"), std::string::npos) << e.formatted();
+
+    // Samples and control points each within bounds, but too much work together (found by the fuzzer).
+    std::string slow = kFunction;
+    slow.replace(slow.find("samples: 10"), 11, "samples: 1048576");
+    write("f.func", slow);
+    e = loadError();
+    EXPECT_EQ(e.loc().line, 5);
+    EXPECT_NE(std::string(e.what()).find("their product may be at most"), std::string::npos) << e.formatted();
+
+    // A multiplicity far outside int's range (found by the fuzzer: its conversion was undefined).
+    for (const char* multiplicity : {"66666666666", "-3e9", "17"}) {
+        std::string far = kFunction;
+        far.replace(far.find("0 0 1\n"), 6, std::string("0 0 ") + multiplicity + "\n");
+        write("f.func", far);
+        e = loadError();
+        EXPECT_EQ(e.loc().line, 6) << multiplicity;
+        EXPECT_NE(std::string(e.what()).find("multiplicity out of range"), std::string::npos) << e.formatted();
+    }
 }
 
 } // namespace

@@ -140,6 +140,11 @@ struct GpuDeriver::Impl {
     // Room for the particle state of s's modules, while the derivation carries it.
     void ensureParticles(Stream& s);
 
+    // The module budget of a derivation that names none: what half the device's memory holds of the streams
+    // and scratch (stream::deviceBytesPerModule) and a quarter of the host's of the string read back; from one
+    // memory where the device shares the host's (lavapipe, integrated GPUs).
+    uint64_t defaultModuleBudget() const;
+
     // A stream of one plant is that plant: the variants specialised for it find no plants.
     bool singlePlant(bool findsPlants) const { return plants == 1 && findsPlants; }
     const vk::ComputePipeline& stepMatch();

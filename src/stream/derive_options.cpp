@@ -10,13 +10,30 @@
 
 namespace simeco::stream {
 
-uint64_t defaultModuleBudget(int stride) {
-    // A quarter of physical memory, for the two strings (current and next) of the derivation.
-    long pages = sysconf(_SC_PHYS_PAGES), pageSize = sysconf(_SC_PAGE_SIZE);
-    uint64_t memory = (pages > 0 && pageSize > 0) ? uint64_t(pages) * uint64_t(pageSize) : (8ull << 30);
-    uint64_t bytesPerModule = sizeof(uint32_t) + sizeof(uint8_t) + sizeof(float) * uint64_t(std::max(stride, 1));
-    return memory / 4 / (2 * bytesPerModule);
+namespace {
+
+uint64_t parameterBytes(int stride) { return sizeof(float) * uint64_t(std::max(stride, 1)); }
+
+} // namespace
+
+uint64_t cpuBytesPerModule(int stride) {
+    return 2 * (sizeof(uint32_t) + sizeof(uint8_t) + parameterBytes(stride)) * 3 / 2 + 5;
 }
+
+uint64_t deviceBytesPerModule(int stride) {
+    uint64_t streams = 3 * (3 * sizeof(uint32_t) + parameterBytes(stride));
+    uint64_t scratch = 7 * sizeof(uint32_t);
+    return (streams + scratch) * 3 / 2;
+}
+
+uint64_t hostBytesPerDeviceModule(int stride) { return 2 * (sizeof(uint32_t) + parameterBytes(stride)) + 1; }
+
+uint64_t hostMemoryBytes() {
+    long pages = sysconf(_SC_PHYS_PAGES), pageSize = sysconf(_SC_PAGE_SIZE);
+    return (pages > 0 && pageSize > 0) ? uint64_t(pages) * uint64_t(pageSize) : (8ull << 30);
+}
+
+uint64_t defaultModuleBudget(int stride) { return hostMemoryBytes() / 4 / cpuBytesPerModule(stride); }
 
 std::vector<std::vector<shared::ParticleState>> splitAxiomParticles(const std::vector<ir::Grammar>& species,
                                                                     uint32_t plants,

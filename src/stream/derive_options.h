@@ -11,7 +11,20 @@
 
 namespace simeco::stream {
 
-// A default module budget sized to this machine's memory.
+// The bytes an engine allocates per module of the largest string a derivation holds, every allocation that
+// grows with the string counted (docs/BENCHMARKS.md compares them with measured peaks).
+// The CPU reference: the string being rewritten and the next (symbol, parameter count, `stride` parameters)
+// with room to grow by half, and a few bytes of the rest (measured: 27 bytes at 1 slot, 57 at 4).
+uint64_t cpuBytesPerModule(int stride);
+// The device: three streams (symbol, origin, liveness, parameters), seven words of scratch per module for the
+// passes, all with room to grow by half; and on the host, the string read back and its staging copy.
+uint64_t deviceBytesPerModule(int stride);
+uint64_t hostBytesPerDeviceModule(int stride);
+
+// This machine's physical memory.
+uint64_t hostMemoryBytes();
+
+// The CPU reference's default module budget: what a quarter of this machine's memory holds.
 uint64_t defaultModuleBudget(int stride);
 
 struct DeriveOptions {

@@ -9,7 +9,9 @@ export SIMECO_KERNEL_CACHE="$work/kernels" # generated kernels stay out of the u
 passed=0
 failed=0
 
-check() { # name, condition already evaluated as $?
+# check NAME STATUS. A name with a command substitution sets $? before STATUS is expanded: such a check
+# takes the status into a variable first.
+check() {
   if [ "$2" -eq 0 ]; then passed=$((passed + 1)); else failed=$((failed + 1)); echo "FAILED: $1"; fi
 }
 
@@ -65,7 +67,8 @@ out=$("$simeco" derive "$work/algae.l" --backend gpu --profile 2>"$work/profile.
 check "--profile leaves the string on stdout (got '$out')" $?
 awk '$1 == "derive/match" && $2 == 5 { m = 1 } $1 == "derive/write" && $2 == 5 { w = 1 } $1 == "total" && $2 > 0 { t = 1 }
      END { exit !(m && w && t) }' "$work/profile.txt"
-check "--profile times each kernel once per step ($(tr '\n' ' ' <"$work/profile.txt"))" $?
+status=$?
+check "--profile times each kernel once per step ($(tr '\n' ' ' <"$work/profile.txt"))" $status
 
 printf 'Lsystem: 1\nderivation length: 1\nAxiom: A(1)\nA(x) --> A(y)\nendlsystem\n' >"$work/bad.l"
 "$simeco" derive "$work/bad.l" >"$work/out.txt" 2>"$work/err.txt"
@@ -73,7 +76,8 @@ code=$?
 [ $code -eq 2 ]
 check "bad input exits 2 (got $code)" $?
 grep -q "^$work/bad.l:4:12: error: undefined name 'y'$" "$work/err.txt"
-check "error in file:line:col form ($(cat "$work/err.txt"))" $?
+status=$?
+check "error in file:line:col form ($(cat "$work/err.txt"))" $status
 [ ! -s "$work/out.txt" ]
 check "no partial output on error" $?
 
@@ -98,14 +102,16 @@ check "module budget ends runaway growth with a clear error (code $code)" $?
 check "bad option exits 2" $?
 
 "$simeco" devices >"$work/devices.txt" 2>&1
-check "devices lists Vulkan devices ($(head -c 300 "$work/devices.txt"))" $?
+status=$?
+check "devices lists Vulkan devices ($(head -c 300 "$work/devices.txt"))" $status
 
 "$simeco" render "$source_dir/grammars/abop/fig1.24d.l" -n 4 --plants 4 --size 160x120 -o "$work/field.exr" \
   --png "$work/field.png" >"$work/render.txt" 2>&1
 [ -s "$work/field.exr" ] && [ -s "$work/field.png" ] && grep -q "4 plants" "$work/render.txt" &&
   [ "$(head -c 4 "$work/field.exr" | od -An -tx1 | tr -d ' ')" = "762f3101" ] &&
   [ "$(head -c 8 "$work/field.png" | od -An -tx1 | tr -d ' ')" = "89504e470d0a1a0a" ]
-check "render writes the EXR and the PNG of a field ($(head -c 300 "$work/render.txt"))" $?
+status=$?
+check "render writes the EXR and the PNG of a field ($(head -c 300 "$work/render.txt"))" $status
 
 "$simeco" render "$source_dir/grammars/abop/fig1.24d.l" --size 0x5 -o "$work/bad.png" >/dev/null 2>&1
 code=$?
@@ -127,7 +133,8 @@ check "render writes both of its images or neither (code $code)" $?
 "$simeco" export "$source_dir/grammars/abop/fig1.24a.l" -n 2 --plants 2 -o "$work/plants.obj" >"$work/export.txt" 2>&1
 [ "$(grep -c '^v ' "$work/plants.obj")" -eq 2500 ] && [ "$(grep -c '^vn ' "$work/plants.obj")" -eq 2500 ] &&
   [ "$(grep -c '^o plant_' "$work/plants.obj")" -eq 2 ] && grep -q "2 plants" "$work/export.txt"
-check "export writes the OBJ of a field, one object per plant ($(head -c 300 "$work/export.txt"))" $?
+status=$?
+check "export writes the OBJ of a field, one object per plant ($(head -c 300 "$work/export.txt"))" $status
 
 "$simeco" export "$source_dir/grammars/abop/fig1.24a.l" -o "$work/plants.stl" >/dev/null 2>"$work/err.txt"
 code=$?
@@ -137,6 +144,29 @@ check "export refuses another extension and writes nothing (code $code)" $?
 "$simeco" export "$source_dir/grammars/clouds/oriental-clouds.l" --backend cpu -o "$work/clouds.gltf" >/dev/null 2>&1
 python3 -c "import json,sys; d=json.load(open('$work/clouds.gltf')); sys.exit(0 if d['asset']['version']=='2.0' and d['meshes'] else 1)"
 check "export writes a glTF with its meshes" $?
+
+# The default module budget counts what each engine allocates per module (stream/derive_options.h: 32 bytes on
+# the CPU, 114 on the device and 17 on the host at one parameter slot): a derivation's peak memory above a tiny
+# one's stays within its modules times those bytes, so the budget never lets a derivation run out of memory.
+printf 'Lsystem: 1\nderivation length: 22\nAxiom: A\nA --> AA\nendlsystem\n' >"$work/doubling.l"
+for backend in cpu:32 gpu:131; do
+  python3 - "$simeco" "$work/doubling.l" "${backend%%:*}" "${backend##*:}" >"$work/memory.txt" 2>&1 <<'PY'
+import resource, subprocess, sys
+simeco, grammar, backend, bytes_per_module = sys.argv[1], sys.argv[2], sys.argv[3], int(sys.argv[4])
+def peak(steps):
+    out = subprocess.run([simeco, "derive", grammar, "-n", str(steps), "--backend", backend, "--format", "stats"],
+                         check=True, capture_output=True, text=True).stdout
+    # The children's peak so far: the largest of the runs, so the smaller runs first.
+    return resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss * 1024, int(out.split("modules: ")[1].split()[0])
+base, _ = peak(1)
+top, modules = peak(22)
+print(f"{backend}: {modules} modules, {(top - base) / modules:.1f} bytes a module above a tiny derivation "
+      f"(budget assumes {bytes_per_module})")
+sys.exit(0 if modules == 1 << 22 and top - base <= modules * bytes_per_module else 1)
+PY
+  status=$?
+  check "the module budget's bytes per module bound the peak memory ($(cat "$work/memory.txt"))" $status
+done
 
 # A parameter that overflows to infinity draws a stem of infinite length: every output refuses it alike.
 printf 'Lsystem: 1\nderivation length: 2\nAxiom: A(1e30)\nA(x) --> F(1)[+F(x * 1e30)]F(1)A(x)\nendlsystem\n' \

@@ -49,7 +49,9 @@ struct Macro {
 };
 
 constexpr int kMaxIncludeDepth = 16;
-constexpr size_t kMaxExpandedSize = 64u << 20; // guards against exponential macro growth
+// The most characters a file may become after macro expansion, in all and of one expansion: far above any
+// model's (tens of kilobytes), low enough that exponential macro growth stops in about a second and 200 MB.
+constexpr size_t kMaxExpandedSize = 8u << 20;
 
 class Preprocessor {
 public:
@@ -193,6 +195,9 @@ private:
             Chars expanded;
             std::set<std::string> disabled;
             expand(pending, 0, pending.size(), disabled, nullptr, expanded);
+            if (out_.size() + expanded.size() > kMaxExpandedSize)
+                failAt(expanded.back(), fmt::format("the text grows past {} MiB after macro expansion",
+                                                    kMaxExpandedSize >> 20));
             for (const Char& ch : expanded) out_.append(ch.c, ch.file, ch.line, ch.col);
             pending.clear();
         };
@@ -334,7 +339,8 @@ private:
                 Chars& out) {
         auto emit = [&](const Char& ch) {
             out.push_back(at ? Char{ch.c, at->file, at->line, at->col} : ch);
-            if (out.size() > kMaxExpandedSize) failAt(ch, "macro expansion too large");
+            if (out.size() > kMaxExpandedSize)
+                failAt(out.back(), fmt::format("macro expansion grows past {} MiB", kMaxExpandedSize >> 20));
         };
         for (size_t i = begin; i < end;) {
             char c = in[i].c;

@@ -2,6 +2,8 @@
 // continued lines, and locations that survive expansion.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "lang/cpfg_preprocessor.h"
 
 namespace {
@@ -45,6 +47,32 @@ TEST(Preprocessor, ExpandedTextPointsAtTheUse) {
     ASSERT_NE(at, std::string::npos);
     EXPECT_EQ(out.locate(at).line, 2);
     EXPECT_EQ(out.locate(at).col, 3);
+}
+
+// Macros that double at each level would grow to 2^40 characters: the expansion stops at a bound, with an error
+// at the use, in about a second; so does text that many uses make too long together.
+TEST(Preprocessor, ExponentialMacroGrowthIsRefusedAtTheUse) {
+    std::string bomb = "#define M0 x\n";
+    for (int level = 1; level <= 40; ++level)
+        bomb += "#define M" + std::to_string(level) + " M" + std::to_string(level - 1) + " M" +
+                std::to_string(level - 1) + "\n";
+    struct Case {
+        const char* uses;
+        int line; // the use that passes the bound: the fourth of M20 (2 MiB each)
+    };
+    for (Case c : {Case{"A --> M40\n", 43}, Case{"A --> M20\nB --> M20\nC --> M20\nD --> M20\nE --> M20\n", 46}}) {
+        try {
+            preprocessText(bomb + "\n" + c.uses, "test.l", {});
+            ADD_FAILURE() << "no error for " << c.uses;
+        } catch (const simeco::ir::InputError& e) {
+            EXPECT_EQ(e.loc().line, c.line) << e.formatted();
+            EXPECT_EQ(e.loc().col, 7) << e.formatted();
+            EXPECT_NE(std::string(e.what()).find("grows past 8 MiB"), std::string::npos) << e.formatted();
+        }
+    }
+    // Below the bound, the text is all there: 2^19 x's.
+    std::string text = preprocessText(bomb + "\nA --> M19\n", "test.l", {}).text();
+    EXPECT_EQ(std::count(text.begin(), text.end(), 'x'), 1 << 19);
 }
 
 TEST(Preprocessor, HashModulesAreNotDirectives) {

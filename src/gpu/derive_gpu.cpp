@@ -138,11 +138,12 @@ stream::ModuleString GpuDeriver::Impl::readBack(const Stream& s, bool particles)
     return string;
 }
 
-uint64_t GpuDeriver::Impl::defaultModuleBudget() const {
+uint64_t GpuDeriver::Impl::defaultModuleBudget(bool particles) const {
     uint64_t heap = 0;
     for (const vk::MemoryHeapInfo& h : ctx.deviceInfo().heaps)
         if (h.deviceLocal) heap = std::max<uint64_t>(heap, h.size);
-    uint64_t device = stream::deviceBytesPerModule(stride), host = stream::hostBytesPerDeviceModule(stride);
+    uint64_t device = stream::deviceBytesPerModule(stride, particles);
+    uint64_t host = stream::hostBytesPerDeviceModule(stride);
     VkPhysicalDeviceType type = ctx.deviceInfo().type;
     bool sharesHostMemory = type == VK_PHYSICAL_DEVICE_TYPE_CPU || type == VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU;
     if (sharesHostMemory || heap == 0) return stream::hostMemoryBytes() / 4 / (device + host);
@@ -155,7 +156,7 @@ stream::DeriveResult GpuDeriver::derive(const stream::DeriveOptions& asked, bool
     stats.compileSeconds = m.compileSeconds;
     auto start = std::chrono::steady_clock::now();
     stream::DeriveOptions options = asked;
-    if (options.maxModules == 0) options.maxModules = m.defaultModuleBudget();
+    if (options.maxModules == 0) options.maxModules = m.defaultModuleBudget(options.particles);
 
     // Host side: each plant's control blocks and axiom, exactly as the CPU reference evaluates them.
     stream::PlantControl control(m.species, options);

@@ -141,9 +141,10 @@ struct GpuDeriver::Impl {
     void ensureParticles(Stream& s);
 
     // The module budget of a derivation that names none: what half the device's memory holds of the streams
-    // and scratch (stream::deviceBytesPerModule) and a quarter of the host's of the string read back; from one
-    // memory where the device shares the host's (lavapipe, integrated GPUs).
-    uint64_t defaultModuleBudget() const;
+    // and scratch (stream::deviceBytesPerModule, with the particle state where it is carried) and a quarter of
+    // the host's of the string read back; from one memory where the device shares the host's (lavapipe,
+    // integrated GPUs).
+    uint64_t defaultModuleBudget(bool particles) const;
 
     // A stream of one plant is that plant: the variants specialised for it find no plants.
     bool singlePlant(bool findsPlants) const { return plants == 1 && findsPlants; }

@@ -20,8 +20,10 @@ uint64_t cpuBytesPerModule(int stride) {
     return 2 * (sizeof(uint32_t) + sizeof(uint8_t) + parameterBytes(stride)) * 3 / 2 + 5;
 }
 
-uint64_t deviceBytesPerModule(int stride) {
-    uint64_t streams = 3 * (3 * sizeof(uint32_t) + parameterBytes(stride));
+uint64_t deviceBytesPerModule(int stride, bool particles) {
+    uint64_t perStream = 3 * sizeof(uint32_t) + parameterBytes(stride) +
+                         (particles ? sizeof(float) * shared::kParticleStateFloats : 0);
+    uint64_t streams = 3 * perStream;
     uint64_t scratch = 7 * sizeof(uint32_t);
     return (streams + scratch) * 3 / 2;
 }

@@ -16,9 +16,10 @@ namespace simeco::stream {
 // The CPU reference: the string being rewritten and the next (symbol, parameter count, `stride` parameters)
 // with room to grow by half, and a few bytes of the rest (measured: 27 bytes at 1 slot, 57 at 4).
 uint64_t cpuBytesPerModule(int stride);
-// The device: three streams (symbol, origin, liveness, parameters), seven words of scratch per module for the
-// passes, all with room to grow by half; and on the host, the string read back and its staging copy.
-uint64_t deviceBytesPerModule(int stride);
+// The device: three streams (symbol, origin, liveness, parameters, and the particle state where the derivation
+// carries it), seven words of scratch per module for the passes, all with room to grow by half; and on the
+// host, the string read back and its staging copy.
+uint64_t deviceBytesPerModule(int stride, bool particles = false);
 uint64_t hostBytesPerDeviceModule(int stride);
 
 // This machine's physical memory.

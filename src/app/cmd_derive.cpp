@@ -30,6 +30,7 @@ struct DeriveArgs {
     field::Backend backend = field::Backend::Cpu;
     std::string format = "string";
     uint64_t maxModules = 0;
+    double maxSeconds = stream::kDefaultMaxSeconds;
     std::string device;
     std::string strategy = "auto";
     bool profile = false;
@@ -43,6 +44,7 @@ void runDerive(const DeriveArgs& args) {
     options.seed = args.seed;
     options.plants = args.plants ? args.plants : static_cast<uint32_t>(species.size());
     options.maxModules = args.maxModules;
+    options.maxSeconds = args.maxSeconds;
     auto start = std::chrono::steady_clock::now();
     stream::DeriveResult result;
     std::optional<stream::StringStatistics> total; // counted on the device, where the string stays
@@ -123,6 +125,7 @@ void registerDeriveCommand(CLI::App& app, CommandContext& ctx) {
     cmd->add_option("--format", args->format, "string, stats or json")
         ->check(CLI::IsMember({"string", "stats", "json"}));
     cmd->add_option("--max-modules", args->maxModules, "module budget (default: sized to this machine's memory)");
+    addTimeLimitOption(*cmd, args->maxSeconds);
     cmd->add_option("--device", args->device, "Vulkan device for --backend gpu: an index or a name part (see `simeco devices`)");
     cmd->add_option("--gpu-strategy", args->strategy,
                     "parallel (every module at once), sequential (one invocation per plant, for grammars whose "

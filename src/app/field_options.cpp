@@ -3,11 +3,21 @@
 #include <cstdint>
 #include <string>
 
+#include <fmt/format.h>
+
 namespace simeco::app {
 
 CLI::Option* addBackendOption(CLI::App& cmd, field::Backend& backend, const std::string& description) {
     auto read = [&backend](const std::string& name) { backend = *field::backendNamed(name); };
     return cmd.add_option_function<std::string>("--backend", read, description)->check(CLI::IsMember({"cpu", "gpu"}));
+}
+
+CLI::Option* addTimeLimitOption(CLI::App& cmd, double& seconds) {
+    return cmd
+        .add_option("--max-seconds", seconds,
+                    fmt::format("stop the derivation with an error after S seconds; 0: no limit (default {})",
+                                stream::kDefaultMaxSeconds))
+        ->check(CLI::Range(0.0, 1e9));
 }
 
 void addFieldOptions(CLI::App& cmd, field::FieldSource& source) {
@@ -23,6 +33,7 @@ void addFieldOptions(CLI::App& cmd, field::FieldSource& source) {
         ->check(CLI::Range(0.0f, 1e6f));
     addBackendOption(cmd, source.backend, "derivation and turtle: gpu (compute kernels) or cpu (reference)");
     cmd.add_option("--max-modules", source.maxModules, "module budget (default: sized to this machine's memory)");
+    addTimeLimitOption(cmd, source.maxSeconds);
     cmd.add_option("--device", source.device, "Vulkan device: an index or a name part (see `simeco devices`)");
 }
 

@@ -8,10 +8,13 @@
 namespace simeco::app {
 
 // Adds the file argument and the field options (-n, --seed, --plants, --spacing, --backend, --max-modules,
-// --device) to a subcommand.
+// --max-seconds, --device) to a subcommand.
 void addFieldOptions(CLI::App& cmd, field::FieldSource& source);
 
 // Adds `--backend gpu|cpu`, read into `backend`.
 CLI::Option* addBackendOption(CLI::App& cmd, field::Backend& backend, const std::string& description);
+
+// Adds `--max-seconds S`, the derivation's time limit (stream::DeriveOptions::maxSeconds), read into `seconds`.
+CLI::Option* addTimeLimitOption(CLI::App& cmd, double& seconds);
 
 } // namespace simeco::app

@@ -40,6 +40,7 @@ Field deriveField(const FieldSource& source, const vk::Context* context) {
     options.seed = source.seed;
     options.plants = source.plants ? source.plants : static_cast<uint32_t>(field.species.size());
     options.maxModules = source.maxModules;
+    options.maxSeconds = source.maxSeconds;
     if (source.onDevice()) {
         if (!context) throw std::logic_error("the GPU backend derives on a Vulkan device");
         field.deriver = std::make_unique<gpu::GpuDeriver>(*context, field.species);

@@ -10,6 +10,7 @@
 #include "field/backend.h"
 #include "gpu/derive_gpu.h"
 #include "ir/grammar.h"
+#include "stream/derive_options.h"
 #include "stream/module_string.h"
 #include "turtle/interpretation.h"
 #include "turtle/turtle_commands.h"
@@ -30,6 +31,7 @@ struct FieldSource {
     float spacing = 0;
     Backend backend = Backend::Gpu;
     uint64_t maxModules = 0;
+    double maxSeconds = stream::kDefaultMaxSeconds;
     std::string device;
 
     bool onDevice() const { return backend == Backend::Gpu; }

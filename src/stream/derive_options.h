@@ -28,11 +28,17 @@ uint64_t hostMemoryBytes();
 // The CPU reference's default module budget: what a quarter of this machine's memory holds.
 uint64_t defaultModuleBudget(int stride);
 
+// How long a derivation may run unless told otherwise: far longer than any field derives, short of a hang.
+inline constexpr double kDefaultMaxSeconds = 1800;
+
 struct DeriveOptions {
     int steps = -1;            // -1: the grammar's derivation length
     int64_t seed = -1;         // -1: the grammar's `seed:` (or 0)
     uint32_t plants = 1;       // independent copies, each with its own random stream
     uint64_t maxModules = 0;   // 0: defaultModuleBudget
+    // The derivation stops with an error once it has run this long (checked before each step of each plant,
+    // by PlantControl); 0: no limit. A derivation length may be 10^9 steps.
+    double maxSeconds = kDefaultMaxSeconds;
     bool homomorphism = false; // return the string the turtle interprets: the result under the homomorphism
     // Carry each module's particle state (compute/shared/particle_layout.h) through the derivation, into the
     // result's string.particles. The axioms' modules, all plants' in order, start with initialParticles, or

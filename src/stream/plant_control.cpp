@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include <fmt/format.h>
+
 #include "ir/species.h"
 
 namespace simeco::stream {
@@ -14,6 +16,8 @@ PlantControl::PlantControl(const std::vector<ir::Grammar>& species, const Derive
     for (const ir::Grammar& g : species)
         stride_ = std::max(stride_, g.maxParams());
     budget_ = options.maxModules ? options.maxModules : defaultModuleBudget(stride_);
+    maxSeconds_ = options.maxSeconds;
+    started_ = std::chrono::steady_clock::now();
     fixedSteps_ = options.steps;
     for (uint32_t plant = 0; plant < std::min<uint32_t>(plants_, uint32_t(species.size())); ++plant)
         steps_ = std::max(steps_, stepsOf(plant));
@@ -65,6 +69,11 @@ ModuleString PlantControl::startAll() {
 
 bool PlantControl::beginStep(uint32_t plant, int step) {
     if (step > stepsOf(plant) || states_[plant].stopRequested) return false;
+    if (maxSeconds_ > 0 &&
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count() > maxSeconds_)
+        throw ir::LimitError(fmt::format("the derivation ran past its time limit of {} s in step {} of {} "
+                                         "(raise it with --max-seconds, or derive fewer steps)",
+                                         maxSeconds_, step, stepsOf(plant)));
     const ir::Grammar& g = speciesOf(plant);
     if (!g.globalNames.empty() && g.globalNames.front() == "Q") states_[plant].globals[0] = step;
     run(plant, g.startEachBlock, uint32_t(step), ControlBlock::StartEach);

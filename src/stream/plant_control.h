@@ -3,6 +3,7 @@
 // evaluated as cpfg evaluates them. The engines rewrite the strings; this decides when and with which globals.
 #pragma once
 
+#include <chrono>
 #include <cstdint>
 #include <vector>
 
@@ -42,6 +43,7 @@ public:
     ModuleString startAll();
     // Before step `step` (from 1): whether the plant derives it (it has steps left and called no stop());
     // when it does, its StartEach block runs, with the global Q set to the step where the grammar has one.
+    // Throws ir::LimitError once the derivation has run past options.maxSeconds.
     bool beginStep(uint32_t plant, int step);
     // After the plant derived step `step`: its EndEach block runs, and the step counts as derived.
     void endStep(uint32_t plant, int step);
@@ -58,6 +60,8 @@ private:
     uint32_t seed_ = 0;
     int stride_ = 1;
     uint64_t budget_ = 0;
+    double maxSeconds_ = 0;
+    std::chrono::steady_clock::time_point started_;
     int fixedSteps_ = -1;
     int steps_ = 0;
     std::vector<PlantState> states_;

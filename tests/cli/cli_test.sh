@@ -97,6 +97,16 @@ code=$?
 [ $code -eq 1 ] && grep -q "module budget of 100000" "$work/err.txt"
 check "module budget ends runaway growth with a clear error (code $code)" $?
 
+# A derivation of 10^9 steps ends at its time limit with a clear error, on either engine.
+printf 'Lsystem: 1\nderivation length: 1000000000\nAxiom: A\nA --> A\nendlsystem\n' >"$work/forever.l"
+for backend in cpu gpu; do
+  timeout 60 "$simeco" derive "$work/forever.l" --backend $backend --max-seconds 1 >/dev/null 2>"$work/err.txt"
+  code=$?
+  [ $code -eq 1 ] && grep -q "ran past its time limit of 1 s in step" "$work/err.txt"
+  status=$?
+  check "a derivation past --max-seconds ends with a clear error on the $backend (code $code: $(cat "$work/err.txt"))" $status
+done
+
 "$simeco" derive "$work/algae.l" --format nonsense >/dev/null 2>&1
 [ $? -eq 2 ]
 check "bad option exits 2" $?

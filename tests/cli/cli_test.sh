@@ -104,7 +104,7 @@ for backend in cpu gpu; do
   code=$?
   [ $code -eq 1 ] && grep -q "ran past its time limit of 1 s in step" "$work/err.txt"
   status=$?
-  check "a derivation past --max-seconds ends with a clear error on the $backend (code $code: $(cat "$work/err.txt"))" $status
+  check "a derivation past --max-seconds ends with a clear error ($backend, code $code: $(cat "$work/err.txt"))" $status
 done
 
 "$simeco" derive "$work/algae.l" --format nonsense >/dev/null 2>&1

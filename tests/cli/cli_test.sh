@@ -158,8 +158,14 @@ check "export writes a glTF with its meshes" $?
 # The default module budget counts what each engine allocates per module (stream/derive_options.h: 32 bytes on
 # the CPU, 114 on the device and 17 on the host at one parameter slot): a derivation's peak memory above a tiny
 # one's stays within its modules times those bytes, so the budget never lets a derivation run out of memory.
+# Under AddressSanitizer the heap's redzones and quarantine are the sanitizer's, not the engines': not checked there.
 printf 'Lsystem: 1\nderivation length: 22\nAxiom: A\nA --> AA\nendlsystem\n' >"$work/doubling.l"
-for backend in cpu:32 gpu:131; do
+budgets="cpu:32 gpu:131"
+if ldd "$simeco" 2>/dev/null | grep -q libasan; then
+  echo "note: $simeco is built with AddressSanitizer; the memory bound per module is not checked"
+  budgets=""
+fi
+for backend in $budgets; do
   python3 - "$simeco" "$work/doubling.l" "${backend%%:*}" "${backend##*:}" >"$work/memory.txt" 2>&1 <<'PY'
 import resource, subprocess, sys
 simeco, grammar, backend, bytes_per_module = sys.argv[1], sys.argv[2], sys.argv[3], int(sys.argv[4])

@@ -2,8 +2,9 @@
 # Fuzzes the readers of user files (cpfg .l, SimEco .eco, quick .lsys, view .v, .func, .fset, .con) with
 # libFuzzer, AddressSanitizer and UBSan: builds them with clang into build-fuzz/, seeds each reader with the
 # project's grammars and scenes and the shared cpfg corpus, and runs each for a while. Inputs that reach new code
-# are kept in build-fuzz/corpus/READER/ for the next run; a crash, sanitizer report, hang (> 10 s) or runaway
-# memory (> 2 GiB) leaves its input in build-fuzz/findings/READER/ and fails the run.
+# are kept in build-fuzz/corpus/READER/ for the next run; a crash, sanitizer report, hang (an input over 30 s:
+# the sanitizers run about ten times slower than a release build) or runaway memory (> 2 GiB) leaves its input
+# in build-fuzz/findings/READER/ and fails the run.
 # Usage: tools/fuzz.sh [--seconds N] [READER ...]   (N per reader, default 60; READER default: all of them)
 #        tools/fuzz.sh --build-only
 set -euo pipefail
@@ -64,7 +65,7 @@ for reader in "${readers[@]}"; do
   scratch=$(mktemp -d)
   log="$build/fuzz-$reader.log"
   set +e
-  TMPDIR="$scratch" "$target" "$corpus" "$seeds" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
+  TMPDIR="$scratch" "$target" "$corpus" "$seeds" -max_total_time="$seconds" -timeout=30 -rss_limit_mb=2048 \
     -max_len=131072 -artifact_prefix="$findings/" -print_final_stats=1 >"$log" 2>&1
   code=$?
   set -e

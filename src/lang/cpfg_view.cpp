@@ -60,8 +60,8 @@ float number(const std::string& text, const std::string& file, size_t line, cons
 constexpr long kMostSamples = 1 << 20;
 constexpr long kMostControlPoints = 1 << 16;
 // Sampling a function evaluates its curve about ten times a sample, and a contour curve once, each time over
-// its control points: their product bounds the work (a few seconds at most), which either bound alone does not.
-constexpr uint64_t kMostSampledPoints = 1 << 21;
+// its control points: their product bounds the work (about a second), which either bound alone does not.
+constexpr uint64_t kMostSampledPoints = 1 << 19;
 constexpr long kMostFunctions = 4096;
 
 // The file a view line names, in the view's folder; when it cannot be opened, the error points at that line.

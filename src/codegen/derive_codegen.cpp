@@ -70,6 +70,55 @@ std::string declarations(bool texelInputs, bool decomposition, bool write, bool 
     return b.text();
 }
 
+// A weighted draw among the applicable productions of one symbol `list`: every candidate is tested in file order
+// (mode 0), then the drawn one runs again from its first draw (mode 1). The rounds are one loop around one call of
+// each production, not a call per round: lavapipe's compiler inlines every call, and two inlined copies of a dozen
+// productions with context walks took it fifteen seconds instead of two.
+std::string stochasticSelection(const ir::RuleSet& rules, size_t species, RuleKind kind,
+                                const std::vector<size_t>& list) {
+    const size_t n = list.size();
+    std::string code = fmt::format("        double total = 0.0LF, weights[{0}];\n"
+                                   "        bool any = false, applicable[{0}];\n"
+                                   "        uint starts[{0}], pick = 0u;\n"
+                                   "        for (uint round = 0u; round <= {0}u; ++round) {{\n"
+                                   "            uint k = round, mode = 0u;\n"
+                                   "            if (round == {0}u) {{\n"
+                                   "                if (!any) break;\n"
+                                   // The first to bring r = total * u to zero or below wins, else the last applicable.
+                                   "                double left = total * double(randomUnit(pc.seed, plant, currentPass(), "
+                                   "key, 0u));\n"
+                                   "                bool done = false;\n"
+                                   "                for (uint c = 0u; c < {0}u; ++c)\n"
+                                   "                    if (!done && applicable[c]) {{ pick = c; left -= weights[c]; "
+                                   "done = left <= 0.0LF; }}\n"
+                                   "                k = pick;\n"
+                                   "                mode = 1u;\n"
+                                   "                draw = starts[pick];\n"
+                                   "            }} else starts[k] = draw;\n"
+                                   "            bool applies = false;\n"
+                                   "            uint yields = 0u;\n"
+                                   "            switch (k) {{\n",
+                                   n);
+    for (size_t k = 0; k < n; ++k) {
+        const ir::Production& p = rules.productions[list[k]];
+        code += fmt::format("            case {}u: applies = count == {}u && {}(i, plant, key, pBegin, pEnd, ctxLeft, "
+                            "ctxRight, draw, mode, yields); weights[k] = {}; chosen = {}u; length = {}u; break;\n",
+                            k, p.strict[0].paramSlots.size(), functionName(species, kind, list[k]),
+                            literal(static_cast<double>(std::max(p.weight, 0.0f))), list[k] + 1, p.strict.size());
+    }
+    return code + fmt::format("            }}\n"
+                              "            if (round < {}u) {{\n"
+                              "                applicable[k] = applies;\n"
+                              "                if (applies) {{ total += weights[k]; any = true; }}\n"
+                              "            }} else {{\n"
+                              "                produced = yields;\n"
+                              "                start = starts[pick];\n"
+                              "            }}\n"
+                              "        }}\n"
+                              "        if (!any) {{ chosen = 0u; length = 1u; }}\n",
+                              n);
+}
+
 // The selection among one symbol's productions, as the CPU reference does it: the first applicable in file
 // order, or a weighted draw among all applicable ones in stochastic L-systems. Leaves `chosen` (index + 1,
 // 0 for none), `start` (draw counter at the chosen production's start) and `produced`.
@@ -93,35 +142,7 @@ std::string selection(const ir::RuleSet& rules, size_t species, RuleKind kind, b
             }
             code += "        } while (false);\n";
         } else {
-            code += "        double total = 0.0LF;\n        uint ignored;\n";
-            for (size_t pi : list) {
-                const ir::Production& p = rules.productions[pi];
-                code += fmt::format("        uint start{0} = draw;\n"
-                                    "        bool applicable{0} = count == {1}u && {2}(i, plant, key, pBegin, pEnd, ctxLeft, "
-                                    "ctxRight, draw, 0u, ignored);\n"
-                                    "        if (applicable{0}) total += {3};\n",
-                                    pi, p.strict[0].paramSlots.size(), functionName(species, kind, pi),
-                                    literal(static_cast<double>(std::max(p.weight, 0.0f))));
-            }
-            // Walk the applicable ones subtracting weights from r = total * u: the first to bring r to zero or
-            // below wins, else the last applicable one.
-            code += "        bool any = false;\n";
-            for (size_t pi : list) code += fmt::format("        any = any || applicable{};\n", pi);
-            code += "        if (any) {\n"
-                    "            double left = total * double(randomUnit(pc.seed, plant, currentPass(), key, 0u));\n"
-                    "            bool done = false;\n";
-            for (size_t pi : list) {
-                const ir::Production& p = rules.productions[pi];
-                code += fmt::format("            if (!done && applicable{0}) {{ chosen = {1}u; start = start{0}; "
-                                    "length = {3}u; left -= {2}; done = left <= 0.0LF; }}\n",
-                                    pi, pi + 1, literal(static_cast<double>(std::max(p.weight, 0.0f))), p.strict.size());
-            }
-            code += "            draw = start;\n            switch (chosen) {\n";
-            for (size_t pi : list)
-                code += fmt::format("            case {}u: {}(i, plant, key, pBegin, pEnd, ctxLeft, ctxRight, draw, 1u, produced); "
-                                    "break;\n",
-                                    pi + 1, functionName(species, kind, pi));
-            code += "            }\n        }\n";
+            code += stochasticSelection(rules, species, kind, list);
         }
         code += "        break;\n    }\n";
     }

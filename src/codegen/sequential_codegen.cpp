@@ -247,6 +247,36 @@ std::string decomposeFunction(const ir::Grammar& g, size_t sp, const FrameLayout
     return s;
 }
 
+// The start of a turn of the step's loop: module i's symbol, and the production that applies to it (`chosen`).
+std::string examineModule(const ir::Grammar& g, size_t sp, const FrameLayout& frames) {
+    return "        ++gWork;\n"
+           "        gOrigin = i;\n"
+           "        sym = symOf(i);\n"
+           "        count = countOf(i);\n"
+           "        uint key = i - pBegin;\n"
+           "        int ctxLeft = int(i) - 1;\n"
+           "        uint ctxRight = i + 1u;\n"
+           "        gPass = pc.pass;\n"
+           "        uint draw = 1u, chosen = 0u, length = 1u;\n" +
+           selection(g.productions, sp, RuleKind::Step, frames.step[sp]);
+}
+
+// The end of a turn for a module that nothing rewrites: a cut skips the rest of its branch, else it is copied.
+// `decomposes`: the cut restores the count of modules examined, which the decomposition of module i advanced.
+std::string copyModule(bool decomposes) {
+    return std::string("        if (sym == 2u && count == 0u) {\n"
+                       "            // The cut leaves the string with the rest of its branch; it does not count as "
+                       "examined.\n") +
+           (decomposes ? "            stackState[depthCounterAt(0u)] = examined;\n" : "") +
+           "            i = endOfBranch(i + 1u, pBegin, pEnd);\n"
+           "            continue;\n"
+           "        }\n"
+           "        outputFromInput(i, next);\n"
+           "        ++i;\n"
+           "    }\n"
+           "}\n\n";
+}
+
 // One plant's step (cpu/derive.cpp rewrite()) for as much work as the dispatch does. `pending` is a suspended
 // decomposition's stack level + 1 (0: none); it decomposes the input modules from `pendingFirst` up to i.
 std::string deriveFunction(const ir::Grammar& g, size_t sp, const FrameLayout& frames) {
@@ -255,76 +285,68 @@ std::string deriveFunction(const ir::Grammar& g, size_t sp, const FrameLayout& f
                                 "inout uint pending, inout uint pendingFirst) {{\n"
                                 "    uint frameBase = plant * kFrameSlots;\n",
                                 sp);
-    if (decomposes) {
-        s += "    if (pc.dispatch == 0u) for (uint d = 0u; d < pc.stackLevels; ++d) stackState[depthCounterAt(d)] = 0u;\n";
-        // A decomposition suspended in an earlier dispatch goes on first: its stack holds what the input modules
-        // from pendingFirst up to i became.
-        s += fmt::format("    if (pending != 0u) {{\n"
-                         "        gOrigin = pendingFirst;\n"
-                         "        uint top = pending - 1u;\n"
-                         "        pending = 0u;\n"
-                         "        if (s{}Decompose(plant, pBegin, pEnd, int(pendingFirst) - 1, i, false, top, next) == "
-                         "kDecompositionSuspended) {{\n"
-                         "            pending = gSuspendedTop + 1u;\n"
-                         "            return;\n"
-                         "        }}\n"
-                         "    }}\n",
-                         sp);
-    }
-    s += "    while (i < pEnd && !gAbort && gWork < pc.chunk) {\n"
-         "        ++gWork;\n"
-         "        gOrigin = i;\n"
-         "        uint sym = symOf(i), count = countOf(i);\n"
-         "        uint key = i - pBegin;\n"
-         "        int ctxLeft = int(i) - 1;\n"
-         "        uint ctxRight = i + 1u;\n"
-         "        gPass = pc.pass;\n"
-         "        uint draw = 1u, chosen = 0u, length = 1u;\n";
-    s += selection(g.productions, sp, RuleKind::Step, frames.step[sp]);
-    s += "        if (chosen != 0u) {\n";
-    s += decomposes ? "            gToStack = true;\n            gBase = levelBase(0u);\n"
-                    : "            gToStack = false;\n            gBase = next;\n";
-    s += produce(g.productions, sp, RuleKind::Step, frames.step[sp]);
-    if (decomposes)
-        s += fmt::format("            stackState[levelCountAt(0u)] = produced;\n"
-                         "            stackState[levelCountAt(0u) + 1u] = 0u;\n"
-                         "            uint decomposed = s{}Decompose(plant, pBegin, pEnd, int(i) - 1, i + length, false, "
-                         "0u, next);\n"
-                         "            pendingFirst = i;\n"
-                         "            i += length;\n"
-                         "            if (decomposed == kDecompositionSuspended) {{ pending = gSuspendedTop + 1u; return; }}\n"
-                         "            continue;\n"
-                         "        }}\n",
-                         sp);
-    else
+    if (!decomposes) {
+        s += "    while (i < pEnd && !gAbort && gWork < pc.chunk) {\n"
+             "        uint sym, count;\n";
+        s += examineModule(g, sp, frames);
+        s += "        if (chosen != 0u) {\n"
+             "            gToStack = false;\n"
+             "            gBase = next;\n";
+        s += produce(g.productions, sp, RuleKind::Step, frames.step[sp]);
         s += "            advanceOutput(next, produced);\n"
              "            i += length;\n"
              "            continue;\n"
              "        }\n";
-    if (decomposes)
-        s += fmt::format("        uint examined = stackState[depthCounterAt(0u)];\n"
-                         "        stackFromInput(i, levelBase(0u));\n"
-                         "        stackState[levelCountAt(0u)] = 1u;\n"
-                         "        stackState[levelCountAt(0u) + 1u] = 0u;\n"
-                         "        uint decomposed = s{}Decompose(plant, pBegin, pEnd, int(i) - 1, i + 1u, true, 0u, next);\n"
-                         "        if (decomposed != kNotDecomposed) {{\n"
-                         "            pendingFirst = i;\n"
-                         "            ++i;\n"
-                         "            if (decomposed == kDecompositionSuspended) {{ pending = gSuspendedTop + 1u; return; }}\n"
-                         "            continue;\n"
-                         "        }}\n",
-                         sp);
-    s += "        if (sym == 2u && count == 0u) {\n"
-         "            // The cut leaves the string with the rest of its branch; it does not count as examined.\n";
-    if (decomposes) s += "            stackState[depthCounterAt(0u)] = examined;\n";
-    s += "            i = endOfBranch(i + 1u, pBegin, pEnd);\n"
-         "            continue;\n"
+        return s + copyModule(false);
+    }
+    // One call of the decomposition in the loop: lavapipe inlines every call, and three copies took its compiler
+    // three times as long as one.
+    s += "    if (pc.dispatch == 0u) for (uint d = 0u; d < pc.stackLevels; ++d) stackState[depthCounterAt(d)] = 0u;\n"
+         "    while (pending != 0u || (i < pEnd && !gAbort && gWork < pc.chunk)) {\n"
+         // What is decomposed: a decomposition suspended in an earlier dispatch, whose stack holds what the input
+         // modules from pendingFirst up to i became; else the successor of the production applied to module i, or
+         // module i itself.
+         "        int decomposeLeft;\n"
+         "        uint decomposeRight, top = 0u, advance = 0u, sym = 0u, count = 0u, examined = 0u;\n"
+         "        bool original = false;\n"
+         "        if (pending != 0u) {\n"
+         "            gOrigin = pendingFirst;\n"
+         "            top = pending - 1u;\n"
+         "            pending = 0u;\n"
+         "            decomposeLeft = int(pendingFirst) - 1;\n"
+         "            decomposeRight = i;\n"
+         "        } else {\n";
+    s += examineModule(g, sp, frames);
+    s += "        decomposeLeft = int(i) - 1;\n"
+         "        if (chosen != 0u) {\n"
+         "            gToStack = true;\n"
+         "            gBase = levelBase(0u);\n";
+    s += produce(g.productions, sp, RuleKind::Step, frames.step[sp]);
+    s += "            stackState[levelCountAt(0u)] = produced;\n"
+         "            decomposeRight = i + length;\n"
+         "            advance = length;\n"
+         "        } else {\n"
+         "            examined = stackState[depthCounterAt(0u)];\n"
+         "            stackFromInput(i, levelBase(0u));\n"
+         "            stackState[levelCountAt(0u)] = 1u;\n"
+         "            decomposeRight = i + 1u;\n"
+         "            advance = 1u;\n"
+         "            original = true;\n"
          "        }\n"
-         "        outputFromInput(i, next);\n"
-         "        ++i;\n"
-         "    }\n"
-         "}\n\n";
-    return s;
+         "        stackState[levelCountAt(0u) + 1u] = 0u;\n"
+         "        }\n";
+    s += fmt::format("        uint decomposed = s{}Decompose(plant, pBegin, pEnd, decomposeLeft, decomposeRight, original, "
+                     "top, next);\n"
+                     "        if (decomposed != kNotDecomposed) {{\n"
+                     "            if (advance != 0u) {{\n"
+                     "                pendingFirst = i;\n"
+                     "                i += advance;\n"
+                     "            }}\n"
+                     "            if (decomposed == kDecompositionSuspended) {{ pending = gSuspendedTop + 1u; return; }}\n"
+                     "            continue;\n"
+                     "        }}\n",
+                     sp);
+    return s + copyModule(true);
 }
 
 } // namespace

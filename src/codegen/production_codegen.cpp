@@ -516,16 +516,44 @@ std::string frameArguments(const ir::Production& p) {
     return s;
 }
 
-// `RESULT NAME(PARAMETERS, uint frame)`: loads the locals from frames[frame ...], calls the body function with
-// them and stores them back, so that they carry over to the production's next application.
-std::string frameWrapper(const ir::Production& p, const std::string& result, const std::string& name,
-                         const std::string& parameters, const std::string& arguments) {
-    std::string s = fmt::format("{} {}({}, uint frame) {{\n", result, name, parameters);
-    for (int slot = 0; slot < p.frameSize; ++slot) s += fmt::format("    double v{0} = frames[frame + {0}u];\n", slot);
-    s += fmt::format("    {}{}Body({}{});\n", result == "void" ? "" : result + " r = ", name, arguments, frameArguments(p));
-    for (int slot = 0; slot < p.frameSize; ++slot) s += fmt::format("    frames[frame + {0}u] = v{0};\n", slot);
-    if (result != "void") s += "    return r;\n";
-    return s + "}\n\n";
+// The slots that matching binds: the parameters of the predecessor and its contexts. The rest are the locals.
+std::vector<bool> parameterSlots(const ir::Production& p) {
+    std::vector<bool> bound(static_cast<size_t>(p.frameSize), false);
+    for (const auto* patterns : {&p.left, &p.strict, &p.right})
+        for (const ir::PatternModule& m : *patterns)
+            for (int slot : m.paramSlots) bound[static_cast<size_t>(slot)] = true;
+    return bound;
+}
+
+// `bool NAMETest(PARAMETERS, uint frame)` and `void NAMEProduce(PARAMETERS, uint frame)` around the body functions.
+// The locals live in frames[frame ...], loaded before and stored after each call, so that they carry over to the
+// production's next application. The parameters, bound afresh by every test, pass from the test to the production
+// in private variables (NAMEParameterK): storing them too made every test and production store its whole frame, and
+// those stores of doubles took lavapipe's compiler most of its time on grammars with many parameters.
+std::string frameWrappers(const ir::Production& p, const std::string& name, const std::string& testParameters,
+                          const std::string& produceParameters) {
+    const std::vector<bool> bound = parameterSlots(p);
+    std::string handOff, unbound, keepParameters, takeParameters, loadLocals, storeLocals;
+    for (int slot = 0; slot < p.frameSize; ++slot) {
+        if (bound[static_cast<size_t>(slot)]) {
+            handOff += fmt::format("double {}Parameter{};\n", name, slot);
+            unbound += fmt::format("    double v{} = 0.0LF;\n", slot);
+            keepParameters += fmt::format("    {}Parameter{} = v{};\n", name, slot, slot);
+            takeParameters += fmt::format("    double v{} = {}Parameter{};\n", slot, name, slot);
+        } else {
+            loadLocals += fmt::format("    double v{0} = frames[frame + {0}u];\n", slot);
+            storeLocals += fmt::format("    frames[frame + {0}u] = v{0};\n", slot);
+        }
+    }
+    return handOff +
+           fmt::format("bool {0}Test({1}, uint frame) {{\n{2}{3}"
+                       "    bool r = {0}TestBody(i, plant, key, pBegin, pEnd, ctxLeft, ctxRight, draw{4});\n"
+                       "{5}{6}    return r;\n}}\n\n",
+                       name, testParameters, unbound, loadLocals, frameArguments(p), keepParameters, storeLocals) +
+           fmt::format("void {0}Produce({1}, uint frame) {{\n{2}{3}"
+                       "    {0}ProduceBody(plant, key, draw, outCount{4});\n"
+                       "{5}}}\n\n",
+                       name, produceParameters, takeParameters, loadLocals, frameArguments(p), storeLocals);
 }
 
 } // namespace
@@ -557,7 +585,6 @@ void emitProduction(const ir::Grammar& g, size_t species, const ir::Production& 
     emitMatch(body, g, species, p, kind, false);
     body.line("return true;");
     out += "}\n\n";
-    out += frameWrapper(p, "bool", name + "Test", testParameters, "i, plant, key, pBegin, pEnd, ctxLeft, ctxRight, draw");
     const std::string produceParameters = "uint plant, uint key, inout uint draw, out uint outCount";
     out += fmt::format("void {}ProduceBody({}{}) {{\n", name, produceParameters, frameParameters(p));
     body.line("outCount = 0u;");
@@ -566,7 +593,7 @@ void emitProduction(const ir::Grammar& g, size_t species, const ir::Production& 
     emitChoice(body, p, false);
     emitSuccessor(body, p, false);
     out += "}\n\n";
-    out += frameWrapper(p, "void", name + "Produce", produceParameters, "plant, key, draw, outCount");
+    out += frameWrappers(p, name, testParameters, produceParameters);
 }
 
 } // namespace simeco::codegen

@@ -452,6 +452,25 @@ TEST_F(DeriveGpuTest, InfinitiesAndNanMatchTheCpu) {
     }
 }
 
+// The sequential kernel keeps each production's locals between its applications and hands the parameters its test
+// bound (and its statements changed) to the production applied. Stochastic, so that every production of A is tested
+// before the drawn one is applied: each must apply its own parameters, not those of the last one tested.
+TEST_F(DeriveGpuTest, SequentialLocalsCarryOverAndParametersReachTheSuccessor) {
+    ir::Grammar g = simeco::testing::grammarFromText(
+        simeco::testing::lsystem("A(1)E(0)A(2)",
+                                 "A(x) : { if (x > 3) { c = x; } x = x * 2; } 1 --> A(x)B(c) : 1\n"
+                                 "A(x) : { if (x < 9) { d = x; } } 1 --> A(x + 1)C(d) : 2\n"
+                                 "B(y) > C(z) : { y = y + z + 1; } y > 0 --> B(y)\n"
+                                 "E(z) : { if (z < 5) { n = z + 1; } } 1 --> E(z + n)\n",
+                                 6));
+    stream::DeriveResult want = cpu::deriveCpu(g, {});
+    gpu::GpuDeriver deriver(context(), g, gpu::GpuStrategy::Sequential);
+    EXPECT_EQ(firstDifference(want, deriver.derive({}), g.alphabet), "");
+    std::string text = stream::formatModules(want.string, g.alphabet, 0, want.string.size());
+    EXPECT_NE(text.find('B'), std::string::npos) << text;
+    EXPECT_NE(text.find('C'), std::string::npos) << text;
+}
+
 // The write pass applies the production its match chose without evaluating a pure condition again, but one that
 // draws random numbers it evaluates again, so that the successor's draws follow the condition's as on the CPU,
 // walking the context whose parameter only that condition reads.

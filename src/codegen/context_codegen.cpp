@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "codegen/hoisted_constants.h"
 #include "codegen/production_analysis.h"
 
 namespace simeco::codegen {
@@ -23,7 +24,7 @@ struct OwnParameterCode {
     std::optional<std::string> value(const ir::Expr& e) const {
         using ir::Op;
         switch (e.op) {
-        case Op::Const: return literal(e.value);
+        case Op::Const: return isHoisted(e) ? std::nullopt : std::optional(literal(e.value)); // per species
         case Op::Local: {
             const std::vector<int>& slots = predecessor.paramSlots;
             auto at = std::find(slots.begin(), slots.end(), e.slot);

@@ -561,6 +561,7 @@ GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species, 
     const std::vector<ir::Grammar>& code = classes.representatives;
     GeneratedKernels k = codegen::speciesTraits(code);
     k.speciesTable = codegen::speciesTable(classes);
+    k.functionTables = codegen::hoistedTable(classes);
     DerivePlan plan = planDeriveKernels(code, classes, texelInputs, contextChunks, k);
     k.match = stepMatchKernel(plan, k);
     k.write = stepWriteKernel(plan, k);

@@ -55,7 +55,7 @@ struct GeneratedKernels {
     // finds nothing.
     bool matchFindsPlants = false;
     bool writeFindsPlants = false;
-    std::vector<double> functionTables; // the sampled func() tables and the contour curves, concatenated
+    std::vector<double> functionTables; // hoisted constants, the sampled func() tables and contour curves, concatenated
     // The speciesTable buffer the kernels read (codegen::speciesTable): the context filter's rows of the classes
     // of species that share code (species_classes.h) and, where some do, each species' class.
     std::vector<uint32_t> speciesTable;

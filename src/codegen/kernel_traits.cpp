@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "codegen/context_codegen.h"
+#include "codegen/hoisted_constants.h"
 #include "codegen/production_analysis.h"
 #include "compute/shaders.h"
 
@@ -48,7 +49,7 @@ PlantInputs plantInputs(const std::vector<ir::Grammar>& species, RuleKind kind, 
     PlantInputs in;
     in.plant = species.size() > 1; // a plant's species is its index modulo their number
     auto scanExpr = [&](const ir::Expr& e) {
-        if (e.op == ir::Op::Global || e.op == ir::Op::ArrayElem) in.plant = true;
+        if (e.op == ir::Op::Global || e.op == ir::Op::ArrayElem || isHoisted(e)) in.plant = true;
         if (e.op != ir::Op::Call) return;
         switch (e.fn) {
         case ir::Builtin::Ran: case ir::Builtin::Nran: case ir::Builtin::Biran: in.random = true; break;
@@ -141,7 +142,19 @@ std::string deriveLibrary(const SpeciesClasses& classes) {
 std::vector<uint32_t> speciesTable(const SpeciesClasses& classes) {
     std::vector<uint32_t> table = contextSkipBits(classes.representatives);
     if (!classes.distinct()) table.insert(table.end(), classes.classOf.begin(), classes.classOf.end());
+    if (!classes.hoists()) return table;
+    uint32_t at = 0;
+    for (const std::vector<double>& row : classes.hoisted) {
+        table.push_back(at);
+        at += static_cast<uint32_t>(row.size());
+    }
     return table;
+}
+
+std::vector<double> hoistedTable(const SpeciesClasses& classes) {
+    std::vector<double> values;
+    for (const std::vector<double>& row : classes.hoisted) values.insert(values.end(), row.begin(), row.end());
+    return values;
 }
 
 std::string speciesCode(const SpeciesClasses& classes) {
@@ -149,8 +162,13 @@ std::string speciesCode(const SpeciesClasses& classes) {
     std::string code = contextSkipCode(skipBits);
     if (classes.distinct()) return code + "uint speciesOf(uint plant) { return plant % kSpeciesCount; }\n";
     // A constant array would be copied into every invocation's private memory by some drivers (lavapipe).
-    return code + fmt::format("uint speciesOf(uint plant) {{ return speciesTable[{}u + plant % kSpeciesCount]; }}\n",
-                              skipBits.size());
+    code += fmt::format("uint speciesOf(uint plant) {{ return speciesTable[{}u + plant % kSpeciesCount]; }}\n",
+                        skipBits.size());
+    if (!classes.hoists()) return code;
+    return code + fmt::format("double hoisted(uint plant, uint k) {{\n"
+                              "    return funcTables[speciesTable[{}u + plant % kSpeciesCount] + k];\n"
+                              "}}\n",
+                              skipBits.size() + classes.classOf.size());
 }
 
 std::string kernelPrelude(size_t speciesCount) {

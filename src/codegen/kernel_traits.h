@@ -52,10 +52,15 @@ std::string kernelPrelude(size_t speciesCount);
 std::string deriveLibrary(const SpeciesClasses& classes);
 
 // What the kernels' speciesTable buffer holds: the context filter's rows of the classes' representatives
-// (contextSkipBits), then, where species share code, each species' class.
+// (contextSkipBits), then, where species share code, each species' class, then, where classes hoist constants,
+// where each species' row of hoisted values begins in funcTables.
 std::vector<uint32_t> speciesTable(const SpeciesClasses& classes);
 
-// `uint contextSkipWord(uint word)` (contextSkipCode) and `uint speciesOf(uint plant)`: the class whose code
-// plant runs, which is its species where every species is its own class.
+// The species' rows of hoisted values, one after another: the start of the kernels' funcTables buffer.
+std::vector<double> hoistedTable(const SpeciesClasses& classes);
+
+// `uint contextSkipWord(uint word)` (contextSkipCode), `uint speciesOf(uint plant)`: the class whose code plant
+// runs, which is its species where every species is its own class, and, where classes hoist constants,
+// `double hoisted(uint plant, uint k)`: the value of plant's species for its class's hoisted constant k.
 std::string speciesCode(const SpeciesClasses& classes);
 } // namespace simeco::codegen

@@ -18,19 +18,19 @@ bool firstLeftWalkPrefetched(const ir::Grammar& g, const ir::Production& p);
 
 // Calls onExpr for every expression node and onStatement for every statement of a production's code: its
 // statements, condition (unless `withCondition` is false) and successor parameters, nested blocks and
-// subexpressions included.
-template <typename OnExpr, typename OnStatement>
-void walkProductionCode(const ir::Production& p, OnExpr&& onExpr, OnStatement&& onStatement,
-                        bool withCondition = true) {
-    auto expr = [&](const ir::Expr& e, auto& self) -> void {
+// subexpressions included, always in this order. `Production` is ir::Production, const or not (the callbacks then
+// take the nodes to change).
+template <typename Production, typename OnExpr, typename OnStatement>
+void walkProductionCode(Production& p, OnExpr&& onExpr, OnStatement&& onStatement, bool withCondition = true) {
+    auto expr = [&](auto& e, auto& self) -> void {
         onExpr(e);
-        for (const ir::Expr& a : e.args) self(a, self);
+        for (auto& a : e.args) self(a, self);
     };
-    auto statements = [&](const std::vector<ir::Stmt>& block, auto& self) -> void {
-        for (const ir::Stmt& st : block) {
+    auto statements = [&](auto& block, auto& self) -> void {
+        for (auto& st : block) {
             onStatement(st);
             expr(st.expr, expr);
-            for (const ir::Expr& index : st.indices) expr(index, expr);
+            for (auto& index : st.indices) expr(index, expr);
             self(st.body, self);
             self(st.elseBody, self);
         }
@@ -38,9 +38,9 @@ void walkProductionCode(const ir::Production& p, OnExpr&& onExpr, OnStatement&& 
     statements(p.before, statements);
     statements(p.after, statements);
     if (withCondition && p.condition) expr(*p.condition, expr);
-    for (const ir::Alternative& alt : p.alternatives)
-        for (const ir::SuccessorModule& m : alt.modules)
-            for (const ir::Expr& arg : m.args) expr(arg, expr);
+    for (auto& alt : p.alternatives)
+        for (auto& m : alt.modules)
+            for (auto& arg : m.args) expr(arg, expr);
 }
 
 // Whether a condition has no effect but its value: no draws, files or stop(). A writing pass, which applies the

@@ -356,6 +356,7 @@ GeneratedKernels generateSequentialKernel(const std::vector<ir::Grammar>& all, b
     const std::vector<ir::Grammar>& species = classes.representatives; // whose code the kernel holds
     GeneratedKernels k = codegen::speciesTraits(species);
     k.speciesTable = codegen::speciesTable(classes);
+    k.functionTables = codegen::hoistedTable(classes);
     FrameLayout frames = layoutFrames(species);
     k.frameSlots = frames.slots;
     for (const ir::Grammar& g : species)

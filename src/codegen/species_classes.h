@@ -13,15 +13,21 @@
 namespace simeco::codegen {
 
 struct SpeciesClasses {
-    std::vector<ir::Grammar> representatives; // the first species of each class, in the order of the species
-    std::vector<uint32_t> classOf;            // each species' class: an index into representatives
+    // The first species of each class, in the order of the species; where the members' constants differ, with
+    // those constants hoisted (hoisted_constants.h).
+    std::vector<ir::Grammar> representatives;
+    std::vector<uint32_t> classOf; // each species' class: an index into representatives
+    // Each species' values of its class's hoisted constants, in the order of their indices (empty: none).
+    std::vector<std::vector<double>> hoisted;
     // Every species is its own class: kernels need no table.
     bool distinct() const { return representatives.size() == classOf.size(); }
+    bool hoists() const;
 };
 
-// Species share a class when everything their kernel code is made of is the same: their productions and
-// decompositions as generated code, the weights that choose among them, their decomposition depth, their
-// func() tables and contour curves, and the symbols their context walks skip.
+// Species share a class when everything their kernel code is made of is the same but for the constants in their
+// productions' code: their productions and decompositions as generated code, the weights that choose among them,
+// their decomposition depth, their func() tables and contour curves, and the symbols their context walks skip.
+// The constants that differ among a class's members are hoisted.
 SpeciesClasses classifySpecies(const std::vector<ir::Grammar>& species);
 
 } // namespace simeco::codegen

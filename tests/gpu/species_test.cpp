@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include <fmt/format.h>
+
 #include "../unit/grammar_text.h"
 #include "codegen/derive_codegen.h"
 #include "codegen/species_classes.h"
@@ -64,21 +66,31 @@ std::vector<ir::Grammar> speciesWithCopies() {
     return ir::unifySpecies({decomposed, tabled, filtered, decomposed, shorter, unproductive, tabled, decomposed});
 }
 
-// Copies of a species share its code: one class each, whatever their place among the species, while a species
-// that differs in a single number is a class of its own.
-TEST(SpeciesClasses, CopiesShareTheirCodeAndOneNumberSetsASpeciesApart) {
+// Copies of a species share its code: one class each, whatever their place among the species. Species that differ
+// only in the numbers of their productions share it too, the numbers that differ read from each species' row; a
+// species whose code differs otherwise is a class of its own.
+TEST(SpeciesClasses, CopiesAndSpeciesThatDifferInNumbersShareTheirCode) {
     std::vector<ir::Grammar> species = speciesWithCopies();
     codegen::SpeciesClasses classes = codegen::classifySpecies(species);
     EXPECT_EQ(classes.classOf, (std::vector<std::uint32_t>{0, 1, 2, 0, 2, 3, 1, 0}));
     ASSERT_EQ(classes.representatives.size(), 4u);
     EXPECT_FALSE(classes.distinct());
+    EXPECT_FALSE(classes.hoists());
 
-    ir::Grammar g = simeco::testing::grammarFromText("Lsystem: 1\nderivation length: 4\nAxiom: A(1)\n"
-                                                     "A(x) --> F(x)[+A(x * 0.5)]A(x * 0.5)\nendlsystem\n");
-    ir::Grammar other = simeco::testing::grammarFromText("Lsystem: 1\nderivation length: 4\nAxiom: A(1)\n"
-                                                         "A(x) --> F(x)[+A(x * 0.5)]A(x * 0.6)\nendlsystem\n");
-    EXPECT_EQ(codegen::classifySpecies(ir::unifySpecies({g, other, g})).classOf,
-              (std::vector<std::uint32_t>{0, 1, 0}));
+    auto grammar = [](const std::string& successor) {
+        return simeco::testing::grammarFromText("Lsystem: 1\nderivation length: 4\nAxiom: A(1)\nA(x) --> " + successor +
+                                                "\nendlsystem\n");
+    };
+    ir::Grammar g = grammar("F(x)[+(30)A(x * 0.5)]A(x * 0.5)");
+    ir::Grammar other = grammar("F(x)[+(30)A(x * 0.5)]A(x * 0.6)");
+    ir::Grammar shaped = grammar("F(x)[+(30)A(x * 0.5)]A(x * 0.5 + 1)");
+    classes = codegen::classifySpecies(ir::unifySpecies({g, other, g, shaped}));
+    EXPECT_EQ(classes.classOf, (std::vector<std::uint32_t>{0, 0, 0, 1}));
+    ASSERT_EQ(classes.hoisted.size(), 4u);
+    EXPECT_EQ(classes.hoisted[0], std::vector<double>{0.5});
+    EXPECT_EQ(classes.hoisted[1], std::vector<double>{0.6});
+    EXPECT_EQ(classes.hoisted[2], std::vector<double>{0.5});
+    EXPECT_TRUE(classes.hoisted[3].empty()) << "a class of one species keeps its numbers in its code";
 }
 
 // The kernels' size follows the distinct rules, not the species: thirty copies of three species generate
@@ -106,6 +118,37 @@ TEST_F(SpeciesGpuTest, SpeciesThatShareCodeDeriveAsTheirOwn) {
     std::vector<ir::Grammar> species = speciesWithCopies();
     for (std::uint32_t plants : {8u, 19u}) expectEnginesAgree(context(), species, plants);
     expectEnginesAgree(context(), species, 8, true);
+}
+
+// Species that differ only in numbers, in conditions that guard context walks, successors, statements and a
+// decomposition, derive as their own on both strategies, through one class's code.
+TEST_F(SpeciesGpuTest, SpeciesThatDifferInNumbersDeriveAsTheirOwn) {
+    auto variant = [](double angle, double threshold, double rate) {
+        return simeco::testing::grammarFromText(fmt::format(
+            "Lsystem: 1\nderivation length: 6\nAxiom: B(1)A(1)\n"
+            "A(x) : x < {1} --> F(x)[+({0})A(x * {2})]A(x + {2})\n"
+            "B(y) < A(x) : x > {1} && y < 4 --> A(x - 1)B(y + {2})\n"
+            "A(x) : {{ z = x * {2}; }} x > 0 --> A(z)\n"
+            "B(y) --> B(y - {2})\n"
+            "decomposition\nmaximum depth: 2\n"
+            "F(l) : l > {1} / 2 --> F(l / 2)F(l / 2)\nendlsystem\n",
+            angle, threshold, rate));
+    };
+    std::vector<ir::Grammar> species = ir::unifySpecies(
+        {variant(30, 2, 0.5), variant(45, 3, 0.75), variant(30, 2, 0.5), variant(25.5, 1.5, 0.25), variant(60, 4, 1)});
+    codegen::SpeciesClasses classes = codegen::classifySpecies(species);
+    ASSERT_EQ(classes.representatives.size(), 1u);
+    ASSERT_TRUE(classes.hoists());
+    for (std::uint32_t plants : {5u, 13u}) expectEnginesAgree(context(), species, plants);
+    stream::DeriveOptions options;
+    options.plants = 10;
+    stream::DeriveResult want = cpu::deriveSpeciesCpu(species, options);
+    gpu::GpuDeriver sequential(context(), species, gpu::GpuStrategy::Sequential);
+    EXPECT_EQ(firstDifference(want, sequential.derive(options), species.front().alphabet), "") << "sequentially";
+    // Each plant's branches turn by its own species' angle.
+    const char* angles[] = {"+(30)", "+(45)", "+(30)", "+(25.5)", "+(60)"};
+    for (std::size_t p = 0; p < 5; ++p)
+        EXPECT_NE(plantText(want, species.front().alphabet, p).find(angles[p]), std::string::npos) << "plant " << p;
 }
 
 TEST_F(SpeciesGpuTest, SceneSpeciesDeriveInOnePass) {

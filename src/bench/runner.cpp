@@ -199,6 +199,136 @@ private:
     std::vector<gpu::GpuDeriveStats> gpuStats_;
 };
 
+// The device the GPU runs use, with its name and copy bandwidth in the report; none (and why) when there is none
+// or the GPU is skipped.
+std::unique_ptr<vk::Context> openDevice(const BenchOptions& options, BenchReport& report,
+                                        const std::function<void(const std::string&)>& progress) {
+    if (!options.runGpu) {
+        report.gpuNote = "skipped (--no-gpu)";
+        return nullptr;
+    }
+    std::unique_ptr<vk::Context> context;
+    try {
+        vk::ContextOptions contextOptions;
+        contextOptions.device = options.device;
+        context = std::make_unique<vk::Context>(contextOptions);
+    } catch (const std::exception& e) {
+        report.gpuNote = fmt::format("no Vulkan device: {}", e.what());
+        return nullptr;
+    }
+    const vk::PhysicalDeviceInfo& info = context->deviceInfo();
+    report.deviceName = info.name;
+    report.deviceType = std::string(vk::deviceTypeName(info.type));
+    report.driver = info.driverName;
+    report.maxStorageBufferRange = context->limits().maxStorageBufferRange;
+    progress(fmt::format("device: {} ({}); measuring copy bandwidth", report.deviceName, report.deviceType));
+    try {
+        report.copy = measureCopyBandwidth(*context, options.warmUp, options.repeat);
+    } catch (const std::exception& e) {
+        report.notes.push_back(fmt::format("copy bandwidth not measured: {}", e.what()));
+    }
+    return context;
+}
+
+// A suite grammar loaded for its entries: its module cap and, with a device, its deriver or why there is none.
+struct LoadedGrammar {
+    ir::Grammar grammar;
+    std::uint64_t cap = 0;
+    bool capFromDevice = false;
+    std::unique_ptr<gpu::GpuDeriver> deriver;
+    std::string gpuStatus; // why there is no deriver: "unsupported" or "failed"
+    std::string gpuReason;
+};
+
+std::unique_ptr<LoadedGrammar> loadSuiteGrammar(const SuiteGrammar& sg, const BenchOptions& options,
+                                                const vk::Context* context, const BenchReport& report) {
+    auto l = std::make_unique<LoadedGrammar>();
+    l->grammar = lang::loadGrammarFile((std::filesystem::path(options.root) / sg.file).string());
+    int stride = std::max(l->grammar.maxParams(), 1);
+    l->cap = options.maxModules ? options.maxModules : stream::defaultModuleBudget(stride);
+    if (!context) return l;
+    // The GPU keeps each module's parameters in one storage buffer (4 bytes per slot).
+    std::uint64_t deviceCap = report.maxStorageBufferRange / (sizeof(float) * std::uint64_t(stride));
+    if (deviceCap < l->cap) {
+        l->cap = deviceCap;
+        l->capFromDevice = true;
+    }
+    if (std::optional<std::string> reason = codegen::gpuUnsupportedReason(l->grammar)) {
+        l->gpuStatus = "unsupported";
+        l->gpuReason = *reason;
+        return l;
+    }
+    try {
+        l->deriver = std::make_unique<gpu::GpuDeriver>(*context, l->grammar);
+    } catch (const std::exception& e) {
+        l->gpuStatus = "failed";
+        l->gpuReason = fmt::format("the grammar's kernels were not built: {}", e.what());
+    }
+    return l;
+}
+
+// One suite entry: its steps planned from a calibration sample, then both backends' runs.
+EntryResult runEntry(const SuiteEntry& entry, const LoadedGrammar& l, const BenchOptions& options,
+                     const vk::Context* context, std::uint64_t target, BenchReport& report,
+                     const std::function<void(const std::string&)>& progress) {
+    const SuiteGrammar& sg = entry.grammar;
+    EntryResult e;
+    e.name = sg.name;
+    e.file = sg.file;
+    e.kind = sg.kind;
+    e.plants = entry.plants;
+    e.stride = std::max(l.grammar.maxParams(), 1);
+    std::uint32_t sample = calibrationSample(entry.plants);
+    progress(fmt::format("{} x{}: calibrating the steps on {} plant(s) (target {} modules, cap {})", e.name,
+                         e.plants, sample, target, l.cap));
+    // Targets and caps scaled down to the sample, rounded up so that the sample grows far enough.
+    std::uint64_t sampleTarget = (target * sample + entry.plants - 1) / entry.plants;
+    std::uint64_t sampleCap = (l.cap * sample + entry.plants - 1) / entry.plants;
+    std::vector<std::uint64_t> profile = growthProfile(l.grammar, sample, sampleTarget, sampleCap, sg.maxSteps);
+    Plan plan = planEntry(profile, sample, entry.plants, target, l.cap, l.capFromDevice, sg.maxSteps, e.stride);
+    e.steps = plan.steps;
+    e.expectedModules = plan.expectedModules;
+    e.stringTrafficBytes = plan.stringTrafficBytes;
+    e.targetReached = plan.targetReached;
+    e.note = plan.note;
+    if (!plan.targetReached && plan.note.find("cap") != std::string::npos) {
+        report.scaledDown = true;
+    }
+
+    progress(fmt::format("{} x{}: {} steps, about {} modules", e.name, e.plants, e.steps, e.expectedModules));
+    // The two backends take turns, so that a drift in the machine's speed reaches both alike.
+    EntryRuns runs(l.grammar, l.deriver.get(), e);
+    runs.run(options, options.runCpu, context && l.deriver);
+    if (options.runCpu) {
+        e.cpu = runs.cpuResult(e.stringTrafficBytes);
+        // A stochastic grammar's plants differ: rescale the traffic estimate to the real string size.
+        if (e.cpu.ok() && e.expectedModules > 0 && e.cpu.modules != e.expectedModules) {
+            double scale = static_cast<double>(e.cpu.modules) / static_cast<double>(e.expectedModules);
+            e.stringTrafficBytes = static_cast<std::uint64_t>(static_cast<double>(e.stringTrafficBytes) * scale);
+            finish(e.cpu, e.stringTrafficBytes);
+        }
+    }
+    if (!context) {
+        e.gpu = failed(options.runGpu ? "unavailable" : "skipped", report.gpuNote);
+    } else if (!l.deriver) {
+        e.gpu = failed(l.gpuStatus, l.gpuReason);
+    } else {
+        e.gpu = runs.gpuResult();
+        if (e.gpu.ok() && report.copy && report.copy->bytesPerSecond > 0) {
+            e.gpu.copyFraction = e.gpu.bytesPerSecond / report.copy->bytesPerSecond;
+        }
+        if (e.gpu.ok() && e.cpu.ok() && e.gpu.modules != e.cpu.modules) {
+            e.gpu.status = "failed";
+            e.gpu.reason = fmt::format("the GPU derived {} modules, the CPU reference {}", e.gpu.modules, e.cpu.modules);
+        }
+    }
+    auto rate = [](const BackendResult& r) {
+        return r.ok() ? fmt::format("{:.3g} modules/s", r.modulesPerSecond) : r.status;
+    };
+    progress(fmt::format("{} x{}: CPU {}, GPU {}", e.name, e.plants, rate(e.cpu), rate(e.gpu)));
+    return e;
+}
+
 } // namespace
 
 BenchReport runBenchmark(const BenchOptions& options, const std::function<void(const std::string&)>& progress) {
@@ -207,32 +337,7 @@ BenchReport runBenchmark(const BenchOptions& options, const std::function<void(c
     if (options.repeat < 1) {
         throw std::invalid_argument("--repeat must be at least 1");
     }
-
-    std::unique_ptr<vk::Context> context;
-    if (options.runGpu) {
-        try {
-            vk::ContextOptions contextOptions;
-            contextOptions.device = options.device;
-            context = std::make_unique<vk::Context>(contextOptions);
-        } catch (const std::exception& e) {
-            report.gpuNote = fmt::format("no Vulkan device: {}", e.what());
-        }
-    } else {
-        report.gpuNote = "skipped (--no-gpu)";
-    }
-    if (context) {
-        const vk::PhysicalDeviceInfo& info = context->deviceInfo();
-        report.deviceName = info.name;
-        report.deviceType = std::string(vk::deviceTypeName(info.type));
-        report.driver = info.driverName;
-        report.maxStorageBufferRange = context->limits().maxStorageBufferRange;
-        progress(fmt::format("device: {} ({}); measuring copy bandwidth", report.deviceName, report.deviceType));
-        try {
-            report.copy = measureCopyBandwidth(*context, options.warmUp, options.repeat);
-        } catch (const std::exception& e) {
-            report.notes.push_back(fmt::format("copy bandwidth not measured: {}", e.what()));
-        }
-    }
+    std::unique_ptr<vk::Context> context = openDevice(options, report, progress);
 
     std::uint64_t target = options.quick ? std::min(options.targetModules, kQuickTargetModules) : options.targetModules;
     std::vector<SuiteEntry> suite = benchSuite(options.quick);
@@ -241,20 +346,10 @@ BenchReport runBenchmark(const BenchOptions& options, const std::function<void(c
             throw std::invalid_argument(fmt::format("no suite grammar named '{}'", name));
         }
     }
-
-    struct Loaded {
-        ir::Grammar grammar;
-        std::uint64_t cap = 0;
-        bool capFromDevice = false;
-        std::unique_ptr<gpu::GpuDeriver> deriver;
-        std::string gpuStatus; // why there is no deriver: "unsupported" or "failed"
-        std::string gpuReason;
-    };
     // One grammar at a time (the suite lists a grammar's entries together), so that the GPU memory of the
     // previous grammar is released before the next one grows.
     std::string loadedName;
-    std::unique_ptr<Loaded> loaded;
-
+    std::unique_ptr<LoadedGrammar> loaded;
     for (const SuiteEntry& entry : suite) {
         const SuiteGrammar& sg = entry.grammar;
         if (!options.grammars.empty() &&
@@ -263,93 +358,10 @@ BenchReport runBenchmark(const BenchOptions& options, const std::function<void(c
         }
         if (!loaded || loadedName != sg.name) {
             loaded.reset();
-            loaded = std::make_unique<Loaded>();
+            loaded = loadSuiteGrammar(sg, options, context.get(), report);
             loadedName = sg.name;
-            Loaded& l = *loaded;
-            std::string path = (std::filesystem::path(options.root) / sg.file).string();
-            l.grammar = lang::loadGrammarFile(path);
-            int stride = std::max(l.grammar.maxParams(), 1);
-            l.cap = options.maxModules ? options.maxModules : stream::defaultModuleBudget(stride);
-            if (context) {
-                // The GPU keeps each module's parameters in one storage buffer (4 bytes per slot).
-                std::uint64_t deviceCap = report.maxStorageBufferRange / (sizeof(float) * std::uint64_t(stride));
-                if (deviceCap < l.cap) {
-                    l.cap = deviceCap;
-                    l.capFromDevice = true;
-                }
-            }
-            if (context) {
-                if (std::optional<std::string> reason = codegen::gpuUnsupportedReason(l.grammar)) {
-                    l.gpuStatus = "unsupported";
-                    l.gpuReason = *reason;
-                } else {
-                    try {
-                        l.deriver = std::make_unique<gpu::GpuDeriver>(*context, l.grammar);
-                    } catch (const std::exception& e) {
-                        l.gpuStatus = "failed";
-                        l.gpuReason = fmt::format("the grammar's kernels were not built: {}", e.what());
-                    }
-                }
-            }
         }
-
-        Loaded& l = *loaded;
-        EntryResult e;
-        e.name = sg.name;
-        e.file = sg.file;
-        e.kind = sg.kind;
-        e.plants = entry.plants;
-        e.stride = std::max(l.grammar.maxParams(), 1);
-        std::uint32_t sample = calibrationSample(entry.plants);
-        progress(fmt::format("{} x{}: calibrating the steps on {} plant(s) (target {} modules, cap {})", e.name,
-                             e.plants, sample, target, l.cap));
-        // Targets and caps scaled down to the sample, rounded up so that the sample grows far enough.
-        std::uint64_t sampleTarget = (target * sample + entry.plants - 1) / entry.plants;
-        std::uint64_t sampleCap = (l.cap * sample + entry.plants - 1) / entry.plants;
-        std::vector<std::uint64_t> profile = growthProfile(l.grammar, sample, sampleTarget, sampleCap, sg.maxSteps);
-        Plan plan = planEntry(profile, sample, entry.plants, target, l.cap, l.capFromDevice, sg.maxSteps, e.stride);
-        e.steps = plan.steps;
-        e.expectedModules = plan.expectedModules;
-        e.stringTrafficBytes = plan.stringTrafficBytes;
-        e.targetReached = plan.targetReached;
-        e.note = plan.note;
-        if (!plan.targetReached && plan.note.find("cap") != std::string::npos) {
-            report.scaledDown = true;
-        }
-
-        progress(fmt::format("{} x{}: {} steps, about {} modules", e.name, e.plants, e.steps, e.expectedModules));
-        // The two backends take turns, so that a drift in the machine's speed reaches both alike.
-        EntryRuns runs(l.grammar, l.deriver.get(), e);
-        runs.run(options, options.runCpu, context && l.deriver);
-        if (options.runCpu) {
-            e.cpu = runs.cpuResult(e.stringTrafficBytes);
-            // A stochastic grammar's plants differ: rescale the traffic estimate to the real string size.
-            if (e.cpu.ok() && e.expectedModules > 0 && e.cpu.modules != e.expectedModules) {
-                double scale = static_cast<double>(e.cpu.modules) / static_cast<double>(e.expectedModules);
-                e.stringTrafficBytes = static_cast<std::uint64_t>(static_cast<double>(e.stringTrafficBytes) * scale);
-                finish(e.cpu, e.stringTrafficBytes);
-            }
-        }
-        if (!context) {
-            e.gpu = failed(options.runGpu ? "unavailable" : "skipped", report.gpuNote);
-        } else if (!l.deriver) {
-            e.gpu = failed(l.gpuStatus, l.gpuReason);
-        } else {
-            e.gpu = runs.gpuResult();
-            if (e.gpu.ok() && report.copy && report.copy->bytesPerSecond > 0) {
-                e.gpu.copyFraction = e.gpu.bytesPerSecond / report.copy->bytesPerSecond;
-            }
-            if (e.gpu.ok() && e.cpu.ok() && e.gpu.modules != e.cpu.modules) {
-                e.gpu.status = "failed";
-                e.gpu.reason =
-                    fmt::format("the GPU derived {} modules, the CPU reference {}", e.gpu.modules, e.cpu.modules);
-            }
-        }
-        auto rate = [](const BackendResult& r) {
-            return r.ok() ? fmt::format("{:.3g} modules/s", r.modulesPerSecond) : r.status;
-        };
-        progress(fmt::format("{} x{}: CPU {}, GPU {}", e.name, e.plants, rate(e.cpu), rate(e.gpu)));
-        report.entries.push_back(std::move(e));
+        report.entries.push_back(runEntry(entry, *loaded, options, context.get(), target, report, progress));
     }
     if (report.scaledDown) {
         report.notes.push_back(fmt::format(

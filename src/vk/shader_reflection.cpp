@@ -1,7 +1,9 @@
 #include "vk/shader_reflection.h"
 
 #include <algorithm>
+#include <array>
 #include <optional>
+#include <string>
 #include <unordered_map>
 
 #include <fmt/format.h>
@@ -67,6 +69,10 @@ struct Module {
     std::unordered_map<std::uint32_t, bool> bufferBlocks;
     std::unordered_map<std::uint32_t, std::unordered_map<std::uint32_t, std::uint32_t>> memberOffsets;
     std::optional<std::uint32_t> workgroupSizeBuiltIn;
+    // The first GLCompute entry point, its name and its LocalSize execution mode (LocalSizeId: constants' ids).
+    std::optional<std::uint32_t> entryId;
+    std::string entryPoint;
+    std::optional<std::array<std::uint32_t, 3>> localSize, localSizeIds;
 };
 
 std::uint32_t constant(const Module& m, std::uint32_t id) {
@@ -141,117 +147,127 @@ ShaderBinding texelBufferBinding(const Module& m, std::uint32_t id, const Type& 
     return binding;
 }
 
-} // namespace
+void decorate(Module& m, std::span<const std::uint32_t> ops) {
+    switch (ops[1]) {
+    case kDecorationBinding:
+        m.bindings[ops[0]] = ops[2];
+        break;
+    case kDecorationDescriptorSet:
+        m.sets[ops[0]] = ops[2];
+        break;
+    case kDecorationArrayStride:
+        m.arrayStrides[ops[0]] = ops[2];
+        break;
+    case kDecorationBufferBlock:
+        m.bufferBlocks[ops[0]] = true;
+        break;
+    case kDecorationBuiltIn:
+        if (ops[2] == kBuiltInWorkgroupSize) {
+            m.workgroupSizeBuiltIn = ops[0];
+        }
+        break;
+    default:
+        break;
+    }
+}
 
-ShaderReflection reflectComputeShader(std::span<const std::uint32_t> spirv) {
+// One instruction's part of the interface: entry point, execution mode, types, constants, variables, decorations.
+void readInstruction(Module& m, std::uint32_t opcode, std::span<const std::uint32_t> ops) {
+    switch (opcode) {
+    case OpEntryPoint:
+        if (!m.entryId && ops[0] == kExecutionModelGLCompute) {
+            m.entryId = ops[1];
+            m.entryPoint = reinterpret_cast<const char*>(&ops[2]);
+        }
+        break;
+    case OpExecutionMode:
+    case OpExecutionModeId:
+        if (m.entryId && ops[0] == *m.entryId && ops[1] == kExecutionModeLocalSize) {
+            m.localSize = std::array<std::uint32_t, 3>{ops[2], ops[3], ops[4]};
+        } else if (m.entryId && ops[0] == *m.entryId && ops[1] == kExecutionModeLocalSizeId) {
+            m.localSizeIds = std::array<std::uint32_t, 3>{ops[2], ops[3], ops[4]};
+        }
+        break;
+    case OpTypeBool:
+    case OpTypeInt:
+    case OpTypeFloat:
+    case OpTypeVector:
+    case OpTypeMatrix:
+    case OpTypeArray:
+    case OpTypeRuntimeArray:
+    case OpTypeStruct:
+    case OpTypePointer:
+    case OpTypeImage:
+    case OpTypeSampledImage:
+        m.types[ops[0]] = Type{opcode, std::vector<std::uint32_t>(ops.begin() + 1, ops.end())};
+        break;
+    case OpConstant:
+    case OpSpecConstant:
+        // Specialization constants keep their default here: simeco's kernels do not specialise sizes.
+        m.constants[ops[1]] = ops[2];
+        break;
+    case OpConstantComposite:
+        m.composites[ops[1]] = std::vector<std::uint32_t>(ops.begin() + 2, ops.end());
+        break;
+    case OpVariable:
+        m.variables[ops[1]] = Variable{ops[0], ops[2]};
+        break;
+    case OpDecorate:
+        decorate(m, ops);
+        break;
+    case OpMemberDecorate:
+        if (ops[2] == kDecorationOffset) {
+            m.memberOffsets[ops[0]][ops[1]] = ops[3];
+        }
+        break;
+    default:
+        break;
+    }
+}
+
+Module readModule(std::span<const std::uint32_t> spirv) {
     if (spirv.size() < 5 || spirv[0] != kMagic) {
         throw ShaderInterfaceError("not a SPIR-V module (bad magic number)");
     }
     Module m;
-    ShaderReflection reflection;
-    std::optional<std::uint32_t> entryId;
-    std::array<std::uint32_t, 3> localSizeIds{};
-    bool localSizeFromIds = false;
-
     for (std::size_t at = 5; at < spirv.size();) {
         std::uint32_t wordCount = spirv[at] >> 16;
         std::uint32_t opcode = spirv[at] & 0xffff;
         if (wordCount == 0 || at + wordCount > spirv.size()) {
             throw ShaderInterfaceError(fmt::format("SPIR-V: malformed instruction at word {}", at));
         }
-        std::span<const std::uint32_t> ops = spirv.subspan(at + 1, wordCount - 1);
-        switch (opcode) {
-        case OpEntryPoint:
-            if (!entryId && ops[0] == kExecutionModelGLCompute) {
-                entryId = ops[1];
-                reflection.entryPoint = reinterpret_cast<const char*>(&ops[2]);
-            }
-            break;
-        case OpExecutionMode:
-        case OpExecutionModeId:
-            if (entryId && ops[0] == *entryId && ops[1] == kExecutionModeLocalSize) {
-                reflection.localSize = {ops[2], ops[3], ops[4]};
-            } else if (entryId && ops[0] == *entryId && ops[1] == kExecutionModeLocalSizeId) {
-                localSizeIds = {ops[2], ops[3], ops[4]};
-                localSizeFromIds = true;
-            }
-            break;
-        case OpTypeBool:
-        case OpTypeInt:
-        case OpTypeFloat:
-        case OpTypeVector:
-        case OpTypeMatrix:
-        case OpTypeArray:
-        case OpTypeRuntimeArray:
-        case OpTypeStruct:
-        case OpTypePointer:
-        case OpTypeImage:
-        case OpTypeSampledImage:
-            m.types[ops[0]] = Type{opcode, std::vector<std::uint32_t>(ops.begin() + 1, ops.end())};
-            break;
-        case OpConstant:
-        case OpSpecConstant:
-            // Specialization constants keep their default here: simeco's kernels do not specialise sizes.
-            m.constants[ops[1]] = ops[2];
-            break;
-        case OpConstantComposite:
-            m.composites[ops[1]] = std::vector<std::uint32_t>(ops.begin() + 2, ops.end());
-            break;
-        case OpVariable:
-            m.variables[ops[1]] = Variable{ops[0], ops[2]};
-            break;
-        case OpDecorate:
-            switch (ops[1]) {
-            case kDecorationBinding:
-                m.bindings[ops[0]] = ops[2];
-                break;
-            case kDecorationDescriptorSet:
-                m.sets[ops[0]] = ops[2];
-                break;
-            case kDecorationArrayStride:
-                m.arrayStrides[ops[0]] = ops[2];
-                break;
-            case kDecorationBufferBlock:
-                m.bufferBlocks[ops[0]] = true;
-                break;
-            case kDecorationBuiltIn:
-                if (ops[2] == kBuiltInWorkgroupSize) {
-                    m.workgroupSizeBuiltIn = ops[0];
-                }
-                break;
-            default:
-                break;
-            }
-            break;
-        case OpMemberDecorate:
-            if (ops[2] == kDecorationOffset) {
-                m.memberOffsets[ops[0]][ops[1]] = ops[3];
-            }
-            break;
-        default:
-            break;
-        }
+        readInstruction(m, opcode, spirv.subspan(at + 1, wordCount - 1));
         at += wordCount;
     }
-
-    if (!entryId) {
+    if (!m.entryId) {
         throw ShaderInterfaceError("SPIR-V module has no GLCompute entry point");
     }
-    // Precedence as in the Vulkan spec: a WorkgroupSize built-in overrides the execution mode.
+    return m;
+}
+
+// Precedence as in the Vulkan spec: a WorkgroupSize built-in overrides the execution mode.
+std::array<std::uint32_t, 3> localSizeOf(const Module& m) {
+    std::array<std::uint32_t, 3> size{1, 1, 1};
     if (m.workgroupSizeBuiltIn) {
         auto it = m.composites.find(*m.workgroupSizeBuiltIn);
         if (it == m.composites.end() || it->second.size() != 3) {
             throw ShaderInterfaceError("SPIR-V: WorkgroupSize built-in is not a 3-component constant");
         }
         for (int i = 0; i < 3; ++i) {
-            reflection.localSize[i] = constant(m, it->second[i]);
+            size[i] = constant(m, it->second[i]);
         }
-    } else if (localSizeFromIds) {
+    } else if (m.localSizeIds) {
         for (int i = 0; i < 3; ++i) {
-            reflection.localSize[i] = constant(m, localSizeIds[i]);
+            size[i] = constant(m, (*m.localSizeIds)[i]);
         }
+    } else if (m.localSize) {
+        size = *m.localSize;
     }
+    return size;
+}
 
+// The descriptors the kernel binds, by set and binding, and the size of its push-constant block.
+void readInterface(const Module& m, ShaderReflection& reflection) {
     for (const auto& [id, variable] : m.variables) {
         const Type& pointer = type(m, variable.pointerType);
         std::uint32_t pointee = pointer.operands.at(1);
@@ -281,6 +297,16 @@ ShaderReflection reflectComputeShader(std::span<const std::uint32_t> spirv) {
     std::sort(reflection.bindings.begin(), reflection.bindings.end(), [](const ShaderBinding& a, const ShaderBinding& b) {
         return a.set != b.set ? a.set < b.set : a.binding < b.binding;
     });
+}
+
+} // namespace
+
+ShaderReflection reflectComputeShader(std::span<const std::uint32_t> spirv) {
+    Module m = readModule(spirv);
+    ShaderReflection reflection;
+    reflection.entryPoint = m.entryPoint;
+    reflection.localSize = localSizeOf(m);
+    readInterface(m, reflection);
     return reflection;
 }
 

@@ -28,6 +28,61 @@ vk::UniqueShaderModule shaderModule(VkDevice device, std::string_view name) {
     return vk::UniqueShaderModule(device, module);
 }
 
+// The base pass writes depth; shadow volumes count their faces in the stencil (Carmack's reverse); the sun's pass
+// lights the surfaces in front of the base pass's depth whose stencil count is zero.
+VkPipelineDepthStencilStateCreateInfo depthStencilState(PassKind pass) {
+    VkPipelineDepthStencilStateCreateInfo depth{};
+    depth.sType = VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO;
+    depth.depthTestEnable = VK_TRUE;
+    depth.depthWriteEnable = pass == PassKind::Base ? VK_TRUE : VK_FALSE;
+    depth.depthCompareOp = pass == PassKind::Sun ? VK_COMPARE_OP_EQUAL : VK_COMPARE_OP_LESS;
+    if (pass == PassKind::Volume) {
+        // Carmack's reverse: count the volume faces behind the visible surface, back faces up, front faces down.
+        depth.stencilTestEnable = VK_TRUE;
+        depth.front = {VK_STENCIL_OP_KEEP,
+                       VK_STENCIL_OP_KEEP,
+                       VK_STENCIL_OP_DECREMENT_AND_WRAP,
+                       VK_COMPARE_OP_ALWAYS,
+                       0xFF,
+                       0xFF,
+                       0};
+        depth.back = {VK_STENCIL_OP_KEEP,
+                      VK_STENCIL_OP_KEEP,
+                      VK_STENCIL_OP_INCREMENT_AND_WRAP,
+                      VK_COMPARE_OP_ALWAYS,
+                      0xFF,
+                      0xFF,
+                      0};
+    } else if (pass == PassKind::Sun) {
+        depth.stencilTestEnable = VK_TRUE;
+        depth.front = {VK_STENCIL_OP_KEEP, VK_STENCIL_OP_KEEP, VK_STENCIL_OP_KEEP, VK_COMPARE_OP_EQUAL, 0xFF, 0, 0};
+        depth.back = depth.front;
+    }
+    return depth;
+}
+
+// The base pass writes its three colour attachments; volumes write none; the sun's pass adds its light to the first.
+std::array<VkPipelineColorBlendAttachmentState, 3> colorBlendAttachments(PassKind pass) {
+    const VkColorComponentFlags all =
+        VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
+    std::array<VkPipelineColorBlendAttachmentState, 3> blend{};
+    for (VkPipelineColorBlendAttachmentState& b : blend) {
+        b.colorWriteMask = pass == PassKind::Base ? all : 0;
+    }
+    if (pass == PassKind::Sun) {
+        VkPipelineColorBlendAttachmentState& add = blend[0];
+        add.blendEnable = VK_TRUE;
+        add.srcColorBlendFactor = VK_BLEND_FACTOR_ONE;
+        add.dstColorBlendFactor = VK_BLEND_FACTOR_ONE;
+        add.colorBlendOp = VK_BLEND_OP_ADD;
+        add.srcAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
+        add.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
+        add.alphaBlendOp = VK_BLEND_OP_ADD;
+        add.colorWriteMask = all;
+    }
+    return blend;
+}
+
 vk::UniquePipeline createPipeline(VkDevice device, VkPipelineLayout layout, VkRenderPass renderPass, PassKind pass,
                                   Culling culling) {
     bool volume = pass == PassKind::Volume;
@@ -84,51 +139,8 @@ vk::UniquePipeline createPipeline(VkDevice device, VkPipelineLayout layout, VkRe
     multisample.sType = VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO;
     multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
 
-    VkPipelineDepthStencilStateCreateInfo depth{};
-    depth.sType = VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO;
-    depth.depthTestEnable = VK_TRUE;
-    depth.depthWriteEnable = pass == PassKind::Base ? VK_TRUE : VK_FALSE;
-    depth.depthCompareOp = pass == PassKind::Sun ? VK_COMPARE_OP_EQUAL : VK_COMPARE_OP_LESS;
-    if (volume) {
-        // Carmack's reverse: count the volume faces behind the visible surface, back faces up, front faces down.
-        depth.stencilTestEnable = VK_TRUE;
-        depth.front = {VK_STENCIL_OP_KEEP,
-                       VK_STENCIL_OP_KEEP,
-                       VK_STENCIL_OP_DECREMENT_AND_WRAP,
-                       VK_COMPARE_OP_ALWAYS,
-                       0xFF,
-                       0xFF,
-                       0};
-        depth.back = {VK_STENCIL_OP_KEEP,
-                      VK_STENCIL_OP_KEEP,
-                      VK_STENCIL_OP_INCREMENT_AND_WRAP,
-                      VK_COMPARE_OP_ALWAYS,
-                      0xFF,
-                      0xFF,
-                      0};
-    } else if (pass == PassKind::Sun) {
-        depth.stencilTestEnable = VK_TRUE;
-        depth.front = {VK_STENCIL_OP_KEEP, VK_STENCIL_OP_KEEP, VK_STENCIL_OP_KEEP, VK_COMPARE_OP_EQUAL, 0xFF, 0, 0};
-        depth.back = depth.front;
-    }
-
-    const VkColorComponentFlags all =
-        VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
-    std::array<VkPipelineColorBlendAttachmentState, 3> blend{};
-    for (VkPipelineColorBlendAttachmentState& b : blend) {
-        b.colorWriteMask = pass == PassKind::Base ? all : 0;
-    }
-    if (pass == PassKind::Sun) {
-        VkPipelineColorBlendAttachmentState& add = blend[0];
-        add.blendEnable = VK_TRUE;
-        add.srcColorBlendFactor = VK_BLEND_FACTOR_ONE;
-        add.dstColorBlendFactor = VK_BLEND_FACTOR_ONE;
-        add.colorBlendOp = VK_BLEND_OP_ADD;
-        add.srcAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
-        add.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
-        add.alphaBlendOp = VK_BLEND_OP_ADD;
-        add.colorWriteMask = all;
-    }
+    VkPipelineDepthStencilStateCreateInfo depth = depthStencilState(pass);
+    std::array<VkPipelineColorBlendAttachmentState, 3> blend = colorBlendAttachments(pass);
     VkPipelineColorBlendStateCreateInfo colorBlend{};
     colorBlend.sType = VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO;
     colorBlend.attachmentCount = static_cast<std::uint32_t>(blend.size());

@@ -3,6 +3,7 @@
 #include <cctype>
 #include <cstdlib>
 #include <cstring>
+#include <limits>
 
 #include <fmt/format.h>
 
@@ -106,6 +107,10 @@ private:
         t.kind = EcoTokenKind::Number;
         t.text = text_.substr(start, pos_ - start);
         t.number = std::strtod(t.text.c_str(), nullptr);
+        // Scene values are floats: a larger number would become infinite and reach the geometry.
+        if (!(t.number <= std::numeric_limits<float>::max()))
+            fail(start, fmt::format("number '{}' is beyond the largest a scene holds ({:g})", t.text,
+                                    std::numeric_limits<float>::max()));
     }
 
     // Names may hold any character but a quote or a line break (model files have Chinese names).

@@ -464,6 +464,8 @@ TEST(EcoParser, MalformedScriptsReportLineAndColumn) {
          "expected ';'"},
         {"bad number", "EcoSystem 1.0 \"t\" {\n  DayLight = 1.2.3;\n}\n", 2, 14, "bad number '1.2.3'"},
         {"number with a letter", "EcoSystem 1.0 \"t\" {\n  DayLight = 12h;\n}\n", 2, 14, "bad number '12h'"},
+        {"number beyond a float", "EcoSystem 1.0 \"t\" {\n  DayLight = 1e39;\n}\n", 2, 14,
+         "number '1e39' is beyond the largest a scene holds (3.40282e+38)"},
         {"missing '}' of the ecosystem", "EcoSystem 1.0 \"t\" {\n  SoilPH = 7.0;\n", 3, 1, "missing '}'"},
         {"missing '}' of a stage", withStem("      Stage 1 { GrowRate = 0.1;\n      Stage 2 { }"), 5, 7,
          "missing '}' closing Stem Stage 1"},

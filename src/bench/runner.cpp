@@ -319,7 +319,8 @@ EntryResult runEntry(const SuiteEntry& entry, const LoadedGrammar& l, const Benc
         }
         if (e.gpu.ok() && e.cpu.ok() && e.gpu.modules != e.cpu.modules) {
             e.gpu.status = "failed";
-            e.gpu.reason = fmt::format("the GPU derived {} modules, the CPU reference {}", e.gpu.modules, e.cpu.modules);
+            e.gpu.reason =
+                fmt::format("the GPU derived {} modules, the CPU reference {}", e.gpu.modules, e.cpu.modules);
         }
     }
     auto rate = [](const BackendResult& r) {

@@ -49,7 +49,8 @@ public:
     std::string expr(const ir::Expr& e) {
         using ir::Op;
         switch (e.op) {
-        case Op::Const: return isHoisted(e) ? define(fmt::format("hoisted(plant, {}u)", hoistedIndex(e))) : literal(e.value);
+        case Op::Const:
+            return isHoisted(e) ? define(fmt::format("hoisted(plant, {}u)", hoistedIndex(e))) : literal(e.value);
         case Op::Local: return fmt::format("v{}", e.slot);
         case Op::Global: return fmt::format("globals[globalBase + {}u]", e.slot);
         case Op::ArrayElem: return arrayElement(e);

@@ -261,6 +261,15 @@ std::string examineModule(const ir::Grammar& g, size_t sp, const FrameLayout& fr
            selection(g.productions, sp, RuleKind::Step, frames.step[sp]);
 }
 
+// The chosen production applied: its successor goes to the first level of the decomposition stack (`toStack`)
+// or straight to the output. Leaves `produced`, inside `if (chosen != 0u) {`.
+std::string applyChosen(const ir::Grammar& g, size_t sp, const FrameLayout& frames, bool toStack) {
+    return std::string("        if (chosen != 0u) {\n") +
+           (toStack ? "            gToStack = true;\n            gBase = levelBase(0u);\n"
+                    : "            gToStack = false;\n            gBase = next;\n") +
+           produce(g.productions, sp, RuleKind::Step, frames.step[sp]);
+}
+
 // The end of a turn for a module that nothing rewrites: a cut skips the rest of its branch, else it is copied.
 // `decomposes`: the cut restores the count of modules examined, which the decomposition of module i advanced.
 std::string copyModule(bool decomposes) {
@@ -288,11 +297,7 @@ std::string deriveFunction(const ir::Grammar& g, size_t sp, const FrameLayout& f
     if (!decomposes) {
         s += "    while (i < pEnd && !gAbort && gWork < pc.chunk) {\n"
              "        uint sym, count;\n";
-        s += examineModule(g, sp, frames);
-        s += "        if (chosen != 0u) {\n"
-             "            gToStack = false;\n"
-             "            gBase = next;\n";
-        s += produce(g.productions, sp, RuleKind::Step, frames.step[sp]);
+        s += examineModule(g, sp, frames) + applyChosen(g, sp, frames, false);
         s += "            advanceOutput(next, produced);\n"
              "            i += length;\n"
              "            continue;\n"
@@ -316,12 +321,7 @@ std::string deriveFunction(const ir::Grammar& g, size_t sp, const FrameLayout& f
          "            decomposeLeft = int(pendingFirst) - 1;\n"
          "            decomposeRight = i;\n"
          "        } else {\n";
-    s += examineModule(g, sp, frames);
-    s += "        decomposeLeft = int(i) - 1;\n"
-         "        if (chosen != 0u) {\n"
-         "            gToStack = true;\n"
-         "            gBase = levelBase(0u);\n";
-    s += produce(g.productions, sp, RuleKind::Step, frames.step[sp]);
+    s += examineModule(g, sp, frames) + "        decomposeLeft = int(i) - 1;\n" + applyChosen(g, sp, frames, true);
     s += "            stackState[levelCountAt(0u)] = produced;\n"
          "            decomposeRight = i + length;\n"
          "            advance = length;\n"

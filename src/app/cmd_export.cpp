@@ -15,7 +15,6 @@
 #include "export/gltf_writer.h"
 #include "export/mesh_writers.h"
 #include "export/organ_geometry.h"
-#include "turtle/finite_organs.h"
 #include "vk/context.h"
 
 namespace simeco::app {
@@ -39,9 +38,6 @@ void runExport(const ExportArgs& args) {
     field::Field field = field::deriveField(source, context.get());
     turtle::Interpretation interp = field::interpretOnHost(source, field, context.get());
     if (interp.organs.empty()) throw std::runtime_error(fmt::format("{}: the plants draw nothing", source.file));
-    for (const shared::OrganInstance& o : interp.organs)
-        if (!turtle::organIsFinite(o))
-            throw turtle::nonFiniteOrganError(fmt::format("plant {}, module {}", o.plant, o.module));
 
     exporter::OrganMeshSet meshes(draw::buildOrganMeshes());
     std::string counts;

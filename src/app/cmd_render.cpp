@@ -10,13 +10,9 @@
 #include "app/commands.h"
 #include "app/error_report.h"
 #include "app/field_options.h"
-#include "compute/shared/organ_layout.h"
-#include "draw/bounds.h"
 #include "draw/image_writers.h"
 #include "draw/renderer.h"
-#include "turtle/finite_organs.h"
 #include "turtle/turtle_gpu.h"
-#include "vk/buffer.h"
 #include "vk/context.h"
 
 namespace simeco::app {
@@ -76,16 +72,11 @@ void runRender(const RenderArgs& args) {
     auto start = std::chrono::steady_clock::now();
     field::Field field = field::deriveField(source, &context);
     const turtle::DeviceOrgans& organs = field::interpretOnDevice(source, field, context);
-    // Only the table (counts and bounds) comes back, for framing; the instances stay on the device.
-    shared::OrganTable table = vk::downloadVector<shared::OrganTable>(context, organs.table, 1)[0];
-    uint32_t organCount = 0;
-    for (uint32_t k = 0; k < shared::kOrganKinds; ++k) organCount += table.count[k];
-    if (organCount == 0) throw std::runtime_error(fmt::format("{}: the plants draw nothing", source.file));
-    draw::Bounds bounds = draw::decodeBounds(table);
-    if (!bounds.finite()) throw turtle::nonFiniteOrganError();
+    field::OrganExtent extent = field::organExtent(context, organs);
+    if (extent.organs == 0) throw std::runtime_error(fmt::format("{}: the plants draw nothing", source.file));
 
     draw::Renderer renderer(context);
-    draw::Frame frame = renderer.render(organs.instances, organs.table, bounds, settings);
+    draw::Frame frame = renderer.render(organs.instances, organs.table, extent.bounds, settings);
     // Both files appear, or neither.
     draw::OutputBatch outputs;
     if (exr) draw::writeExr(outputs, args.output, frame);
@@ -94,7 +85,7 @@ void runRender(const RenderArgs& args) {
     outputs.commit();
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::printf("%s: %zu plants, %zu modules, %zu organs, %ux%u, %.2f s -> %s%s%s\n", source.file.c_str(),
-                size_t(field.plants), size_t(field.modules), size_t(organCount), settings.width, settings.height, seconds,
+                size_t(field.plants), size_t(field.modules), size_t(extent.organs), settings.width, settings.height, seconds,
                 args.output.c_str(), args.png.empty() ? "" : ", ", args.png.c_str());
 }
 

@@ -8,16 +8,14 @@
 
 #include "bench/suite.h"
 #include "bench/timing.h"
-#include "compute/shared/organ_layout.h"
 #include "compute/shared/turtle_state_layout.h"
 #include "cpu/derive.h"
-#include "draw/bounds.h"
 #include "draw/renderer.h"
+#include "field/field.h"
 #include "ir/source_loc.h"
 #include "lang/load_grammar.h"
 #include "turtle/turtle_cpu.h"
 #include "turtle/turtle_gpu.h"
-#include "vk/buffer.h"
 #include "vk/context.h"
 #include "vk/device_info.h"
 
@@ -106,8 +104,8 @@ RenderBenchReport runRenderBenchmark(const RenderBenchOptions& options,
             const turtle::DeviceOrgans& organs = *written;
             e.levels = gpuTurtle.lastLevels();
             e.bytesMoved = gpuTurtle.lastBytesMoved();
-            shared::OrganTable table = vk::downloadVector<shared::OrganTable>(context, organs.table, 1)[0];
-            for (std::uint32_t k = 0; k < shared::kOrganKinds; ++k) e.organs += table.count[k];
+            field::OrganExtent extent = field::organExtent(context, organs);
+            e.organs = extent.organs;
             if (e.gpuTurtle.medianSeconds > 0) {
                 e.gpuTurtle.instancesPerSecond = double(e.organs) / e.gpuTurtle.medianSeconds;
                 if (report.copy && report.copy->bytesPerSecond > 0)
@@ -116,14 +114,13 @@ RenderBenchReport runRenderBenchmark(const RenderBenchOptions& options,
             if (options.runCpu)
                 e.cpuTurtle = timed(options, e.organs, [&] { turtle::interpretCpu(string, commands, species, {}); });
 
-            draw::Bounds bounds = draw::decodeBounds(table);
             draw::RenderSettings settings;
             settings.width = options.width;
             settings.height = options.height;
             for (draw::Shadows shadows : {draw::Shadows::Volume, draw::Shadows::None}) {
                 settings.shadows = shadows;
                 Timed t = timed(options, e.organs,
-                                [&] { renderer.render(organs.instances, organs.table, bounds, settings); });
+                                [&] { renderer.render(organs.instances, organs.table, extent.bounds, settings); });
                 (shadows == draw::Shadows::Volume ? e.frameWithShadows : e.frameWithoutShadows) = t;
             }
         } catch (const std::exception& error) {

@@ -3,11 +3,15 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include <fmt/format.h>
+
 #include "cpu/derive.h"
 #include "gpu/derive_gpu.h"
 #include "ir/species.h"
 #include "lang/load_grammar.h"
+#include "turtle/finite_organs.h"
 #include "turtle/turtle_cpu.h"
+#include "vk/buffer.h"
 #include "vk/context.h"
 
 namespace simeco::field {
@@ -87,10 +91,23 @@ const turtle::DeviceOrgans& interpretOnDevice(const FieldSource& source, Field& 
 }
 
 turtle::Interpretation interpretOnHost(const FieldSource& source, Field& field, const vk::Context* context) {
-    if (!source.onDevice() || !context)
-        return turtle::interpretCpu(field.string, field.commands, field.turtles, field.options);
-    const turtle::DeviceOrgans& organs = interpretOnDevice(source, field, *context);
-    return turtle::readBack(*context, organs, field.plants);
+    turtle::Interpretation interpretation =
+        !source.onDevice() || !context
+            ? turtle::interpretCpu(field.string, field.commands, field.turtles, field.options)
+            : turtle::readBack(*context, interpretOnDevice(source, field, *context), field.plants);
+    for (const shared::OrganInstance& o : interpretation.organs)
+        if (!turtle::organIsFinite(o))
+            throw turtle::nonFiniteOrganError(fmt::format("plant {}, module {}", o.plant, o.module));
+    return interpretation;
+}
+
+OrganExtent organExtent(const vk::Context& context, const turtle::DeviceOrgans& organs) {
+    shared::OrganTable table = vk::downloadVector<shared::OrganTable>(context, organs.table, 1)[0];
+    OrganExtent extent;
+    for (uint32_t k = 0; k < shared::kOrganKinds; ++k) extent.organs += table.count[k];
+    extent.bounds = draw::decodeBounds(table);
+    if (extent.organs > 0 && !extent.bounds.finite()) throw turtle::nonFiniteOrganError();
+    return extent;
 }
 
 } // namespace simeco::field

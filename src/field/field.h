@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "draw/bounds.h"
 #include "field/backend.h"
 #include "gpu/derive_gpu.h"
 #include "ir/grammar.h"
@@ -70,8 +71,17 @@ Field deriveField(const FieldSource& source, const vk::Context* context);
 // turtle and uploaded. They are the field's, valid until its next interpretation.
 const turtle::DeviceOrgans& interpretOnDevice(const FieldSource& source, Field& field, const vk::Context& context);
 
-// The field's organs on the host: the turtle kernels' read back, or the reference turtle's.
+// The field's organs on the host: the turtle kernels' read back, or the reference turtle's. Refuses organs whose
+// values are not all finite numbers (turtle/finite_organs.h), naming the plant and module.
 turtle::Interpretation interpretOnHost(const FieldSource& source, Field& field, const vk::Context* context);
+
+// How many organs the device's organ table counts, and their bounds, read back for framing: the instances stay on
+// the device. Refuses organs whose values are not all finite numbers, which make the bounds infinite.
+struct OrganExtent {
+    uint32_t organs = 0;
+    draw::Bounds bounds;
+};
+OrganExtent organExtent(const vk::Context& context, const turtle::DeviceOrgans& organs);
 
 // A Vulkan context for the GPU backend (null for the CPU backend, which needs no device).
 std::unique_ptr<vk::Context> contextFor(const FieldSource& source);

@@ -197,8 +197,8 @@ DrawPipelines::DrawPipelines(const vk::Context& context, VkRenderPass renderPass
 void DrawPipelines::pushDescriptors(VkCommandBuffer cmd, const vk::Buffer& instances,
                                     const vk::Buffer& frameConstants) const {
     std::array<VkDescriptorBufferInfo, 2> infos{{
-        {instances.handle(), 0, VK_WHOLE_SIZE},
-        {frameConstants.handle(), 0, VK_WHOLE_SIZE},
+        {instances.handle(), 0, instances.bindingRange()},
+        {frameConstants.handle(), 0, frameConstants.bindingRange()},
     }};
     std::array<VkWriteDescriptorSet, 2> writes{};
     for (std::uint32_t i = 0; i < writes.size(); ++i) {

@@ -1,5 +1,6 @@
 #include "vk/buffer.h"
 
+#include <bit>
 #include <cstring>
 
 #include <fmt/format.h>
@@ -37,8 +38,13 @@ Buffer::Buffer(const Context& context, VkDeviceSize size, MemoryUsage usage, VkB
     VkDevice device = device_;
     VkBufferCreateInfo info{};
     info.sType = VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO;
-    // Zero-sized buffers are invalid in Vulkan; an empty input still gets a bindable buffer.
-    info.size = size > 0 ? size : 4;
+    // Zero-sized buffers are invalid in Vulkan; an empty input still gets a bindable buffer. Never a power of two
+    // bytes: lavapipe compiles a kernel once for each combination of its texel buffers being powers of two in size
+    // or not, so a buffer that grew from a power of two to another size made every large generated kernel that reads
+    // it compile again (ten seconds and more each). size() stays the size asked for.
+    info.size = std::max<VkDeviceSize>(size, 4);
+    while (std::has_single_bit(info.size)) info.size += 16; // a multiple of every texel's size
+
     info.usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT |
                  VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT | extraUsage;
     info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;

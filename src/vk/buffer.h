@@ -33,6 +33,9 @@ public:
 
     VkBuffer handle() const { return buffer_.get(); }
     VkDeviceSize size() const { return size_; }
+    // What a binding of the whole buffer covers: the size asked for, which its allocation exceeds a little (never a
+    // power of two, see the constructor); VK_WHOLE_SIZE for an empty buffer.
+    VkDeviceSize bindingRange() const { return size_ > 0 ? size_ : VK_WHOLE_SIZE; }
     explicit operator bool() const { return static_cast<bool>(buffer_); }
 
     // The persistent mapping of an Upload or Readback buffer; nullptr for DeviceLocal.

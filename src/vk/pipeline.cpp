@@ -141,7 +141,10 @@ void ComputePipeline::dispatchBytes(VkCommandBuffer cmd, std::span<const BufferR
     std::vector<VkBufferView> views(buffers.size(), VK_NULL_HANDLE);
     std::vector<VkWriteDescriptorSet> writes(buffers.size());
     for (std::size_t i = 0; i < buffers.size(); ++i) {
-        infos[i] = {buffers[i].buffer, buffers[i].offset, buffers[i].size};
+        VkDeviceSize bytes = buffers[i].size;
+        if (bytes == VK_WHOLE_SIZE && buffers[i].source && buffers[i].source->size() > buffers[i].offset)
+            bytes = buffers[i].source->bindingRange() - buffers[i].offset;
+        infos[i] = {buffers[i].buffer, buffers[i].offset, bytes};
         writes[i].sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
         writes[i].dstBinding = static_cast<std::uint32_t>(i);
         writes[i].descriptorCount = 1;

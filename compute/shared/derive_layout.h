@@ -46,6 +46,10 @@ struct DerivePush {
     uint dispatch;     // sequential kernel: the dispatch's index in its pass (0 starts the plants)
     uint loopProbeTrips; // kLoopProbeTrips (derive_lib.glsl's reportLoopsCut())
     uint loopProbeCounts[kLoopProbeCounts]; // {1, 2, 3, 4}: the probe loop's count after each trip
+    // A step's match pass: some plant is frozen, so the modules of frozen plants are copied. A flag rather than a
+    // specialisation: a second variant of a large match kernel cost the driver a second compilation as long as
+    // the first, in every field whose species derive different lengths.
+    uint frozenPlants;
 };
 
 // plantFrozen values: the host freezes a plant that stopped or finished its derivation length; a production
@@ -80,7 +84,7 @@ struct DeriveHelperPush {
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(DerivePush) == 80);
+static_assert(sizeof(DerivePush) == 84);
 static_assert(kLoopProbeTrips < kLoopProbeCounts);
 static_assert(sizeof(DeriveHelperPush) == 16);
 #endif

@@ -178,27 +178,24 @@ std::string recordChoice(bool returnsCount = false, bool recordsDraws = true, bo
            (recordsDraws ? "    drawStarts[i] = start;\n" : "") + (returnsCount ? "    return produced;\n}\n" : "}\n");
 }
 
-// The specialization constants of a step's match and write kernels. The host specialises kSinglePlant when the
+// The specialization constant of a step's match and write kernels. The host specialises kSinglePlant when the
 // stream holds one plant, which is then the whole stream: no lookup at all.
-std::string stepSpecializations(bool match) {
-    return std::string(match ? "layout(constant_id = 0) const bool kFrozenPlants = false;\n" : "") +
-           "layout(constant_id = 1) const bool kSinglePlant = false;\n\n";
-}
+std::string stepSpecializations() { return "layout(constant_id = 1) const bool kSinglePlant = false;\n\n"; }
 
 // Module i's plant and where the plant's string begins and ends, in a step's passes: looked up only when its
 // productions read them (codegen::plantInputs), since each lookup is a search and several loads per module.
-// `frozenCheck`: a match pass, which copies the modules of frozen plants when kFrozenPlants is specialised true
-// (the host does so only while some plant is frozen).
+// `frozenCheck`: a match pass, which copies the modules of frozen plants while the host says some plant is frozen
+// (pc.frozenPlants).
 std::string stepPlantLookup(const codegen::PlantInputs& in, bool frozenCheck, bool packsChoice) {
     std::string frozen = std::string("        if (plantFrozen[plant] == kPlantFrozen) { ") +
                          (packsChoice ? "matchedChoice" : "choices[i]") + " = kChoiceCopy; return 1u; }\n";
     std::string s;
     if (in.plant) {
         s += "    uint plant = kSinglePlant ? 0u : plantOf(i);\n";
-        if (frozenCheck) s += "    if (kFrozenPlants) {\n" + frozen + "    }\n";
+        if (frozenCheck) s += "    if (pc.frozenPlants != 0u) {\n" + frozen + "    }\n";
     } else {
         s += "    uint plant = 0u;\n";
-        if (frozenCheck) s += "    if (kFrozenPlants) {\n        plant = kSinglePlant ? 0u : plantOf(i);\n" + frozen + "    }\n";
+        if (frozenCheck) s += "    if (pc.frozenPlants != 0u) {\n        plant = kSinglePlant ? 0u : plantOf(i);\n" + frozen + "    }\n";
     }
     s += "    uint species = speciesOf(plant);\n";
     s += in.bounds ? "    uint pBegin = kSinglePlant ? 0u : plantStartAt(plant);\n"
@@ -379,7 +376,7 @@ std::string stepMatchKernel(const DerivePlan& plan, const GeneratedKernels& k) {
     OwnParameters own = ownParameters(plan.paramVector, plan.predecessorParams, k.matchReadsParameterVectors);
     s += own.declare + findPlant("plantStart", "plantOf");
     if (!k.chunkedMatch) s += codegen::contextPrefetchCode(plan.species, RuleKind::Step, false);
-    s += plan.stepFunctions + stepSpecializations(true);
+    s += plan.stepFunctions + stepSpecializations();
     if (k.fusedScan || plan.givesAlternatives) s += plan.choiceBits;
     if (k.fusedScan) s += plan.tileOf;
     if (k.fusedScan) s += "uint matchedChoice = kChoiceCopy; // packed with the counts by main()\n";
@@ -387,7 +384,7 @@ std::string stepMatchKernel(const DerivePlan& plan, const GeneratedKernels& k) {
         // Module i with its word, plant and bounds as context_chunks.glsl found them, and the first context
         // modules it left in firstRight...
         s += "uint matchChunkModule(uint i, uint word, uint plant, uint pBegin, uint pEnd) {\n"
-             "    if (kFrozenPlants) {\n"
+             "    if (pc.frozenPlants != 0u) {\n"
              "        if (plantFrozen[plant] == kPlantFrozen) { matchedChoice = kChoiceCopy; return 1u; }\n"
              "    }\n"
              "    uint species = speciesOf(plant);\n"
@@ -449,7 +446,7 @@ std::string stepWriteKernel(const DerivePlan& plan, const GeneratedKernels& k) {
     // Every module's successor goes through the slots, a copied module's too, so that each output position
     // is stored once in the kernel's code: drivers that run every branch for the whole subgroup (lavapipe)
     // pay for the stores of all productions otherwise.
-    s += stepSpecializations(false) + "void writeModule(uint i, uint pos, uint choice) {\n";
+    s += stepSpecializations() + "void writeModule(uint i, uint pos, uint choice) {\n";
     s += "    if (choice == kChoiceDropped) return;\n"
          "    choice &= kSymbolMask;\n";
     if (plan.givesAlternatives)

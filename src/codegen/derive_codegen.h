@@ -50,7 +50,7 @@ struct GeneratedKernels {
     // asked and every module of some symbol walks (codegen::everyModuleOfASymbolWalks).
     bool chunkedMatch = false;
     // The step's match and write passes find each module's plant for their productions (codegen::plantInputs);
-    // otherwise only the match pass specialised for frozen plants (kFrozenPlants) does, and the plant hints are
+    // otherwise only the match pass does while some plant is frozen (pc.frozenPlants), and the plant hints are
     // needed only then. Both passes have a variant specialised for a stream of one plant (kSinglePlant), which
     // finds nothing.
     bool matchFindsPlants = false;

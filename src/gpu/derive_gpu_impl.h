@@ -58,13 +58,11 @@ struct GpuDeriver::Impl {
     uint32_t globalStride = 0, arrayStride = 0; // globals and array elements per plant (the most of any species)
     codegen::GeneratedKernels kernels;
     std::optional<vk::ComputePipeline> decompositionMatch, decompositionWrite, sequential;
-    // The step's match and write passes, specialised for what the step needs (stepMatch(), stepWrite()): to copy
-    // the modules of frozen plants (kFrozenPlants) and for a stream of one plant (kSinglePlant). Each variant is
-    // made the first time a step needs it: drivers compile a pipeline when it is made or first run, and a
-    // derivation needs one or two of them.
+    // The step's match and write passes, specialised for a stream of one plant (kSinglePlant) or not (stepMatch(),
+    // stepWrite()). Each variant is made the first time a step needs it: drivers compile a pipeline when it is
+    // made or first run, and a derivation needs one of them.
     std::vector<uint32_t> matchSpirv, writeSpirv;
-    std::map<std::pair<bool, bool>, vk::ComputePipeline> matchVariants; // by (frozen plants, single plant)
-    std::map<bool, vk::ComputePipeline> writeVariants;                  // by single plant
+    std::map<bool, vk::ComputePipeline> matchVariants, writeVariants; // by single plant
     bool anyFrozen = false; // some plant is frozen in the step being derived
     // The homomorphism, generated as the decomposition of grammars whose decomposition is their homomorphism;
     // empty when no species has one, or when its productions need the host (homomorphismHostReason).

@@ -205,6 +205,7 @@ void GpuDeriver::Impl::matchScanWrite(int cur, int outIndex, uint32_t stepIndex,
     uint32_t n = in.count;
     bool fused = kernels.fusedScan;
     DerivePush p = push(n, stepIndex, seed, stepIndex * shared::kPassesPerStep, n, 0);
+    p.frozenPlants = anyFrozen ? 1u : 0u;
     uint32_t total = submit(
         [&](VkCommandBuffer cmd) {
             vk::cmdFill(cmd, errors, 0);

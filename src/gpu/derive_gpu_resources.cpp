@@ -176,11 +176,10 @@ void GpuDeriver::Impl::ensureParticles(Stream& s) {
 
 const vk::ComputePipeline& GpuDeriver::Impl::stepMatch() {
     bool single = singlePlant(kernels.matchFindsPlants || anyFrozen);
-    auto key = std::make_pair(anyFrozen, single);
-    auto found = matchVariants.find(key);
+    auto found = matchVariants.find(single);
     if (found == matchVariants.end()) {
-        const uint32_t values[] = {anyFrozen ? VK_TRUE : VK_FALSE, single ? VK_TRUE : VK_FALSE};
-        found = matchVariants.emplace(key, vk::ComputePipeline(ctx, matchSpirv, "derive/match", values)).first;
+        const uint32_t values[] = {VK_FALSE, single ? VK_TRUE : VK_FALSE};
+        found = matchVariants.emplace(single, vk::ComputePipeline(ctx, matchSpirv, "derive/match", values)).first;
     }
     return found->second;
 }

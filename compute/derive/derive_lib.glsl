@@ -149,6 +149,10 @@ uint givenAlternative = 0u;
 // The first evaluation error of the pass wins; the host turns the code into a located message.
 void reportError(uint code) { atomicCompSwap(errors[0], 0u, code + 1u); }
 
+// A zero the compiler cannot see, for the literal zeros of products and quotients: Mesa 22.3 folds a double x * 0.0
+// to 0 even where the kernel asks to keep infinities and NaN, while inf * 0 is NaN on the CPU (and in cpfg).
+double opaqueZero() { return double(pc.zero); }
+
 // lavapipe ends every loop of an invocation once the invocation has run 65535 loop iterations in all, and the code
 // after a loop then runs as if the loop had ended by itself. A check after a loop cannot see that: the compiler
 // knows only the loop's own exits and folds the check away. So every generated main() whose loops may run long

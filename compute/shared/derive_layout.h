@@ -50,6 +50,7 @@ struct DerivePush {
     // specialisation: a second variant of a large match kernel cost the driver a second compilation as long as
     // the first, in every field whose species derive different lengths.
     uint frozenPlants;
+    uint zero; // always 0: the kernels' opaqueZero() (derive_lib.glsl)
 };
 
 // plantFrozen values: the host freezes a plant that stopped or finished its derivation length; a production
@@ -84,7 +85,7 @@ struct DeriveHelperPush {
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(DerivePush) == 84);
+static_assert(sizeof(DerivePush) == 88);
 static_assert(kLoopProbeTrips < kLoopProbeCounts);
 static_assert(sizeof(DeriveHelperPush) == 16);
 #endif

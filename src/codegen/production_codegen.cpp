@@ -57,15 +57,18 @@ public:
         case Op::Neg: return define(fmt::format("-{}", expr(e.args[0])));
         case Op::Not: return define(fmt::format("({} == 0.0LF ? 1.0LF : 0.0LF)", expr(e.args[0])));
         case Op::Add:
-        case Op::Sub:
-        case Op::Mul: {
+        case Op::Sub: {
             std::string a = expr(e.args[0]);
             std::string b = expr(e.args[1]);
-            const char* op = e.op == Op::Add ? "+" : e.op == Op::Sub ? "-" : "*";
-            return define(fmt::format("{} {} {}", a, op, b));
+            return define(fmt::format("{} {} {}", a, e.op == Op::Add ? "+" : "-", b));
+        }
+        case Op::Mul: {
+            std::string a = factor(e.args[0]);
+            std::string b = factor(e.args[1]);
+            return define(fmt::format("{} * {}", a, b));
         }
         case Op::Div: {
-            std::string a = expr(e.args[0]);
+            std::string a = factor(e.args[0]);
             std::string b = expr(e.args[1]);
             line(fmt::format("if ({} == 0.0LF) reportError({}u);", b, site(e.loc, "division by zero")));
             return define(fmt::format("{} == 0.0LF ? 0.0LF : {} / {}", b, a, b));
@@ -136,6 +139,13 @@ private:
     std::string& out_;
     int indent_ = 1;
     int temps_ = 0;
+
+    // An operand of a product, or a quotient's dividend: a literal zero there is read through opaqueZero()
+    // (derive_lib.glsl), which the driver cannot fold into the product.
+    std::string factor(const ir::Expr& e) {
+        if (e.op != ir::Op::Const || isHoisted(e) || e.value != 0.0) return expr(e);
+        return define(std::signbit(e.value) ? "-opaqueZero()" : "opaqueZero()");
+    }
 
     std::string define(const std::string& value) {
         std::string name = temp();

@@ -85,8 +85,8 @@ void runRender(const RenderArgs& args) {
     outputs.commit();
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::printf("%s: %zu plants, %zu modules, %zu organs, %ux%u, %.2f s -> %s%s%s\n", source.file.c_str(),
-                size_t(field.plants), size_t(field.modules), size_t(extent.organs), settings.width, settings.height, seconds,
-                args.output.c_str(), args.png.empty() ? "" : ", ", args.png.c_str());
+                size_t(field.plants), size_t(field.modules), size_t(extent.organs), settings.width, settings.height,
+                seconds, args.output.c_str(), args.png.empty() ? "" : ", ", args.png.c_str());
 }
 
 } // namespace

@@ -195,7 +195,8 @@ std::string stepPlantLookup(const codegen::PlantInputs& in, bool frozenCheck, bo
         if (frozenCheck) s += "    if (pc.frozenPlants != 0u) {\n" + frozen + "    }\n";
     } else {
         s += "    uint plant = 0u;\n";
-        if (frozenCheck) s += "    if (pc.frozenPlants != 0u) {\n        plant = kSinglePlant ? 0u : plantOf(i);\n" + frozen + "    }\n";
+        if (frozenCheck)
+            s += "    if (pc.frozenPlants != 0u) {\n        plant = kSinglePlant ? 0u : plantOf(i);\n" + frozen + "    }\n";
     }
     s += "    uint species = speciesOf(plant);\n";
     s += in.bounds ? "    uint pBegin = kSinglePlant ? 0u : plantStartAt(plant);\n"

@@ -25,6 +25,7 @@ layout(set = 0, binding = 3, std430) writeonly buffer Total { uint total; };
 layout(push_constant) uniform Push { ScanDownsweepPush pc; };
 
 #include "compute/scan/workgroup_scan.glsl"
+#include "compute/scan/workgroup_index.glsl"
 
 void main() {
     uint tile = linearWorkgroupIndex();

@@ -13,6 +13,7 @@ layout(set = 0, binding = 1, std430) writeonly buffer TileSums { uint tileSums[]
 layout(push_constant) uniform Push { ScanReducePush pc; };
 
 #include "compute/scan/workgroup_scan.glsl"
+#include "compute/scan/workgroup_index.glsl"
 
 void main() {
     uint tile = linearWorkgroupIndex();

@@ -40,11 +40,6 @@ uint workgroupExclusiveAdd(uint value, uint slot, out uint groupTotal) {
     return scanSubgroupTotals[slot][gl_SubgroupID] + through - value;
 }
 
-// Dispatches beyond 65535 workgroups are split over y by the host; tiles are numbered row-major.
-uint linearWorkgroupIndex() {
-    return gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
-}
-
 // First element of round `round` owned by this invocation in tile `tile`.
 uint tileElementBase(uint tile, uint round) {
     return tile * kScanTileSize + round * (kScanWorkgroupSize * kScanValuesPerInvocation) +

@@ -1,6 +1,8 @@
 // The dispatch helper and SPIR-V reflection against the embedded scan kernels and a texel-buffer kernel.
+#include <bit>
 #include <cstdint>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "codegen/glsl_compiler.h"
@@ -71,24 +73,40 @@ TEST_F(DispatchTest, GroupCountsComeFromTheKernelsLocalSize) {
     EXPECT_EQ(reduce.groupsFor(shared::kScanTileSize, shared::kScanValuesPerInvocation * shared::kScanRounds), 1u);
 }
 
-// More workgroups than the x dimension allows (65535 on most devices) go out as a 2D grid; every tile must
-// still be visited exactly once. The reduce kernel with an empty input writes a zero sum per tile.
+// More workgroups than the x dimension allows (65535 on lavapipe, 2^31 - 1 on NVIDIA) go out as a 2D grid;
+// every workgroup index below the count must still come up exactly once. Each workgroup sets its index's bit,
+// so the grid needs a bit per workgroup (256 MiB at NVIDIA's limit), not a word.
 TEST_F(DispatchTest, SplitsLargeDispatchesIntoTwoDimensions) {
-    vk::ComputePipeline reduce = vk::ComputePipeline::embedded(context(), "scan/reduce");
-    std::uint32_t tiles = context().limits().maxComputeWorkGroupCount[0] + 1000;
-    vk::Buffer empty(context(), 4, vk::MemoryUsage::DeviceLocal);
-    vk::Buffer sums(context(), std::uint64_t{tiles} * 4, vk::MemoryUsage::DeviceLocal);
+    const std::string source = "#version 460\n" + std::string(shaders::glslSource("compute/scan/workgroup_index.glsl")) +
+                               R"(
+layout(local_size_x = 1) in;
+layout(set = 0, binding = 0, std430) buffer Seen { uint seen[]; };
+layout(push_constant) uniform Push { uint groups; } pc;
+void main() {
+    uint group = linearWorkgroupIndex();
+    if (group < pc.groups) atomicOr(seen[group >> 5u], 1u << (group & 31u));
+}
+)";
+    vk::ComputePipeline mark(context(), codegen::compileComputeKernel(source, "test/mark_groups"), "test/mark_groups");
+    const std::uint64_t groups = std::uint64_t{context().limits().maxComputeWorkGroupCount[0]} + 1000;
+    ASSERT_LE(groups, std::uint64_t{UINT32_MAX});
+    const std::uint64_t words = (groups + 31) / 32 + 1;  // one word past the last group stays clear
+    vk::Buffer seen(context(), words * 4, vk::MemoryUsage::DeviceLocal);
+    const std::uint32_t count = static_cast<std::uint32_t>(groups);
     context().submitAndWait([&](VkCommandBuffer cmd) {
-        vk::cmdFill(cmd, sums, 0xffffffffu);
+        vk::cmdFill(cmd, seen, 0u);
         vk::memoryBarrier(cmd, vk::Hazard::TransferToCompute);
-        reduce.dispatch(cmd, {empty, sums}, shared::ScanReducePush{0, tiles}, tiles);
+        mark.dispatch(cmd, {seen}, count, count);
     });
-    std::vector<std::uint32_t> result = vk::downloadVector<std::uint32_t>(context(), sums, tiles);
-    std::size_t untouched = 0;
-    for (std::uint32_t value : result) {
-        untouched += value != 0 ? 1 : 0;
+    std::vector<std::uint32_t> bits = vk::downloadVector<std::uint32_t>(context(), seen, words);
+    std::uint64_t marked = 0, firstMissing = groups;
+    for (std::uint64_t word = 0; word < words; ++word) {
+        marked += static_cast<std::uint64_t>(std::popcount(bits[word]));
+        std::uint64_t firstClear = word * 32 + static_cast<std::uint64_t>(std::countr_one(bits[word]));
+        if (bits[word] != ~0u && firstClear < groups && firstMissing == groups) firstMissing = firstClear;
     }
-    EXPECT_EQ(untouched, 0u);
+    EXPECT_EQ(firstMissing, groups) << "workgroup " << firstMissing << " never ran";
+    EXPECT_EQ(marked, groups);
 }
 
 // Uniform texel buffers: reflected with the format of their texels, and read through views of the buffer

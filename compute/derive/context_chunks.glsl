@@ -34,7 +34,7 @@ uint chunkLeftWords[kContextChunk];
 void chunkPlant(uint i, out uint plant, out uint pBegin, out uint pEnd) {
     plant = kSinglePlant ? 0u : plantOf(i);
     pBegin = kSinglePlant ? 0u : plantStartAt(plant);
-    pEnd = kSinglePlant ? pc.count : plantStartAt(plant + 1u);
+    pEnd = kSinglePlant ? moduleCount : plantStartAt(plant + 1u);
 }
 
 uint skipRowOf(uint plant) { return speciesOf(plant) * kSkipWords; }
@@ -105,8 +105,8 @@ void chunkRightContexts(uint first, uint last) {
 // words and the chunk's sum.
 void matchChunk(uint chunk) {
     uint first = chunk * kContextChunk;
-    if (first >= pc.count) return;
-    uint last = min(first + kContextChunk, pc.count);
+    if (first >= moduleCount) return;
+    uint last = min(first + kContextChunk, moduleCount);
     chunkRightContexts(first, last);
     uint plant, pBegin, pEnd;
     chunkPlant(first, plant, pBegin, pEnd);

@@ -153,6 +153,11 @@ void reportError(uint code) { atomicCompSwap(errors[0], 0u, code + 1u); }
 // to 0 even where the kernel asks to keep infinities and NaN, while inf * 0 is NaN on the CPU (and in cpfg).
 double opaqueZero() { return double(pc.zero); }
 
+// Modules of the stream the kernel walks, set first thing in main(): pc.count, or, for a count only the device
+// knows (kCountOnDevice: steps recorded one after the other), the last entry of the input's plant table.
+uint moduleCount;
+uint streamCount() { return pc.count != kCountOnDevice ? pc.count : plantStartAt(pc.plants); }
+
 // lavapipe ends every loop of an invocation once the invocation has run 65535 loop iterations in all, and the code
 // after a loop then runs as if the loop had ended by itself. A check after a loop cannot see that: the compiler
 // knows only the loop's own exits and folds the check away. So every generated main() whose loops may run long

@@ -12,8 +12,9 @@ layout(push_constant) uniform Push { DeriveHelperPush pc; };
 
 void main() {
     uint b = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * gl_WorkGroupSize.x + gl_LocalInvocationID.x;
-    if (b > plantHintBlocks(pc.count)) return;
-    uint i = min(b * kPlantHintBlock, pc.count);
+    uint count = pc.count != kCountOnDevice ? pc.count : plantStart[pc.plants];
+    if (b > plantHintBlocks(count)) return;
+    uint i = min(b * kPlantHintBlock, count);
     uint low = 0u, high = pc.plants - 1u;
     while (low < high) {
         uint mid = (low + high + 1u) / 2u;

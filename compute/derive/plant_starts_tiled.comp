@@ -11,15 +11,17 @@ layout(set = 0, binding = 0, std430) readonly buffer OldStarts { uint oldStarts[
 layout(set = 0, binding = 1, std430) readonly buffer MatchWords { uint matchWords[]; };
 layout(set = 0, binding = 2, std430) readonly buffer TileOffsets { uint tileOffsets[]; };
 layout(set = 0, binding = 3, std430) writeonly buffer NewStarts { uint newStarts[]; };
+layout(set = 0, binding = 4, std430) readonly buffer ScanTotal { uint scanTotal; }; // the step's scan
 layout(push_constant) uniform Push { DeriveHelperPush pc; };
 layout(constant_id = 0) const uint kChoiceBits = 0u; // GeneratedKernels::choiceBits
 
 void main() {
     uint p = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * gl_WorkGroupSize.x + gl_LocalInvocationID.x;
     if (p > pc.plants) return;
+    uint count = pc.count != kCountOnDevice ? pc.count : oldStarts[pc.plants];
     uint start = oldStarts[p];
-    if (start >= pc.count) {
-        newStarts[p] = pc.total;
+    if (start >= count) {
+        newStarts[p] = pc.total != kCountOnDevice ? pc.total : count == 0u ? 0u : scanTotal;
         return;
     }
     newStarts[p] = tileOffsets[start / pc.level] + (matchWords[start] >> kChoiceBits);

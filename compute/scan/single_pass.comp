@@ -30,6 +30,9 @@ layout(set = 0, binding = 0, std430) readonly buffer Input { uint values[]; };
 layout(set = 0, binding = 1, std430) writeonly buffer Output { uint prefix[]; };
 layout(set = 0, binding = 2, std430) coherent buffer Status { uint status[]; };
 layout(set = 0, binding = 3, std430) writeonly buffer Total { uint total; };
+// When pc.count is kCountOnDevice, the elements to scan are deviceCounts[pc.tileCount], written by an earlier
+// kernel; unread otherwise.
+layout(set = 0, binding = 4, std430) readonly buffer DeviceCounts { uint deviceCounts[]; };
 layout(push_constant) uniform Push { ScanSinglePassPush pc; };
 
 #include "compute/scan/workgroup_scan.glsl"
@@ -87,8 +90,10 @@ void main() {
         sharedExclusive = 0u;
     }
     barrier();
+    uint count = pc.count != kCountOnDevice ? pc.count : deviceCounts[pc.tileCount];
+    uint tileCount = pc.count != kCountOnDevice ? pc.tileCount : (count + kScanTileSize - 1u) / kScanTileSize;
     uint tile = sharedTile;
-    if (tile >= pc.tileCount) {
+    if (tile >= tileCount) {
         return;  // padding of a 2D dispatch; uniform over the workgroup
     }
 
@@ -100,7 +105,7 @@ void main() {
         uint base = tileElementBase(tile, round);
         uint sum = 0u;
         for (uint k = 0u; k < kScanValuesPerInvocation; ++k) {
-            uint x = base + k < pc.count ? values[base + k] : 0u;
+            uint x = base + k < count ? values[base + k] : 0u;
             v[round * kScanValuesPerInvocation + k] = x;
             sum += x;
         }
@@ -141,7 +146,7 @@ void main() {
         if (tile != 0u) {
             publish(tile, kScanStateInclusive, exclusive + aggregate);
         }
-        if (pc.writeTotal != 0u && tile == pc.tileCount - 1u) {
+        if (pc.writeTotal != 0u && tile == tileCount - 1u) {
             total = exclusive + aggregate;
         }
     }
@@ -150,7 +155,7 @@ void main() {
         uint base = tileElementBase(tile, round);
         uint running = exclusive + localPrefix[round];
         for (uint k = 0u; k < kScanValuesPerInvocation; ++k) {
-            if (base + k < pc.count) {
+            if (base + k < count) {
                 prefix[base + k] = running;
             }
             running += v[round * kScanValuesPerInvocation + k];

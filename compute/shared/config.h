@@ -9,6 +9,11 @@
 
 SIMECO_SHARED_BEGIN
 
+// A count the host does not know when it records a command buffer: in place of a count in push constants
+// (ScanSinglePassPush::count, DerivePush::count, DeriveHelperPush::count and total) it tells the kernel to read
+// the count on the device, where a derivation recorded step after step left it (GpuDeriver's recorded steps).
+SIMECO_CONST kCountOnDevice = 0xFFFFFFFFu;
+
 // Prefix sum (compute/scan). A workgroup handles one tile of kScanTileSize consecutive elements in
 // kScanRounds rounds; in each round every invocation owns kScanValuesPerInvocation consecutive elements, so
 // neighbouring invocations touch neighbouring 16-byte chunks (coalesced on GPUs, SIMD-friendly on lavapipe).
@@ -44,8 +49,8 @@ struct ScanDownsweepPush {
 };
 
 struct ScanSinglePassPush {
-    uint count;       // elements in the input
-    uint tileCount;   // tiles (one per workgroup)
+    uint count;       // elements in the input, or kCountOnDevice
+    uint tileCount;   // tiles (one per workgroup); with kCountOnDevice, the index of the count's word
     uint writeTotal;     // nonzero: the last tile stores the sum of all elements in total
     uint lookBackSpins;  // polls of a not-ready predecessor before the fallback (>= 1; tests lower it)
 };

@@ -6,6 +6,7 @@
 #ifndef SIMECO_SHARED_DERIVE_LAYOUT_H
 #define SIMECO_SHARED_DERIVE_LAYOUT_H
 
+#include "compute/shared/config.h"
 #include "compute/shared/preamble.h"
 
 SIMECO_SHARED_BEGIN
@@ -78,14 +79,45 @@ uint plantHintBlocks(uint count) { return (count + kPlantHintBlock - 1u) / kPlan
 
 // Push constants of the fixed helper kernels.
 struct DeriveHelperPush {
-    uint count;   // elements
+    uint count;   // elements; plant hints and tiled plant starts: kCountOnDevice, the old plant table's last entry
     uint level;   // depth tree: the level being built; tiled plant starts: the tile size
-    uint total;   // plant starts: modules of the new stream
+    uint total;   // plant starts: modules of the new stream; tiled plant starts: kCountOnDevice, the scan's total
     uint plants;  // plant starts and hints: plants
+};
+
+// Steps recorded one after the other in one submission (GpuDeriver's recorded steps), with the stream sizes on the
+// device: derive/step_sizes.comp turns each step's counts into the workgroup counts of its dispatches and stops
+// the batch at a step whose string outgrows its stream or the module budget. Its words:
+SIMECO_CONST kStepStopped = 0u;   // 0, or (batch step + 1) << 2 | kStopCapacity or kStopBudget
+SIMECO_CONST kStopCapacity = 1u;  // the step's string outgrew the stream it is written to (more room, then again)
+SIMECO_CONST kStopBudget = 2u;    // ... or the module budget
+SIMECO_CONST kStepTotals = 4u;    // + batch step: the modules it derived
+SIMECO_CONST kMostRecordedSteps = 64u;
+SIMECO_CONST kStepBlocks = kStepTotals + kMostRecordedSteps; // + batch step * kStepBlockWords
+SIMECO_CONST kStepBlockWords = 16u;
+// A step's block: the workgroup counts (x, y, z) of its dispatches, and the elements its scan adds up.
+SIMECO_CONST kArgsHints = 0u;
+SIMECO_CONST kArgsMatch = 3u;
+SIMECO_CONST kArgsScan = 6u;
+SIMECO_CONST kArgsWrite = 9u;
+SIMECO_CONST kArgsPlantStarts = 12u;
+SIMECO_CONST kScanCountWord = 15u;
+SIMECO_CONST kStepWords = kStepBlocks + kMostRecordedSteps * kStepBlockWords;
+
+struct StepSizesPush {
+    uint mode;         // 0: before the step's match (its sizes), 1: after its scan (the total, the write's sizes)
+    uint step;         // the step's place in the batch
+    uint plants;
+    uint tileSize;     // modules per element of the fused scan
+    uint chunkedMatch; // 1: the match runs an invocation per tile, not per module
+    uint capacity;     // modules the step's output stream, and the next step's scratch, hold
+    uint budget;       // the module budget, at most 2^32 - 1
+    uint maxGroupsX;   // the device's workgroups along x; more go over y
 };
 
 #ifdef __cplusplus
 static_assert(sizeof(DerivePush) == 88);
+static_assert(sizeof(StepSizesPush) == 32);
 static_assert(kLoopProbeTrips < kLoopProbeCounts);
 static_assert(sizeof(DeriveHelperPush) == 16);
 #endif

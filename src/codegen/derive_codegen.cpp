@@ -200,8 +200,8 @@ std::string stepPlantLookup(const codegen::PlantInputs& in, bool frozenCheck, bo
     }
     s += "    uint species = speciesOf(plant);\n";
     s += in.bounds ? "    uint pBegin = kSinglePlant ? 0u : plantStartAt(plant);\n"
-                     "    uint pEnd = kSinglePlant ? pc.count : plantStartAt(plant + 1u);\n"
-                   : "    uint pBegin = 0u, pEnd = pc.count; // unread\n";
+                     "    uint pEnd = kSinglePlant ? moduleCount : plantStartAt(plant + 1u);\n"
+                   : "    uint pBegin = 0u, pEnd = moduleCount; // unread\n";
     return s;
 }
 
@@ -212,7 +212,7 @@ std::string mainCalling(const std::vector<ir::Grammar>& species, const std::stri
                         bool writing) {
     const std::string moduleIndex =
         "(gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * gl_WorkGroupSize.x + gl_LocalInvocationID.x";
-    return "void main() {\n    uint i = " + moduleIndex + ";\n" + body +
+    return "void main() {\n    uint i = " + moduleIndex + ";\n    moduleCount = streamCount();\n" + body +
            (codegen::mayLoopLong(species, kind, writing) ? "    reportLoopsCut();\n" : "") + "}\n";
 }
 
@@ -416,13 +416,14 @@ std::string stepMatchKernel(const DerivePlan& plan, const GeneratedKernels& k) {
     } else {
         // The subgroup's last invocation holds the tile's sum in its inclusive prefix: one subgroup operation,
         // which lavapipe runs as a loop over the invocations, where an exclusive prefix and a sum are two.
-        s += mainCalling(plan.species, k.fusedScan ? "    uint produced = i < pc.count ? matchModule(i) : 0u;\n"
-                                       "    uint through = subgroupInclusiveAdd(produced);\n"
-                                       "    if (i < pc.count) matchWords[i] = ((through - produced) << kChoiceBits) | matchedChoice;\n"
-                                       "    if (gl_SubgroupInvocationID == gl_SubgroupSize - 1u && i - gl_SubgroupInvocationID < pc.count)\n"
-                                       "        tileSums[tileOf(i)] = through;\n"
-                                     : "    if (i < pc.count) counts[i] = matchModule(i);\n",
-                         RuleKind::Step, false);
+        const char* fusedBody =
+            "    uint produced = i < moduleCount ? matchModule(i) : 0u;\n"
+            "    uint through = subgroupInclusiveAdd(produced);\n"
+            "    if (i < moduleCount) matchWords[i] = ((through - produced) << kChoiceBits) | matchedChoice;\n"
+            "    if (gl_SubgroupInvocationID == gl_SubgroupSize - 1u && i - gl_SubgroupInvocationID < moduleCount)\n"
+            "        tileSums[tileOf(i)] = through;\n";
+        const char* countsBody = "    if (i < moduleCount) counts[i] = matchModule(i);\n";
+        s += mainCalling(plan.species, k.fusedScan ? fusedBody : countsBody, RuleKind::Step, false);
     }
     return s;
 }
@@ -478,12 +479,12 @@ std::string stepWriteKernel(const DerivePlan& plan, const GeneratedKernels& k) {
     s += "    }\n"
          "    storeSlots(pos, produced, origin);\n"
          "}\n";
-    s += mainCalling(plan.species, k.fusedScan ? "    if (i < pc.count) {\n"
+    s += mainCalling(plan.species, k.fusedScan ? "    if (i < moduleCount) {\n"
                                    "        uint matched = matchWordsAt(i);\n"
                                    "        writeModule(i, tileOffsetsAt(tileOf(i)) + (matched >> kChoiceBits),\n"
                                    "                    matched & ((1u << kChoiceBits) - 1u));\n"
                                    "    }\n"
-                                 : "    if (i < pc.count) writeModule(i, offsetsAt(i), choicesAt(i));\n",
+                                 : "    if (i < moduleCount) writeModule(i, offsetsAt(i), choicesAt(i));\n",
                      RuleKind::Step, true);
     return s;
 }
@@ -517,7 +518,7 @@ std::string decompositionMatchKernel(const DerivePlan& plan) {
     s += "    uint draw = 1u, chosen = 0u, start = 0u, produced = 1u, length = 1u;\n";
     s += codegen::perSpecies(plan.species.size(), [&](size_t sp) { return decompositionSelection(plan.species, sp); });
     s += recordChoice();
-    s += mainCalling(plan.species, "    if (i < pc.count) matchModule(i);\n", RuleKind::Decomposition, false);
+    s += mainCalling(plan.species, "    if (i < moduleCount) matchModule(i);\n", RuleKind::Decomposition, false);
     return s;
 }
 
@@ -549,7 +550,7 @@ std::string decompositionWriteKernel(const DerivePlan& plan) {
     });
     s += "    storeSlots(pos, produced, origin);\n"
          "}\n";
-    s += mainCalling(plan.species, "    if (i < pc.count) writeModule(i);\n", RuleKind::Decomposition, true);
+    s += mainCalling(plan.species, "    if (i < moduleCount) writeModule(i);\n", RuleKind::Decomposition, true);
     return s;
 }
 } // namespace

@@ -134,10 +134,7 @@ private:
     }
 
     void checkBudget(size_t size) const {
-        if (size > room_)
-            throw ir::LimitError(fmt::format("the string outgrew the module budget of {} modules in step {} "
-                                             "(raise it with --max-modules, or derive fewer steps or plants)",
-                                             budget_, step_));
+        if (size > room_) throw stream::moduleBudgetExceeded(budget_, step_);
     }
 
     void matchBrackets() {

@@ -83,21 +83,26 @@ void GpuDeriver::Impl::uploadAxioms(const stream::ModuleString& axioms, const st
 }
 
 void GpuDeriver::Impl::uploadPlantState(const stream::PlantControl& control, const std::vector<uint8_t>& growing) {
-    double* gp = reinterpret_cast<double*>(globals.mapped());
-    double* ap = reinterpret_cast<double*>(arrays.mapped());
-    uint32_t* fp = reinterpret_cast<uint32_t*>(plantFrozen.mapped());
-    anyFrozen = false;
+    anyFrozen = writePlantState(control, growing, reinterpret_cast<double*>(globals.mapped()),
+                                reinterpret_cast<double*>(arrays.mapped()),
+                                reinterpret_cast<uint32_t*>(plantFrozen.mapped()));
+}
+
+bool GpuDeriver::Impl::writePlantState(const stream::PlantControl& control, const std::vector<uint8_t>& growing,
+                                       double* globalsOut, double* arraysOut, uint32_t* frozenOut) const {
+    bool frozen = false;
     for (uint32_t plant = 0; plant < plants; ++plant) {
         const stream::PlantState& state = control.state(plant);
-        std::copy(state.globals.begin(), state.globals.end(), gp + uint64_t(plant) * globalStride);
+        std::copy(state.globals.begin(), state.globals.end(), globalsOut + uint64_t(plant) * globalStride);
         uint64_t at = uint64_t(plant) * arrayStride;
         for (const std::vector<double>& a : state.arrays) {
-            std::copy(a.begin(), a.end(), ap + at);
+            std::copy(a.begin(), a.end(), arraysOut + at);
             at += a.size();
         }
-        fp[plant] = growing[plant] ? shared::kPlantGrowing : shared::kPlantFrozen;
-        anyFrozen = anyFrozen || !growing[plant];
+        frozenOut[plant] = growing[plant] ? shared::kPlantGrowing : shared::kPlantFrozen;
+        frozen = frozen || !growing[plant];
     }
+    return frozen;
 }
 
 void GpuDeriver::Impl::downloadPlantState(stream::PlantControl& control) const {
@@ -166,6 +171,7 @@ stream::DeriveResult GpuDeriver::derive(const stream::DeriveOptions& asked, bool
     m.carriesParticles = options.particles;
     m.partnersStream = -1;
     m.bracketTrees = 0;
+    m.waits = 0;
     stream::ModuleString axioms = control.startAll();
     if (axioms.size() > budget)
         throw ir::LimitError(fmt::format("the axioms alone exceed the module budget of {} modules", budget));
@@ -179,24 +185,28 @@ stream::DeriveResult GpuDeriver::derive(const stream::DeriveOptions& asked, bool
     // A plant freezes once it has derived its species' length, or after the step in which it called stop().
     std::vector<uint8_t> growing(m.plants, 0);
     int cur = 0;
-    for (int step = 1; step <= control.steps(); ++step) {
-        bool anyGrowing = false;
-        for (uint32_t plant = 0; plant < m.plants; ++plant) {
-            growing[plant] = control.beginStep(plant, step);
-            anyGrowing = anyGrowing || growing[plant];
+    if (m.recordsSteps(options.particles)) {
+        cur = m.deriveRecorded(control, cur, seed, budget, stepTimer != nullptr, stats);
+    } else {
+        for (int step = 1; step <= control.steps(); ++step) {
+            bool anyGrowing = false;
+            for (uint32_t plant = 0; plant < m.plants; ++plant) {
+                growing[plant] = control.beginStep(plant, step);
+                anyGrowing = anyGrowing || growing[plant];
+            }
+            if (!anyGrowing) break;
+            m.uploadPlantState(control, growing);
+            if (m.strategy == GpuStrategy::Sequential) {
+                cur = m.stepSequential(cur, uint32_t(step), seed, budget, stepTimer, stats);
+                // The sequential kernel's productions write the state; the host reads it back after each step.
+                m.downloadPlantState(control);
+            } else {
+                cur = m.step(cur, uint32_t(step), seed, budget, stepTimer, stats);
+            }
+            stats.peakModules = std::max<uint64_t>(stats.peakModules, m.streams[cur].count);
+            for (uint32_t plant = 0; plant < m.plants; ++plant)
+                if (growing[plant]) control.endStep(plant, step);
         }
-        if (!anyGrowing) break;
-        m.uploadPlantState(control, growing);
-        if (m.strategy == GpuStrategy::Sequential) {
-            cur = m.stepSequential(cur, uint32_t(step), seed, budget, stepTimer, stats);
-            // The sequential kernel's productions write the state; the host reads it back after each step.
-            m.downloadPlantState(control);
-        } else {
-            cur = m.step(cur, uint32_t(step), seed, budget, stepTimer, stats);
-        }
-        stats.peakModules = std::max<uint64_t>(stats.peakModules, m.streams[cur].count);
-        for (uint32_t plant = 0; plant < m.plants; ++plant)
-            if (growing[plant]) control.endStep(plant, step);
     }
     for (uint32_t plant = 0; plant < m.plants; ++plant) control.finish(plant);
 
@@ -216,6 +226,7 @@ stream::DeriveResult GpuDeriver::derive(const stream::DeriveOptions& asked, bool
     m.lastStream = cur;
     stats.modules = final.count;
     stats.bracketTrees = m.bracketTrees;
+    stats.waits = m.waits;
     if (readBack) {
         result.string = m.readBack(final, options.particles);
     } else {
@@ -229,6 +240,10 @@ stream::DeriveResult GpuDeriver::derive(const stream::DeriveOptions& asked, bool
 }
 
 bool GpuDeriver::appliesHomomorphism() const { return !impl_->homomorphismHostReason; }
+
+bool GpuDeriver::recordsSteps(const stream::DeriveOptions& options) const {
+    return impl_->recordsSteps(options.particles);
+}
 
 stream::DeviceModules GpuDeriver::lastString() const {
     const Impl& m = *impl_;

@@ -49,6 +49,7 @@ struct GpuDeriveStats {
     std::vector<double> stepMillis;  // GPU time of each step from timestamps (empty if unsupported)
     uint64_t peakModules = 0;
     uint32_t bracketTrees = 0;       // bracket trees built: once, when each step's write carries the partners
+    uint32_t waits = 0;              // times the host waited for the device between the derivation's passes
 };
 
 class GpuDeriver {
@@ -77,6 +78,11 @@ public:
     // The string the last derive() left on the device (read back or not), valid until the next derive() or the
     // deriver's end: what the turtle kernels interpret without a round trip through the host.
     stream::DeviceModules lastString() const;
+
+    // Whether derive() records its steps one after the other with their sizes on the device, waiting once per batch
+    // of steps (the parallel strategy with a fused scan, for grammars without decomposition, contexts, cuts or
+    // predecessors of several modules, when no particle state is carried), instead of twice per step.
+    bool recordsSteps(const stream::DeriveOptions& options) const;
 
     // Parallel or Sequential: the strategy this deriver uses.
     GpuStrategy strategy() const;

@@ -1,6 +1,7 @@
 // The GPU deriver's state, shared by the files that implement it: its kernels and buffers
-// (derive_gpu_resources.cpp), the parallel passes (derive_gpu_passes.cpp), the sequential strategy
-// (derive_gpu_sequential.cpp) and the derivation itself (derive_gpu.cpp). Private to src/gpu/.
+// (derive_gpu_resources.cpp), the parallel passes (derive_gpu_passes.cpp), steps recorded with their sizes on the
+// device (derive_gpu_recorded.cpp), the sequential strategy (derive_gpu_sequential.cpp) and the derivation itself
+// (derive_gpu.cpp). Private to src/gpu/.
 #pragma once
 
 #include <algorithm>
@@ -112,11 +113,22 @@ struct GpuDeriver::Impl {
     int partnersStream = -1;
     bool axiomsBalanced = false;
     uint32_t bracketTrees = 0; // built since the derivation started
+    uint32_t waits = 0;        // submissions waited for since the derivation started
     bool lastUnfinished = false; // errors[2] of the last submit: the sequential kernel's plants need more dispatches
     uint64_t scratchCapacity = 0;
     Stream streams[3];
     uint32_t plants = 1;
     double compileSeconds = 0;
+    // Steps recorded one after the other (derive_gpu_recorded.cpp): the sizes kernel, its words, their read-back,
+    // each batch step's slice of the plant state, and the streams' buffers replaced while their string must stay.
+    std::optional<vk::ComputePipeline> stepSizes;
+    vk::Buffer stepWords, stepWordsReadback;
+    vk::Buffer batchGlobals, batchArrays, batchFrozen;
+    VkDeviceSize globalsSlice = 0, arraysSlice = 0, frozenSlice = 0;
+    std::optional<vk::Timestamps> batchTimer;
+    std::vector<std::pair<Stream, uint32_t>> pendingCopies; // old buffers and the modules to copy from them
+    // The plant state the derivation kernels bind: the host's buffers, or batch step `batchSlot`'s slices.
+    int batchSlot = -1;
 
     // ---- kernels and buffers (derive_gpu_resources.cpp) ----
 
@@ -155,6 +167,9 @@ struct GpuDeriver::Impl {
     void uploadAxioms(const stream::ModuleString& axioms, const stream::DeriveOptions& options);
     // The plants' globals and arrays, and which plants grow in the step (the others are copied).
     void uploadPlantState(const stream::PlantControl& control, const std::vector<uint8_t>& growing);
+    // The same into the given memory; returns whether some plant is frozen.
+    bool writePlantState(const stream::PlantControl& control, const std::vector<uint8_t>& growing, double* globalsOut,
+                         double* arraysOut, uint32_t* frozenOut) const;
     // What the sequential kernel's productions wrote to the globals and arrays, and the stop() calls.
     void downloadPlantState(stream::PlantControl& control) const;
     // Stream `s` read back to the host, with its particle state when `particles`.
@@ -169,6 +184,8 @@ struct GpuDeriver::Impl {
     // the located error a kernel reported, and kFlagLoopCut unless the caller retries (`retriesCutLoops`).
     uint32_t submit(const std::function<void(VkCommandBuffer)>& record, vk::Timestamps* timer, double& gpuMillis,
                     bool retriesCutLoops = false);
+    // Throws the located error the kernels reported in errors[0] (a site + 1) and errors[1] (flags).
+    void checkKernelErrors(uint32_t site, uint32_t flags, bool retriesCutLoops) const;
     static void checkBudget(uint64_t total, uint64_t budget, uint32_t stepIndex);
     void copyTotal(VkCommandBuffer cmd);
 
@@ -183,6 +200,12 @@ struct GpuDeriver::Impl {
     void dispatchDerive(VkCommandBuffer cmd, const vk::ComputePipeline& kernel, const Stream& strings,
                         std::initializer_list<vk::BufferRange> rest, const shared::DerivePush& p, uint32_t n,
                         bool parameterVectors = false);
+    // The same with the workgroup counts a recorded step's sizes kernel wrote at `argumentsOffset` of stepWords.
+    void dispatchDeriveIndirect(VkCommandBuffer cmd, const vk::ComputePipeline& kernel, const Stream& strings,
+                                std::initializer_list<vk::BufferRange> rest, const shared::DerivePush& p,
+                                VkDeviceSize argumentsOffset, bool parameterVectors);
+    std::vector<vk::BufferRange> deriveBindings(const Stream& strings, std::initializer_list<vk::BufferRange> rest,
+                                                bool parameterVectors) const;
 
     // The bracket tree and partners of streams[index], unless its partners are already there.
     void recordBrackets(VkCommandBuffer cmd, int index);
@@ -229,6 +252,35 @@ struct GpuDeriver::Impl {
     // The homomorphism of the derived string streams[cur], into another stream; returns its index. Every
     // module is examined at depth 0 with its contexts around itself, and the passes draw from step 0's.
     int applyHomomorphism(int cur, uint32_t seed, uint64_t budget, vk::Timestamps* timer, GpuDeriveStats& stats);
+
+    // ---- steps recorded one after the other (derive_gpu_recorded.cpp) ----
+
+    // Whether the derivation's steps can run with their sizes on the device: the parallel strategy's steps with a
+    // fused scan and no decomposition, brackets, cuts, greedy walks or particle state (`particles`).
+    bool recordsSteps(bool particles) const;
+
+    // Every step from `step` on, a batch of up to kMostRecordedSteps steps per submission: the host's plant control
+    // runs a batch ahead of the device (the parallel strategy's productions write no plant state), and the
+    // device sizes each step's dispatches from the last. A step that outgrows its stream ends the submission
+    // there; the streams grow and the rest of the batch runs again. Returns the stream of the last step.
+    int deriveRecorded(stream::PlantControl& control, int cur, uint32_t seed, uint64_t budget, bool timed,
+                       GpuDeriveStats& stats);
+
+    struct RecordedStep {
+        uint32_t index;  // the derivation step
+        bool anyFrozen;  // some plant is copied in it
+    };
+    // Runs batch steps `first` on from streams[cur] in one submission; returns the steps done, `cur` their stream.
+    size_t runBatch(const std::vector<RecordedStep>& batch, size_t first, int& cur, uint32_t seed, uint64_t budget,
+                    bool timed, int stepsAfterBatch, GpuDeriveStats& stats);
+    void recordStep(VkCommandBuffer cmd, const RecordedStep& step, uint32_t slot, int in, uint32_t seed,
+                    uint64_t budget);
+    // Room for `modules` in every stream (streams[cur] keeps its string) and in the scratch.
+    void makeRoom(int cur, uint64_t modules);
+    // Modules the output of a recorded step may hold: its stream's room, and the next step's scratch.
+    uint64_t recordedCapacity(const Stream& out) const;
+    // Batch slots' plant state, for `steps` steps.
+    void reserveBatchState(uint32_t steps);
 
     // ---- the sequential strategy (derive_gpu_sequential.cpp) ----
 

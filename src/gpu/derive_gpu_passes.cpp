@@ -44,6 +44,7 @@ DerivePush GpuDeriver::Impl::push(uint32_t count, uint32_t step, uint32_t seed, 
 
 uint32_t GpuDeriver::Impl::submit(const std::function<void(VkCommandBuffer)>& record, vk::Timestamps* timer,
                                   double& gpuMillis, bool retriesCutLoops) {
+    ++waits;
     ctx.submitAndWait([&](VkCommandBuffer cmd) {
         if (timer) {
             timer->cmdReset(cmd);
@@ -61,22 +62,22 @@ uint32_t GpuDeriver::Impl::submit(const std::function<void(VkCommandBuffer)>& re
     std::memcpy(words, readback.mapped(), sizeof words);
     lastFlags = words[2];
     lastUnfinished = words[3] != 0;
-    if (words[1] != 0) {
-        uint32_t site = words[1] - 1;
-        const std::vector<codegen::ErrorSite>& sites = *active->errors;
-        if (site < sites.size()) throw ir::InputError(sites[site].loc, sites[site].message);
-        throw std::runtime_error("a derivation kernel reported an unknown error");
-    }
-    if ((lastFlags & shared::kFlagLoopCut) && !retriesCutLoops)
-        throw loopsCutError("a production loops long or a context walk passes very many modules");
+    checkKernelErrors(words[1], words[2], retriesCutLoops);
     return words[0];
 }
 
+void GpuDeriver::Impl::checkKernelErrors(uint32_t site, uint32_t flags, bool retriesCutLoops) const {
+    if (site != 0) {
+        const std::vector<codegen::ErrorSite>& sites = *active->errors;
+        if (site - 1 < sites.size()) throw ir::InputError(sites[site - 1].loc, sites[site - 1].message);
+        throw std::runtime_error("a derivation kernel reported an unknown error");
+    }
+    if ((flags & shared::kFlagLoopCut) && !retriesCutLoops)
+        throw loopsCutError("a production loops long or a context walk passes very many modules");
+}
+
 void GpuDeriver::Impl::checkBudget(uint64_t total, uint64_t budget, uint32_t stepIndex) {
-    if (total > budget)
-        throw ir::LimitError(fmt::format("the string outgrew the module budget of {} modules in step {} "
-                                         "(raise it with --max-modules, or derive fewer steps)",
-                                         budget, stepIndex));
+    if (total > budget) throw stream::moduleBudgetExceeded(budget, int(stepIndex));
 }
 
 void GpuDeriver::Impl::copyTotal(VkCommandBuffer cmd) {
@@ -102,18 +103,38 @@ void GpuDeriver::Impl::recordGreedyWalk(VkCommandBuffer cmd, const Stream& in) {
     vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
 }
 
-void GpuDeriver::Impl::dispatchDerive(VkCommandBuffer cmd, const vk::ComputePipeline& kernel, const Stream& strings,
-                                      std::initializer_list<vk::BufferRange> rest, const DerivePush& p, uint32_t n,
-                                      bool parameterVectors) {
-    std::vector<vk::BufferRange> buffers{strings.sym, strings.par, plantTable(strings), brackets.tree(),
-                                         brackets.levelInfo(), brackets.partners(), globals, arrays,
-                                         active->funcTables, active->speciesTable, errors, plantFrozen};
+std::vector<vk::BufferRange> GpuDeriver::Impl::deriveBindings(const Stream& strings,
+                                                              std::initializer_list<vk::BufferRange> rest,
+                                                              bool parameterVectors) const {
+    bool slot = batchSlot >= 0;
+    VkDeviceSize at = slot ? VkDeviceSize(batchSlot) : 0;
+    std::vector<vk::BufferRange> buffers{
+        strings.sym, strings.par, plantTable(strings), brackets.tree(), brackets.levelInfo(), brackets.partners(),
+        slot ? vk::BufferRange(batchGlobals, at * globalsSlice, globalsSlice) : vk::BufferRange(globals),
+        slot ? vk::BufferRange(batchArrays, at * arraysSlice, arraysSlice) : vk::BufferRange(arrays),
+        active->funcTables, active->speciesTable, errors,
+        slot ? vk::BufferRange(batchFrozen, at * frozenSlice, frozenSlice) : vk::BufferRange(plantFrozen)};
     buffers.insert(buffers.end(), rest.begin(), rest.end());
     buffers.push_back(plantHints);
     if (parameterVectors)
         buffers.push_back(vk::BufferRange(strings.par).viewedAs(stride == 4 ? VK_FORMAT_R32G32B32A32_SFLOAT
                                                                              : VK_FORMAT_R32G32_SFLOAT));
-    kernel.dispatchBytes(cmd, buffers, std::as_bytes(std::span(&p, 1)), kernel.groupsFor(n));
+    return buffers;
+}
+
+void GpuDeriver::Impl::dispatchDerive(VkCommandBuffer cmd, const vk::ComputePipeline& kernel, const Stream& strings,
+                                      std::initializer_list<vk::BufferRange> rest, const DerivePush& p, uint32_t n,
+                                      bool parameterVectors) {
+    kernel.dispatchBytes(cmd, deriveBindings(strings, rest, parameterVectors), std::as_bytes(std::span(&p, 1)),
+                         kernel.groupsFor(n));
+}
+
+void GpuDeriver::Impl::dispatchDeriveIndirect(VkCommandBuffer cmd, const vk::ComputePipeline& kernel,
+                                              const Stream& strings, std::initializer_list<vk::BufferRange> rest,
+                                              const DerivePush& p, VkDeviceSize argumentsOffset,
+                                              bool parameterVectors) {
+    kernel.dispatchIndirectBytes(cmd, deriveBindings(strings, rest, parameterVectors),
+                                 std::as_bytes(std::span(&p, 1)), stepWords, argumentsOffset);
 }
 
 void GpuDeriver::Impl::recordBrackets(VkCommandBuffer cmd, int index) {
@@ -257,8 +278,9 @@ void GpuDeriver::Impl::matchScanWrite(int cur, int outIndex, uint32_t stepIndex,
                                    {counts, tileOffsets, drawStarts, out.sym, out.par, out.origin, out.live}, p, n,
                                    kernels.writeReadsParameterVectors);
                 DeriveHelperPush hp{n, tileSize, total, plants};
-                plantStartsTiled->dispatch(cmd, {plantTable(in), counts, tileOffsets, plantTable(out)}, hp,
-                                           plantStartsTiled->groupsFor(plants + 1));
+                plantStartsTiled->dispatch(cmd,
+                                           {plantTable(in), counts, tileOffsets, plantTable(out), scan.totalBuffer()},
+                                           hp, plantStartsTiled->groupsFor(plants + 1));
             } else {
                 dispatchDerive(cmd, stepWrite(), in,
                                {offsets, choices, drawStarts, out.sym, out.par, out.origin, out.live}, p, n,

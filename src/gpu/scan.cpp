@@ -131,8 +131,23 @@ void GpuScan::recordSinglePass(VkCommandBuffer cmd, const vk::Buffer& input, con
     vk::bufferBarrier(cmd, lookBackStatus_, vk::Hazard::TransferToCompute);
     shared::ScanSinglePassPush push{count, tiles, 1, lookBackSpins_};
     singlePass_.dispatch(cmd, {vk::BufferRange(input, 0, bytes), vk::BufferRange(output, 0, bytes), lookBackStatus_,
-                               total_},
+                               total_, total_}, // the count binding is unread with a count in the push constants
                          push, tiles);
+}
+
+void GpuScan::recordCountedOnDevice(VkCommandBuffer cmd, const vk::Buffer& input, const vk::Buffer& output,
+                                    const vk::Buffer& counts, std::uint32_t countIndex, const vk::Buffer& arguments,
+                                    VkDeviceSize argumentsOffset) {
+    if (!levelSums_) throw std::logic_error("GpuScan: scan recorded before reserve()");
+    if (input.handle() == output.handle())
+        throw std::invalid_argument("GpuScan: the decoupled look-back scan cannot run in place");
+    vk::bufferBarrier(cmd, total_, vk::Hazard::ComputeToCompute);
+    vk::bufferBarrier(cmd, lookBackStatus_, vk::Hazard::ComputeToTransfer);
+    vk::cmdFill(cmd, lookBackStatus_, 0);  // room for the tiles of capacity() elements
+    vk::bufferBarrier(cmd, lookBackStatus_, vk::Hazard::TransferToCompute);
+    shared::ScanSinglePassPush push{shared::kCountOnDevice, countIndex, 1, lookBackSpins_};
+    singlePass_.dispatchIndirect(cmd, {input, output, lookBackStatus_, total_, counts}, push, arguments,
+                                 argumentsOffset);
 }
 
 std::uint32_t GpuScan::run(const vk::Buffer& input, const vk::Buffer& output, std::uint32_t count,

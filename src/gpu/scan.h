@@ -46,6 +46,14 @@ public:
     void record(VkCommandBuffer cmd, const vk::Buffer& input, const vk::Buffer& output, std::uint32_t count,
                 ScanAlgorithm algorithm = ScanAlgorithm::DecoupledLookBack);
 
+    // As record() with DecoupledLookBack, for a count that only the device knows when this is recorded: the scan
+    // adds up the first counts[countIndex] elements (a word an earlier kernel wrote, at most capacity()),
+    // dispatched with the workgroup counts at `arguments` + `argumentsOffset` (one per kScanTileSize elements, as
+    // vk::ComputePipeline::dispatchIndirect takes them). The total of an empty scan is not written.
+    void recordCountedOnDevice(VkCommandBuffer cmd, const vk::Buffer& input, const vk::Buffer& output,
+                               const vk::Buffer& counts, std::uint32_t countIndex, const vk::Buffer& arguments,
+                               VkDeviceSize argumentsOffset);
+
     // Polls of a stalled predecessor before DecoupledLookBack reduces its tile itself. Tests set 1 to drive the
     // fallback path, which a fast device would otherwise rarely take.
     void setLookBackSpins(std::uint32_t spins) { lookBackSpins_ = spins > 0 ? spins : 1; }

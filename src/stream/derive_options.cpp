@@ -37,6 +37,12 @@ uint64_t hostMemoryBytes() {
 
 uint64_t defaultModuleBudget(int stride) { return hostMemoryBytes() / 4 / cpuBytesPerModule(stride); }
 
+ir::LimitError moduleBudgetExceeded(uint64_t budget, int step) {
+    return ir::LimitError(fmt::format("the string outgrew the module budget of {} modules in step {} "
+                                      "(raise it with --max-modules, or derive fewer steps or plants)",
+                                      budget, step));
+}
+
 std::vector<std::vector<shared::ParticleState>> splitAxiomParticles(const std::vector<ir::Grammar>& species,
                                                                     uint32_t plants,
                                                                     const std::vector<shared::ParticleState>& initial) {

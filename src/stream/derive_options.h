@@ -7,6 +7,7 @@
 
 #include "compute/shared/particle_layout.h"
 #include "ir/grammar.h"
+#include "ir/source_loc.h"
 #include "stream/module_string.h"
 
 namespace simeco::stream {
@@ -27,6 +28,9 @@ uint64_t hostMemoryBytes();
 
 // The CPU reference's default module budget: what a quarter of this machine's memory holds.
 uint64_t defaultModuleBudget(int stride);
+
+// What both engines say when a step's string outgrows the field's module budget.
+ir::LimitError moduleBudgetExceeded(uint64_t budget, int step);
 
 // How long a derivation may run unless told otherwise: far longer than any field derives, short of a hang.
 inline constexpr double kDefaultMaxSeconds = 1800;

@@ -25,6 +25,9 @@ Scopes scopes(Hazard hazard) {
         return {kCompute, VK_ACCESS_SHADER_WRITE_BIT, kTransfer, kTransferReadWrite};
     case Hazard::TransferToCompute:
         return {kTransfer, VK_ACCESS_TRANSFER_WRITE_BIT, kCompute, kShaderReadWrite};
+    case Hazard::ComputeToIndirect:
+        return {kCompute, VK_ACCESS_SHADER_WRITE_BIT, kCompute | VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT,
+                kShaderReadWrite | VK_ACCESS_INDIRECT_COMMAND_READ_BIT};
     case Hazard::ComputeToHost:
         return {kCompute, VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT};
     case Hazard::AnyToTransfer:

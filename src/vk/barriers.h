@@ -11,6 +11,7 @@ enum class Hazard {
     ComputeToCompute,   // a kernel reads or overwrites what an earlier kernel wrote
     ComputeToTransfer,  // a copy or fill reads or overwrites what a kernel wrote
     TransferToCompute,  // a kernel reads or overwrites what a copy or fill wrote
+    ComputeToIndirect,  // a dispatch takes its workgroup counts, and a kernel reads, what a kernel wrote
     ComputeToHost,      // the host maps what a kernel wrote (after a fence wait)
     AnyToTransfer,      // a copy after kernels or copies of unknown order (staging helpers)
     TransferToAny,      // anything after a copy (staging helpers)

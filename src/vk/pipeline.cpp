@@ -106,9 +106,7 @@ std::uint64_t ComputePipeline::groupsFor(std::uint64_t items, std::uint32_t item
     return (items + perGroup - 1) / perGroup;
 }
 
-void ComputePipeline::dispatchBytes(VkCommandBuffer cmd, std::span<const BufferRange> buffers,
-                                    std::span<const std::byte> push, std::uint64_t groups) const {
-    // Every check comes before the first recorded command, so a mismatch leaves the command buffer untouched.
+void ComputePipeline::checkInterface(std::span<const BufferRange> buffers, std::span<const std::byte> push) const {
     if (push.size() != reflection_.pushConstantSize) {
         throw DispatchMismatch(fmt::format("kernel {}: push constants are {} bytes on the host but {} in the shader",
                                            name_, push.size(), reflection_.pushConstantSize));
@@ -126,17 +124,10 @@ void ComputePipeline::dispatchBytes(VkCommandBuffer cmd, std::span<const BufferR
             throw DispatchMismatch(fmt::format("kernel {}: buffer for binding {} is empty", name_, i));
         }
     }
-    std::uint64_t groupsY = (groups + maxGroupsX_ - 1) / maxGroupsX_;
-    if (groupsY > maxGroupsY_) {
-        throw VulkanError(fmt::format("kernel {}: {} workgroups exceed the device's {} x {} grid", name_, groups,
-                                      maxGroupsX_, maxGroupsY_),
-                          VK_ERROR_FEATURE_NOT_PRESENT);
-    }
-    if (groups == 0) {
-        return;
-    }
-    std::uint64_t groupsX = (groups + groupsY - 1) / groupsY;
+}
 
+void ComputePipeline::bind(VkCommandBuffer cmd, std::span<const BufferRange> buffers,
+                           std::span<const std::byte> push) const {
     std::vector<VkDescriptorBufferInfo> infos(buffers.size());
     std::vector<VkBufferView> views(buffers.size(), VK_NULL_HANDLE);
     std::vector<VkWriteDescriptorSet> writes(buffers.size());
@@ -167,7 +158,34 @@ void ComputePipeline::dispatchBytes(VkCommandBuffer cmd, std::span<const BufferR
         vkCmdPushConstants(cmd, layout_.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0, static_cast<std::uint32_t>(push.size()),
                            push.data());
     }
+}
+
+void ComputePipeline::dispatchBytes(VkCommandBuffer cmd, std::span<const BufferRange> buffers,
+                                    std::span<const std::byte> push, std::uint64_t groups) const {
+    // Every check comes before the first recorded command, so a mismatch leaves the command buffer untouched.
+    checkInterface(buffers, push);
+    std::uint64_t groupsY = (groups + maxGroupsX_ - 1) / maxGroupsX_;
+    if (groupsY > maxGroupsY_) {
+        throw VulkanError(fmt::format("kernel {}: {} workgroups exceed the device's {} x {} grid", name_, groups,
+                                      maxGroupsX_, maxGroupsY_),
+                          VK_ERROR_FEATURE_NOT_PRESENT);
+    }
+    if (groups == 0) {
+        return;
+    }
+    std::uint64_t groupsX = (groups + groupsY - 1) / groupsY;
+
+    bind(cmd, buffers, push);
     vkCmdDispatch(cmd, static_cast<std::uint32_t>(groupsX), static_cast<std::uint32_t>(groupsY), 1);
+    if (KernelProfile* profile = context_->kernelProfile()) profile->afterDispatch(cmd, name_);
+}
+
+void ComputePipeline::dispatchIndirectBytes(VkCommandBuffer cmd, std::span<const BufferRange> buffers,
+                                            std::span<const std::byte> push, const Buffer& arguments,
+                                            VkDeviceSize offset) const {
+    checkInterface(buffers, push);
+    bind(cmd, buffers, push);
+    vkCmdDispatchIndirect(cmd, arguments.handle(), offset);
     if (KernelProfile* profile = context_->kernelProfile()) profile->afterDispatch(cmd, name_);
 }
 

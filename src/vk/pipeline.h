@@ -83,7 +83,24 @@ public:
     void dispatchBytes(VkCommandBuffer cmd, std::span<const BufferRange> buffers, std::span<const std::byte> push,
                        std::uint64_t groups) const;
 
+    // As dispatch(), with the workgroup counts (x, y, z) that an earlier kernel wrote to `arguments` at `offset`,
+    // for work whose size only the device knows when the command buffer is recorded. The writer splits large
+    // counts over y as dispatch() does (the kernels number their groups the same way), and a barrier
+    // (Hazard::ComputeToIndirect) orders its write before this.
+    template <typename Push>
+    void dispatchIndirect(VkCommandBuffer cmd, std::initializer_list<BufferRange> buffers, const Push& push,
+                          const Buffer& arguments, VkDeviceSize offset) const {
+        static_assert(std::is_trivially_copyable_v<Push>, "push constants are copied bytewise");
+        dispatchIndirectBytes(cmd, std::span(buffers.begin(), buffers.size()), std::as_bytes(std::span(&push, 1)),
+                              arguments, offset);
+    }
+    void dispatchIndirectBytes(VkCommandBuffer cmd, std::span<const BufferRange> buffers,
+                               std::span<const std::byte> push, const Buffer& arguments, VkDeviceSize offset) const;
+
 private:
+    void checkInterface(std::span<const BufferRange> buffers, std::span<const std::byte> push) const;
+    // Binds the pipeline, pushes the buffers' descriptors and the push constants.
+    void bind(VkCommandBuffer cmd, std::span<const BufferRange> buffers, std::span<const std::byte> push) const;
     VkBufferView texelView(const BufferRange& range, VkFormat format) const;
 
     const Context* context_ = nullptr; // for its kernel profile

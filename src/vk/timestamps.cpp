@@ -1,5 +1,7 @@
 #include "vk/timestamps.h"
 
+#include <stdexcept>
+
 #include <fmt/format.h>
 
 #include "vk/context.h"
@@ -45,8 +47,15 @@ std::vector<double> Timestamps::readNs(std::uint32_t count) const {
 }
 
 double Timestamps::elapsedNs(std::uint32_t from, std::uint32_t to) const {
-    std::vector<double> ns = readNs();
-    return ns.at(to) - ns.at(from);
+    // Only the two queries: the others may not have been written since the pool was reset.
+    auto read = [&](std::uint32_t index) {
+        if (index >= count_) throw std::out_of_range(fmt::format("timestamp query {} of {}", index, count_));
+        std::uint64_t raw = 0;
+        VK_CHECK(vkGetQueryPoolResults(device_, pool_.get(), index, 1, sizeof raw, &raw, sizeof raw,
+                                       VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
+        return static_cast<double>(raw & validMask_) * periodNs_;
+    };
+    return read(to) - read(from);
 }
 
 } // namespace simeco::vk

@@ -1,0 +1,232 @@
+// Steps recorded one after the other into one submission, with the stream sizes on the device: each step's
+// sizes kernel (derive/step_sizes.comp) turns the modules of its input into the workgroup counts of its
+// dispatches, so the host waits once per batch of steps instead of twice per step. On a discrete GPU each wait
+// costs far more than a small step's kernels.
+#include "gpu/derive_gpu_impl.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "vk/barriers.h"
+
+namespace simeco::gpu {
+
+using shared::DeriveHelperPush;
+using shared::DerivePush;
+using shared::StepSizesPush;
+using vk::Hazard;
+
+namespace {
+
+VkDeviceSize alignUp(VkDeviceSize value, VkDeviceSize alignment) {
+    return (value + alignment - 1) / alignment * alignment;
+}
+
+// Where batch slot `slot`'s word `which` of its block lies in the step words, in bytes.
+VkDeviceSize blockOffset(uint32_t slot, uint32_t which) {
+    return VkDeviceSize(shared::kStepBlocks + slot * shared::kStepBlockWords + which) * 4;
+}
+
+// Steps ahead a stream that overflowed makes room for, at the rate the overflowing step grew, and the most it
+// grows by at once: a few steps keep the submissions few without holding far more memory than the string.
+constexpr int kStepsAhead = 4;
+constexpr double kMostGrowth = 64.0;
+
+} // namespace
+
+bool GpuDeriver::Impl::recordsSteps(bool particles) const {
+    return strategy == GpuStrategy::Parallel && kernels.fusedScan && !kernels.hasDecomposition &&
+           !kernels.needsBrackets && !kernels.mayCut && kernels.longestPredecessor <= 1 && !particles &&
+           plantStartsTiled.has_value();
+}
+
+void GpuDeriver::Impl::reserveBatchState(uint32_t steps) {
+    VkDeviceSize alignment = std::max<VkDeviceSize>(ctx.limits().minStorageBufferOffsetAlignment, 8);
+    VkDeviceSize globalsBytes = alignUp(bytes(uint64_t(plants) * std::max<uint32_t>(globalStride, 1), 8), alignment);
+    VkDeviceSize arraysBytes = alignUp(bytes(uint64_t(plants) * std::max<uint32_t>(arrayStride, 1), 8), alignment);
+    VkDeviceSize frozenBytes = alignUp(bytes(plants, 4), alignment);
+    auto reserve = [&](vk::Buffer& buffer, VkDeviceSize& slice, VkDeviceSize sliceBytes) {
+        if (!buffer || buffer.size() < sliceBytes * steps)
+            buffer = vk::Buffer(ctx, sliceBytes * steps, vk::MemoryUsage::Upload);
+        slice = sliceBytes;
+    };
+    reserve(batchGlobals, globalsSlice, globalsBytes);
+    reserve(batchArrays, arraysSlice, arraysBytes);
+    reserve(batchFrozen, frozenSlice, frozenBytes);
+}
+
+uint64_t GpuDeriver::Impl::recordedCapacity(const Stream& out) const {
+    uint64_t room = std::min<uint64_t>({out.capacity, scratchCapacity - 1, scan.capacity()});
+    return std::min<uint64_t>(room, std::numeric_limits<uint32_t>::max() - 1);
+}
+
+void GpuDeriver::Impl::makeRoom(int cur, uint64_t modules) {
+    for (int k = 0; k < 3; ++k) {
+        Stream& s = streams[k];
+        if (s.capacity >= modules && s.sym) continue;
+        if (k == cur && s.count > 0) {
+            // The batch reads this string: its modules move to the new buffers first thing in the submission.
+            Stream old;
+            old.sym = std::move(s.sym);
+            old.par = std::move(s.par);
+            pendingCopies.emplace_back(std::move(old), s.count);
+        }
+        ensureStream(s, modules);
+    }
+    // The scratch as large as the smallest stream (a step's output is the next step's input), as far as a buffer
+    // holds it with its one word more.
+    ensureScratch(std::min({streams[0].capacity, streams[1].capacity, streams[2].capacity, bufferLimit() / 4 - 1}));
+}
+
+int GpuDeriver::Impl::deriveRecorded(stream::PlantControl& control, int cur, uint32_t seed, uint64_t budget,
+                                     bool timed, GpuDeriveStats& stats) {
+    if (!stepSizes) stepSizes = vk::ComputePipeline::embedded(ctx, "derive/step_sizes");
+    if (!stepWords) {
+        stepWords = vk::Buffer(ctx, shared::kStepWords * 4, vk::MemoryUsage::DeviceLocal,
+                               VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT);
+        stepWordsReadback = vk::Buffer(ctx, (shared::kStepBlocks + 3) * 4, vk::MemoryUsage::Readback);
+    }
+    if (timed && !batchTimer) batchTimer.emplace(ctx, shared::kMostRecordedSteps + 1);
+    reserveBatchState(shared::kMostRecordedSteps);
+    makeRoom(cur, streams[cur].count);
+
+    std::vector<uint8_t> growing(plants, 0);
+    std::vector<RecordedStep> batch;
+    for (int step = 1; step <= control.steps();) {
+        batch.clear();
+        for (; step <= control.steps() && batch.size() < shared::kMostRecordedSteps; ++step) {
+            bool anyGrowing = false;
+            for (uint32_t plant = 0; plant < plants; ++plant) {
+                growing[plant] = control.beginStep(plant, step);
+                anyGrowing = anyGrowing || growing[plant];
+            }
+            if (!anyGrowing) {
+                step = control.steps() + 1;
+                break;
+            }
+            VkDeviceSize slot = batch.size();
+            bool frozen = writePlantState(
+                control, growing, reinterpret_cast<double*>(batchGlobals.mapped() + slot * globalsSlice),
+                reinterpret_cast<double*>(batchArrays.mapped() + slot * arraysSlice),
+                reinterpret_cast<uint32_t*>(batchFrozen.mapped() + slot * frozenSlice));
+            batch.push_back({uint32_t(step), frozen});
+            for (uint32_t plant = 0; plant < plants; ++plant)
+                if (growing[plant]) control.endStep(plant, step);
+        }
+        int stepsAfterBatch = std::max(control.steps() - step + 1, 0);
+        for (size_t done = 0; done < batch.size();)
+            done = runBatch(batch, done, cur, seed, budget, timed, stepsAfterBatch, stats);
+    }
+    return cur;
+}
+
+size_t GpuDeriver::Impl::runBatch(const std::vector<RecordedStep>& batch, size_t first, int& cur, uint32_t seed,
+                                  uint64_t budget, bool timed, int stepsAfterBatch, GpuDeriveStats& stats) {
+    vk::Timestamps* timer = timed ? &*batchTimer : nullptr;
+    int in = cur;
+    ++waits;
+    ctx.submitAndWait([&](VkCommandBuffer cmd) {
+        if (timer) {
+            timer->cmdReset(cmd);
+            timer->cmdWrite(cmd, uint32_t(first), VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT);
+        }
+        for (const auto& [old, modules] : pendingCopies) {
+            const Stream& s = streams[in];
+            VkBufferCopy symbols{0, 0, bytes(modules, 4)}, parameters{0, 0, bytes(modules, 4ull * uint64_t(stride))};
+            vkCmdCopyBuffer(cmd, old.sym.handle(), s.sym.handle(), 1, &symbols);
+            vkCmdCopyBuffer(cmd, old.par.handle(), s.par.handle(), 1, &parameters);
+        }
+        vk::cmdFill(cmd, errors, 0);
+        vk::cmdFill(cmd, stepWords, 0);
+        vk::memoryBarrier(cmd, Hazard::TransferToCompute);
+        for (size_t j = first; j < batch.size(); ++j) {
+            recordStep(cmd, batch[j], uint32_t(j), in, seed, budget);
+            in = (in + 1) % 3;
+            if (timer) timer->cmdWrite(cmd, uint32_t(j + 1));
+        }
+        vk::memoryBarrier(cmd, Hazard::ComputeToTransfer);
+        VkBufferCopy words{0, 0, shared::kStepBlocks * 4}, errorWords{0, shared::kStepBlocks * 4, 12};
+        vkCmdCopyBuffer(cmd, stepWords.handle(), stepWordsReadback.handle(), 1, &words);
+        vkCmdCopyBuffer(cmd, errors.handle(), stepWordsReadback.handle(), 1, &errorWords);
+        vk::memoryBarrier(cmd, Hazard::TransferToHost);
+    });
+    batchSlot = -1;
+    pendingCopies.clear();
+    const uint32_t* words = reinterpret_cast<const uint32_t*>(stepWordsReadback.mapped());
+    lastFlags = words[shared::kStepBlocks + 1];
+    checkKernelErrors(words[shared::kStepBlocks], lastFlags, false);
+
+    const uint32_t stopped = words[shared::kStepStopped];
+    const size_t end = stopped != 0 ? (stopped >> 2) - 1 : batch.size();
+    const uint64_t perModule = 4 + 4ull * uint64_t(stride) + 8 + 8; // as step() counts a fused step
+    for (size_t j = first; j < end; ++j) {
+        uint32_t n = streams[cur].count, total = words[shared::kStepTotals + j];
+        cur = (cur + 1) % 3;
+        streams[cur].count = total;
+        stats.bytesMoved += uint64_t(n) * perModule + uint64_t(total) * (4 + 4ull * uint64_t(stride) + 8);
+        stats.peakModules = std::max<uint64_t>(stats.peakModules, total);
+        if (timer) stats.stepMillis.push_back(timer->elapsedNs(uint32_t(j), uint32_t(j + 1)) / 1e6);
+    }
+    if (stopped == 0) return end;
+    const uint64_t total = words[shared::kStepTotals + end];
+    if ((stopped & 3u) == shared::kStopBudget) checkBudget(total, budget, batch[end].index);
+    // The step outgrew its stream: room for it and a few steps more at its rate of growth, as far as the rest of
+    // the derivation goes.
+    int stepsAhead = std::min<int>(kStepsAhead, int(batch.size() - end - 1) + stepsAfterBatch);
+    double rate = double(total) / double(std::max<uint32_t>(streams[cur].count, 1));
+    double growth = std::min(std::pow(std::max(rate, 1.0), stepsAhead), kMostGrowth);
+    uint64_t room = std::max<uint64_t>(total, uint64_t(double(total) * growth));
+    room = std::min<uint64_t>(room, std::max<uint64_t>(total, budget));
+    room = std::min<uint64_t>(room, std::max<uint64_t>(total, bufferLimit() / (4ull * uint64_t(stride))));
+    makeRoom(cur, room);
+    return end;
+}
+
+void GpuDeriver::Impl::recordStep(VkCommandBuffer cmd, const RecordedStep& step, uint32_t slot, int in, uint32_t seed,
+                                  uint64_t budget) {
+    const Stream& input = streams[in];
+    Stream& output = streams[(in + 1) % 3];
+    batchSlot = int(slot);
+    StepSizesPush sizes{0,
+                        slot,
+                        plants,
+                        tileSize,
+                        kernels.chunkedMatch ? 1u : 0u,
+                        uint32_t(recordedCapacity(output)),
+                        uint32_t(std::min<uint64_t>(budget, std::numeric_limits<uint32_t>::max())),
+                        ctx.limits().maxComputeWorkGroupCount[0]};
+    stepSizes->dispatch(cmd, {plantTable(input), scan.totalBuffer(), stepWords}, sizes, 1);
+    vk::memoryBarrier(cmd, Hazard::ComputeToIndirect);
+
+    DerivePush p = push(shared::kCountOnDevice, step.index, seed, step.index * shared::kPassesPerStep,
+                        shared::kCountOnDevice, 0);
+    p.frozenPlants = step.anyFrozen ? 1u : 0u;
+    if ((kernels.matchFindsPlants || kernels.writeFindsPlants || step.anyFrozen) && plants > 1) {
+        plantHintsKernel.dispatchIndirect(cmd, {plantTable(input), plantHints},
+                                          DeriveHelperPush{shared::kCountOnDevice, 0, 0, plants}, stepWords,
+                                          blockOffset(slot, shared::kArgsHints));
+        vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+    }
+    dispatchDeriveIndirect(cmd, stepMatch(), input, {counts, drawStarts, cutDelta, tileSums}, p,
+                           blockOffset(slot, shared::kArgsMatch), kernels.matchReadsParameterVectors);
+    vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+    scan.recordCountedOnDevice(cmd, tileSums, tileOffsets, stepWords,
+                               uint32_t(blockOffset(slot, shared::kScanCountWord) / 4), stepWords,
+                               blockOffset(slot, shared::kArgsScan));
+    vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+
+    sizes.mode = 1;
+    stepSizes->dispatch(cmd, {plantTable(input), scan.totalBuffer(), stepWords}, sizes, 1);
+    vk::memoryBarrier(cmd, Hazard::ComputeToIndirect);
+    dispatchDeriveIndirect(cmd, stepWrite(), input,
+                           {counts, tileOffsets, drawStarts, output.sym, output.par, output.origin, output.live}, p,
+                           blockOffset(slot, shared::kArgsWrite), kernels.writeReadsParameterVectors);
+    plantStartsTiled->dispatchIndirect(
+        cmd, {plantTable(input), counts, tileOffsets, plantTable(output), scan.totalBuffer()},
+        DeriveHelperPush{shared::kCountOnDevice, tileSize, shared::kCountOnDevice, plants}, stepWords,
+        blockOffset(slot, shared::kArgsPlantStarts));
+    vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+}
+
+} // namespace simeco::gpu

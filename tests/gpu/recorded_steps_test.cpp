@@ -1,0 +1,82 @@
+// Steps recorded one after the other with their sizes on the device: the strings equal the CPU reference's
+// while the streams outgrow their room, across batches, at the module budget; the host waits once per batch.
+#include <cstdint>
+#include <string>
+
+#include "../unit/grammar_text.h"
+#include "compare_strings.h"
+#include "compute/shared/derive_layout.h"
+#include "cpu/derive.h"
+#include "gpu/derive_gpu.h"
+#include "gpu_fixture.h"
+#include "ir/source_loc.h"
+
+namespace simeco::test {
+namespace {
+
+using RecordedStepsTest = GpuTest;
+
+// A fresh deriver starts with room for about a thousand modules: a string growing fivefold a step outgrows its
+// streams, the batch stops there, and the rest runs again in the grown streams. A second derivation finds the room.
+TEST_F(RecordedStepsTest, StreamsGrowAndTheStringsMatchTheCpu) {
+    ir::Grammar g = simeco::testing::grammarFromText(
+        simeco::testing::lsystem("F(1)", "F(x) --> F(x*2)[+F(x+1)]F(x)[-F(x/2)]F(x-1)\n", 7));
+    for (std::uint32_t plants : {1u, 3u}) {
+        SCOPED_TRACE(std::to_string(plants) + " plants");
+        stream::DeriveOptions options;
+        options.plants = plants;
+        stream::DeriveResult want = cpu::deriveCpu(g, options);
+        gpu::GpuDeriver deriver(context(), g);
+        ASSERT_TRUE(deriver.recordsSteps(options));
+        gpu::GpuDeriveStats first, again;
+        EXPECT_EQ(firstDifference(want, deriver.derive(options, true, &first), g.alphabet), "");
+        EXPECT_GE(first.waits, 2u) << "the string never outgrew the first room";
+        EXPECT_LT(first.waits, 7u) << "a wait per step";
+        EXPECT_EQ(first.stepMillis.size(), 7u);
+        EXPECT_EQ(first.peakModules, want.string.size());
+        EXPECT_EQ(firstDifference(want, deriver.derive(options, true, &again), g.alphabet), "");
+        EXPECT_EQ(again.waits, 1u);
+    }
+}
+
+// More steps than one submission records: a batch after another, the plant control a batch ahead of the device,
+// its StartEach block changing a global that the productions read every step.
+TEST_F(RecordedStepsTest, LongDerivationsRunInBatches) {
+    const std::uint32_t steps = shared::kMostRecordedSteps * 2 + 5;
+    ir::Grammar g = simeco::testing::grammarFromText(simeco::testing::lsystem(
+        "A(0)", "Start: {n = 0;}\nStartEach: {n = n + 1;}\nA(x) --> A(x+n)B\nB --> B\n", int(steps)));
+    stream::DeriveOptions options;
+    options.plants = 5;
+    stream::DeriveResult want = cpu::deriveCpu(g, options);
+    gpu::GpuDeriver deriver(context(), g);
+    ASSERT_TRUE(deriver.recordsSteps(options));
+    gpu::GpuDeriveStats stats;
+    EXPECT_EQ(firstDifference(want, deriver.derive(options, true, &stats), g.alphabet), "");
+    EXPECT_EQ(stats.waits, 3u);
+    EXPECT_EQ(stats.stepMillis.size(), steps);
+}
+
+// The budget ends a recorded derivation with the CPU's message, naming the step.
+TEST_F(RecordedStepsTest, TheModuleBudgetStopsTheStepThatPassesIt) {
+    ir::Grammar g = simeco::testing::grammarFromText(simeco::testing::lsystem("F", "F --> FF\n", 40));
+    stream::DeriveOptions options;
+    options.maxModules = 1000;
+    std::string want;
+    try {
+        cpu::deriveCpu(g, options);
+    } catch (const ir::LimitError& e) {
+        want = e.what();
+    }
+    ASSERT_NE(want.find("in step 10"), std::string::npos) << want;
+    gpu::GpuDeriver deriver(context(), g);
+    ASSERT_TRUE(deriver.recordsSteps(options));
+    try {
+        deriver.derive(options);
+        ADD_FAILURE() << "the module budget did not stop the derivation";
+    } catch (const ir::LimitError& e) {
+        EXPECT_EQ(std::string(e.what()), want);
+    }
+}
+
+} // namespace
+} // namespace simeco::test

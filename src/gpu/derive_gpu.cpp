@@ -46,22 +46,43 @@ GpuContextMatch GpuDeriver::contextMatch() const {
 
 GpuDeriver::~GpuDeriver() = default;
 
-void GpuDeriver::Impl::uploadAxioms(const stream::ModuleString& axioms, const stream::DeriveOptions& options) {
+void GpuDeriver::Impl::reserve(vk::Buffer& buffer, VkDeviceSize size, vk::MemoryUsage usage) {
+    if (!buffer || buffer.size() < size) buffer = vk::Buffer(ctx, size, usage);
+}
+
+void GpuDeriver::Impl::uploadAxioms(const stream::ModuleString& axioms, const stream::DeriveOptions& options,
+                                    bool staged) {
+    // Copies a derivation that ended in an error left unrecorded: their buffers may be gone.
+    pendingCopies.clear();
+    retiredBuffers.clear();
     for (Stream& s : streams) {
-        // The plant tables are sized by the plant count, which may change between derivations.
-        s.plantStart = vk::Buffer(ctx, bytes(plants + 1, 4), vk::MemoryUsage::DeviceLocal);
+        // The plant tables are bound with the plant count's range, which may change between derivations.
+        reserve(s.plantStart, bytes(plants + 1, 4), vk::MemoryUsage::DeviceLocal);
         s.count = 0;
     }
     Stream& s = streams[0];
     ensureStream(s, axioms.size());
     std::vector<uint32_t> words(axioms.size());
     for (size_t i = 0; i < axioms.size(); ++i) words[i] = axioms.sym[i] | (uint32_t(axioms.paramCount[i]) << 24);
-    if (!words.empty()) {
-        vk::upload(ctx, s.sym, std::as_bytes(std::span<const uint32_t>(words)));
-        vk::upload(ctx, s.par, std::as_bytes(std::span<const float>(axioms.params)));
-    }
     std::vector<uint32_t> table(axioms.plantStart.begin(), axioms.plantStart.end());
-    vk::upload(ctx, s.plantStart, std::as_bytes(std::span<const uint32_t>(table)));
+    std::span<const std::byte> parts[] = {std::as_bytes(std::span<const uint32_t>(words)),
+                                          std::as_bytes(std::span<const float>(axioms.params)),
+                                          std::as_bytes(std::span<const uint32_t>(table))};
+    const vk::Buffer* targets[] = {&s.sym, &s.par, &s.plantStart};
+    if (staged) {
+        // Through a staging buffer that the first submission copies from: no submission and wait of their own.
+        reserve(axiomStaging, bytes(parts[0].size() + parts[1].size() + parts[2].size(), 1), vk::MemoryUsage::Upload);
+        VkDeviceSize at = 0;
+        for (int k = 0; k < 3; ++k) {
+            if (parts[k].empty()) continue;
+            std::copy(parts[k].begin(), parts[k].end(), axiomStaging.mapped() + at);
+            pendingCopies.push_back({axiomStaging.handle(), targets[k]->handle(), {at, 0, parts[k].size()}});
+            at += parts[k].size();
+        }
+    } else {
+        for (int k = 0; k < 3; ++k)
+            if (!parts[k].empty()) vk::upload(ctx, *targets[k], parts[k]);
+    }
     s.count = static_cast<uint32_t>(axioms.size());
     if (options.particles) {
         std::vector<shared::ParticleState> particles;
@@ -72,10 +93,9 @@ void GpuDeriver::Impl::uploadAxioms(const stream::ModuleString& axioms, const st
         if (!particles.empty())
             vk::upload(ctx, s.particles, std::as_bytes(std::span<const shared::ParticleState>(particles)));
     }
-    globals =
-        vk::Buffer(ctx, bytes(uint64_t(plants) * std::max<uint32_t>(globalStride, 1), 8), vk::MemoryUsage::Upload);
-    arrays = vk::Buffer(ctx, bytes(uint64_t(plants) * std::max<uint32_t>(arrayStride, 1), 8), vk::MemoryUsage::Upload);
-    plantFrozen = vk::Buffer(ctx, bytes(plants, 4), vk::MemoryUsage::Upload);
+    reserve(globals, bytes(uint64_t(plants) * std::max<uint32_t>(globalStride, 1), 8), vk::MemoryUsage::Upload);
+    reserve(arrays, bytes(uint64_t(plants) * std::max<uint32_t>(arrayStride, 1), 8), vk::MemoryUsage::Upload);
+    reserve(plantFrozen, bytes(plants, 4), vk::MemoryUsage::Upload);
     if (strategy == GpuStrategy::Sequential) {
         prepareSequential();
         hostPlantTable.assign(axioms.plantStart.begin(), axioms.plantStart.end());
@@ -171,12 +191,14 @@ stream::DeriveResult GpuDeriver::derive(const stream::DeriveOptions& asked, bool
     m.carriesParticles = options.particles;
     m.partnersStream = -1;
     m.bracketTrees = 0;
-    m.waits = 0;
+    const uint64_t submissionsBefore = m.ctx.submissions();
     stream::ModuleString axioms = control.startAll();
     if (axioms.size() > budget)
         throw ir::LimitError(fmt::format("the axioms alone exceed the module budget of {} modules", budget));
     m.axiomsBalanced = bracketsBalanced(axioms);
-    m.uploadAxioms(axioms, options);
+    const bool recorded = m.recordsSteps(options.particles);
+    m.tableReadFrom = -1;
+    m.uploadAxioms(axioms, options, recorded);
 
     std::optional<vk::Timestamps> timer;
     if (m.ctx.timestampValidBits() > 0) timer.emplace(m.ctx, 2);
@@ -185,7 +207,7 @@ stream::DeriveResult GpuDeriver::derive(const stream::DeriveOptions& asked, bool
     // A plant freezes once it has derived its species' length, or after the step in which it called stop().
     std::vector<uint8_t> growing(m.plants, 0);
     int cur = 0;
-    if (m.recordsSteps(options.particles)) {
+    if (recorded) {
         cur = m.deriveRecorded(control, cur, seed, budget, stepTimer != nullptr, stats);
     } else {
         for (int step = 1; step <= control.steps(); ++step) {
@@ -226,14 +248,19 @@ stream::DeriveResult GpuDeriver::derive(const stream::DeriveOptions& asked, bool
     m.lastStream = cur;
     stats.modules = final.count;
     stats.bracketTrees = m.bracketTrees;
-    stats.waits = m.waits;
     if (readBack) {
         result.string = m.readBack(final, options.particles);
     } else {
         result.string.stride = m.stride;
-        std::vector<uint32_t> table = vk::downloadVector<uint32_t>(m.ctx, final.plantStart, m.plants + 1);
-        result.string.plantStart.assign(table.begin(), table.end());
+        if (m.tableReadFrom == cur) { // the last batch read it back
+            const uint32_t* table = reinterpret_cast<const uint32_t*>(m.tableReadback.mapped());
+            result.string.plantStart.assign(table, table + m.plants + 1);
+        } else {
+            std::vector<uint32_t> table = vk::downloadVector<uint32_t>(m.ctx, final.plantStart, m.plants + 1);
+            result.string.plantStart.assign(table.begin(), table.end());
+        }
     }
+    stats.waits = static_cast<uint32_t>(m.ctx.submissions() - submissionsBefore);
     stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (statsOut) *statsOut = stats;
     return result;

@@ -49,7 +49,7 @@ struct GpuDeriveStats {
     std::vector<double> stepMillis;  // GPU time of each step from timestamps (empty if unsupported)
     uint64_t peakModules = 0;
     uint32_t bracketTrees = 0;       // bracket trees built: once, when each step's write carries the partners
-    uint32_t waits = 0;              // times the host waited for the device between the derivation's passes
+    uint32_t waits = 0;              // submissions the host waited for, the string's read-back included
 };
 
 class GpuDeriver {

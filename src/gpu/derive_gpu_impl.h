@@ -113,7 +113,6 @@ struct GpuDeriver::Impl {
     int partnersStream = -1;
     bool axiomsBalanced = false;
     uint32_t bracketTrees = 0; // built since the derivation started
-    uint32_t waits = 0;        // submissions waited for since the derivation started
     bool lastUnfinished = false; // errors[2] of the last submit: the sequential kernel's plants need more dispatches
     uint64_t scratchCapacity = 0;
     Stream streams[3];
@@ -126,7 +125,18 @@ struct GpuDeriver::Impl {
     vk::Buffer batchGlobals, batchArrays, batchFrozen;
     VkDeviceSize globalsSlice = 0, arraysSlice = 0, frozenSlice = 0;
     std::optional<vk::Timestamps> batchTimer;
-    std::vector<std::pair<Stream, uint32_t>> pendingCopies; // old buffers and the modules to copy from them
+    // Copies the next submission records first (the axioms from their staging buffer, a grown stream's string from
+    // its old buffers), and the buffers they read, kept until it ends.
+    struct PendingCopy {
+        VkBuffer from, to;
+        VkBufferCopy region;
+    };
+    std::vector<PendingCopy> pendingCopies;
+    std::vector<vk::Buffer> retiredBuffers;
+    vk::Buffer axiomStaging;
+    // The plant table of streams[tableReadFrom], read back at the end of the last batch (-1: none).
+    vk::Buffer tableReadback;
+    int tableReadFrom = -1;
     // The plant state the derivation kernels bind: the host's buffers, or batch step `batchSlot`'s slices.
     int batchSlot = -1;
 
@@ -163,8 +173,11 @@ struct GpuDeriver::Impl {
 
     // ---- the host's side of a derivation (derive_gpu.cpp) ----
 
-    // The axioms (and their particle state) into streams[0], and the per-plant buffers sized to `plants`.
-    void uploadAxioms(const stream::ModuleString& axioms, const stream::DeriveOptions& options);
+    // The axioms (and their particle state) into streams[0], and the per-plant buffers sized to `plants`; `staged`:
+    // copied in by the first submission (pendingCopies) instead of submissions of their own.
+    void uploadAxioms(const stream::ModuleString& axioms, const stream::DeriveOptions& options, bool staged);
+    // `buffer` at least `size` bytes; a new one, of that size, when smaller.
+    void reserve(vk::Buffer& buffer, VkDeviceSize size, vk::MemoryUsage usage);
     // The plants' globals and arrays, and which plants grow in the step (the others are copied).
     void uploadPlantState(const stream::PlantControl& control, const std::vector<uint8_t>& growing);
     // The same into the given memory; returns whether some plant is frozen.
@@ -269,6 +282,18 @@ struct GpuDeriver::Impl {
     struct RecordedStep {
         uint32_t index;  // the derivation step
         bool anyFrozen;  // some plant is copied in it
+    };
+    // Records pendingCopies, ordered before what follows in the submission.
+    void recordPendingCopies(VkCommandBuffer cmd) const;
+    // When a batch's submission ends, by its wait or a throw: the kernels bind the host's plant state again, and
+    // the copies it recorded and the buffers they read are done with.
+    struct SubmissionEnd {
+        Impl& impl;
+        ~SubmissionEnd() {
+            impl.batchSlot = -1;
+            impl.pendingCopies.clear();
+            impl.retiredBuffers.clear();
+        }
     };
     // Runs batch steps `first` on from streams[cur] in one submission; returns the steps done, `cur` their stream.
     size_t runBatch(const std::vector<RecordedStep>& batch, size_t first, int& cur, uint32_t seed, uint64_t budget,

@@ -44,7 +44,6 @@ DerivePush GpuDeriver::Impl::push(uint32_t count, uint32_t step, uint32_t seed, 
 
 uint32_t GpuDeriver::Impl::submit(const std::function<void(VkCommandBuffer)>& record, vk::Timestamps* timer,
                                   double& gpuMillis, bool retriesCutLoops) {
-    ++waits;
     ctx.submitAndWait([&](VkCommandBuffer cmd) {
         if (timer) {
             timer->cmdReset(cmd);

@@ -46,14 +46,13 @@ void GpuDeriver::Impl::reserveBatchState(uint32_t steps) {
     VkDeviceSize globalsBytes = alignUp(bytes(uint64_t(plants) * std::max<uint32_t>(globalStride, 1), 8), alignment);
     VkDeviceSize arraysBytes = alignUp(bytes(uint64_t(plants) * std::max<uint32_t>(arrayStride, 1), 8), alignment);
     VkDeviceSize frozenBytes = alignUp(bytes(plants, 4), alignment);
-    auto reserve = [&](vk::Buffer& buffer, VkDeviceSize& slice, VkDeviceSize sliceBytes) {
-        if (!buffer || buffer.size() < sliceBytes * steps)
-            buffer = vk::Buffer(ctx, sliceBytes * steps, vk::MemoryUsage::Upload);
+    auto slices = [&](vk::Buffer& buffer, VkDeviceSize& slice, VkDeviceSize sliceBytes) {
+        reserve(buffer, sliceBytes * steps, vk::MemoryUsage::Upload);
         slice = sliceBytes;
     };
-    reserve(batchGlobals, globalsSlice, globalsBytes);
-    reserve(batchArrays, arraysSlice, arraysBytes);
-    reserve(batchFrozen, frozenSlice, frozenBytes);
+    slices(batchGlobals, globalsSlice, globalsBytes);
+    slices(batchArrays, arraysSlice, arraysBytes);
+    slices(batchFrozen, frozenSlice, frozenBytes);
 }
 
 uint64_t GpuDeriver::Impl::recordedCapacity(const Stream& out) const {
@@ -65,14 +64,16 @@ void GpuDeriver::Impl::makeRoom(int cur, uint64_t modules) {
     for (int k = 0; k < 3; ++k) {
         Stream& s = streams[k];
         if (s.capacity >= modules && s.sym) continue;
+        vk::Buffer oldSymbols = std::move(s.sym), oldParameters = std::move(s.par);
+        ensureStream(s, modules);
         if (k == cur && s.count > 0) {
             // The batch reads this string: its modules move to the new buffers first thing in the submission.
-            Stream old;
-            old.sym = std::move(s.sym);
-            old.par = std::move(s.par);
-            pendingCopies.emplace_back(std::move(old), s.count);
+            pendingCopies.push_back({oldSymbols.handle(), s.sym.handle(), {0, 0, bytes(s.count, 4)}});
+            pendingCopies.push_back(
+                {oldParameters.handle(), s.par.handle(), {0, 0, bytes(s.count, 4ull * uint64_t(stride))}});
+            retiredBuffers.push_back(std::move(oldSymbols));
+            retiredBuffers.push_back(std::move(oldParameters));
         }
-        ensureStream(s, modules);
     }
     // The scratch as large as the smallest stream (a step's output is the next step's input), as far as a buffer
     // holds it with its one word more.
@@ -88,6 +89,7 @@ int GpuDeriver::Impl::deriveRecorded(stream::PlantControl& control, int cur, uin
         stepWordsReadback = vk::Buffer(ctx, (shared::kStepBlocks + 3) * 4, vk::MemoryUsage::Readback);
     }
     if (timed && !batchTimer) batchTimer.emplace(ctx, shared::kMostRecordedSteps + 1);
+    reserve(tableReadback, bytes(plants + 1, 4), vk::MemoryUsage::Readback);
     reserveBatchState(shared::kMostRecordedSteps);
     makeRoom(cur, streams[cur].count);
 
@@ -118,25 +120,32 @@ int GpuDeriver::Impl::deriveRecorded(stream::PlantControl& control, int cur, uin
         for (size_t done = 0; done < batch.size();)
             done = runBatch(batch, done, cur, seed, budget, timed, stepsAfterBatch, stats);
     }
+    if (!pendingCopies.empty()) { // no step ran: the axioms still wait in their staging buffer
+        SubmissionEnd submission{*this};
+        ctx.submitAndWait([&](VkCommandBuffer cmd) { recordPendingCopies(cmd); });
+    }
     return cur;
+}
+
+void GpuDeriver::Impl::recordPendingCopies(VkCommandBuffer cmd) const {
+    for (const PendingCopy& copy : pendingCopies) {
+        vk::memoryBarrier(cmd, Hazard::AnyToTransfer); // a copy may read what the one before wrote
+        vkCmdCopyBuffer(cmd, copy.from, copy.to, 1, &copy.region);
+    }
+    vk::memoryBarrier(cmd, Hazard::TransferToCompute);
 }
 
 size_t GpuDeriver::Impl::runBatch(const std::vector<RecordedStep>& batch, size_t first, int& cur, uint32_t seed,
                                   uint64_t budget, bool timed, int stepsAfterBatch, GpuDeriveStats& stats) {
     vk::Timestamps* timer = timed ? &*batchTimer : nullptr;
     int in = cur;
-    ++waits;
+    std::optional<SubmissionEnd> submission{*this};
     ctx.submitAndWait([&](VkCommandBuffer cmd) {
         if (timer) {
             timer->cmdReset(cmd);
             timer->cmdWrite(cmd, uint32_t(first), VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT);
         }
-        for (const auto& [old, modules] : pendingCopies) {
-            const Stream& s = streams[in];
-            VkBufferCopy symbols{0, 0, bytes(modules, 4)}, parameters{0, 0, bytes(modules, 4ull * uint64_t(stride))};
-            vkCmdCopyBuffer(cmd, old.sym.handle(), s.sym.handle(), 1, &symbols);
-            vkCmdCopyBuffer(cmd, old.par.handle(), s.par.handle(), 1, &parameters);
-        }
+        recordPendingCopies(cmd);
         vk::cmdFill(cmd, errors, 0);
         vk::cmdFill(cmd, stepWords, 0);
         vk::memoryBarrier(cmd, Hazard::TransferToCompute);
@@ -146,21 +155,23 @@ size_t GpuDeriver::Impl::runBatch(const std::vector<RecordedStep>& batch, size_t
             if (timer) timer->cmdWrite(cmd, uint32_t(j + 1));
         }
         vk::memoryBarrier(cmd, Hazard::ComputeToTransfer);
-        VkBufferCopy words{0, 0, shared::kStepBlocks * 4}, errorWords{0, shared::kStepBlocks * 4, 12};
+        VkBufferCopy words{0, 0, shared::kStepBlocks * 4}, errorWords{0, shared::kStepBlocks * 4, 12},
+            table{0, 0, bytes(plants + 1, 4)};
         vkCmdCopyBuffer(cmd, stepWords.handle(), stepWordsReadback.handle(), 1, &words);
         vkCmdCopyBuffer(cmd, errors.handle(), stepWordsReadback.handle(), 1, &errorWords);
+        // The last step's plant table, which the caller reads when no step stopped the batch.
+        vkCmdCopyBuffer(cmd, streams[in].plantStart.handle(), tableReadback.handle(), 1, &table);
         vk::memoryBarrier(cmd, Hazard::TransferToHost);
     });
-    batchSlot = -1;
-    pendingCopies.clear();
+    submission.reset();
     const uint32_t* words = reinterpret_cast<const uint32_t*>(stepWordsReadback.mapped());
     lastFlags = words[shared::kStepBlocks + 1];
     checkKernelErrors(words[shared::kStepBlocks], lastFlags, false);
 
     const uint32_t stopped = words[shared::kStepStopped];
-    const size_t end = stopped != 0 ? (stopped >> 2) - 1 : batch.size();
+    const size_t done = stopped != 0 ? (stopped >> 2) - 1 : batch.size();
     const uint64_t perModule = 4 + 4ull * uint64_t(stride) + 8 + 8; // as step() counts a fused step
-    for (size_t j = first; j < end; ++j) {
+    for (size_t j = first; j < done; ++j) {
         uint32_t n = streams[cur].count, total = words[shared::kStepTotals + j];
         cur = (cur + 1) % 3;
         streams[cur].count = total;
@@ -168,19 +179,22 @@ size_t GpuDeriver::Impl::runBatch(const std::vector<RecordedStep>& batch, size_t
         stats.peakModules = std::max<uint64_t>(stats.peakModules, total);
         if (timer) stats.stepMillis.push_back(timer->elapsedNs(uint32_t(j), uint32_t(j + 1)) / 1e6);
     }
-    if (stopped == 0) return end;
-    const uint64_t total = words[shared::kStepTotals + end];
-    if ((stopped & 3u) == shared::kStopBudget) checkBudget(total, budget, batch[end].index);
+    if (stopped == 0) {
+        tableReadFrom = cur;
+        return done;
+    }
+    const uint64_t total = words[shared::kStepTotals + done];
+    if ((stopped & 3u) == shared::kStopBudget) checkBudget(total, budget, batch[done].index);
     // The step outgrew its stream: room for it and a few steps more at its rate of growth, as far as the rest of
     // the derivation goes.
-    int stepsAhead = std::min<int>(kStepsAhead, int(batch.size() - end - 1) + stepsAfterBatch);
+    int stepsAhead = std::min<int>(kStepsAhead, int(batch.size() - done - 1) + stepsAfterBatch);
     double rate = double(total) / double(std::max<uint32_t>(streams[cur].count, 1));
     double growth = std::min(std::pow(std::max(rate, 1.0), stepsAhead), kMostGrowth);
     uint64_t room = std::max<uint64_t>(total, uint64_t(double(total) * growth));
     room = std::min<uint64_t>(room, std::max<uint64_t>(total, budget));
     room = std::min<uint64_t>(room, std::max<uint64_t>(total, bufferLimit() / (4ull * uint64_t(stride))));
     makeRoom(cur, room);
-    return end;
+    return done;
 }
 
 void GpuDeriver::Impl::recordStep(VkCommandBuffer cmd, const RecordedStep& step, uint32_t slot, int in, uint32_t seed,

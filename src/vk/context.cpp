@@ -118,6 +118,7 @@ Context::~Context() {
 }
 
 void Context::submitAndWait(const std::function<void(VkCommandBuffer)>& record, std::chrono::seconds timeout) const {
+    ++submissions_;
     VkCommandBufferAllocateInfo allocateInfo{};
     allocateInfo.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO;
     allocateInfo.commandPool = commandPool_.get();

@@ -58,6 +58,9 @@ public:
     // within `timeout` raises VulkanError rather than hanging the program.
     void submitAndWait(const std::function<void(VkCommandBuffer)>& record,
                        std::chrono::seconds timeout = std::chrono::seconds(120)) const;
+    // Submissions waited for since the context was made: on a discrete GPU each costs far more than a small
+    // kernel, so the derivation counts its own (GpuDeriveStats::waits).
+    std::uint64_t submissions() const { return submissions_; }
 
     // From now on, time every dispatch of submitAndWait's submissions per kernel (see KernelProfile).
     void enableKernelProfile();
@@ -76,6 +79,7 @@ private:
     UniqueCommandPool commandPool_;
     PFN_vkCmdPushDescriptorSetKHR cmdPushDescriptorSet_ = nullptr;
     std::unique_ptr<KernelProfile> profile_;
+    mutable std::uint64_t submissions_ = 0;
 };
 
 } // namespace simeco::vk

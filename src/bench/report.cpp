@@ -31,6 +31,7 @@ nlohmann::json backendJson(const BackendResult& r, bool gpu) {
         j["pass_ms"] = r.passMillis;
         j["pass_ms_total"] = r.passMillisTotal;
         j["copy_bandwidth_fraction"] = r.copyFraction;
+        j["waits"] = r.waits;
     }
     return j;
 }

@@ -185,6 +185,7 @@ public:
         const gpu::GpuDeriveStats& mid = gpuStats_.at(order.at(order.size() / 2));
         r.modules = mid.modules;
         r.compileSeconds = mid.compileSeconds;
+        r.waits = mid.waits;
         r.passMillis = mid.stepMillis;
         for (double ms : mid.stepMillis)
             r.passMillisTotal += ms;

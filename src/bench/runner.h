@@ -42,6 +42,7 @@ struct BackendResult {
     std::vector<double> passMillis; // GPU time of each derivation step (timestamps), median run
     double passMillisTotal = 0;     // their sum
     double copyFraction = 0;        // bytesPerSecond / the copy kernel's bytes per second
+    std::uint32_t waits = 0;        // submissions the host waited for in the median run (GpuDeriveStats::waits)
 
     bool ok() const { return status == "ok"; }
 };

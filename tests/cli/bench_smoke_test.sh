@@ -56,7 +56,7 @@ for e in entries:
     if gpu.get("status") == "ok":
         gpu_ok += 1
         for key in ("modules", "median_seconds", "modules_per_second", "bytes_moved", "bytes_per_second",
-                    "copy_bandwidth_fraction"):
+                    "copy_bandwidth_fraction", "waits"):
             positive(gpu, key, where + " gpu")
         check(gpu.get("modules") == cpu.get("modules"), f"{where}: gpu modules {gpu.get('modules')} != cpu {cpu.get('modules')}")
         check(len(gpu.get("pass_ms", [])) in (0, e.get("steps")), f"{where}: pass_ms has neither 0 nor one time per step")

@@ -20,7 +20,7 @@ uint symOf(uint i) { return symbols[i] & kSymbolMask; }
 
 void main() {
     uint i = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * gl_WorkGroupSize.x + gl_LocalInvocationID.x;
-    if (i >= pc.count) return;
+    if (i >= (pc.count != kCountOnDevice ? pc.count : levelInfo[kMaxDepthLevels])) return;
     uint sym = symOf(i);
     if (sym == kOpen) {
         partners[i] = firstBelow(i + 1u, depthAt(0u, i));

@@ -10,7 +10,7 @@ layout(push_constant) uniform Push { DeriveHelperPush pc; };
 
 void main() {
     uint k = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * gl_WorkGroupSize.x + gl_LocalInvocationID.x;
-    if (k >= pc.count) return;
+    if (k >= (pc.count != kCountOnDevice ? pc.count : levelInfo[kMaxDepthLevels + pc.level])) return;
     uint below = levelInfo[pc.level - 1u];
     uint belowSize = levelInfo[kMaxDepthLevels + pc.level - 1u];
     int left = tree[below + 2u * k];

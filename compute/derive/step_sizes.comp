@@ -12,6 +12,8 @@ layout(local_size_x = 1) in;
 layout(set = 0, binding = 0, std430) readonly buffer InputStarts { uint inputStarts[]; };
 layout(set = 0, binding = 1, std430) readonly buffer ScanTotal { uint scanTotal; };
 layout(set = 0, binding = 2, std430) buffer Words { uint words[]; };
+// The bracket tree's levels (gpu::BracketTree): offset of level k at k, its size at kMaxDepthLevels + k.
+layout(set = 0, binding = 3, std430) writeonly buffer LevelInfo { uint levelInfo[]; };
 layout(push_constant) uniform Push { StepSizesPush pc; };
 
 uint groupsOf(uint items, uint perGroup) { return (items + perGroup - 1u) / perGroup; }
@@ -22,6 +24,26 @@ void setGroups(uint at, uint groups) {
     words[at] = (groups + y - 1u) / y;
     words[at + 1u] = y;
     words[at + 2u] = 1u;
+}
+
+// As gpu::BracketTree::record lays out the levels of n modules' depth minima: level k holds ceil(n / 2^k), up to
+// the level of one.
+void treeSizes(uint block, uint n, bool stopped) {
+    uint offset = 0u, size = max(n, 1u);
+    bool used = true;
+    for (uint level = 0u; level < kMaxDepthLevels; ++level) {
+        levelInfo[level] = used ? offset : 0u;
+        levelInfo[kMaxDepthLevels + level] = used ? size : 0u;
+        if (level > 0u) {
+            uint groups = used && !stopped ? groupsOf(size, kDeriveWorkgroupSize) : 0u;
+            setGroups(block + kArgsTreeLevels + 3u * (level - 1u), groups);
+        }
+        if (used) offset += size;
+        used = used && size > 1u;
+        size = (size + 1u) / 2u;
+    }
+    setGroups(block + kArgsModules, stopped ? 0u : groupsOf(max(n, 1u), kDeriveWorkgroupSize));
+    setGroups(block + kArgsTreeScan, stopped ? 0u : groupsOf(max(n, 1u), kScanTileSize));
 }
 
 void main() {
@@ -36,6 +58,7 @@ void main() {
         setGroups(block + kArgsMatch, stopped ? 0u : groupsOf(pc.chunkedMatch != 0u ? tiles : modules,
                                                               kDeriveWorkgroupSize));
         setGroups(block + kArgsScan, groupsOf(scanned, kScanTileSize));
+        if (pc.brackets != 0u) treeSizes(block, stopped ? 0u : modules, stopped);
         return;
     }
     bool writes = false;

@@ -94,7 +94,7 @@ SIMECO_CONST kStopBudget = 2u;    // ... or the module budget
 SIMECO_CONST kStepTotals = 4u;    // + batch step: the modules it derived
 SIMECO_CONST kMostRecordedSteps = 64u;
 SIMECO_CONST kStepBlocks = kStepTotals + kMostRecordedSteps; // + batch step * kStepBlockWords
-SIMECO_CONST kStepBlockWords = 16u;
+SIMECO_CONST kStepBlockWords = 128u;
 // A step's block: the workgroup counts (x, y, z) of its dispatches, and the elements its scan adds up.
 SIMECO_CONST kArgsHints = 0u;
 SIMECO_CONST kArgsMatch = 3u;
@@ -102,6 +102,11 @@ SIMECO_CONST kArgsScan = 6u;
 SIMECO_CONST kArgsWrite = 9u;
 SIMECO_CONST kArgsPlantStarts = 12u;
 SIMECO_CONST kScanCountWord = 15u;
+// ... and of its bracket tree (gpu::BracketTree), when its productions read contexts: the kernels over every
+// module, the scan of the depths, and level L's minima at kArgsTreeLevels + 3 (L - 1), L = 1 .. kMaxDepthLevels - 1.
+SIMECO_CONST kArgsModules = 16u;
+SIMECO_CONST kArgsTreeScan = 19u;
+SIMECO_CONST kArgsTreeLevels = 22u;
 SIMECO_CONST kStepWords = kStepBlocks + kMostRecordedSteps * kStepBlockWords;
 
 struct StepSizesPush {
@@ -113,11 +118,13 @@ struct StepSizesPush {
     uint capacity;     // modules the step's output stream, and the next step's scratch, hold
     uint budget;       // the module budget, at most 2^32 - 1
     uint maxGroupsX;   // the device's workgroups along x; more go over y
+    uint brackets;     // 1: also the bracket tree's level sizes and workgroups
 };
 
 #ifdef __cplusplus
 static_assert(sizeof(DerivePush) == 88);
-static_assert(sizeof(StepSizesPush) == 32);
+static_assert(sizeof(StepSizesPush) == 36);
+static_assert(kArgsTreeLevels + 3u * (kMaxDepthLevels - 1u) <= kStepBlockWords);
 static_assert(kLoopProbeTrips < kLoopProbeCounts);
 static_assert(sizeof(DeriveHelperPush) == 16);
 #endif

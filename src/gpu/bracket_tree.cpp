@@ -44,23 +44,14 @@ void BracketTree::record(VkCommandBuffer cmd, const vk::Buffer& symbols, std::ui
         if (size == 1 || levels == kMaxDepthLevels) break;
     }
     std::memcpy(levelInfo_.mapped(), info, sizeof info);
-    std::uint64_t elements = std::max(count, 1u);
-    if (!deltas_ || deltas_.size() < elements * 4) {
-        deltas_ = vk::Buffer(context_, (elements + elements / 2) * 4, vk::MemoryUsage::DeviceLocal);
-        before_ = vk::Buffer(context_, (elements + elements / 2) * 4, vk::MemoryUsage::DeviceLocal);
-    }
-    if (partners_.size() < elements * 4)
-        partners_ = vk::Buffer(context_, (elements + elements / 2) * 4, vk::MemoryUsage::DeviceLocal);
-    // Grown with room to spare, as strings grow step after step.
-    if (tree_.size() < offset * 4) tree_ = vk::Buffer(context_, (offset + offset / 2) * 4, vk::MemoryUsage::DeviceLocal);
-    if (scan_.capacity() < count) scan_.reserve(count);
+    static_cast<void>(reserve(count)); // the tree writes every partner anew
 
     shared::DeriveHelperPush push{count, 0, 0, 0};
-    bracketDepth_.dispatch(cmd, {symbols, deltas_}, push, bracketDepth_.groupsFor(count));
+    bracketDepth_.dispatch(cmd, {symbols, deltas_, levelInfo_}, push, bracketDepth_.groupsFor(count));
     vk::memoryBarrier(cmd, vk::Hazard::ComputeToCompute);
     scan_.record(cmd, deltas_, before_, count);
     vk::memoryBarrier(cmd, vk::Hazard::ComputeToCompute);
-    depthLeaves_.dispatch(cmd, {deltas_, before_, tree_}, push, depthLeaves_.groupsFor(count));
+    depthLeaves_.dispatch(cmd, {deltas_, before_, tree_, levelInfo_}, push, depthLeaves_.groupsFor(count));
     vk::memoryBarrier(cmd, vk::Hazard::ComputeToCompute);
     for (std::uint32_t level = 1; level < levels; ++level) {
         shared::DeriveHelperPush levelPush{info[kMaxDepthLevels + level], level, 0, 0};
@@ -68,6 +59,52 @@ void BracketTree::record(VkCommandBuffer cmd, const vk::Buffer& symbols, std::ui
         vk::memoryBarrier(cmd, vk::Hazard::ComputeToCompute);
     }
     bracketPartners_.dispatch(cmd, {symbols, tree_, levelInfo_, partners_}, push, bracketPartners_.groupsFor(count));
+    vk::memoryBarrier(cmd, vk::Hazard::ComputeToCompute);
+}
+
+vk::Buffer BracketTree::reserve(std::uint32_t capacity) {
+    std::uint64_t elements = std::max(capacity, 1u);
+    vk::Buffer replaced;
+    if (!deltas_ || deltas_.size() < elements * 4) {
+        deltas_ = vk::Buffer(context_, (elements + elements / 2) * 4, vk::MemoryUsage::DeviceLocal);
+        before_ = vk::Buffer(context_, (elements + elements / 2) * 4, vk::MemoryUsage::DeviceLocal);
+    }
+    if (partners_.size() < elements * 4) {
+        replaced = std::move(partners_);
+        partners_ = vk::Buffer(context_, (elements + elements / 2) * 4, vk::MemoryUsage::DeviceLocal);
+    }
+    // Every level's minima: fewer than twice the modules, and one per level past the halvings.
+    std::uint64_t nodes = 2 * elements + kMaxDepthLevels;
+    // Grown with room to spare, as strings grow step after step.
+    if (tree_.size() < nodes * 4) tree_ = vk::Buffer(context_, (nodes + nodes / 2) * 4, vk::MemoryUsage::DeviceLocal);
+    if (scan_.capacity() < elements) scan_.reserve(static_cast<std::uint32_t>(elements));
+    return replaced;
+}
+
+void BracketTree::recordCountedOnDevice(VkCommandBuffer cmd, const vk::Buffer& symbols, std::uint32_t capacity,
+                                        const vk::Buffer& arguments, VkDeviceSize blockOffset) {
+    using namespace shared;
+    std::uint32_t levels = 1;
+    for (std::uint32_t size = std::max(capacity, 1u); size > 1 && levels < kMaxDepthLevels; size = (size + 1) / 2)
+        ++levels;
+    const DeriveHelperPush push{kCountOnDevice, 0, 0, 0};
+    bracketDepth_.dispatchIndirect(cmd, {symbols, deltas_, levelInfo_}, push, arguments,
+                                   blockOffset + kArgsModules * 4);
+    vk::memoryBarrier(cmd, vk::Hazard::ComputeToCompute);
+    scan_.recordCountedOnDevice(cmd, deltas_, before_, levelInfo_, kMaxDepthLevels, arguments,
+                                blockOffset + kArgsTreeScan * 4);
+    vk::memoryBarrier(cmd, vk::Hazard::ComputeToCompute);
+    depthLeaves_.dispatchIndirect(cmd, {deltas_, before_, tree_, levelInfo_}, push, arguments,
+                                  blockOffset + kArgsModules * 4);
+    vk::memoryBarrier(cmd, vk::Hazard::ComputeToCompute);
+    for (std::uint32_t level = 1; level < levels; ++level) {
+        const DeriveHelperPush levelPush{kCountOnDevice, level, 0, 0};
+        depthLevel_.dispatchIndirect(cmd, {tree_, levelInfo_}, levelPush, arguments,
+                                     blockOffset + (kArgsTreeLevels + 3 * (level - 1)) * 4);
+        vk::memoryBarrier(cmd, vk::Hazard::ComputeToCompute);
+    }
+    bracketPartners_.dispatchIndirect(cmd, {symbols, tree_, levelInfo_, partners_}, push, arguments,
+                                      blockOffset + kArgsModules * 4);
     vk::memoryBarrier(cmd, vk::Hazard::ComputeToCompute);
 }
 

@@ -29,6 +29,16 @@ public:
     // for compute kernels to read.
     void record(VkCommandBuffer cmd, const vk::Buffer& symbols, std::uint32_t count);
 
+    // The same for a count only the device knows (a step recorded after others): derive/step_sizes.comp wrote the
+    // levels into levelInfo() and the workgroups into the block of `arguments` at `blockOffset` (kArgsModules,
+    // kArgsTreeScan, kArgsTreeLevels). The buffers must hold `capacity` modules, at least the count: reserve()
+    // them first. Records the levels that many modules have (the others would get no workgroups).
+    // reserve() returns the partners() it replaced (empty when it kept them), for a caller whose partners are
+    // carried from step to step to copy from.
+    [[nodiscard]] vk::Buffer reserve(std::uint32_t capacity);
+    void recordCountedOnDevice(VkCommandBuffer cmd, const vk::Buffer& symbols, std::uint32_t capacity,
+                               const vk::Buffer& arguments, VkDeviceSize blockOffset);
+
     const vk::Buffer& tree() const { return tree_; }
     const vk::Buffer& levelInfo() const { return levelInfo_; }
     const vk::Buffer& partners() const { return partners_; }

@@ -80,8 +80,8 @@ public:
     stream::DeviceModules lastString() const;
 
     // Whether derive() records its steps one after the other with their sizes on the device, waiting once per batch
-    // of steps (the parallel strategy with a fused scan, for grammars without decomposition, contexts, cuts or
-    // predecessors of several modules, when no particle state is carried), instead of twice per step.
+    // of steps (the parallel strategy with a fused scan, for grammars without decomposition, cuts or predecessors
+    // of several modules, when no particle state is carried), instead of twice per step.
     bool recordsSteps(const stream::DeriveOptions& options) const;
 
     // Parallel or Sequential: the strategy this deriver uses.

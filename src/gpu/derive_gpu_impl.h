@@ -139,6 +139,10 @@ struct GpuDeriver::Impl {
     int tableReadFrom = -1;
     // The plant state the derivation kernels bind: the host's buffers, or batch step `batchSlot`'s slices.
     int batchSlot = -1;
+    // Recorded steps of grammars with contexts: brackets.partners() holds those of the next step's input, carried
+    // by the steps' writes; and whether each batch slot's step builds a bracket tree.
+    bool partnersLive = false;
+    bool treeBuilt[shared::kMostRecordedSteps] = {};
 
     // ---- kernels and buffers (derive_gpu_resources.cpp) ----
 
@@ -269,7 +273,7 @@ struct GpuDeriver::Impl {
     // ---- steps recorded one after the other (derive_gpu_recorded.cpp) ----
 
     // Whether the derivation's steps can run with their sizes on the device: the parallel strategy's steps with a
-    // fused scan and no decomposition, brackets, cuts, greedy walks or particle state (`particles`).
+    // fused scan and no decomposition, cuts, greedy walks or particle state (`particles`).
     bool recordsSteps(bool particles) const;
 
     // Every step from `step` on, a batch of up to kMostRecordedSteps steps per submission: the host's plant control

@@ -37,7 +37,7 @@ constexpr double kMostGrowth = 64.0;
 
 bool GpuDeriver::Impl::recordsSteps(bool particles) const {
     return strategy == GpuStrategy::Parallel && kernels.fusedScan && !kernels.hasDecomposition &&
-           !kernels.needsBrackets && !kernels.mayCut && kernels.longestPredecessor <= 1 && !particles &&
+           !kernels.mayCut && kernels.longestPredecessor <= 1 && !particles &&
            plantStartsTiled.has_value();
 }
 
@@ -78,6 +78,17 @@ void GpuDeriver::Impl::makeRoom(int cur, uint64_t modules) {
     // The scratch as large as the smallest stream (a step's output is the next step's input), as far as a buffer
     // holds it with its one word more.
     ensureScratch(std::min({streams[0].capacity, streams[1].capacity, streams[2].capacity, bufferLimit() / 4 - 1}));
+    if (kernels.needsBrackets) { // sized before recording: a recorded step must not replace a buffer
+        uint32_t most = uint32_t(std::max({recordedCapacity(streams[0]), recordedCapacity(streams[1]),
+                                          recordedCapacity(streams[2])}));
+        vk::Buffer replaced = brackets.reserve(most);
+        if (replaced && partnersLive && streams[cur].count > 0) { // the next step reads these partners
+            VkBufferCopy live{0, 0, bytes(streams[cur].count, 4)};
+            pendingCopies.push_back({replaced.handle(), brackets.partners().handle(), live});
+            retiredBuffers.push_back(std::move(replaced));
+        }
+        if (kernels.carriesPartners) brackets.carriedPartners(most);
+    }
 }
 
 int GpuDeriver::Impl::deriveRecorded(stream::PlantControl& control, int cur, uint32_t seed, uint64_t budget,
@@ -91,6 +102,7 @@ int GpuDeriver::Impl::deriveRecorded(stream::PlantControl& control, int cur, uin
     if (timed && !batchTimer) batchTimer.emplace(ctx, shared::kMostRecordedSteps + 1);
     reserve(tableReadback, bytes(plants + 1, 4), vk::MemoryUsage::Readback);
     reserveBatchState(shared::kMostRecordedSteps);
+    partnersLive = false;
     makeRoom(cur, streams[cur].count);
 
     std::vector<uint8_t> growing(plants, 0);
@@ -120,6 +132,8 @@ int GpuDeriver::Impl::deriveRecorded(stream::PlantControl& control, int cur, uin
         for (size_t done = 0; done < batch.size();)
             done = runBatch(batch, done, cur, seed, budget, timed, stepsAfterBatch, stats);
     }
+    partnersStream = -1; // the partners describe the last step's input, or its string when carried
+    partnersLive = false;
     if (!pendingCopies.empty()) { // no step ran: the axioms still wait in their staging buffer
         SubmissionEnd submission{*this};
         ctx.submitAndWait([&](VkCommandBuffer cmd) { recordPendingCopies(cmd); });
@@ -171,6 +185,9 @@ size_t GpuDeriver::Impl::runBatch(const std::vector<RecordedStep>& batch, size_t
     const uint32_t stopped = words[shared::kStepStopped];
     const size_t done = stopped != 0 ? (stopped >> 2) - 1 : batch.size();
     const uint64_t perModule = 4 + 4ull * uint64_t(stride) + 8 + 8; // as step() counts a fused step
+    for (size_t j = first; j < done; ++j) bracketTrees += treeBuilt[j] ? 1u : 0u;
+    // Partners were carried through every recorded step; the stream the rest goes on from has those of step `done`.
+    if (kernels.carriesPartners && axiomsBalanced && (batch.size() - done) % 2 == 1) brackets.carried();
     for (size_t j = first; j < done; ++j) {
         uint32_t n = streams[cur].count, total = words[shared::kStepTotals + j];
         cur = (cur + 1) % 3;
@@ -197,8 +214,8 @@ size_t GpuDeriver::Impl::runBatch(const std::vector<RecordedStep>& batch, size_t
     return done;
 }
 
-void GpuDeriver::Impl::recordStep(VkCommandBuffer cmd, const RecordedStep& step, uint32_t slot, int in, uint32_t seed,
-                                  uint64_t budget) {
+void GpuDeriver::Impl::recordStep(VkCommandBuffer cmd, const RecordedStep& step, uint32_t slot, int in,
+                                  uint32_t seed, uint64_t budget) {
     const Stream& input = streams[in];
     Stream& output = streams[(in + 1) % 3];
     batchSlot = int(slot);
@@ -209,9 +226,18 @@ void GpuDeriver::Impl::recordStep(VkCommandBuffer cmd, const RecordedStep& step,
                         kernels.chunkedMatch ? 1u : 0u,
                         uint32_t(recordedCapacity(output)),
                         uint32_t(std::min<uint64_t>(budget, std::numeric_limits<uint32_t>::max())),
-                        ctx.limits().maxComputeWorkGroupCount[0]};
-    stepSizes->dispatch(cmd, {plantTable(input), scan.totalBuffer(), stepWords}, sizes, 1);
+                        ctx.limits().maxComputeWorkGroupCount[0],
+                        kernels.needsBrackets ? 1u : 0u};
+    stepSizes->dispatch(cmd, {plantTable(input), scan.totalBuffer(), stepWords, brackets.levelInfo()}, sizes, 1);
     vk::memoryBarrier(cmd, Hazard::ComputeToIndirect);
+    // Where each step's write carries the partners of the brackets it writes, the first step builds a tree.
+    const bool carries = kernels.carriesPartners && axiomsBalanced;
+    treeBuilt[slot] = kernels.needsBrackets && !(carries && partnersLive);
+    if (treeBuilt[slot]) {
+        brackets.recordCountedOnDevice(cmd, input.sym, uint32_t(recordedCapacity(input)), stepWords,
+                                       blockOffset(slot, 0));
+        vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+    }
 
     DerivePush p = push(shared::kCountOnDevice, step.index, seed, step.index * shared::kPassesPerStep,
                         shared::kCountOnDevice, 0);
@@ -231,16 +257,26 @@ void GpuDeriver::Impl::recordStep(VkCommandBuffer cmd, const RecordedStep& step,
     vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
 
     sizes.mode = 1;
-    stepSizes->dispatch(cmd, {plantTable(input), scan.totalBuffer(), stepWords}, sizes, 1);
+    stepSizes->dispatch(cmd, {plantTable(input), scan.totalBuffer(), stepWords, brackets.levelInfo()}, sizes, 1);
     vk::memoryBarrier(cmd, Hazard::ComputeToIndirect);
-    dispatchDeriveIndirect(cmd, stepWrite(), input,
-                           {counts, tileOffsets, drawStarts, output.sym, output.par, output.origin, output.live}, p,
-                           blockOffset(slot, shared::kArgsWrite), kernels.writeReadsParameterVectors);
+    if (kernels.carriesPartners)
+        dispatchDeriveIndirect(cmd, stepWrite(), input,
+                               {counts, tileOffsets, drawStarts, output.sym, output.par, output.origin, output.live,
+                                brackets.carriedPartners(uint32_t(recordedCapacity(output)))},
+                               p, blockOffset(slot, shared::kArgsWrite), kernels.writeReadsParameterVectors);
+    else
+        dispatchDeriveIndirect(cmd, stepWrite(), input,
+                               {counts, tileOffsets, drawStarts, output.sym, output.par, output.origin, output.live},
+                               p, blockOffset(slot, shared::kArgsWrite), kernels.writeReadsParameterVectors);
     plantStartsTiled->dispatchIndirect(
         cmd, {plantTable(input), counts, tileOffsets, plantTable(output), scan.totalBuffer()},
         DeriveHelperPush{shared::kCountOnDevice, tileSize, shared::kCountOnDevice, plants}, stepWords,
         blockOffset(slot, shared::kArgsPlantStarts));
     vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+    if (carries) { // the next step reads the partners this one wrote
+        brackets.carried();
+        partnersLive = true;
+    }
 }
 
 } // namespace simeco::gpu

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "../unit/grammar_text.h"
+#include "codegen/derive_codegen.h"
 #include "compare_strings.h"
 #include "compute/shared/derive_layout.h"
 #include "cpu/derive.h"
@@ -43,6 +44,24 @@ TEST_F(RecordedStepsTest, StreamsGrowAndTheStringsMatchTheCpu) {
         EXPECT_GE(grown.waits, 2u) << "the string never outgrew the first room";
         EXPECT_LT(grown.waits, 7u) << "a wait per step";
     }
+}
+
+// Contexts while the streams grow: the first step builds a bracket tree, every later step reads the partners the
+// step before wrote with its string, also across the submissions that the growth of the streams splits it into.
+TEST_F(RecordedStepsTest, ContextsMatchTheCpuAcrossSubmissions) {
+    ir::Grammar g = simeco::testing::grammarFromText(simeco::testing::lsystem(
+        "A", "ignore: + -\nA --> F[+A]F[-A]A\nF < F --> G\nG > [ --> F\nF > [ --> H\n", 8));
+    ASSERT_TRUE(codegen::generateDeriveKernels({g}).carriesPartners);
+    stream::DeriveOptions options;
+    options.plants = 3;
+    stream::DeriveResult want = cpu::deriveCpu(g, options);
+    gpu::GpuDeriver deriver(context(), g);
+    ASSERT_TRUE(deriver.recordsSteps(options));
+    gpu::GpuDeriveStats grown, again;
+    EXPECT_EQ(firstDifference(want, deriver.derive(options, true, &grown), g.alphabet), "");
+    EXPECT_EQ(grown.bracketTrees, 1u);
+    EXPECT_EQ(firstDifference(want, deriver.derive(options, true, &again), g.alphabet), "");
+    EXPECT_GT(grown.waits, again.waits) << "the string never outgrew the first room";
 }
 
 // More steps than one submission records: a batch after another, the plant control a batch ahead of the device,

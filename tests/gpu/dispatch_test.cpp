@@ -77,8 +77,8 @@ TEST_F(DispatchTest, GroupCountsComeFromTheKernelsLocalSize) {
 // every workgroup index below the count must still come up exactly once. Each workgroup sets its index's bit,
 // so the grid needs a bit per workgroup (256 MiB at NVIDIA's limit), not a word.
 TEST_F(DispatchTest, SplitsLargeDispatchesIntoTwoDimensions) {
-    const std::string source = "#version 460\n" + std::string(shaders::glslSource("compute/scan/workgroup_index.glsl")) +
-                               R"(
+    const std::string index(shaders::glslSource("compute/scan/workgroup_index.glsl"));
+    const std::string source = "#version 460\n" + index + R"(
 layout(local_size_x = 1) in;
 layout(set = 0, binding = 0, std430) buffer Seen { uint seen[]; };
 layout(push_constant) uniform Push { uint groups; } pc;

@@ -118,7 +118,7 @@ struct StepSizesPush {
     uint capacity;     // modules the step's output stream, and the next step's scratch, hold
     uint budget;       // the module budget, at most 2^32 - 1
     uint maxGroupsX;   // the device's workgroups along x; more go over y
-    uint brackets;     // 1: also the bracket tree's level sizes and workgroups
+    uint brackets;     // 1: the step builds a bracket tree: also its levels and workgroups
 };
 
 #ifdef __cplusplus

@@ -219,6 +219,9 @@ void GpuDeriver::Impl::recordStep(VkCommandBuffer cmd, const RecordedStep& step,
     const Stream& input = streams[in];
     Stream& output = streams[(in + 1) % 3];
     batchSlot = int(slot);
+    // Where each step's write carries the partners of the brackets it writes, the first step builds a tree.
+    const bool carries = kernels.carriesPartners && axiomsBalanced;
+    treeBuilt[slot] = kernels.needsBrackets && !(carries && partnersLive);
     StepSizesPush sizes{0,
                         slot,
                         plants,
@@ -227,12 +230,9 @@ void GpuDeriver::Impl::recordStep(VkCommandBuffer cmd, const RecordedStep& step,
                         uint32_t(recordedCapacity(output)),
                         uint32_t(std::min<uint64_t>(budget, std::numeric_limits<uint32_t>::max())),
                         ctx.limits().maxComputeWorkGroupCount[0],
-                        kernels.needsBrackets ? 1u : 0u};
+                        treeBuilt[slot] ? 1u : 0u};
     stepSizes->dispatch(cmd, {plantTable(input), scan.totalBuffer(), stepWords, brackets.levelInfo()}, sizes, 1);
     vk::memoryBarrier(cmd, Hazard::ComputeToIndirect);
-    // Where each step's write carries the partners of the brackets it writes, the first step builds a tree.
-    const bool carries = kernels.carriesPartners && axiomsBalanced;
-    treeBuilt[slot] = kernels.needsBrackets && !(carries && partnersLive);
     if (treeBuilt[slot]) {
         brackets.recordCountedOnDevice(cmd, input.sym, uint32_t(recordedCapacity(input)), stepWords,
                                        blockOffset(slot, 0));

@@ -50,8 +50,7 @@ void GpuDeriver::Impl::reserve(vk::Buffer& buffer, VkDeviceSize size, vk::Memory
     if (!buffer || buffer.size() < size) buffer = vk::Buffer(ctx, size, usage);
 }
 
-void GpuDeriver::Impl::uploadAxioms(const stream::ModuleString& axioms, const stream::DeriveOptions& options,
-                                    bool staged) {
+void GpuDeriver::Impl::uploadAxioms(const stream::ModuleString& axioms, const stream::DeriveOptions& options) {
     // Copies a derivation that ended in an error left unrecorded: their buffers may be gone.
     pendingCopies.clear();
     retiredBuffers.clear();
@@ -69,19 +68,14 @@ void GpuDeriver::Impl::uploadAxioms(const stream::ModuleString& axioms, const st
                                           std::as_bytes(std::span<const float>(axioms.params)),
                                           std::as_bytes(std::span<const uint32_t>(table))};
     const vk::Buffer* targets[] = {&s.sym, &s.par, &s.plantStart};
-    if (staged) {
-        // Through a staging buffer that the first submission copies from: no submission and wait of their own.
-        reserve(axiomStaging, bytes(parts[0].size() + parts[1].size() + parts[2].size(), 1), vk::MemoryUsage::Upload);
-        VkDeviceSize at = 0;
-        for (int k = 0; k < 3; ++k) {
-            if (parts[k].empty()) continue;
-            std::copy(parts[k].begin(), parts[k].end(), axiomStaging.mapped() + at);
-            pendingCopies.push_back({axiomStaging.handle(), targets[k]->handle(), {at, 0, parts[k].size()}});
-            at += parts[k].size();
-        }
-    } else {
-        for (int k = 0; k < 3; ++k)
-            if (!parts[k].empty()) vk::upload(ctx, *targets[k], parts[k]);
+    // Through a staging buffer that the first submission copies from: no submission and wait of their own.
+    reserve(axiomStaging, bytes(parts[0].size() + parts[1].size() + parts[2].size(), 1), vk::MemoryUsage::Upload);
+    VkDeviceSize at = 0;
+    for (int k = 0; k < 3; ++k) {
+        if (parts[k].empty()) continue;
+        std::copy(parts[k].begin(), parts[k].end(), axiomStaging.mapped() + at);
+        pendingCopies.push_back({axiomStaging.handle(), targets[k]->handle(), {at, 0, parts[k].size()}});
+        at += parts[k].size();
     }
     s.count = static_cast<uint32_t>(axioms.size());
     if (options.particles) {
@@ -198,7 +192,7 @@ stream::DeriveResult GpuDeriver::derive(const stream::DeriveOptions& asked, bool
     m.axiomsBalanced = bracketsBalanced(axioms);
     const bool recorded = m.recordsSteps(options.particles);
     m.tableReadFrom = -1;
-    m.uploadAxioms(axioms, options, recorded);
+    m.uploadAxioms(axioms, options);
 
     std::optional<vk::Timestamps> timer;
     if (m.ctx.timestampValidBits() > 0) timer.emplace(m.ctx, 2);
@@ -240,6 +234,11 @@ stream::DeriveResult GpuDeriver::derive(const stream::DeriveOptions& asked, bool
         cur = m.applyHomomorphism(cur, seed, budget, stepTimer, stats);
     } else if (options.homomorphism && m.homomorphismHostReason) {
         throw std::logic_error("the homomorphism cannot run on the device: " + *m.homomorphismHostReason);
+    }
+
+    if (!m.pendingCopies.empty()) { // no pass ran: the axioms still wait in their staging buffer
+        GpuDeriver::Impl::SubmissionEnd submission{m};
+        m.ctx.submitAndWait([&](VkCommandBuffer cmd) { m.recordPendingCopies(cmd); });
     }
 
     stream::DeriveResult result;

@@ -177,9 +177,9 @@ struct GpuDeriver::Impl {
 
     // ---- the host's side of a derivation (derive_gpu.cpp) ----
 
-    // The axioms (and their particle state) into streams[0], and the per-plant buffers sized to `plants`; `staged`:
-    // copied in by the first submission (pendingCopies) instead of submissions of their own.
-    void uploadAxioms(const stream::ModuleString& axioms, const stream::DeriveOptions& options, bool staged);
+    // The axioms (and their particle state) into streams[0], and the per-plant buffers sized to `plants`. The
+    // axioms are copied in by the first submission (pendingCopies), not by submissions of their own.
+    void uploadAxioms(const stream::ModuleString& axioms, const stream::DeriveOptions& options);
     // `buffer` at least `size` bytes; a new one, of that size, when smaller.
     void reserve(vk::Buffer& buffer, VkDeviceSize size, vk::MemoryUsage usage);
     // The plants' globals and arrays, and which plants grow in the step (the others are copied).
@@ -197,7 +197,8 @@ struct GpuDeriver::Impl {
     shared::DerivePush push(uint32_t count, uint32_t step, uint32_t seed, uint32_t pass, uint32_t oldCount,
                             uint32_t depth) const;
 
-    // Submits `record`, waits, and returns the total the recording copied into the readback buffer; throws
+    // Submits `record` after the pending copies, waits, and returns the total the recording copied into the
+    // readback buffer; throws
     // the located error a kernel reported, and kFlagLoopCut unless the caller retries (`retriesCutLoops`).
     uint32_t submit(const std::function<void(VkCommandBuffer)>& record, vk::Timestamps* timer, double& gpuMillis,
                     bool retriesCutLoops = false);

@@ -44,11 +44,13 @@ DerivePush GpuDeriver::Impl::push(uint32_t count, uint32_t step, uint32_t seed, 
 
 uint32_t GpuDeriver::Impl::submit(const std::function<void(VkCommandBuffer)>& record, vk::Timestamps* timer,
                                   double& gpuMillis, bool retriesCutLoops) {
+    std::optional<SubmissionEnd> submission{*this};
     ctx.submitAndWait([&](VkCommandBuffer cmd) {
         if (timer) {
             timer->cmdReset(cmd);
             timer->cmdWrite(cmd, 0, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT);
         }
+        recordPendingCopies(cmd);
         record(cmd);
         vk::memoryBarrier(cmd, Hazard::ComputeToTransfer);
         VkBufferCopy error{0, 4, 12}; // the error site, the flags, the sequential kernel's unfinished plants
@@ -56,6 +58,7 @@ uint32_t GpuDeriver::Impl::submit(const std::function<void(VkCommandBuffer)>& re
         vk::memoryBarrier(cmd, Hazard::TransferToHost);
         if (timer) timer->cmdWrite(cmd, 1, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT);
     });
+    submission.reset();
     if (timer) gpuMillis += timer->elapsedNs(0, 1) / 1e6;
     uint32_t words[4];
     std::memcpy(words, readback.mapped(), sizeof words);

@@ -134,10 +134,6 @@ int GpuDeriver::Impl::deriveRecorded(stream::PlantControl& control, int cur, uin
     }
     partnersStream = -1; // the partners describe the last step's input, or its string when carried
     partnersLive = false;
-    if (!pendingCopies.empty()) { // no step ran: the axioms still wait in their staging buffer
-        SubmissionEnd submission{*this};
-        ctx.submitAndWait([&](VkCommandBuffer cmd) { recordPendingCopies(cmd); });
-    }
     return cur;
 }
 

@@ -205,12 +205,7 @@ stream::DeriveResult GpuDeriver::derive(const stream::DeriveOptions& asked, bool
         cur = m.deriveRecorded(control, cur, seed, budget, stepTimer != nullptr, stats);
     } else {
         for (int step = 1; step <= control.steps(); ++step) {
-            bool anyGrowing = false;
-            for (uint32_t plant = 0; plant < m.plants; ++plant) {
-                growing[plant] = control.beginStep(plant, step);
-                anyGrowing = anyGrowing || growing[plant];
-            }
-            if (!anyGrowing) break;
+            if (!control.beginFieldStep(step, growing)) break;
             m.uploadPlantState(control, growing);
             if (m.strategy == GpuStrategy::Sequential) {
                 cur = m.stepSequential(cur, uint32_t(step), seed, budget, stepTimer, stats);
@@ -220,8 +215,7 @@ stream::DeriveResult GpuDeriver::derive(const stream::DeriveOptions& asked, bool
                 cur = m.step(cur, uint32_t(step), seed, budget, stepTimer, stats);
             }
             stats.peakModules = std::max<uint64_t>(stats.peakModules, m.streams[cur].count);
-            for (uint32_t plant = 0; plant < m.plants; ++plant)
-                if (growing[plant]) control.endStep(plant, step);
+            control.endFieldStep(step, growing);
         }
     }
     for (uint32_t plant = 0; plant < m.plants; ++plant) control.finish(plant);

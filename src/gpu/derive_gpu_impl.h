@@ -246,6 +246,10 @@ struct GpuDeriver::Impl {
     void recordPlantHints(VkCommandBuffer cmd, const Stream& s);
     vk::BufferRange plantTable(const Stream& s) const { return vk::BufferRange(s.plantStart, 0, bytes(plants + 1, 4)); }
 
+    // What a step's match, scan and write read and write for `n` modules that derive `total` (a model, counted
+    // by the host).
+    uint64_t stepBytesMoved(uint64_t n, uint64_t total) const;
+
     // One derivation step from streams[cur] into a new stream; returns its index.
     int step(int cur, uint32_t stepIndex, uint32_t seed, uint64_t budget, vk::Timestamps* timer, GpuDeriveStats& stats);
 

@@ -197,6 +197,14 @@ void GpuDeriver::Impl::recordPlantHints(VkCommandBuffer cmd, const Stream& s) {
                               plantHintsKernel.groupsFor(shared::plantHintBlocks(s.count) + 1));
 }
 
+uint64_t GpuDeriver::Impl::stepBytesMoved(uint64_t n, uint64_t total) const {
+    // Match writes counts, choices and draw starts, and write reads them; with a fused scan the counts and the
+    // choice are one word, otherwise a separate scan reads the counts twice and writes offsets, which write reads.
+    uint64_t perModule = kernels.fusedScan ? 4 + 4ull * uint64_t(stride) + 8 + 8
+                                           : 4 + 4ull * uint64_t(stride) + 12 + 12 + 12;
+    return n * perModule + total * (4 + 4ull * uint64_t(stride) + 8);
+}
+
 int GpuDeriver::Impl::step(int cur, uint32_t stepIndex, uint32_t seed, uint64_t budget, vk::Timestamps* timer,
                            GpuDeriveStats& stats) {
     Stream& in = streams[cur];
@@ -207,11 +215,7 @@ int GpuDeriver::Impl::step(int cur, uint32_t stepIndex, uint32_t seed, uint64_t 
     ensureScratch(n);
     matchScanWrite(cur, outIndex, stepIndex, seed, budget, timer, millis);
     if (carriesParticles && !kernels.hasDecomposition) scatterParticles(cur, outIndex, timer, millis);
-    // Match writes counts, choices and draw starts, and write reads them; with a fused scan the counts and the
-    // choice are one word, otherwise a separate scan reads the counts twice and writes offsets, which write reads.
-    uint64_t perModule = kernels.fusedScan ? 4 + 4ull * uint64_t(stride) + 8 + 8
-                                           : 4 + 4ull * uint64_t(stride) + 12 + 12 + 12;
-    stats.bytesMoved += uint64_t(n) * perModule + uint64_t(out.count) * (4 + 4ull * uint64_t(stride) + 8);
+    stats.bytesMoved += stepBytesMoved(n, out.count);
     if (kernels.hasDecomposition) {
         outIndex = decompose(cur, outIndex, stepIndex, seed, budget, timer, millis, stats, decompositionPasses());
         if (carriesParticles) gatherParticles(cur, outIndex, timer, millis);

@@ -19,10 +19,6 @@ using vk::Hazard;
 
 namespace {
 
-VkDeviceSize alignUp(VkDeviceSize value, VkDeviceSize alignment) {
-    return (value + alignment - 1) / alignment * alignment;
-}
-
 // Where batch slot `slot`'s word `which` of its block lies in the step words, in bytes.
 VkDeviceSize blockOffset(uint32_t slot, uint32_t which) {
     return VkDeviceSize(shared::kStepBlocks + slot * shared::kStepBlockWords + which) * 4;
@@ -43,9 +39,9 @@ bool GpuDeriver::Impl::recordsSteps(bool particles) const {
 
 void GpuDeriver::Impl::reserveBatchState(uint32_t steps) {
     VkDeviceSize alignment = std::max<VkDeviceSize>(ctx.limits().minStorageBufferOffsetAlignment, 8);
-    VkDeviceSize globalsBytes = alignUp(bytes(uint64_t(plants) * std::max<uint32_t>(globalStride, 1), 8), alignment);
-    VkDeviceSize arraysBytes = alignUp(bytes(uint64_t(plants) * std::max<uint32_t>(arrayStride, 1), 8), alignment);
-    VkDeviceSize frozenBytes = alignUp(bytes(plants, 4), alignment);
+    VkDeviceSize globalsBytes = vk::alignUp(bytes(uint64_t(plants) * std::max<uint32_t>(globalStride, 1), 8), alignment);
+    VkDeviceSize arraysBytes = vk::alignUp(bytes(uint64_t(plants) * std::max<uint32_t>(arrayStride, 1), 8), alignment);
+    VkDeviceSize frozenBytes = vk::alignUp(bytes(plants, 4), alignment);
     auto slices = [&](vk::Buffer& buffer, VkDeviceSize& slice, VkDeviceSize sliceBytes) {
         reserve(buffer, sliceBytes * steps, vk::MemoryUsage::Upload);
         slice = sliceBytes;
@@ -110,12 +106,7 @@ int GpuDeriver::Impl::deriveRecorded(stream::PlantControl& control, int cur, uin
     for (int step = 1; step <= control.steps();) {
         batch.clear();
         for (; step <= control.steps() && batch.size() < shared::kMostRecordedSteps; ++step) {
-            bool anyGrowing = false;
-            for (uint32_t plant = 0; plant < plants; ++plant) {
-                growing[plant] = control.beginStep(plant, step);
-                anyGrowing = anyGrowing || growing[plant];
-            }
-            if (!anyGrowing) {
+            if (!control.beginFieldStep(step, growing)) {
                 step = control.steps() + 1;
                 break;
             }
@@ -125,8 +116,7 @@ int GpuDeriver::Impl::deriveRecorded(stream::PlantControl& control, int cur, uin
                 reinterpret_cast<double*>(batchArrays.mapped() + slot * arraysSlice),
                 reinterpret_cast<uint32_t*>(batchFrozen.mapped() + slot * frozenSlice));
             batch.push_back({uint32_t(step), frozen});
-            for (uint32_t plant = 0; plant < plants; ++plant)
-                if (growing[plant]) control.endStep(plant, step);
+            control.endFieldStep(step, growing);
         }
         int stepsAfterBatch = std::max(control.steps() - step + 1, 0);
         for (size_t done = 0; done < batch.size();)
@@ -180,7 +170,6 @@ size_t GpuDeriver::Impl::runBatch(const std::vector<RecordedStep>& batch, size_t
 
     const uint32_t stopped = words[shared::kStepStopped];
     const size_t done = stopped != 0 ? (stopped >> 2) - 1 : batch.size();
-    const uint64_t perModule = 4 + 4ull * uint64_t(stride) + 8 + 8; // as step() counts a fused step
     for (size_t j = first; j < done; ++j) bracketTrees += treeBuilt[j] ? 1u : 0u;
     // Partners were carried through every recorded step; the stream the rest goes on from has those of step `done`.
     if (kernels.carriesPartners && axiomsBalanced && (batch.size() - done) % 2 == 1) brackets.carried();
@@ -188,7 +177,7 @@ size_t GpuDeriver::Impl::runBatch(const std::vector<RecordedStep>& batch, size_t
         uint32_t n = streams[cur].count, total = words[shared::kStepTotals + j];
         cur = (cur + 1) % 3;
         streams[cur].count = total;
-        stats.bytesMoved += uint64_t(n) * perModule + uint64_t(total) * (4 + 4ull * uint64_t(stride) + 8);
+        stats.bytesMoved += stepBytesMoved(n, total);
         stats.peakModules = std::max<uint64_t>(stats.peakModules, total);
         if (timer) stats.stepMillis.push_back(timer->elapsedNs(uint32_t(j), uint32_t(j + 1)) / 1e6);
     }

@@ -20,10 +20,6 @@ std::uint32_t tilesFor(std::uint32_t count) {
     return std::max<std::uint32_t>(1, (count + kScanTileSize - 1) / kScanTileSize);
 }
 
-VkDeviceSize alignUp(VkDeviceSize value, VkDeviceSize alignment) {
-    return (value + alignment - 1) / alignment * alignment;
-}
-
 // Bytes bound for `count` words: never zero, since an empty range is not a valid binding.
 VkDeviceSize wordBytes(std::uint32_t count) {
     return VkDeviceSize{std::max<std::uint32_t>(count, 1)} * sizeof(std::uint32_t);
@@ -66,7 +62,7 @@ void GpuScan::reserve(std::uint32_t count) {
     VkDeviceSize bytes = 0;
     for (std::uint32_t n = count; tilesFor(n) > 1; n = tilesFor(n)) {
         levels.push_back({bytes, tilesFor(n)});
-        bytes = alignUp(bytes + wordBytes(tilesFor(n)), alignment);
+        bytes = vk::alignUp(bytes + wordBytes(tilesFor(n)), alignment);
     }
     levelSums_ = vk::Buffer(context_, std::max<VkDeviceSize>(bytes, 4), vk::MemoryUsage::DeviceLocal);
     lookBackStatus_ = vk::Buffer(context_, wordBytes(1 + 2 * tilesFor(count)), vk::MemoryUsage::DeviceLocal);

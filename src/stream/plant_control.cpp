@@ -85,6 +85,21 @@ void PlantControl::endStep(uint32_t plant, int step) {
     ++derived_[plant];
 }
 
+bool PlantControl::beginFieldStep(int step, std::vector<uint8_t>& growing) {
+    growing.resize(plants_);
+    bool any = false;
+    for (uint32_t plant = 0; plant < plants_; ++plant) {
+        growing[plant] = beginStep(plant, step);
+        any = any || growing[plant];
+    }
+    return any;
+}
+
+void PlantControl::endFieldStep(int step, const std::vector<uint8_t>& growing) {
+    for (uint32_t plant = 0; plant < plants_; ++plant)
+        if (growing[plant]) endStep(plant, step);
+}
+
 void PlantControl::finish(uint32_t plant) {
     run(plant, speciesOf(plant).endBlock, 0, ControlBlock::End);
 }

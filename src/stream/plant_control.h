@@ -47,6 +47,9 @@ public:
     bool beginStep(uint32_t plant, int step);
     // After the plant derived step `step`: its EndEach block runs, and the step counts as derived.
     void endStep(uint32_t plant, int step);
+    // beginStep for every plant, into `growing`; whether any plant derives the step. And endStep for those that did.
+    bool beginFieldStep(int step, std::vector<uint8_t>& growing);
+    void endFieldStep(int step, const std::vector<uint8_t>& growing);
     // After the derivation: the plant's End block.
     void finish(uint32_t plant);
     // Steps derived by the plant that went furthest.

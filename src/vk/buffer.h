@@ -21,6 +21,11 @@ enum class MemoryUsage {
     Readback,     // host-visible and preferably cached, written by the device and read by the host
 };
 
+// `value` rounded up to a multiple of `alignment` (binding offsets, suballocations).
+inline VkDeviceSize alignUp(VkDeviceSize value, VkDeviceSize alignment) {
+    return (value + alignment - 1) / alignment * alignment;
+}
+
 class Buffer {
 public:
     Buffer() = default;

@@ -49,7 +49,7 @@ void treeSizes(uint block, uint n, bool stopped) {
 void main() {
     uint block = kStepBlocks + pc.step * kStepBlockWords;
     bool stopped = words[kStepStopped] != 0u;
-    uint modules = inputStarts[pc.plants];
+    uint modules = min(inputStarts[pc.plants], pc.inputBound);
     uint tiles = groupsOf(modules, pc.tileSize);
     if (pc.mode == 0u) {
         uint scanned = stopped ? 0u : tiles;

@@ -119,11 +119,12 @@ struct StepSizesPush {
     uint budget;       // the module budget, at most 2^32 - 1
     uint maxGroupsX;   // the device's workgroups along x; more go over y
     uint brackets;     // 1: the step builds a bracket tree: also its levels and workgroups
+    uint inputBound;   // modules the input holds at most: a count past it is not trusted
 };
 
 #ifdef __cplusplus
 static_assert(sizeof(DerivePush) == 88);
-static_assert(sizeof(StepSizesPush) == 36);
+static_assert(sizeof(StepSizesPush) == 40);
 static_assert(kArgsTreeLevels + 3u * (kMaxDepthLevels - 1u) <= kStepBlockWords);
 static_assert(kLoopProbeTrips < kLoopProbeCounts);
 static_assert(sizeof(DeriveHelperPush) == 16);

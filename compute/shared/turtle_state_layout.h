@@ -78,8 +78,16 @@ const float kTubeEpsilon = 1e-5;
 #endif
 
 // Push constants of every turtle kernel.
+// The modules a pass interprets are counted on the device, in the turtle's status words: from the host's count,
+// or from the plant table of a derivation recorded before the turtle in the same submission. `count` is their
+// bound, the length of the per-module arrays (and of each organ kind's slice of the flags).
+SIMECO_CONST kTurtleStatusModules = 0u; // modules to interpret
+SIMECO_CONST kTurtleStatusLevels = 1u;  // levels of non-linear modules (level_layout.comp)
+SIMECO_CONST kTurtleStatusOrgans = 2u;  // organs the string draws (field.comp), written or not
+SIMECO_CONST kTurtleStatusWords = 4u;
+
 struct TurtlePush {
-    uint count;       // modules
+    uint count;       // modules at most (the status words count them)
     uint plants;
     uint stride;      // parameter slots per module
     uint species;
@@ -87,14 +95,14 @@ struct TurtlePush {
     uint atSymbol;    // `@`, `~`, `?` (kNoModule when the alphabet lacks them)
     uint tildeSymbol;
     uint querySymbol;
-    uint first;       // levels: the first entry of the level's slice; jumps: the round
-    uint items;       // invocations that have work (a level's modules, instances)
+    uint first;       // levels: the level resolved; jumps: the round
+    uint items;       // levels laid out (the deeper ones are not resolved)
     uint hitMask;     // searches: marks that end the search with a result
     uint stopMask;    // searches: marks that end it without one
     float spacing;    // field: distance between plants (0: from the widest plant)
+    uint organCapacity; // instances the buffer holds: no organ is written past them
+    uint maxGroupsX;    // workgroups a dispatch holds along x (level_layout.comp splits larger ones over y)
     uint pad0;
-    uint pad1;
-    uint pad2;
 };
 
 #ifdef __cplusplus

@@ -12,14 +12,16 @@ layout(set = 0, binding = 1, std430) readonly buffer Parents { uint parents[]; }
 layout(set = 0, binding = 2, std430) buffer Pointers { uint pointers[]; };
 layout(set = 0, binding = 3, std430) buffer Targets { uint targets[]; };
 layout(push_constant) uniform Push { TurtlePush pc; };
+#define TURTLE_STATUS_BINDING 4
+#include "compute/turtle/module_count.glsl"
 
 bool ends(uint j) { return j == kNoModule || (marks[j] & (pc.hitMask | pc.stopMask)) != 0u; }
 
 void main() {
     uint c = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * gl_WorkGroupSize.x + gl_LocalInvocationID.x;
     uint begin = c * kTurtleChunk;
-    if (begin >= pc.count) return;
-    uint end = min(begin + kTurtleChunk, pc.count);
+    if (begin >= moduleCount()) return;
+    uint end = min(begin + kTurtleChunk, moduleCount());
     for (uint i = begin; i < end; ++i) {
         uint p = parents[i];
         uint q = (ends(p) || p < begin) ? p : pointers[p];

@@ -14,13 +14,15 @@ layout(set = 0, binding = 2, std430) buffer Steps { TurtleStep steps[]; };
 layout(set = 0, binding = 3, std430) buffer Pointers { uint pointers[]; };
 layout(set = 0, binding = 4, std430) buffer Targets { uint targets[]; };
 layout(push_constant) uniform Push { TurtlePush pc; };
+#define TURTLE_STATUS_BINDING 5
+#include "compute/turtle/module_count.glsl"
 #include "compute/turtle/turtle_math.glsl"
 
 void main() {
     uint c = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * gl_WorkGroupSize.x + gl_LocalInvocationID.x;
     uint begin = c * kTurtleChunk;
-    if (begin >= pc.count) return;
-    uint end = min(begin + kTurtleChunk, pc.count);
+    if (begin >= moduleCount()) return;
+    uint end = min(begin + kTurtleChunk, moduleCount());
     for (uint i = begin; i < end; ++i) {
         if ((marks[i] & kMarkNonlinear) != 0u) continue; // identity step, pointing at itself (setup.comp)
         uint p = parents[i];

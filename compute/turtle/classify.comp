@@ -15,6 +15,8 @@ layout(set = 0, binding = 9, std430) readonly buffer CylinderStarts { uint cylin
 layout(set = 0, binding = 10, std430) readonly buffer States { TurtleState states[]; };
 layout(set = 0, binding = 11, std430) writeonly buffer Kinds { uint kinds[]; };
 layout(set = 0, binding = 12, std430) writeonly buffer Flags { uint flags[]; };
+#define TURTLE_STATUS_BINDING 13
+#include "compute/turtle/module_count.glsl"
 
 #include "compute/turtle/turtle_math.glsl"
 #include "compute/turtle/turtle_modules.glsl"
@@ -24,6 +26,10 @@ const uint kNoOrgan = 0xFFFFFFFFu;
 void main() {
     uint i = invocationIndex();
     if (i >= pc.count) return;
+    if (i >= moduleCount()) { // within the bound but past the string: draws nothing, for the scan of the flags
+        for (uint k = 0u; k < kOrganKinds; ++k) flags[k * pc.count + i] = 0u;
+        return;
+    }
     uint command = commands[i];
     uint kind = kNoOrgan, organs = 1u;
     if (command == kTurtleDraw && (marks[i] & kMarkStem) != 0u) kind = kOrganStem;

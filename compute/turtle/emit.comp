@@ -24,6 +24,8 @@ layout(set = 0, binding = 18, std430) writeonly buffer Slots { uint slots[]; };
 layout(set = 0, binding = 19, std430) buffer PlantBounds { int plantBounds[]; };
 // The last instance each module wrote (its first is in slots): a tube's last segment, which the next joins.
 layout(set = 0, binding = 20, std430) writeonly buffer LastSlots { uint lastSlots[]; };
+#define TURTLE_STATUS_BINDING 21
+#include "compute/turtle/module_count.glsl"
 
 #include "compute/turtle/turtle_math.glsl"
 #include "compute/turtle/turtle_modules.glsl"
@@ -49,10 +51,11 @@ void growPlantBounds(uint plant, OrganInstance o) {
 // A tube from the last control point along the curve the headings there and here describe (tubeCurve), in
 // the segments the point asks for, joined to each other; the join to the tube before is links.comp's.
 void emitTube(OrganInstance o, uint i, uint slot, TurtleState after) {
+    uint segments = tubeSegments(paramAt(i, 0u, 1.0));
+    if (slot + segments > pc.organCapacity) return; // the organs outgrew their buffer (field.comp tells)
     TurtleState anchor = states[cylinderAnchors[i]];
     vec3 chord = after.position.xyz - anchor.position.xyz;
     float len = length(chord);
-    uint segments = tubeSegments(paramAt(i, 0u, 1.0));
     float r0 = 0.5 * anchor.heading.w * after.up.w, r1 = 0.5 * after.heading.w * after.up.w;
     vec3 from = anchor.position.xyz;
     vec3 previous = vec3(0);
@@ -81,7 +84,7 @@ void emitTube(OrganInstance o, uint i, uint slot, TurtleState after) {
 
 void main() {
     uint i = invocationIndex();
-    if (i >= pc.count) return;
+    if (i >= moduleCount()) return;
     uint kind = kinds[i];
     if (kind == kNoOrgan) return;
     uint plant = plantOfModule[i];
@@ -137,6 +140,7 @@ void main() {
     }
 
     uint slot = offsets[kind * pc.count + i];
+    if (slot >= pc.organCapacity) return;
     instances[slot] = o;
     slots[i] = slot;
     lastSlots[i] = slot;

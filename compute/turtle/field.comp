@@ -1,6 +1,7 @@
 // Turtle: the organ table's counts and firsts from the scanned flags, the field's spacing from the plants'
 // bounds (the widest plant's horizontal extent times 1.2, as turtle/interpretation.cpp's fieldSpacing), and
-// empty bounds for place.comp to grow. One workgroup.
+// empty bounds for place.comp to grow; the organs' count into the status words. Organs that outgrew their
+// buffer (a recording that read nothing back sized it) are not drawn: the table counts none. One workgroup.
 #version 450
 #extension GL_GOOGLE_include_directive : require
 #include "compute/shared/derive_layout.h"
@@ -11,6 +12,7 @@ layout(set = 0, binding = 1, std430) readonly buffer Total { uint total; };
 layout(set = 0, binding = 2, std430) readonly buffer PlantBounds { int plantBounds[]; };
 layout(set = 0, binding = 3, std430) writeonly buffer Table { OrganTable table; };
 layout(set = 0, binding = 4, std430) writeonly buffer Field { float spacing; };
+layout(set = 0, binding = 5, std430) buffer Status { uint status[]; };
 layout(push_constant) uniform Push { TurtlePush pc; };
 #include "compute/turtle/turtle_math.glsl"
 
@@ -32,11 +34,13 @@ void main() {
     if (t != 0u) return;
     for (uint k = 1u; k < kTurtleWorkgroupSize; ++k) w = max(w, widest[k]);
     spacing = pc.spacing > 0.0 ? pc.spacing : (w > 0.0 ? 1.2 * w : 1.0);
+    status[kTurtleStatusOrgans] = total;
+    bool written = total <= pc.organCapacity;
     for (uint k = 0u; k < kOrganKinds; ++k) {
         uint first = offsets[k * pc.count];
         uint next = k + 1u < kOrganKinds ? offsets[(k + 1u) * pc.count] : total;
-        table.first[k] = first;
-        table.count[k] = next - first;
+        table.first[k] = written ? first : 0u;
+        table.count[k] = written ? next - first : 0u;
     }
     table.pad0 = 0u;
     table.pad1 = 0u;

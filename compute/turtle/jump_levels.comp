@@ -19,6 +19,8 @@ layout(set = 0, binding = 12, std430) readonly buffer Plants { uint plantOfModul
 layout(set = 0, binding = 13, std430) readonly buffer States { TurtleState states[]; };
 layout(set = 0, binding = 14, std430) readonly buffer LevelsIn { uvec2 levelsIn[]; };
 layout(set = 0, binding = 15, std430) writeonly buffer LevelsOut { uvec2 levelsOut[]; };
+#define TURTLE_STATUS_BINDING 16
+#include "compute/turtle/module_count.glsl"
 
 #include "compute/turtle/turtle_math.glsl"
 #include "compute/turtle/turtle_modules.glsl"
@@ -26,7 +28,7 @@ layout(set = 0, binding = 15, std430) writeonly buffer LevelsOut { uvec2 levelsO
 
 void main() {
     uint i = invocationIndex();
-    if (i >= pc.count || (marks[i] & kMarkNonlinear) == 0u) return;
+    if (i >= moduleCount() || (marks[i] & kMarkNonlinear) == 0u) return;
     if (pc.first == 0u) { // round 0: the anchors of the modules' parents
         uint parent = parents[i];
         levelsOut[i] = uvec2(1u, parent == kNoModule ? kNoModule : anchorOf(parent));

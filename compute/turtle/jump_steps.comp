@@ -14,11 +14,13 @@ layout(set = 0, binding = 3, std430) readonly buffer PointersIn { uint pointersI
 layout(set = 0, binding = 4, std430) writeonly buffer StepsOut { TurtleStep stepsOut[]; };
 layout(set = 0, binding = 5, std430) writeonly buffer PointersOut { uint pointersOut[]; };
 layout(push_constant) uniform Push { TurtlePush pc; };
+#define TURTLE_STATUS_BINDING 6
+#include "compute/turtle/module_count.glsl"
 #include "compute/turtle/turtle_math.glsl"
 
 void main() {
     uint i = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * gl_WorkGroupSize.x + gl_LocalInvocationID.x;
-    if (i >= pc.count || targets[i] == 0u) return;
+    if (i >= moduleCount() || targets[i] == 0u) return;
     uint p = pointersIn[i];
     if (p == kNoModule || (marks[p] & kMarkNonlinear) != 0u) {
         stepsOut[i] = stepsIn[i];

@@ -18,15 +18,18 @@ layout(set = 0, binding = 5, std430) readonly buffer TubeBelow { uint tubeBelow[
 layout(set = 0, binding = 6, std430) buffer Instances { OrganInstance instances[]; };
 layout(set = 0, binding = 7, std430) readonly buffer LastSlots { uint lastSlots[]; };
 layout(push_constant) uniform Push { TurtlePush pc; };
+#define TURTLE_STATUS_BINDING 8
+#include "compute/turtle/module_count.glsl"
 
 void main() {
     uint i = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * gl_WorkGroupSize.x + gl_LocalInvocationID.x;
-    if (i >= pc.count || kinds[i] != kOrganStem) return;
+    if (i >= moduleCount() || kinds[i] != kOrganStem) return;
     bool tube = commands[i] == kTurtleCylinderPoint;
     uint below = tube ? tubeBelow[i] : stemBelow[i];
     uint joined = tube ? kMarkTube : kMarkStem;
     if (below == kNoModule || (marks[below] & joined) == 0u) return;
     uint self = slots[i], other = lastSlots[below]; // a tube's first segment joins the last one before
+    if (max(self, other) >= pc.organCapacity) return; // not written: the organs outgrew their buffer
     instances[self].previousHeading = vec4(instances[other].heading.xyz, 0);
     instances[other].nextHeading = vec4(instances[self].heading.xyz, 0);
 }

@@ -14,7 +14,7 @@ layout(push_constant) uniform Push { TurtlePush pc; };
 
 void main() {
     uint s = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * gl_WorkGroupSize.x + gl_LocalInvocationID.x;
-    if (s >= total) return;
+    if (s >= min(total, pc.organCapacity)) return;
     OrganInstance o = instances[s];
     vec3 d = fieldCell(o.plant, pc.plants) * spacing;
     o.position.xyz += d;

@@ -15,13 +15,15 @@ layout(set = 0, binding = 2, std430) buffer Marks { uint marks[]; };
 layout(set = 0, binding = 3, std430) writeonly buffer TriangleFirst { uint triangleFirst[]; };
 layout(set = 0, binding = 4, std430) writeonly buffer TrianglePrevious { uint trianglePrevious[]; };
 layout(push_constant) uniform Push { TurtlePush pc; };
+#define TURTLE_STATUS_BINDING 5
+#include "compute/turtle/module_count.glsl"
 
 void main() {
     uint i = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * gl_WorkGroupSize.x + gl_LocalInvocationID.x;
-    if (i >= pc.count || commands[i] != kTurtlePolygonBegin) return;
+    if (i >= moduleCount() || commands[i] != kTurtlePolygonBegin) return;
     uint plant = plantOfModule[i];
     uint nested = 0u, vertices = 0u, first = kNoModule, previous = kNoModule;
-    for (uint j = i + 1u; j < pc.count && plantOfModule[j] == plant; ++j) {
+    for (uint j = i + 1u; j < moduleCount() && plantOfModule[j] == plant; ++j) {
         uint command = commands[j];
         if (command == kTurtlePolygonEnd) {
             if (nested == 0u) break;

@@ -10,10 +10,12 @@ layout(set = 0, binding = 1, std430) readonly buffer ChunkPointers { uint chunkP
 layout(set = 0, binding = 2, std430) readonly buffer JumpedPointers { uint jumpedPointers[]; };
 layout(set = 0, binding = 3, std430) writeonly buffer Found { uint found[]; };
 layout(push_constant) uniform Push { TurtlePush pc; };
+#define TURTLE_STATUS_BINDING 4
+#include "compute/turtle/module_count.glsl"
 
 void main() {
     uint i = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * gl_WorkGroupSize.x + gl_LocalInvocationID.x;
-    if (i >= pc.count) return;
+    if (i >= moduleCount()) return;
     uint q = chunkPointers[i];
     bool done = q == kNoModule || (marks[q] & (pc.hitMask | pc.stopMask)) != 0u;
     found[i] = done ? q : jumpedPointers[q];

@@ -18,6 +18,8 @@ layout(set = 0, binding = 11, std430) writeonly buffer Marks { uint marks[]; };
 layout(set = 0, binding = 12, std430) writeonly buffer Plants { uint plantOfModule[]; };
 // Every mark some module carries, so the host runs only the searches and levels the string needs.
 layout(set = 0, binding = 13, std430) buffer Present { uint presentMarks; };
+#define TURTLE_STATUS_BINDING 14
+#include "compute/turtle/module_count.glsl"
 
 #include "compute/turtle/turtle_math.glsl"
 #include "compute/turtle/turtle_modules.glsl"
@@ -61,7 +63,7 @@ uint setUpModule(uint i) {
 
 void main() {
     uint i = invocationIndex();
-    uint mark = i < pc.count ? setUpModule(i) : 0u;
+    uint mark = i < moduleCount() ? setUpModule(i) : 0u;
     uint marked = subgroupOr(mark);
     if (subgroupElect() && marked != 0u) atomicOr(presentMarks, marked);
 }

@@ -14,6 +14,8 @@ layout(set = 0, binding = 9, std430) readonly buffer JumpedSteps { TurtleStep ju
 layout(set = 0, binding = 10, std430) readonly buffer JumpedPointers { uint jumpedPointers[]; };
 layout(set = 0, binding = 11, std430) readonly buffer Plants { uint plantOfModule[]; };
 layout(set = 0, binding = 12, std430) buffer States { TurtleState states[]; };
+#define TURTLE_STATUS_BINDING 13
+#include "compute/turtle/module_count.glsl"
 
 #include "compute/turtle/turtle_math.glsl"
 #include "compute/turtle/turtle_modules.glsl"
@@ -21,6 +23,6 @@ layout(set = 0, binding = 12, std430) buffer States { TurtleState states[]; };
 
 void main() {
     uint i = invocationIndex();
-    if (i >= pc.count || (marks[i] & kMarkNonlinear) != 0u) return;
+    if (i >= moduleCount() || (marks[i] & kMarkNonlinear) != 0u) return;
     states[i] = linearState(i);
 }

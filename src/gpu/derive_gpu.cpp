@@ -136,6 +136,20 @@ void GpuDeriver::Impl::downloadPlantState(stream::PlantControl& control) const {
     }
 }
 
+void GpuDeriver::Impl::startDerivation(stream::PlantControl& control, const stream::DeriveOptions& options) {
+    recording.reset();
+    plants = control.plants();
+    carriesParticles = options.particles;
+    partnersStream = -1;
+    bracketTrees = 0;
+    stream::ModuleString axioms = control.startAll();
+    if (axioms.size() > control.budget())
+        throw ir::LimitError(fmt::format("the axioms alone exceed the module budget of {} modules", control.budget()));
+    axiomsBalanced = bracketsBalanced(axioms);
+    tableReadFrom = -1;
+    uploadAxioms(axioms, options);
+}
+
 stream::ModuleString GpuDeriver::Impl::readBack(const Stream& s, bool particles) const {
     stream::ModuleString string;
     string.stride = stride;
@@ -181,18 +195,9 @@ stream::DeriveResult GpuDeriver::derive(const stream::DeriveOptions& asked, bool
     stream::PlantControl control(m.species, options);
     const uint32_t seed = control.seed();
     const uint64_t budget = control.budget();
-    m.plants = control.plants();
-    m.carriesParticles = options.particles;
-    m.partnersStream = -1;
-    m.bracketTrees = 0;
     const uint64_t submissionsBefore = m.ctx.submissions();
-    stream::ModuleString axioms = control.startAll();
-    if (axioms.size() > budget)
-        throw ir::LimitError(fmt::format("the axioms alone exceed the module budget of {} modules", budget));
-    m.axiomsBalanced = bracketsBalanced(axioms);
+    m.startDerivation(control, options);
     const bool recorded = m.recordsSteps(options.particles);
-    m.tableReadFrom = -1;
-    m.uploadAxioms(axioms, options);
 
     std::optional<vk::Timestamps> timer;
     if (m.ctx.timestampValidBits() > 0) timer.emplace(m.ctx, 2);

@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include <vulkan/vulkan.h>
+
 #include "codegen/derive_support.h"
 #include "ir/grammar.h"
 #include "stream/derive_options.h"
@@ -78,6 +80,17 @@ public:
     // The string the last derive() left on the device (read back or not), valid until the next derive() or the
     // deriver's end: what the turtle kernels interpret without a round trip through the host.
     stream::DeviceModules lastString() const;
+
+    // Records deriving options.plants plants into `cmd` for the caller to submit, with no wait: the axioms'
+    // copy and every step with its sizes on the device, into streams with room for `room` modules (the field's
+    // size, as the last derive() found it, say). Needs recordsSteps(options), at most kMostRecordedSteps steps
+    // and no homomorphism. Returns the string the submission writes, counted only on the device (the turtle's
+    // record() reads it so). Throws std::logic_error for a derivation it cannot record.
+    stream::DeviceModules record(VkCommandBuffer cmd, const stream::DeriveOptions& options, uint64_t room);
+    // Once record()'s submission has completed: its result (the plant table; the string stays on the device,
+    // lastString()), or nullopt when a step outgrew the room (derive() then). Throws as derive() does when a
+    // step passed the module budget.
+    std::optional<stream::DeriveResult> recorded(GpuDeriveStats* stats = nullptr);
 
     // Whether derive() records its steps one after the other with their sizes on the device, waiting once per batch
     // of steps (the parallel strategy with a fused scan, for grammars without decomposition, cuts or predecessors

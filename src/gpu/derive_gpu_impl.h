@@ -9,6 +9,7 @@
 #include <functional>
 #include <initializer_list>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
@@ -275,6 +276,10 @@ struct GpuDeriver::Impl {
     // module is examined at depth 0 with its contexts around itself, and the passes draw from step 0's.
     int applyHomomorphism(int cur, uint32_t seed, uint64_t budget, vk::Timestamps* timer, GpuDeriveStats& stats);
 
+    // The derivation's start, for derive() and record() alike: the plants and their axioms, staged for the first
+    // submission to copy.
+    void startDerivation(stream::PlantControl& control, const stream::DeriveOptions& options);
+
     // ---- steps recorded one after the other (derive_gpu_recorded.cpp) ----
 
     // Whether the derivation's steps can run with their sizes on the device: the parallel strategy's steps with a
@@ -304,9 +309,31 @@ struct GpuDeriver::Impl {
             impl.retiredBuffers.clear();
         }
     };
+    // The pipelines and buffers of recorded steps; no partners carried yet.
+    void prepareRecorded(bool timed);
+    // The next batch of up to kMostRecordedSteps steps from `step` on, planned by the host's plant control with
+    // their plant state in the batch slots; `step` moves past them (past the last step when no plant grows).
+    void planBatch(stream::PlantControl& control, int& step, std::vector<RecordedStep>& batch,
+                   std::vector<uint8_t>& growing);
     // Runs batch steps `first` on from streams[cur] in one submission; returns the steps done, `cur` their stream.
     size_t runBatch(const std::vector<RecordedStep>& batch, size_t first, int& cur, uint32_t seed, uint64_t budget,
                     bool timed, int stepsAfterBatch, GpuDeriveStats& stats);
+    // Records batch steps `first` on from streams[in] into `cmd`, then copies of their sizes and the last plant
+    // table for the host; returns the stream the last step writes.
+    int recordBatch(VkCommandBuffer cmd, const std::vector<RecordedStep>& batch, size_t first, int in, uint32_t seed,
+                    uint64_t budget, vk::Timestamps* timer);
+    // After the batch's submission: the steps it completed (all of them unless one stopped it), `cur` moved to
+    // their last stream, with the streams' counts and the stats.
+    size_t completeBatch(const std::vector<RecordedStep>& batch, size_t first, int& cur, vk::Timestamps* timer,
+                         GpuDeriveStats& stats);
+    // A derivation record() wrote into a caller's command buffer, until recorded() reads what it left.
+    struct Recording {
+        std::unique_ptr<stream::PlantControl> control;
+        std::vector<RecordedStep> batch;
+        uint64_t budget = 0;
+        uint64_t submissionsBefore = 0;
+    };
+    std::optional<Recording> recording;
     void recordStep(VkCommandBuffer cmd, const RecordedStep& step, uint32_t slot, int in, uint32_t seed,
                     uint64_t budget);
     // Room for `modules` in every stream (streams[cur] keeps its string) and in the scratch.

@@ -7,6 +7,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
+#include <stdexcept>
+
+#include <fmt/format.h>
 
 #include "vk/barriers.h"
 
@@ -87,8 +91,7 @@ void GpuDeriver::Impl::makeRoom(int cur, uint64_t modules) {
     }
 }
 
-int GpuDeriver::Impl::deriveRecorded(stream::PlantControl& control, int cur, uint32_t seed, uint64_t budget,
-                                     bool timed, GpuDeriveStats& stats) {
+void GpuDeriver::Impl::prepareRecorded(bool timed) {
     if (!stepSizes) stepSizes = vk::ComputePipeline::embedded(ctx, "derive/step_sizes");
     if (!stepWords) {
         stepWords = vk::Buffer(ctx, shared::kStepWords * 4, vk::MemoryUsage::DeviceLocal,
@@ -99,25 +102,34 @@ int GpuDeriver::Impl::deriveRecorded(stream::PlantControl& control, int cur, uin
     reserve(tableReadback, bytes(plants + 1, 4), vk::MemoryUsage::Readback);
     reserveBatchState(shared::kMostRecordedSteps);
     partnersLive = false;
-    makeRoom(cur, streams[cur].count);
+}
 
+void GpuDeriver::Impl::planBatch(stream::PlantControl& control, int& step, std::vector<RecordedStep>& batch,
+                                 std::vector<uint8_t>& growing) {
+    batch.clear();
+    for (; step <= control.steps() && batch.size() < shared::kMostRecordedSteps; ++step) {
+        if (!control.beginFieldStep(step, growing)) {
+            step = control.steps() + 1;
+            break;
+        }
+        VkDeviceSize slot = batch.size();
+        bool frozen = writePlantState(control, growing,
+                                      reinterpret_cast<double*>(batchGlobals.mapped() + slot * globalsSlice),
+                                      reinterpret_cast<double*>(batchArrays.mapped() + slot * arraysSlice),
+                                      reinterpret_cast<uint32_t*>(batchFrozen.mapped() + slot * frozenSlice));
+        batch.push_back({uint32_t(step), frozen});
+        control.endFieldStep(step, growing);
+    }
+}
+
+int GpuDeriver::Impl::deriveRecorded(stream::PlantControl& control, int cur, uint32_t seed, uint64_t budget,
+                                     bool timed, GpuDeriveStats& stats) {
+    prepareRecorded(timed);
+    makeRoom(cur, streams[cur].count);
     std::vector<uint8_t> growing(plants, 0);
     std::vector<RecordedStep> batch;
     for (int step = 1; step <= control.steps();) {
-        batch.clear();
-        for (; step <= control.steps() && batch.size() < shared::kMostRecordedSteps; ++step) {
-            if (!control.beginFieldStep(step, growing)) {
-                step = control.steps() + 1;
-                break;
-            }
-            VkDeviceSize slot = batch.size();
-            bool frozen = writePlantState(
-                control, growing, reinterpret_cast<double*>(batchGlobals.mapped() + slot * globalsSlice),
-                reinterpret_cast<double*>(batchArrays.mapped() + slot * arraysSlice),
-                reinterpret_cast<uint32_t*>(batchFrozen.mapped() + slot * frozenSlice));
-            batch.push_back({uint32_t(step), frozen});
-            control.endFieldStep(step, growing);
-        }
+        planBatch(control, step, batch, growing);
         int stepsAfterBatch = std::max(control.steps() - step + 1, 0);
         for (size_t done = 0; done < batch.size();)
             done = runBatch(batch, done, cur, seed, budget, timed, stepsAfterBatch, stats);
@@ -135,39 +147,37 @@ void GpuDeriver::Impl::recordPendingCopies(VkCommandBuffer cmd) const {
     vk::memoryBarrier(cmd, Hazard::TransferToCompute);
 }
 
-size_t GpuDeriver::Impl::runBatch(const std::vector<RecordedStep>& batch, size_t first, int& cur, uint32_t seed,
-                                  uint64_t budget, bool timed, int stepsAfterBatch, GpuDeriveStats& stats) {
-    vk::Timestamps* timer = timed ? &*batchTimer : nullptr;
-    int in = cur;
-    std::optional<SubmissionEnd> submission{*this};
-    ctx.submitAndWait([&](VkCommandBuffer cmd) {
-        if (timer) {
-            timer->cmdReset(cmd);
-            timer->cmdWrite(cmd, uint32_t(first), VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT);
-        }
-        recordPendingCopies(cmd);
-        vk::cmdFill(cmd, errors, 0);
-        vk::cmdFill(cmd, stepWords, 0);
-        vk::memoryBarrier(cmd, Hazard::TransferToCompute);
-        for (size_t j = first; j < batch.size(); ++j) {
-            recordStep(cmd, batch[j], uint32_t(j), in, seed, budget);
-            in = (in + 1) % 3;
-            if (timer) timer->cmdWrite(cmd, uint32_t(j + 1));
-        }
-        vk::memoryBarrier(cmd, Hazard::ComputeToTransfer);
-        VkBufferCopy words{0, 0, shared::kStepBlocks * 4}, errorWords{0, shared::kStepBlocks * 4, 12},
-            table{0, 0, bytes(plants + 1, 4)};
-        vkCmdCopyBuffer(cmd, stepWords.handle(), stepWordsReadback.handle(), 1, &words);
-        vkCmdCopyBuffer(cmd, errors.handle(), stepWordsReadback.handle(), 1, &errorWords);
-        // The last step's plant table, which the caller reads when no step stopped the batch.
-        vkCmdCopyBuffer(cmd, streams[in].plantStart.handle(), tableReadback.handle(), 1, &table);
-        vk::memoryBarrier(cmd, Hazard::TransferToHost);
-    });
-    submission.reset();
+int GpuDeriver::Impl::recordBatch(VkCommandBuffer cmd, const std::vector<RecordedStep>& batch, size_t first, int in,
+                                  uint32_t seed, uint64_t budget, vk::Timestamps* timer) {
+    if (timer) {
+        timer->cmdReset(cmd);
+        timer->cmdWrite(cmd, uint32_t(first), VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT);
+    }
+    recordPendingCopies(cmd);
+    vk::cmdFill(cmd, errors, 0);
+    vk::cmdFill(cmd, stepWords, 0);
+    vk::memoryBarrier(cmd, Hazard::TransferToCompute);
+    for (size_t j = first; j < batch.size(); ++j) {
+        recordStep(cmd, batch[j], uint32_t(j), in, seed, budget);
+        in = (in + 1) % 3;
+        if (timer) timer->cmdWrite(cmd, uint32_t(j + 1));
+    }
+    vk::memoryBarrier(cmd, Hazard::ComputeToTransfer);
+    VkBufferCopy words{0, 0, shared::kStepBlocks * 4}, errorWords{0, shared::kStepBlocks * 4, 12},
+        table{0, 0, bytes(plants + 1, 4)};
+    vkCmdCopyBuffer(cmd, stepWords.handle(), stepWordsReadback.handle(), 1, &words);
+    vkCmdCopyBuffer(cmd, errors.handle(), stepWordsReadback.handle(), 1, &errorWords);
+    // The last step's plant table, which the caller reads when no step stopped the batch.
+    vkCmdCopyBuffer(cmd, streams[in].plantStart.handle(), tableReadback.handle(), 1, &table);
+    vk::memoryBarrier(cmd, Hazard::TransferToHost);
+    return in;
+}
+
+size_t GpuDeriver::Impl::completeBatch(const std::vector<RecordedStep>& batch, size_t first, int& cur,
+                                       vk::Timestamps* timer, GpuDeriveStats& stats) {
     const uint32_t* words = reinterpret_cast<const uint32_t*>(stepWordsReadback.mapped());
     lastFlags = words[shared::kStepBlocks + 1];
     checkKernelErrors(words[shared::kStepBlocks], lastFlags, false);
-
     const uint32_t stopped = words[shared::kStepStopped];
     const size_t done = stopped != 0 ? (stopped >> 2) - 1 : batch.size();
     for (size_t j = first; j < done; ++j) bracketTrees += treeBuilt[j] ? 1u : 0u;
@@ -181,12 +191,21 @@ size_t GpuDeriver::Impl::runBatch(const std::vector<RecordedStep>& batch, size_t
         stats.peakModules = std::max<uint64_t>(stats.peakModules, total);
         if (timer) stats.stepMillis.push_back(timer->elapsedNs(uint32_t(j), uint32_t(j + 1)) / 1e6);
     }
-    if (stopped == 0) {
-        tableReadFrom = cur;
-        return done;
-    }
+    if (stopped == 0) tableReadFrom = cur;
+    return done;
+}
+
+size_t GpuDeriver::Impl::runBatch(const std::vector<RecordedStep>& batch, size_t first, int& cur, uint32_t seed,
+                                  uint64_t budget, bool timed, int stepsAfterBatch, GpuDeriveStats& stats) {
+    vk::Timestamps* timer = timed ? &*batchTimer : nullptr;
+    std::optional<SubmissionEnd> submission{*this};
+    ctx.submitAndWait([&](VkCommandBuffer cmd) { recordBatch(cmd, batch, first, cur, seed, budget, timer); });
+    submission.reset();
+    const size_t done = completeBatch(batch, first, cur, timer, stats);
+    if (done == batch.size()) return done;
+    const uint32_t* words = reinterpret_cast<const uint32_t*>(stepWordsReadback.mapped());
     const uint64_t total = words[shared::kStepTotals + done];
-    if ((stopped & 3u) == shared::kStopBudget) checkBudget(total, budget, batch[done].index);
+    if ((words[shared::kStepStopped] & 3u) == shared::kStopBudget) checkBudget(total, budget, batch[done].index);
     // The step outgrew its stream: room for it and a few steps more at its rate of growth, as far as the rest of
     // the derivation goes.
     int stepsAhead = std::min<int>(kStepsAhead, int(batch.size() - done - 1) + stepsAfterBatch);
@@ -215,7 +234,8 @@ void GpuDeriver::Impl::recordStep(VkCommandBuffer cmd, const RecordedStep& step,
                         uint32_t(recordedCapacity(output)),
                         uint32_t(std::min<uint64_t>(budget, std::numeric_limits<uint32_t>::max())),
                         ctx.limits().maxComputeWorkGroupCount[0],
-                        treeBuilt[slot] ? 1u : 0u};
+                        treeBuilt[slot] ? 1u : 0u,
+                        uint32_t(recordedCapacity(input))};
     stepSizes->dispatch(cmd, {plantTable(input), scan.totalBuffer(), stepWords, brackets.levelInfo()}, sizes, 1);
     vk::memoryBarrier(cmd, Hazard::ComputeToIndirect);
     if (treeBuilt[slot]) {
@@ -262,6 +282,71 @@ void GpuDeriver::Impl::recordStep(VkCommandBuffer cmd, const RecordedStep& step,
         brackets.carried();
         partnersLive = true;
     }
+}
+
+stream::DeviceModules GpuDeriver::record(VkCommandBuffer cmd, const stream::DeriveOptions& asked, uint64_t room) {
+    Impl& m = *impl_;
+    stream::DeriveOptions options = asked;
+    if (options.maxModules == 0) options.maxModules = m.defaultModuleBudget(options.particles);
+    if (!m.recordsSteps(options.particles))
+        throw std::logic_error("GpuDeriver::record: this grammar's steps need the host between them");
+    if (options.homomorphism && (m.homomorphismMatch || m.homomorphismHostReason))
+        throw std::logic_error("GpuDeriver::record: the homomorphism runs step by step");
+
+    Impl::Recording recording;
+    recording.control = std::make_unique<stream::PlantControl>(m.species, options);
+    recording.submissionsBefore = m.ctx.submissions();
+    stream::PlantControl& control = *recording.control;
+    recording.budget = control.budget();
+    m.startDerivation(control, options);
+    m.prepareRecorded(false);
+    m.makeRoom(0, std::max<uint64_t>(std::min(room, recording.budget), m.streams[0].count));
+    std::vector<uint8_t> growing(m.plants, 0);
+    int step = 1;
+    m.planBatch(control, step, recording.batch, growing);
+    if (step <= control.steps())
+        throw std::logic_error(fmt::format("GpuDeriver::record: at most {} steps in one recording",
+                                           shared::kMostRecordedSteps));
+    const int last = m.recordBatch(cmd, recording.batch, 0, 0, control.seed(), recording.budget, nullptr);
+    m.recording = std::move(recording);
+    m.lastStream = -1; // until recorded() knows the string is there
+    const Stream& s = m.streams[last];
+    stream::DeviceModules modules{&s.sym,          &s.par, &s.plantStart, uint32_t(m.recordedCapacity(s)), m.plants,
+                                  uint32_t(m.stride), nullptr};
+    modules.countOnDevice = true;
+    return modules;
+}
+
+std::optional<stream::DeriveResult> GpuDeriver::recorded(GpuDeriveStats* statsOut) {
+    Impl& m = *impl_;
+    if (!m.recording) throw std::logic_error("GpuDeriver::recorded() without record()");
+    Impl::Recording recording = std::move(*m.recording);
+    m.recording.reset();
+    Impl::SubmissionEnd submission{m};
+    GpuDeriveStats stats;
+    stats.compileSeconds = m.compileSeconds;
+    int cur = 0;
+    const size_t done = m.completeBatch(recording.batch, 0, cur, nullptr, stats);
+    m.partnersStream = -1;
+    m.partnersLive = false;
+    if (done < recording.batch.size()) {
+        const uint32_t* words = reinterpret_cast<const uint32_t*>(m.stepWordsReadback.mapped());
+        if ((words[shared::kStepStopped] & 3u) == shared::kStopBudget)
+            m.checkBudget(words[shared::kStepTotals + done], recording.budget, recording.batch[done].index);
+        return std::nullopt; // a step outgrew the room it was recorded with
+    }
+    stream::PlantControl& control = *recording.control;
+    for (uint32_t plant = 0; plant < m.plants; ++plant) control.finish(plant);
+    stream::DeriveResult result;
+    result.steps = control.mostStepsDerived();
+    result.string.stride = m.stride;
+    const uint32_t* table = reinterpret_cast<const uint32_t*>(m.tableReadback.mapped());
+    result.string.plantStart.assign(table, table + m.plants + 1);
+    m.lastStream = cur;
+    stats.modules = m.streams[cur].count;
+    stats.waits = static_cast<uint32_t>(m.ctx.submissions() - recording.submissionsBefore);
+    if (statsOut) *statsOut = stats;
+    return result;
 }
 
 } // namespace simeco::gpu

@@ -16,10 +16,13 @@ struct DeviceModules {
     const vk::Buffer* symbols = nullptr;
     const vk::Buffer* params = nullptr;
     const vk::Buffer* plantStarts = nullptr;
-    std::uint32_t count = 0;
+    std::uint32_t count = 0; // with countOnDevice, a bound on the modules
     std::uint32_t plants = 0;
     std::uint32_t stride = 1;
     const vk::Buffer* particles = nullptr; // null unless the derivation carried particle state
+    // The modules are counted only on the device, by the plant table's last entry: the string of a derivation
+    // recorded into a command buffer, which its submission writes.
+    bool countOnDevice = false;
 };
 
 } // namespace simeco::stream

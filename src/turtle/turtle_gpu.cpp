@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <bit>
 #include <cstring>
+#include <optional>
 #include <span>
 #include <stdexcept>
 #include <utility>
@@ -93,7 +94,10 @@ struct GpuTurtle::Impl {
     gpu::GpuScan scan;
     gpu::BracketTree brackets;
     vk::ComputePipeline setup, polygons, chunkSteps, jumpSteps, chunkSearch, jumpSearch, searchFinish, jumpLevels,
-        levelCount, levelScatter, resolveLevel, states, classify, emit, links, field, place;
+        levelCount, levelLayout, levelScatter, resolveLevel, states, classify, emit, links, field, place;
+    // For strings counted only on the device: the workgroups of the bracket tree's dispatches, as a recorded
+    // derivation step sizes them (made on the first such recording).
+    std::optional<vk::ComputePipeline> stepSizes;
     vk::Buffer commandTable, speciesTable, palettes, surfaceScales, surfaceShapes;
     TurtlePush base{};
     std::uint32_t levels = 0;
@@ -113,8 +117,13 @@ struct GpuTurtle::Impl {
         vk::Buffer flags, offsets;
         std::uint64_t modules = 0; // capacity
     } scratch;
-    vk::Buffer plantBounds, cursors, cursorStarts, present; // cursorStarts: the levels' starts, host-visible
-    std::uint64_t plantCapacity = 0, cursorCapacity = 0;
+    vk::Buffer plantBounds, present;
+    // The levels' cursors and the workgroups of their dispatches (level_layout.comp).
+    vk::Buffer cursors, levelArguments;
+    std::uint64_t plantCapacity = 0, levelCapacity = 0;
+    // The status words (compute/shared/turtle_state_layout.h), a host-visible copy a recording ends with, and
+    // the words step_sizes writes the bracket tree's workgroups into.
+    vk::Buffer status, statusReadback, treeArguments;
     // What the last interpretation left: its instances grow like the scratch arrays.
     DeviceOrgans organs;
 
@@ -131,6 +140,7 @@ struct GpuTurtle::Impl {
           searchFinish(vk::ComputePipeline::embedded(c, "turtle/search_finish")),
           jumpLevels(vk::ComputePipeline::embedded(c, "turtle/jump_levels")),
           levelCount(vk::ComputePipeline::embedded(c, "turtle/level_count")),
+          levelLayout(vk::ComputePipeline::embedded(c, "turtle/level_layout")),
           levelScatter(vk::ComputePipeline::embedded(c, "turtle/level_scatter")),
           resolveLevel(vk::ComputePipeline::embedded(c, "turtle/resolve_level")),
           states(vk::ComputePipeline::embedded(c, "turtle/states")),
@@ -168,6 +178,9 @@ struct GpuTurtle::Impl {
         base.atSymbol = commands.at;
         base.tildeSymbol = commands.tilde;
         base.querySymbol = commands.query;
+        base.maxGroupsX = c.limits().maxComputeWorkGroupCount[0];
+        status = vk::Buffer(c, kTurtleStatusWords * 4, vk::MemoryUsage::DeviceLocal);
+        statusReadback = vk::Buffer(c, kTurtleStatusWords * 4, vk::MemoryUsage::Readback);
     }
 
     void checkRange(std::uint64_t count, std::uint64_t size, const char* what) const {
@@ -188,9 +201,11 @@ struct GpuTurtle::Impl {
     void reserveOrgans(std::uint64_t count);
 
     const DeviceOrgans& interpret(const stream::DeviceModules& m, const turtle::FieldOptions& options);
+    const DeviceOrgans& record(VkCommandBuffer cmd, const stream::DeviceModules& m,
+                               const turtle::FieldOptions& options, TurtleRoom room);
 
-    // What one interpretation's passes share: the stream, its sizes and push constants, and what the host read
-    // between the passes.
+    // What one interpretation's passes share: the stream, the bound on its modules (their count is in the
+    // status words) and the push constants, the marks searched for and the levels laid out and resolved.
     struct Run {
         Run(const vk::Buffer& s, const vk::Buffer& p, const vk::Buffer& t) : symbols(s), params(p), starts(t) {}
 
@@ -200,39 +215,35 @@ struct GpuTurtle::Impl {
         std::uint32_t n = 0, plants = 0, rounds = 0;
         std::uint64_t groups = 0, chunkGroups = 0;
         TurtlePush push{};
-        std::uint32_t marked = 0;  // the marks that occur
-        std::uint32_t deepest = 0; // levels of non-linear commands
-        std::vector<std::uint32_t> levelStarts, levelSizes;
+        bool countedOnDevice = false; // the host has not read the count: the bracket tree is sized on the device
+        std::uint32_t marked = 0;     // the marks that occur, or every mark where the host did not read them
+        std::uint32_t levels = 0;     // levels of non-linear modules laid out and resolved
     };
 
     // Nearest strict ancestor with a hit or stop mark, into `result`: within chunks, then among the targets the
     // chunks point at (searchChunk -> searchJumps[0] -> [1] -> [0] ...; the last round writes [0]), then for all.
     void recordSearch(VkCommandBuffer cmd, const Run& run, std::uint32_t hit, std::uint32_t stop,
                       const vk::Buffer& result);
-    // Pass 1: commands, parents, steps and marks; polygons; which marks occur at all (into `present`).
+    // Pass 1: the module count from the plant table into the status words; the bracket tree; commands, parents,
+    // steps and marks; polygons; which marks occur at all (into `present`).
     void recordSetup(VkCommandBuffer cmd, const Run& run);
     // Pass 2: steps composed up to the anchors; the searches that need only marks; the levels of the non-linear
     // modules and their counts. Searches for marks no module carries are skipped (their readers never look).
     void recordComposition(VkCommandBuffer cmd, const Run& run);
-    // The levels' sizes read back and laid out one after another (the cursors the scatter fills them by).
-    void layOutLevels(Run& run);
-    // Pass 3: non-linear modules level by level, then every state; organs classified and counted (a tube may
-    // draw several segments) and placed by a scan, whose total sizes the instance buffer.
+    // Pass 3: the levels laid out and their non-linear modules resolved one level after another, then every
+    // state; organs classified and counted (a tube may draw several segments) and placed by a scan, whose total
+    // sizes the instance buffer.
     void recordStates(VkCommandBuffer cmd, const Run& run);
-    // Pass 4: organs written, joined, and moved to their plants' places in the field.
-    void recordOrgans(VkCommandBuffer cmd, const Run& run);
+    // Pass 4: organs written, joined, and moved to their plants' places in the field; `organGroups` workgroups
+    // cover the organs.
+    void recordOrgans(VkCommandBuffer cmd, const Run& run, std::uint64_t organGroups);
 
-    // A run over `m`, before the host has read anything.
+    // A run over the first `m.count` modules at most, before the host has read anything.
     Run begin(const stream::DeviceModules& m, const turtle::FieldOptions& options) const;
-    // What the host read between the passes of the last interpretation, which hold for every string of the same
-    // symbols and parameters: record() runs the passes again in one recording.
-    struct Shape {
-        bool valid = false;
-        std::uint32_t n = 0, plants = 0, marked = 0, deepest = 0;
-        std::vector<std::uint32_t> levelStarts, levelSizes;
-    } shape;
-    const DeviceOrgans& record(VkCommandBuffer cmd, const stream::DeviceModules& m, const turtle::FieldOptions& options);
-
+    // Room for `levels` levels of non-linear modules.
+    void reserveLevels(std::uint32_t levels);
+    // What the last interpretation needed, and what the last recording had room for.
+    TurtleRoom needed{}, recordedRoom{};
     // The main arrays each pass reads and writes, per module (organs counted as if every module drew one, the
     // buffers' capacity): a model of the traffic, not a measurement.
     static std::uint64_t trafficOf(std::uint64_t n, std::uint64_t stride, std::uint64_t rounds,
@@ -263,6 +274,7 @@ struct GpuTurtle::Impl {
 };
 
 const DeviceOrgans& GpuTurtle::Impl::interpret(const stream::DeviceModules& m, const turtle::FieldOptions& options) {
+    if (m.countOnDevice) throw std::logic_error("GpuTurtle::interpret: a string not yet derived (record() it)");
     const std::uint32_t n = m.count;
     levels = 0;
     bytesMoved = 0;
@@ -270,7 +282,7 @@ const DeviceOrgans& GpuTurtle::Impl::interpret(const stream::DeviceModules& m, c
         turtle::Interpretation empty;
         empty.spacing = options.spacing > 0 ? options.spacing : 1.0f;
         organs = uploadOrgans(ctx, empty);
-        shape = Shape{true, 0, m.plants, 0, 0, {}, {}};
+        needed = TurtleRoom{};
         return organs;
     }
     checkRange(n, sizeof(TurtleStep), "steps");
@@ -280,20 +292,26 @@ const DeviceOrgans& GpuTurtle::Impl::interpret(const stream::DeviceModules& m, c
     Run run = begin(m, options);
 
     // The host reads three things between the passes: which marks occur (to skip the searches nothing needs),
-    // the levels' sizes (to dispatch them in turn) and the organs' count (to size the instances).
-    shape.valid = false;
+    // the levels' count (to dispatch them in turn) and the organs' count (to size the instances).
     ctx.submitAndWait([&](VkCommandBuffer cmd) { recordSetup(cmd, run); });
     std::memcpy(&run.marked, present.mapped(), sizeof run.marked);
     ctx.submitAndWait([&](VkCommandBuffer cmd) { recordComposition(cmd, run); });
-    layOutLevels(run);
-    bytesMoved = trafficOf(n, m.stride, run.rounds,
-                           run.levelStarts.empty() ? 0 : run.levelStarts.back() + run.levelSizes.back());
+    std::uint64_t nonlinear = 0;
+    if (run.marked & kMarkNonlinear) {
+        std::vector<std::uint32_t> counts = vk::downloadVector<std::uint32_t>(ctx, scratch.counts, n + 1);
+        run.levels = counts[0];
+        for (std::uint32_t level = 1; level <= run.levels; ++level) nonlinear += counts[level];
+    }
+    levels = run.levels;
+    reserveLevels(run.levels);
+    bytesMoved = trafficOf(n, m.stride, run.rounds, nonlinear);
     ctx.submitAndWait([&](VkCommandBuffer cmd) { recordStates(cmd, run); });
     std::uint32_t organCount = vk::downloadVector<std::uint32_t>(ctx, scan.totalBuffer(), 1)[0];
     checkRange(organCount, sizeof(OrganInstance), "organ instances");
     reserveOrgans(organCount);
-    ctx.submitAndWait([&](VkCommandBuffer cmd) { recordOrgans(cmd, run); });
-    shape = Shape{true, n, m.plants, run.marked, run.deepest, run.levelStarts, run.levelSizes};
+    run.push.organCapacity = organs.capacity;
+    ctx.submitAndWait([&](VkCommandBuffer cmd) { recordOrgans(cmd, run, place.groupsFor(organCount)); });
+    needed = TurtleRoom{run.levels, organCount};
     return organs;
 }
 
@@ -314,16 +332,31 @@ GpuTurtle::Impl::Run GpuTurtle::Impl::begin(const stream::DeviceModules& m, cons
 }
 
 const DeviceOrgans& GpuTurtle::Impl::record(VkCommandBuffer cmd, const stream::DeviceModules& m,
-                                            const turtle::FieldOptions& options) {
-    if (!shape.valid || shape.n != m.count || shape.plants != m.plants)
-        throw std::logic_error("GpuTurtle::record: the turtle interpreted another string last");
-    if (m.count == 0) return organs;
-    Run run = begin(m, options);
-    run.marked = shape.marked;
-    run.deepest = shape.deepest;
-    run.levelStarts = shape.levelStarts;
-    run.levelSizes = shape.levelSizes;
-    levels = run.deepest;
+                                            const turtle::FieldOptions& options, TurtleRoom room) {
+    const std::uint32_t bound = std::max(m.count, 1u);
+    checkRange(bound, sizeof(TurtleStep), "steps");
+    checkRange(std::uint64_t(bound) * kOrganKinds, 4, "organ flags");
+    checkRange(room.organs, sizeof(OrganInstance), "organ instances");
+    reserve(bound, m.plants);
+    if (scan.capacity() < bound * kOrganKinds) scan.reserve(bound * kOrganKinds);
+    reserveLevels(room.levels);
+    reserveOrgans(room.organs);
+    if (!stepSizes) stepSizes = vk::ComputePipeline::embedded(ctx, "derive/step_sizes");
+    if (!treeArguments)
+        treeArguments = vk::Buffer(ctx, (shared::kStepBlocks + shared::kStepBlockWords) * 4,
+                                   vk::MemoryUsage::DeviceLocal, VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT);
+    vk::Buffer replaced = brackets.reserve(bound); // the turtle reads no partners: nothing to carry over
+
+    stream::DeviceModules bounded = m;
+    bounded.count = bound;
+    Run run = begin(bounded, options);
+    run.countedOnDevice = true;
+    run.marked = ~0u;
+    run.levels = room.levels;
+    run.push.organCapacity = organs.capacity;
+    levels = 0;
+    bytesMoved = 0;
+    recordedRoom = TurtleRoom{room.levels, organs.capacity};
     // The stream, and this turtle's buffers, may be in use by what was recorded before.
     vk::memoryBarrier(cmd, Hazard::AnyToAny);
     recordSetup(cmd, run);
@@ -332,7 +365,11 @@ const DeviceOrgans& GpuTurtle::Impl::record(VkCommandBuffer cmd, const stream::D
     vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
     recordStates(cmd, run);
     vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
-    recordOrgans(cmd, run);
+    recordOrgans(cmd, run, place.groupsFor(organs.capacity));
+    vk::memoryBarrier(cmd, Hazard::ComputeToTransfer);
+    VkBufferCopy words{0, 0, kTurtleStatusWords * 4};
+    vkCmdCopyBuffer(cmd, status.handle(), statusReadback.handle(), 1, &words);
+    vk::memoryBarrier(cmd, Hazard::TransferToHost);
     return organs;
 }
 
@@ -345,14 +382,15 @@ void GpuTurtle::Impl::recordSearch(VkCommandBuffer cmd, const Run& run, std::uin
     vk::memoryBarrier(cmd, Hazard::ComputeToTransfer);
     vkCmdFillBuffer(cmd, b.searchTargets.handle(), 0, VK_WHOLE_SIZE, 0);
     vk::memoryBarrier(cmd, Hazard::TransferToCompute);
-    chunkSearch.dispatch(cmd, {b.marks, b.parents, b.searchChunk, b.searchTargets}, p, run.chunkGroups);
+    chunkSearch.dispatch(cmd, {b.marks, b.parents, b.searchChunk, b.searchTargets, status}, p, run.chunkGroups);
     vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
     for (std::uint32_t r = 0; r < run.rounds; ++r) {
         const vk::Buffer& in = r == 0 ? b.searchChunk : b.searchJumps[r % 2 == 1 ? 0 : 1];
-        jumpSearch.dispatch(cmd, {b.marks, b.searchTargets, in, b.searchJumps[r % 2 == 1 ? 1 : 0]}, p, run.groups);
+        jumpSearch.dispatch(cmd, {b.marks, b.searchTargets, in, b.searchJumps[r % 2 == 1 ? 1 : 0], status}, p,
+                            run.groups);
         vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
     }
-    searchFinish.dispatch(cmd, {b.marks, b.searchChunk, b.searchJumps[0], result}, p, run.groups);
+    searchFinish.dispatch(cmd, {b.marks, b.searchChunk, b.searchJumps[0], result, status}, p, run.groups);
     vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
 }
 
@@ -367,26 +405,44 @@ void GpuTurtle::Impl::recordSetup(VkCommandBuffer cmd, const Run& run) {
         vkCmdFillBuffer(cmd, plantBounds.handle(), 0, half, 0x7FFFFFFFu);
         vkCmdFillBuffer(cmd, plantBounds.handle(), half, half, 0x80000000u);
     }
+    // The count is the plant table's last entry, whoever wrote the table.
+    vkCmdFillBuffer(cmd, status.handle(), 4, (kTurtleStatusWords - 1) * 4, 0);
+    VkBufferCopy count{std::uint64_t(run.plants) * 4, kTurtleStatusModules * 4, 4};
+    vkCmdCopyBuffer(cmd, run.starts.handle(), status.handle(), 1, &count);
+    if (run.countedOnDevice) vkCmdFillBuffer(cmd, treeArguments.handle(), 0, VK_WHOLE_SIZE, 0);
     vk::memoryBarrier(cmd, Hazard::TransferToCompute);
-    brackets.record(cmd, run.symbols, run.n);
+    if (run.countedOnDevice) {
+        // The bracket tree's levels and workgroups as a recorded derivation step sizes its own tree.
+        const shared::StepSizesPush sizes{0, 0, run.plants, shared::kScanTileSize, 0, run.n, ~0u,
+                                          run.push.maxGroupsX, 1, run.n};
+        stepSizes->dispatch(cmd, {run.starts, scan.totalBuffer(), treeArguments, brackets.levelInfo()}, sizes, 1);
+        vk::memoryBarrier(cmd, Hazard::ComputeToIndirect);
+        brackets.recordCountedOnDevice(cmd, run.symbols, run.n, treeArguments, shared::kStepBlocks * 4);
+    } else {
+        brackets.record(cmd, run.symbols, run.n);
+    }
     setup.dispatch(cmd,
                    {run.symbols, run.params, run.starts, commandTable, speciesTable, brackets.tree(),
                     brackets.levelInfo(), b.commands, b.parents, b.steps[0], b.pointers[0], b.marks, b.plantOf,
-                    present},
+                    present, status},
                    run.push, run.groups);
     vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
-    polygons.dispatch(cmd, {b.commands, b.plantOf, b.marks, b.triangleFirst, b.trianglePrevious}, run.push, run.groups);
+    polygons.dispatch(cmd, {b.commands, b.plantOf, b.marks, b.triangleFirst, b.trianglePrevious, status}, run.push,
+                      run.groups);
     vk::memoryBarrier(cmd, Hazard::ComputeToHost);
 }
 
 void GpuTurtle::Impl::recordComposition(VkCommandBuffer cmd, const Run& run) {
     const Scratch& b = scratch;
-    chunkSteps.dispatch(cmd, {b.marks, b.parents, b.steps[0], b.pointers[0], b.stepTargets}, run.push, run.chunkGroups);
+    chunkSteps.dispatch(cmd, {b.marks, b.parents, b.steps[0], b.pointers[0], b.stepTargets, status}, run.push,
+                        run.chunkGroups);
     vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
     // The targets' entries alternate between the buffers; the other modules' stay in the first (chunks).
     for (std::uint32_t r = 0; r < run.rounds; ++r) {
         std::uint32_t from = r % 2, to = 1 - from;
-        jumpSteps.dispatch(cmd, {b.marks, b.stepTargets, b.steps[from], b.pointers[from], b.steps[to], b.pointers[to]},
+        jumpSteps.dispatch(cmd,
+                           {b.marks, b.stepTargets, b.steps[from], b.pointers[from], b.steps[to], b.pointers[to],
+                            status},
                            run.push, run.groups);
         vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
     }
@@ -402,69 +458,51 @@ void GpuTurtle::Impl::recordComposition(VkCommandBuffer cmd, const Run& run) {
             jumpLevels.dispatch(cmd,
                                 {run.symbols, run.params, run.starts, commandTable, speciesTable, b.marks, b.parents,
                                  b.stepTargets, b.steps[0], b.pointers[0], b.steps[1], b.pointers[1], b.plantOf,
-                                 b.states, b.levels[(r + 1) % 2], b.levels[r % 2]},
+                                 b.states, b.levels[(r + 1) % 2], b.levels[r % 2], status},
                                 p, run.groups);
             vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
         }
-        levelCount.dispatch(cmd, {b.marks, b.levels[0], b.counts}, run.push, run.groups);
+        levelCount.dispatch(cmd, {b.marks, b.levels[0], b.counts, status}, run.push, run.groups);
     }
     vk::memoryBarrier(cmd, Hazard::ComputeToHost);
 }
 
-void GpuTurtle::Impl::layOutLevels(Run& run) {
-    const Scratch& b = scratch;
-    run.deepest = (run.marked & kMarkNonlinear) ? vk::downloadVector<std::uint32_t>(ctx, b.counts, 1)[0] : 0;
-    levels = run.deepest;
-    run.levelStarts.assign(std::size_t(run.deepest) + 1, 0);
-    run.levelSizes.assign(std::size_t(run.deepest) + 1, 0);
-    if (cursorCapacity < std::uint64_t(run.deepest) + 1) {
-        cursorCapacity = std::max<std::uint64_t>(std::uint64_t(run.deepest) + 1, 64);
-        cursors = deviceBuffer(cursorCapacity, 4);
-        cursorStarts = vk::Buffer(ctx, bytes(cursorCapacity, 4), vk::MemoryUsage::Upload);
-    }
-    if (run.deepest > 0) {
-        std::vector<std::uint32_t> sizes(std::size_t(run.deepest) + 1);
-        vk::download(ctx, b.counts, std::as_writable_bytes(std::span(sizes)));
-        std::uint32_t next = 0;
-        for (std::uint32_t level = 1; level <= run.deepest; ++level) {
-            run.levelStarts[level] = next;
-            run.levelSizes[level] = sizes[level];
-            next += sizes[level];
-        }
-        // The scatter advances the cursors: recordStates copies the starts into them each time.
-        std::memcpy(cursorStarts.mapped(), run.levelStarts.data(), run.levelStarts.size() * sizeof(std::uint32_t));
-    }
+void GpuTurtle::Impl::reserveLevels(std::uint32_t count) {
+    if (levelCapacity >= std::uint64_t(count) + 1 && cursors) return;
+    levelCapacity = std::max<std::uint64_t>(std::uint64_t(count) + 1, 64);
+    cursors = deviceBuffer(levelCapacity, 4);
+    levelArguments = vk::Buffer(ctx, bytes(3 * levelCapacity, 4), vk::MemoryUsage::DeviceLocal,
+                                VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT);
 }
 
 void GpuTurtle::Impl::recordStates(VkCommandBuffer cmd, const Run& run) {
     const Scratch& b = scratch;
-    if (run.deepest > 0) {
-        VkBufferCopy starts{0, 0, 4ull * (run.deepest + 1)};
-        vkCmdCopyBuffer(cmd, cursorStarts.handle(), cursors.handle(), 1, &starts);
-        vk::memoryBarrier(cmd, Hazard::TransferToCompute);
-        levelScatter.dispatch(cmd, {b.marks, b.levels[0], cursors, b.order}, run.push, run.groups);
+    if (run.levels > 0 || run.countedOnDevice) { // a recording learns the deepest level from the layout
+        TurtlePush p = run.push;
+        p.items = run.levels;
+        levelLayout.dispatch(cmd, {b.counts, cursors, levelArguments, status}, p, 1);
+        vk::memoryBarrier(cmd, Hazard::ComputeToIndirect);
+        levelScatter.dispatch(cmd, {b.marks, b.levels[0], cursors, b.order, status}, p, run.groups);
         vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
-        for (std::uint32_t level = 1; level <= run.deepest; ++level) {
-            if (run.levelSizes[level] == 0) continue;
-            TurtlePush p = run.push;
-            p.first = run.levelStarts[level];
-            p.items = run.levelSizes[level];
-            resolveLevel.dispatch(cmd,
-                                  {run.symbols, run.params, run.starts, commandTable, speciesTable, b.marks, b.parents,
-                                   b.stepTargets, b.steps[0], b.pointers[0], b.steps[1], b.pointers[1], b.plantOf,
-                                   b.states, b.commands, b.order},
-                                  p, resolveLevel.groupsFor(p.items));
+        for (std::uint32_t level = 1; level <= run.levels; ++level) {
+            p.first = level;
+            resolveLevel.dispatchIndirect(cmd,
+                                          {run.symbols, run.params, run.starts, commandTable, speciesTable, b.marks,
+                                           b.parents, b.stepTargets, b.steps[0], b.pointers[0], b.steps[1],
+                                           b.pointers[1], b.plantOf, b.states, b.commands, b.order, b.counts,
+                                           cursors},
+                                          p, levelArguments, 12ull * (level - 1));
             vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
         }
     }
     states.dispatch(cmd,
                     {run.symbols, run.params, run.starts, commandTable, speciesTable, b.marks, b.stepTargets,
-                     b.steps[0], b.pointers[0], b.steps[1], b.pointers[1], b.plantOf, b.states},
+                     b.steps[0], b.pointers[0], b.steps[1], b.pointers[1], b.plantOf, b.states, status},
                     run.push, run.groups);
     vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
     classify.dispatch(cmd,
                       {run.symbols, run.params, run.starts, commandTable, speciesTable, b.commands, b.marks,
-                       b.triangleFirst, b.cylinderAnchors, b.cylinderStarts, b.states, b.kinds, b.flags},
+                       b.triangleFirst, b.cylinderAnchors, b.cylinderStarts, b.states, b.kinds, b.flags, status},
                       run.push, run.groups);
     vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
     if (run.marked & kMarkCylinderStart) recordSearch(cmd, run, kMarkTube, kMarkTubeBreak, b.tubeBelow);
@@ -472,21 +510,22 @@ void GpuTurtle::Impl::recordStates(VkCommandBuffer cmd, const Run& run) {
     vk::memoryBarrier(cmd, Hazard::ComputeToHost);
 }
 
-void GpuTurtle::Impl::recordOrgans(VkCommandBuffer cmd, const Run& run) {
+void GpuTurtle::Impl::recordOrgans(VkCommandBuffer cmd, const Run& run, std::uint64_t organGroups) {
     const Scratch& b = scratch;
     emit.dispatch(cmd, {run.symbols,   run.params,      run.starts,         commandTable,      speciesTable,
                         b.commands,    b.parents,       b.plantOf,          b.states,          b.kinds,
                         b.offsets,     b.triangleFirst, b.trianglePrevious, b.cylinderAnchors, palettes,
                         surfaceScales, surfaceShapes,   organs.instances,   b.slots,           plantBounds,
-                        b.lastSlots},
+                        b.lastSlots,   status},
                   run.push, run.groups);
     vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
     links.dispatch(cmd,
-                   {b.commands, b.marks, b.kinds, b.slots, b.stemBelow, b.tubeBelow, organs.instances, b.lastSlots},
+                   {b.commands, b.marks, b.kinds, b.slots, b.stemBelow, b.tubeBelow, organs.instances, b.lastSlots,
+                    status},
                    run.push, run.groups);
-    field.dispatch(cmd, {b.offsets, scan.totalBuffer(), plantBounds, organs.table, organs.field}, run.push, 1);
+    field.dispatch(cmd, {b.offsets, scan.totalBuffer(), plantBounds, organs.table, organs.field, status}, run.push, 1);
     vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
-    place.dispatch(cmd, {scan.totalBuffer(), organs.field, organs.instances, organs.table}, run.push, run.groups);
+    place.dispatch(cmd, {scan.totalBuffer(), organs.field, organs.instances, organs.table}, run.push, organGroups);
     vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
 }
 
@@ -542,8 +581,19 @@ const DeviceOrgans& GpuTurtle::interpret(const stream::DeviceModules& modules, c
 }
 
 const DeviceOrgans& GpuTurtle::record(VkCommandBuffer cmd, const stream::DeviceModules& modules,
-                                      const turtle::FieldOptions& field) {
-    return impl_->record(cmd, modules, field);
+                                      const turtle::FieldOptions& field, TurtleRoom room) {
+    return impl_->record(cmd, modules, field, room);
+}
+
+TurtleRoom GpuTurtle::lastRoom() const { return impl_->needed; }
+
+RecordedInterpretation GpuTurtle::recorded() const {
+    const Impl& m = *impl_;
+    const auto* words = reinterpret_cast<const std::uint32_t*>(m.statusReadback.mapped());
+    RecordedInterpretation r{words[kTurtleStatusModules], words[kTurtleStatusLevels], words[kTurtleStatusOrgans],
+                             false};
+    r.fit = r.levels <= m.recordedRoom.levels && r.organs <= m.recordedRoom.organs;
+    return r;
 }
 
 std::uint32_t GpuTurtle::lastLevels() const { return impl_->levels; }

@@ -1,8 +1,9 @@
 // The turtle on the device: organ instances and their table (compute/shared/organ_layout.h) written by compute
 // passes over the module stream, the same organs, in the same order, as the CPU reference turtle
 // (turtle/turtle_cpu.h). The kernels are in compute/turtle; the method is described in
-// compute/shared/turtle_state_layout.h. The host reads back only which marks occur (to skip searches nothing
-// needs), the sizes of the levels of non-linear commands, and the number of organs (to size their buffer).
+// compute/shared/turtle_state_layout.h. interpret() reads back only which marks occur (to skip searches nothing
+// needs), the levels of non-linear commands, and the number of organs (to size their buffer); record() reads
+// nothing and works within the room it is given.
 #pragma once
 
 #include <cstdint>
@@ -44,6 +45,22 @@ struct DeviceOrgans {
     std::uint32_t capacity = 0; // instances the buffer holds
 };
 
+// The room a recording that reads nothing back interprets a string in: levels of non-linear modules
+// resolved one after another, and organ instances written.
+struct TurtleRoom {
+    std::uint32_t levels = 0;
+    std::uint32_t organs = 0;
+};
+
+// What a recording found on the device: the string's modules, its levels and organs, and whether they fit the
+// room it was given.
+struct RecordedInterpretation {
+    std::uint32_t modules = 0;
+    std::uint32_t levels = 0;
+    std::uint32_t organs = 0;
+    bool fit = false;
+};
+
 class GpuTurtle {
 public:
     // `species[p % species.size()]` interprets plant p; all share the alphabet `commands` was built from.
@@ -58,13 +75,18 @@ public:
     // interpretation: their buffers, like the passes' own, are allocated once and grown.
     const DeviceOrgans& interpret(const stream::DeviceModules& modules, const turtle::FieldOptions& field);
 
-    // Records interpreting `modules` into `cmd`, reading nothing back, where the last interpret() was of a string
-    // with the same symbols and parameters (what the host read between its passes holds for it): a growth tick
-    // interprets again the string its last derivation left while only the modules' particle state changes.
-    // Starts with a barrier after everything recorded before; the caller submits. Throws std::logic_error
-    // when the turtle interpreted another string last.
+    // Records interpreting `modules` into `cmd`, reading nothing back: the count is the plant table's last entry
+    // on the device, so the string may be one a derivation recorded before in `cmd` writes (`modules.count` then
+    // only bounds it). The marks, levels and organs the host reads between interpret()'s passes are not known:
+    // every search runs, `room` bounds the levels resolved and the organs written, and recorded() tells, after
+    // the submission, whether the string fit (else its table counts no organs: interpret() it, or record again
+    // with more room). Starts with a barrier after everything recorded before; the caller submits.
     const DeviceOrgans& record(VkCommandBuffer cmd, const stream::DeviceModules& modules,
-                               const turtle::FieldOptions& field);
+                               const turtle::FieldOptions& field, TurtleRoom room);
+    // What the last interpret() needed: room to record the same string again.
+    TurtleRoom lastRoom() const;
+    // What the last record() found, once its submission has completed.
+    RecordedInterpretation recorded() const;
 
     // Levels of non-linear commands the last interpretation resolved one after another.
     std::uint32_t lastLevels() const;

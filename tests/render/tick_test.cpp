@@ -1,10 +1,11 @@
-// One tick of a field recorded into one submission: the turtle kernels interpret again the string the
-// derivation left on the device and the renderer draws their organs into its target, with no host read or wait
-// inside; the frame equals the one the blocking calls draw.
+// One tick of a field recorded into one submission, with no host read or wait inside: the turtle kernels
+// interpret again the string the derivation left on the device (a growth tick), or the derivation's next step
+// too, and the renderer draws their organs into its target; the frame equals the one the blocking calls draw.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <set>
 #include <string>
 
@@ -24,6 +25,20 @@ namespace {
 using namespace simeco;
 
 class FieldTick : public test::GpuTest {};
+
+// The frames of two runs that should draw the same field: equal ids, colours within rounding, and a field.
+void expectSameFrame(const draw::Frame& tick, const draw::Frame& blocking) {
+    ASSERT_EQ(tick.pixelCount(), blocking.pixelCount());
+    EXPECT_TRUE(tick.plant == blocking.plant);
+    EXPECT_TRUE(tick.organ == blocking.organ);
+    float largest = 0;
+    for (size_t i = 0; i < tick.rgba.size(); ++i) largest = std::max(largest, std::abs(tick.rgba[i] - blocking.rgba[i]));
+    EXPECT_LE(largest, 1e-6f);
+    // A field, not an empty frame that equals another empty frame.
+    std::set<uint32_t> plantsSeen(tick.plant.begin(), tick.plant.end());
+    plantsSeen.erase(draw::Frame::kNoId);
+    EXPECT_GT(plantsSeen.size(), 50u);
+}
 
 TEST_F(FieldTick, ATickRecordedInOneSubmissionDrawsWhatTheBlockingCallsDraw) {
     ir::Grammar g = lang::loadGrammarFile(std::string(SIMECO_SOURCE_DIR) + "/grammars/abop/fig2.8-ternary.l");
@@ -58,33 +73,102 @@ TEST_F(FieldTick, ATickRecordedInOneSubmissionDrawsWhatTheBlockingCallsDraw) {
     });
 
     context().submitAndWait([&](VkCommandBuffer cmd) {
-        const turtle::DeviceOrgans& ticked = turtle.record(cmd, modules, {});
+        const turtle::DeviceOrgans& ticked = turtle.record(cmd, modules, {}, turtle.lastRoom());
         renderer.record(cmd, target, ticked.instances, ticked.table, setup);
     });
     draw::Frame tick = renderer.readBack(target, setup);
+    EXPECT_TRUE(turtle.recorded().fit);
 
-    ASSERT_EQ(tick.pixelCount(), blocking.pixelCount());
-    EXPECT_TRUE(tick.plant == blocking.plant);
-    EXPECT_TRUE(tick.organ == blocking.organ);
-    float largest = 0;
-    for (size_t i = 0; i < tick.rgba.size(); ++i) largest = std::max(largest, std::abs(tick.rgba[i] - blocking.rgba[i]));
-    EXPECT_LE(largest, 1e-6f);
-    // A field, not an empty frame that equals another empty frame.
-    std::set<uint32_t> plantsSeen(tick.plant.begin(), tick.plant.end());
-    plantsSeen.erase(draw::Frame::kNoId);
-    EXPECT_GT(plantsSeen.size(), 50u);
+    expectSameFrame(tick, blocking);
 }
 
-TEST_F(FieldTick, RecordingAStringTheTurtleHasNotInterpretedIsRefused) {
+// A tick whose string changes: the next step derived, interpreted and drawn in one submission, from what the
+// last interpretation left (the room it needed, the framing); equal to the blocking calls' frame of that step.
+TEST_F(FieldTick, ADerivationStepInterpretedAndDrawnInOneSubmission) {
     ir::Grammar g = lang::loadGrammarFile(std::string(SIMECO_SOURCE_DIR) + "/grammars/abop/fig2.8-ternary.l");
+    stream::DeriveOptions before;
+    before.plants = 100;
+    before.steps = 2;
+    stream::DeriveOptions after = before;
+    after.steps = 3;
     gpu::GpuDeriver deriver(context(), g);
-    stream::DeriveOptions options;
-    options.steps = 2;
-    deriver.derive(options, false);
+    ASSERT_TRUE(deriver.recordsSteps(after));
     turtle::TurtleCommands commands = turtle::turtleCommands(g.alphabet);
     turtle::GpuTurtle turtle(context(), commands, {turtle::turtleSettings(g, g.alphabet)});
-    EXPECT_THROW(context().submitAndWait([&](VkCommandBuffer cmd) { turtle.record(cmd, deriver.lastString(), {}); }),
-                 std::logic_error);
+    draw::Renderer renderer(context());
+    draw::RenderSettings settings;
+    settings.width = 240;
+    settings.height = 180;
+    settings.shadows = draw::Shadows::None; // shadow volumes are sized by the organs the host read last
+
+    // The blocking calls at the step after: the expected frame, framed as the tick frames it.
+    gpu::GpuDeriveStats stats;
+    deriver.derive(before, false, &stats);
+    const uint64_t modulesBefore = stats.modules;
+    const turtle::DeviceOrgans& last = turtle.interpret(deriver.lastString(), {});
+    draw::Bounds bounds = draw::decodeBounds(vk::downloadVector<shared::OrganTable>(context(), last.table, 1)[0]);
+    const turtle::TurtleRoom needed = turtle.lastRoom();
+    deriver.derive(after, false, &stats);
+    const uint64_t modulesAfter = stats.modules;
+    ASSERT_GT(modulesAfter, modulesBefore);
+    const turtle::DeviceOrgans& expected = turtle.interpret(deriver.lastString(), {});
+    const uint32_t organsAfter = turtle.lastRoom().organs;
+    draw::Frame blocking = renderer.render(expected.instances, expected.table, bounds, settings);
+
+    // The tick, from the state after the step before: room for the string to grow fourfold.
+    deriver.derive(before, false);
+    turtle.interpret(deriver.lastString(), {});
+    draw::FrameSetup setup = renderer.prepare(last.table, bounds, settings);
+    const draw::RenderTarget& target = renderer.offscreenTarget(settings.width, settings.height);
+    const turtle::TurtleRoom room{needed.levels * 2 + 8, needed.organs * 4};
+    const uint64_t submissions = context().submissions();
+    context().submitAndWait([&](VkCommandBuffer cmd) {
+        stream::DeviceModules next = deriver.record(cmd, after, modulesBefore * 4);
+        EXPECT_TRUE(next.countOnDevice);
+        const turtle::DeviceOrgans& organs = turtle.record(cmd, next, {}, room);
+        renderer.record(cmd, target, organs.instances, organs.table, setup);
+    });
+    EXPECT_EQ(context().submissions() - submissions, 1u);
+    std::optional<stream::DeriveResult> derived = deriver.recorded(&stats);
+    ASSERT_TRUE(derived.has_value());
+    EXPECT_EQ(stats.modules, modulesAfter);
+    EXPECT_EQ(derived->steps, 3);
+    turtle::RecordedInterpretation interpreted = turtle.recorded();
+    EXPECT_TRUE(interpreted.fit);
+    EXPECT_EQ(interpreted.modules, modulesAfter);
+    EXPECT_EQ(interpreted.organs, organsAfter);
+    expectSameFrame(renderer.readBack(target, setup), blocking);
+}
+
+// Too little room: the derivation says its step did not fit and derives as before afterwards; the turtle says
+// its organs did not fit, and its table counts none, so that nothing is drawn from a buffer they outgrew.
+TEST_F(FieldTick, ARecordingWithTooLittleRoomSaysSo) {
+    ir::Grammar g = lang::loadGrammarFile(std::string(SIMECO_SOURCE_DIR) + "/grammars/abop/fig2.8-ternary.l");
+    stream::DeriveOptions options;
+    options.plants = 100;
+    options.steps = 3;
+    gpu::GpuDeriver deriver(context(), g);
+    gpu::GpuDeriveStats stats;
+    context().submitAndWait([&](VkCommandBuffer cmd) { deriver.record(cmd, options, 1); });
+    EXPECT_FALSE(deriver.recorded().has_value());
+    deriver.derive(options, false, &stats);
+    EXPECT_GT(stats.modules, 10000u); // more than the smallest stream holds: the recording had to stop
+    EXPECT_EQ(stats.modules, deriver.lastString().count);
+
+    turtle::TurtleCommands commands = turtle::turtleCommands(g.alphabet);
+    turtle::GpuTurtle turtle(context(), commands, {turtle::turtleSettings(g, g.alphabet)});
+    turtle.interpret(deriver.lastString(), {});
+    const turtle::TurtleRoom needed = turtle.lastRoom();
+    turtle::GpuTurtle fresh(context(), commands, {turtle::turtleSettings(g, g.alphabet)}); // its buffers small
+    const turtle::DeviceOrgans* organs = nullptr;
+    context().submitAndWait(
+        [&](VkCommandBuffer cmd) { organs = &fresh.record(cmd, deriver.lastString(), {}, {needed.levels, 1}); });
+    EXPECT_LT(organs->capacity, needed.organs);
+    turtle::RecordedInterpretation interpreted = fresh.recorded();
+    EXPECT_FALSE(interpreted.fit);
+    EXPECT_EQ(interpreted.organs, needed.organs);
+    shared::OrganTable table = vk::downloadVector<shared::OrganTable>(context(), organs->table, 1)[0];
+    for (uint32_t k = 0; k < shared::kOrganKinds; ++k) EXPECT_EQ(table.count[k], 0u) << k;
 }
 
 } // namespace

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <memory>
+#include <stdexcept>
 
 #include <fmt/format.h>
 
@@ -123,6 +124,19 @@ RenderBenchReport runRenderBenchmark(const RenderBenchOptions& options,
                                 [&] { renderer.render(organs.instances, organs.table, extent.bounds, settings); });
                 (shadows == draw::Shadows::Volume ? e.frameWithShadows : e.frameWithoutShadows) = t;
             }
+            // A growth tick: the string interpreted again and drawn in one submission, with no wait inside.
+            settings.shadows = draw::Shadows::None;
+            draw::FrameSetup setup = renderer.prepare(organs.table, extent.bounds, settings);
+            const draw::RenderTarget& target = renderer.offscreenTarget(settings.width, settings.height);
+            const turtle::TurtleRoom room = gpuTurtle.lastRoom();
+            e.tick = timed(options, e.organs, [&] {
+                context.submitAndWait([&](VkCommandBuffer cmd) {
+                    const turtle::DeviceOrgans& ticked = gpuTurtle.record(cmd, modules.view(), {}, room);
+                    renderer.record(cmd, target, ticked.instances, ticked.table, setup);
+                });
+                renderer.readBack(target, setup);
+            });
+            if (!gpuTurtle.recorded().fit) throw std::logic_error("the tick's string outgrew the room it needed");
         } catch (const std::exception& error) {
             e.status = "failed";
             e.reason = error.what();

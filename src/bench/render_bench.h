@@ -1,6 +1,7 @@
 // `simeco bench --render`: the turtle and the renderer on fields of 1 to 10,000 plants. For each field: the
 // turtle kernels against the CPU reference turtle (instances per second, bytes moved against the device's copy
-// bandwidth), and the frame time with and without shadow volumes. See docs/BENCHMARKS.md.
+// bandwidth), the frame time with and without shadow volumes, and a growth tick's (turtle and frame in one
+// submission). See docs/BENCHMARKS.md.
 #pragma once
 
 #include <cstdint>
@@ -42,6 +43,7 @@ struct RenderEntry {
     std::uint64_t bytesMoved = 0;  // by the turtle kernels (GpuTurtle::lastBytesMoved)
     double copyFraction = 0;       // their bytes/s over the copy bandwidth
     Timed gpuTurtle, cpuTurtle, frameWithShadows, frameWithoutShadows;
+    Timed tick; // the turtle again and a frame without shadows in one submission (GpuTurtle::record)
     std::string status = "ok";     // or "failed" with `reason`
     std::string reason;
 };

@@ -86,6 +86,17 @@ SIMECO_CONST kTurtleStatusLevels = 1u;  // levels of non-linear modules (level_l
 SIMECO_CONST kTurtleStatusOrgans = 2u;  // organs the string draws (field.comp), written or not
 SIMECO_CONST kTurtleStatusWords = 4u;
 
+// The workgroups of a recording's passes (pass_sizes.comp), from the module count and the marks that occur, which
+// interpret() reads back instead: per gate, (x, y, z) of the passes over chunks, then of those over modules. A
+// gate's passes get none where none of its marks occur.
+SIMECO_CONST kGateModules = 0u;   // every module's passes: always open
+SIMECO_CONST kGateStems = 1u;     // kMarkStem
+SIMECO_CONST kGateCylinders = 2u; // kMarkCylinderStart or kMarkCylinderPoint
+SIMECO_CONST kGateTubes = 3u;     // kMarkCylinderStart
+SIMECO_CONST kGateNonlinear = 4u; // kMarkNonlinear
+SIMECO_CONST kGates = 5u;
+SIMECO_CONST kGateWords = 6u;
+
 struct TurtlePush {
     uint count;       // modules at most (the status words count them)
     uint plants;

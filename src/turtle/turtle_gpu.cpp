@@ -94,7 +94,7 @@ struct GpuTurtle::Impl {
     gpu::GpuScan scan;
     gpu::BracketTree brackets;
     vk::ComputePipeline setup, polygons, chunkSteps, jumpSteps, chunkSearch, jumpSearch, searchFinish, jumpLevels,
-        levelCount, levelLayout, levelScatter, resolveLevel, states, classify, emit, links, field, place;
+        levelCount, levelLayout, levelScatter, resolveLevel, states, classify, emit, links, field, place, passSizes;
     // For strings counted only on the device: the workgroups of the bracket tree's dispatches, as a recorded
     // derivation step sizes them (made on the first such recording).
     std::optional<vk::ComputePipeline> stepSizes;
@@ -124,6 +124,8 @@ struct GpuTurtle::Impl {
     // The status words (compute/shared/turtle_state_layout.h), a host-visible copy a recording ends with, and
     // the words step_sizes writes the bracket tree's workgroups into.
     vk::Buffer status, statusReadback, treeArguments;
+    // A recording's workgroups of its passes (pass_sizes.comp).
+    vk::Buffer passArguments;
     // What the last interpretation left: its instances grow like the scratch arrays.
     DeviceOrgans organs;
 
@@ -148,7 +150,8 @@ struct GpuTurtle::Impl {
           emit(vk::ComputePipeline::embedded(c, "turtle/emit")),
           links(vk::ComputePipeline::embedded(c, "turtle/links")),
           field(vk::ComputePipeline::embedded(c, "turtle/field")),
-          place(vk::ComputePipeline::embedded(c, "turtle/place")) {
+          place(vk::ComputePipeline::embedded(c, "turtle/place")),
+          passSizes(vk::ComputePipeline::embedded(c, "turtle/pass_sizes")) {
         bool elastic = hasElasticityCommands(commands);
         std::vector<TurtleSpecies> table;
         std::vector<float> scales;
@@ -181,6 +184,8 @@ struct GpuTurtle::Impl {
         base.maxGroupsX = c.limits().maxComputeWorkGroupCount[0];
         status = vk::Buffer(c, kTurtleStatusWords * 4, vk::MemoryUsage::DeviceLocal);
         statusReadback = vk::Buffer(c, kTurtleStatusWords * 4, vk::MemoryUsage::Readback);
+        passArguments = vk::Buffer(c, kGates * kGateWords * 4, vk::MemoryUsage::DeviceLocal,
+                                   VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT);
     }
 
     void checkRange(std::uint64_t count, std::uint64_t size, const char* what) const {
@@ -222,8 +227,14 @@ struct GpuTurtle::Impl {
 
     // Nearest strict ancestor with a hit or stop mark, into `result`: within chunks, then among the targets the
     // chunks point at (searchChunk -> searchJumps[0] -> [1] -> [0] ...; the last round writes [0]), then for all.
-    void recordSearch(VkCommandBuffer cmd, const Run& run, std::uint32_t hit, std::uint32_t stop,
-                      const vk::Buffer& result);
+    void recordSearch(VkCommandBuffer cmd, const Run& run, std::uint32_t gate, std::uint32_t hit,
+                      std::uint32_t stop, const vk::Buffer& result);
+    // Dispatches a pass over the modules or over their chunks: with the host's workgroups, or in a recording with
+    // those pass_sizes.comp wrote for `gate` (none where the gate's marks do not occur).
+    enum class Over { Modules, Chunks };
+    void dispatchPass(VkCommandBuffer cmd, const vk::ComputePipeline& pipeline,
+                      std::initializer_list<vk::BufferRange> buffers, const TurtlePush& push, const Run& run,
+                      std::uint32_t gate, Over over) const;
     // Pass 1: the module count from the plant table into the status words; the bracket tree; commands, parents,
     // steps and marks; polygons; which marks occur at all (into `present`).
     void recordSetup(VkCommandBuffer cmd, const Run& run);
@@ -373,8 +384,21 @@ const DeviceOrgans& GpuTurtle::Impl::record(VkCommandBuffer cmd, const stream::D
     return organs;
 }
 
-void GpuTurtle::Impl::recordSearch(VkCommandBuffer cmd, const Run& run, std::uint32_t hit, std::uint32_t stop,
-                                   const vk::Buffer& result) {
+void GpuTurtle::Impl::dispatchPass(VkCommandBuffer cmd, const vk::ComputePipeline& pipeline,
+                                   std::initializer_list<vk::BufferRange> buffers, const TurtlePush& push,
+                                   const Run& run, std::uint32_t gate, Over over) const {
+    std::span<const vk::BufferRange> bound(buffers.begin(), buffers.size());
+    std::span<const std::byte> bytes = std::as_bytes(std::span(&push, 1));
+    if (run.countedOnDevice) {
+        VkDeviceSize offset = 4ull * (gate * kGateWords + (over == Over::Chunks ? 0 : 3));
+        pipeline.dispatchIndirectBytes(cmd, bound, bytes, passArguments, offset);
+    } else {
+        pipeline.dispatchBytes(cmd, bound, bytes, over == Over::Chunks ? run.chunkGroups : run.groups);
+    }
+}
+
+void GpuTurtle::Impl::recordSearch(VkCommandBuffer cmd, const Run& run, std::uint32_t gate, std::uint32_t hit,
+                                   std::uint32_t stop, const vk::Buffer& result) {
     const Scratch& b = scratch;
     TurtlePush p = run.push;
     p.hitMask = hit;
@@ -382,15 +406,17 @@ void GpuTurtle::Impl::recordSearch(VkCommandBuffer cmd, const Run& run, std::uin
     vk::memoryBarrier(cmd, Hazard::ComputeToTransfer);
     vkCmdFillBuffer(cmd, b.searchTargets.handle(), 0, VK_WHOLE_SIZE, 0);
     vk::memoryBarrier(cmd, Hazard::TransferToCompute);
-    chunkSearch.dispatch(cmd, {b.marks, b.parents, b.searchChunk, b.searchTargets, status}, p, run.chunkGroups);
+    dispatchPass(cmd, chunkSearch, {b.marks, b.parents, b.searchChunk, b.searchTargets, status}, p, run, gate,
+                 Over::Chunks);
     vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
     for (std::uint32_t r = 0; r < run.rounds; ++r) {
         const vk::Buffer& in = r == 0 ? b.searchChunk : b.searchJumps[r % 2 == 1 ? 0 : 1];
-        jumpSearch.dispatch(cmd, {b.marks, b.searchTargets, in, b.searchJumps[r % 2 == 1 ? 1 : 0], status}, p,
-                            run.groups);
+        dispatchPass(cmd, jumpSearch, {b.marks, b.searchTargets, in, b.searchJumps[r % 2 == 1 ? 1 : 0], status}, p,
+                     run, gate, Over::Modules);
         vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
     }
-    searchFinish.dispatch(cmd, {b.marks, b.searchChunk, b.searchJumps[0], result, status}, p, run.groups);
+    dispatchPass(cmd, searchFinish, {b.marks, b.searchChunk, b.searchJumps[0], result, status}, p, run, gate,
+                 Over::Modules);
     vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
 }
 
@@ -427,42 +453,46 @@ void GpuTurtle::Impl::recordSetup(VkCommandBuffer cmd, const Run& run) {
                     present, status},
                    run.push, run.groups);
     vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
-    polygons.dispatch(cmd, {b.commands, b.plantOf, b.marks, b.triangleFirst, b.trianglePrevious, status}, run.push,
-                      run.groups);
+    if (run.countedOnDevice) {
+        passSizes.dispatch(cmd, {status, present, passArguments}, run.push, 1);
+        vk::memoryBarrier(cmd, Hazard::ComputeToIndirect);
+    }
+    dispatchPass(cmd, polygons, {b.commands, b.plantOf, b.marks, b.triangleFirst, b.trianglePrevious, status},
+                 run.push, run, kGateModules, Over::Modules);
     vk::memoryBarrier(cmd, Hazard::ComputeToHost);
 }
 
 void GpuTurtle::Impl::recordComposition(VkCommandBuffer cmd, const Run& run) {
     const Scratch& b = scratch;
-    chunkSteps.dispatch(cmd, {b.marks, b.parents, b.steps[0], b.pointers[0], b.stepTargets, status}, run.push,
-                        run.chunkGroups);
+    dispatchPass(cmd, chunkSteps, {b.marks, b.parents, b.steps[0], b.pointers[0], b.stepTargets, status},
+                 run.push, run, kGateModules, Over::Chunks);
     vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
     // The targets' entries alternate between the buffers; the other modules' stay in the first (chunks).
     for (std::uint32_t r = 0; r < run.rounds; ++r) {
         std::uint32_t from = r % 2, to = 1 - from;
-        jumpSteps.dispatch(cmd,
-                           {b.marks, b.stepTargets, b.steps[from], b.pointers[from], b.steps[to], b.pointers[to],
-                            status},
-                           run.push, run.groups);
+        dispatchPass(cmd, jumpSteps,
+                     {b.marks, b.stepTargets, b.steps[from], b.pointers[from], b.steps[to], b.pointers[to], status},
+                     run.push, run, kGateModules, Over::Modules);
         vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
     }
-    if (run.marked & kMarkStem) recordSearch(cmd, run, kMarkStem, kMarkStemBreak, b.stemBelow);
+    if (run.marked & kMarkStem) recordSearch(cmd, run, kGateStems, kMarkStem, kMarkStemBreak, b.stemBelow);
     if (run.marked & (kMarkCylinderStart | kMarkCylinderPoint)) {
-        recordSearch(cmd, run, kMarkCylinderStart | kMarkCylinderPoint, 0, b.cylinderAnchors);
-        recordSearch(cmd, run, kMarkCylinderStart, 0, b.cylinderStarts);
+        recordSearch(cmd, run, kGateCylinders, kMarkCylinderStart | kMarkCylinderPoint, 0, b.cylinderAnchors);
+        recordSearch(cmd, run, kGateCylinders, kMarkCylinderStart, 0, b.cylinderStarts);
     }
     if (run.marked & kMarkNonlinear) {
         for (std::uint32_t r = 0; r < run.rounds; ++r) {
             TurtlePush p = run.push;
             p.first = r;
-            jumpLevels.dispatch(cmd,
-                                {run.symbols, run.params, run.starts, commandTable, speciesTable, b.marks, b.parents,
-                                 b.stepTargets, b.steps[0], b.pointers[0], b.steps[1], b.pointers[1], b.plantOf,
-                                 b.states, b.levels[(r + 1) % 2], b.levels[r % 2], status},
-                                p, run.groups);
+            dispatchPass(cmd, jumpLevels,
+                         {run.symbols, run.params, run.starts, commandTable, speciesTable, b.marks, b.parents,
+                          b.stepTargets, b.steps[0], b.pointers[0], b.steps[1], b.pointers[1], b.plantOf, b.states,
+                          b.levels[(r + 1) % 2], b.levels[r % 2], status},
+                         p, run, kGateNonlinear, Over::Modules);
             vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
         }
-        levelCount.dispatch(cmd, {b.marks, b.levels[0], b.counts, status}, run.push, run.groups);
+        dispatchPass(cmd, levelCount, {b.marks, b.levels[0], b.counts, status}, run.push, run, kGateNonlinear,
+                     Over::Modules);
     }
     vk::memoryBarrier(cmd, Hazard::ComputeToHost);
 }
@@ -482,7 +512,8 @@ void GpuTurtle::Impl::recordStates(VkCommandBuffer cmd, const Run& run) {
         p.items = run.levels;
         levelLayout.dispatch(cmd, {b.counts, cursors, levelArguments, status}, p, 1);
         vk::memoryBarrier(cmd, Hazard::ComputeToIndirect);
-        levelScatter.dispatch(cmd, {b.marks, b.levels[0], cursors, b.order, status}, p, run.groups);
+        dispatchPass(cmd, levelScatter, {b.marks, b.levels[0], cursors, b.order, status}, p, run, kGateNonlinear,
+                     Over::Modules);
         vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
         for (std::uint32_t level = 1; level <= run.levels; ++level) {
             p.first = level;
@@ -495,34 +526,34 @@ void GpuTurtle::Impl::recordStates(VkCommandBuffer cmd, const Run& run) {
             vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
         }
     }
-    states.dispatch(cmd,
-                    {run.symbols, run.params, run.starts, commandTable, speciesTable, b.marks, b.stepTargets,
-                     b.steps[0], b.pointers[0], b.steps[1], b.pointers[1], b.plantOf, b.states, status},
-                    run.push, run.groups);
+    dispatchPass(cmd, states,
+                 {run.symbols, run.params, run.starts, commandTable, speciesTable, b.marks, b.stepTargets, b.steps[0],
+                  b.pointers[0], b.steps[1], b.pointers[1], b.plantOf, b.states, status},
+                 run.push, run, kGateModules, Over::Modules);
     vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+    // Over the whole bound: the flags past the count are zeroed for the scan.
     classify.dispatch(cmd,
                       {run.symbols, run.params, run.starts, commandTable, speciesTable, b.commands, b.marks,
                        b.triangleFirst, b.cylinderAnchors, b.cylinderStarts, b.states, b.kinds, b.flags, status},
                       run.push, run.groups);
     vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
-    if (run.marked & kMarkCylinderStart) recordSearch(cmd, run, kMarkTube, kMarkTubeBreak, b.tubeBelow);
+    if (run.marked & kMarkCylinderStart) recordSearch(cmd, run, kGateTubes, kMarkTube, kMarkTubeBreak, b.tubeBelow);
     scan.record(cmd, b.flags, b.offsets, run.n * kOrganKinds);
     vk::memoryBarrier(cmd, Hazard::ComputeToHost);
 }
 
 void GpuTurtle::Impl::recordOrgans(VkCommandBuffer cmd, const Run& run, std::uint64_t organGroups) {
     const Scratch& b = scratch;
-    emit.dispatch(cmd, {run.symbols,   run.params,      run.starts,         commandTable,      speciesTable,
-                        b.commands,    b.parents,       b.plantOf,          b.states,          b.kinds,
-                        b.offsets,     b.triangleFirst, b.trianglePrevious, b.cylinderAnchors, palettes,
-                        surfaceScales, surfaceShapes,   organs.instances,   b.slots,           plantBounds,
-                        b.lastSlots,   status},
-                  run.push, run.groups);
+    dispatchPass(cmd, emit,
+                 {run.symbols, run.params, run.starts, commandTable, speciesTable, b.commands, b.parents, b.plantOf,
+                  b.states, b.kinds, b.offsets, b.triangleFirst, b.trianglePrevious, b.cylinderAnchors, palettes,
+                  surfaceScales, surfaceShapes, organs.instances, b.slots, plantBounds, b.lastSlots, status},
+                 run.push, run, kGateModules, Over::Modules);
     vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
-    links.dispatch(cmd,
-                   {b.commands, b.marks, b.kinds, b.slots, b.stemBelow, b.tubeBelow, organs.instances, b.lastSlots,
-                    status},
-                   run.push, run.groups);
+    dispatchPass(cmd, links,
+                 {b.commands, b.marks, b.kinds, b.slots, b.stemBelow, b.tubeBelow, organs.instances, b.lastSlots,
+                  status},
+                 run.push, run, kGateModules, Over::Modules);
     field.dispatch(cmd, {b.offsets, scan.totalBuffer(), plantBounds, organs.table, organs.field, status}, run.push, 1);
     vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
     place.dispatch(cmd, {scan.totalBuffer(), organs.field, organs.instances, organs.table}, run.push, organGroups);

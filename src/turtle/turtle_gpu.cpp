@@ -309,8 +309,9 @@ const DeviceOrgans& GpuTurtle::Impl::interpret(const stream::DeviceModules& m, c
     ctx.submitAndWait([&](VkCommandBuffer cmd) { recordComposition(cmd, run); });
     std::uint64_t nonlinear = 0;
     if (run.marked & kMarkNonlinear) {
-        std::vector<std::uint32_t> counts = vk::downloadVector<std::uint32_t>(ctx, scratch.counts, n + 1);
-        run.levels = counts[0];
+        run.levels = vk::downloadVector<std::uint32_t>(ctx, scratch.counts, 1)[0];
+        // The levels' sizes, for the traffic model only: a few words.
+        std::vector<std::uint32_t> counts = vk::downloadVector<std::uint32_t>(ctx, scratch.counts, run.levels + 1);
         for (std::uint32_t level = 1; level <= run.levels; ++level) nonlinear += counts[level];
     }
     levels = run.levels;

@@ -34,7 +34,8 @@ work = sys.argv[2]
 if report.get("tool") == "simeco bench --render":
     series = [("gpu_turtle", "turtle kernels", "#d62728"), ("cpu_turtle", "CPU turtle (1 thread)", "#1f77b4"),
               ("frame_shadow_volumes", "frame, shadow volumes", "#2ca02c"), ("frame_no_shadows", "frame, no shadows", "#9467bd"),
-              ("tick", "tick: turtle and frame, one submission", "#8c564b")]
+              ("tick", "tick: turtle and frame, one submission", "#8c564b"),
+              ("ticks_in_flight", "ticks, two in flight", "#e377c2")]
     plots = []
     for key, title, color in series:
         rows = [(e["plants"], e[key]["instances_per_second"]) for e in report["entries"]

@@ -1,7 +1,7 @@
 // `simeco bench --render`: the turtle and the renderer on fields of 1 to 10,000 plants. For each field: the
 // turtle kernels against the CPU reference turtle (instances per second, bytes moved against the device's copy
 // bandwidth), the frame time with and without shadow volumes, and a growth tick's (turtle and frame in one
-// submission). See docs/BENCHMARKS.md.
+// submission), one at a time and with ticks in flight. See docs/BENCHMARKS.md.
 #pragma once
 
 #include <cstdint>
@@ -44,6 +44,7 @@ struct RenderEntry {
     double copyFraction = 0;       // their bytes/s over the copy bandwidth
     Timed gpuTurtle, cpuTurtle, frameWithShadows, frameWithoutShadows;
     Timed tick; // the turtle again and a frame without shadows in one submission (GpuTurtle::record)
+    Timed ticksInFlight; // per tick, with draw::kFramesInFlight of them in flight
     std::string status = "ok";     // or "failed" with `reason`
     std::string reason;
 };

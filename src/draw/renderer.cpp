@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <deque>
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include <fmt/format.h>
 #include <glm/geometric.hpp>
@@ -70,7 +72,7 @@ struct Renderer::Resources {
         : meshes(context), renderPass(createRenderPass(context)), pipelines(context, renderPass.get()),
           drawArgs(kernel(context, "organs/draw_args")), shadowVolumes(kernel(context, "shadows/shadow_volumes")),
           toonOutline(kernel(context, "styles/toon_outline")),
-          frameConstants(context, sizeof(shared::DrawFrame), vk::MemoryUsage::Upload,
+          frameConstants(context, sizeof(shared::DrawFrame), vk::MemoryUsage::DeviceLocal,
                          VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT),
           drawCommands(context, kOrganKinds * kDrawCommandSize, vk::MemoryUsage::DeviceLocal,
                        VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT),
@@ -83,12 +85,17 @@ struct Renderer::Resources {
     vk::ComputePipeline drawArgs;
     vk::ComputePipeline shadowVolumes;
     vk::ComputePipeline toonOutline;
+    // Written by each frame's own commands (vkCmdUpdateBuffer), so frames in flight each draw with theirs.
     vk::Buffer frameConstants;
     vk::Buffer drawCommands;
     vk::Buffer volumeDraw;
     vk::Buffer volumeVertices;
     std::uint32_t volumeCapacity = 0; // vertices
     std::unique_ptr<RenderTarget> target;
+    // Shadow volume buffers outgrown while frames that draw with them may be in flight: each is kept until
+    // kFramesInFlight more frames have been prepared, by when the caller has waited for the frames before.
+    std::uint64_t framesPrepared = 0;
+    std::deque<std::pair<std::uint64_t, vk::Buffer>> retired;
 
     // A frame's commands: the shadow volumes and the indirect draws from the instances and their table; the
     // render pass (ground and organs, with shadow volumes in the stencil between an ambient and a sun pass);
@@ -127,12 +134,16 @@ std::uint32_t Renderer::Resources::volumeVerticesFor(const vk::Context& context,
     needed = std::clamp<std::uint64_t>(needed, shared::kVolumeVerticesPerTriangle, limit);
     needed -= needed % shared::kVolumeVerticesPerTriangle;
     if (needed > volumeCapacity) {
-        volumeVertices = vk::Buffer();
+        retired.emplace_back(framesPrepared, std::move(volumeVertices));
         volumeVertices = vk::Buffer(context, needed * sizeof(shared::vec4), vk::MemoryUsage::DeviceLocal,
                                     VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
         volumeCapacity = static_cast<std::uint32_t>(needed);
     }
     return volumeCapacity;
+}
+
+std::unique_ptr<RenderTarget> Renderer::makeTarget(std::uint32_t width, std::uint32_t height) const {
+    return std::make_unique<RenderTarget>(context_, resources_->renderPass.get(), width, height);
 }
 
 RenderTarget& Renderer::offscreenTarget(std::uint32_t width, std::uint32_t height) {
@@ -177,7 +188,8 @@ FrameSetup Renderer::prepare(const vk::Buffer& table, const Bounds& bounds, cons
     glm::vec3 centre = box.centre();
     frame.groundPlane = {centre.x, box.min.y, centre.z, 2.5f * radius};
     frame.options = {settings.style == Style::Toon ? shared::kStyleToon : shared::kStyleLit, settings.toonBands, 0, 0};
-    std::memcpy(r.frameConstants.mapped(), &frame, sizeof(frame));
+    ++r.framesPrepared;
+    while (!r.retired.empty() && r.retired.front().first + kFramesInFlight < r.framesPrepared) r.retired.pop_front();
 
     // The host reads the table's counts (not the instances) to size the shadow volumes.
     if (settings.shadows == Shadows::Volume) {
@@ -209,8 +221,11 @@ void Renderer::Resources::recordDrawInputs(VkCommandBuffer cmd, const vk::Buffer
                          VK_PIPELINE_STAGE_VERTEX_SHADER_BIT,
                      VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT);
     vk::cmdFill(cmd, r.volumeDraw, 0);
+    vkCmdUpdateBuffer(cmd, r.frameConstants.handle(), 0, sizeof(frame), &frame);
     memoryDependency(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
-                     VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+                     VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_VERTEX_SHADER_BIT |
+                         VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
+                     VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_UNIFORM_READ_BIT);
     if (shadows) {
         for (std::uint32_t kind = 0; kind < kOrganKinds; ++kind) {
             if (counts.count[kind] == 0) {

@@ -6,6 +6,7 @@
 // A frame, in order: [shadow volumes kernel] -> draw arguments kernel -> render pass { ground and organs with
 // ambient light (or all light) -> [volumes into the stencil -> organs and ground again adding the sun where the
 // stencil is 0] } -> copies to host-visible buffers -> [toon outlines kernel].
+// Frames may be in flight (kFramesInFlight): nothing the host writes for a frame is shared with the next.
 #pragma once
 
 #include <cstdint>
@@ -40,6 +41,10 @@ struct FrameSetup {
 // The camera a frame is rendered with: settings.camera, or the default angles framed on `bounds`.
 CameraView frameCamera(const Bounds& bounds, const RenderSettings& settings);
 
+// Frames a caller may have in flight at once, each drawing into a target of its own: prepare() keeps what a
+// frame before may still use until this many more frames are prepared.
+inline constexpr std::uint64_t kFramesInFlight = 2;
+
 class Renderer {
 public:
     // Builds the meshes, pipelines and kernels once. Throws VulkanError when the device lacks what rendering
@@ -62,13 +67,16 @@ public:
     FrameSetup prepare(const vk::Buffer& table, const Bounds& bounds, const RenderSettings& settings);
     // Records the frame into `cmd`, drawing into `target` (one of this renderer's render pass), with explicit
     // barriers before (the instances and table may come from passes recorded earlier) and after (the target's
-    // copies are ready for the host). The caller submits.
+    // copies are ready for the host). The caller submits; the frame's constants travel in `cmd`, so up to
+    // kFramesInFlight frames may be in flight, each into its own target (makeTarget).
     void record(VkCommandBuffer cmd, const RenderTarget& target, const vk::Buffer& instances, const vk::Buffer& table,
                 const FrameSetup& setup);
     // The frame `record` drew into `target`, once its submission has completed.
     Frame readBack(const RenderTarget& target, const FrameSetup& setup) const;
     // The offscreen target of the given size, made on first use and kept while the size stays.
     RenderTarget& offscreenTarget(std::uint32_t width, std::uint32_t height);
+    // Another offscreen target, for a frame in flight beside the one drawing into the first.
+    std::unique_ptr<RenderTarget> makeTarget(std::uint32_t width, std::uint32_t height) const;
 
 private:
     struct Resources;

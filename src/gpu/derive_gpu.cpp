@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <span>
+#include <stdexcept>
 
 #include <fmt/format.h>
 
@@ -137,7 +138,8 @@ void GpuDeriver::Impl::downloadPlantState(stream::PlantControl& control) const {
 }
 
 void GpuDeriver::Impl::startDerivation(stream::PlantControl& control, const stream::DeriveOptions& options) {
-    recording.reset();
+    // A recorded derivation may still be running on the device with the buffers this one would write.
+    if (recording) throw std::logic_error("GpuDeriver: a recorded derivation is not read yet (recorded())");
     plants = control.plants();
     carriesParticles = options.particles;
     partnersStream = -1;

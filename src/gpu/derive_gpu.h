@@ -85,7 +85,8 @@ public:
     // copy and every step with its sizes on the device, into streams with room for `room` modules (the field's
     // size, as the last derive() found it, say). Needs recordsSteps(options), at most kMostRecordedSteps steps
     // and no homomorphism. Returns the string the submission writes, counted only on the device (the turtle's
-    // record() reads it so). Throws std::logic_error for a derivation it cannot record.
+    // record() reads it so). Throws std::logic_error for a derivation it cannot record; derive() and record()
+    // refuse while a recording is not yet read by recorded().
     stream::DeviceModules record(VkCommandBuffer cmd, const stream::DeriveOptions& options, uint64_t room);
     // Once record()'s submission has completed: its result (the plant table; the string stays on the device,
     // lastString()), or nullopt when a step outgrew the room (derive() then). Throws as derive() does when a

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <bit>
 #include <cstring>
+#include <deque>
 #include <optional>
 #include <span>
 #include <stdexcept>
@@ -123,7 +124,18 @@ struct GpuTurtle::Impl {
     std::uint64_t plantCapacity = 0, levelCapacity = 0;
     // The status words (compute/shared/turtle_state_layout.h), a host-visible copy a recording ends with, and
     // the words step_sizes writes the bracket tree's workgroups into.
-    vk::Buffer status, statusReadback, treeArguments;
+    vk::Buffer status, treeArguments;
+    // Recordings submitted and not yet read (recorded()), oldest first: each copies its status words into a
+    // readback buffer of its own, and what it had room for.
+    struct Pending {
+        std::uint32_t slot;
+        TurtleRoom room;
+    };
+    std::deque<Pending> pending;
+    vk::Buffer statusReadback[kRecordingsInFlight];
+    std::uint32_t nextSlot = 0;
+    // The most modules and plants the buffers were sized for.
+    std::uint64_t reservedModules = 0, reservedPlants = 0;
     // A recording's workgroups of its passes (pass_sizes.comp).
     vk::Buffer passArguments;
     // What the last interpretation left: its instances grow like the scratch arrays.
@@ -183,7 +195,8 @@ struct GpuTurtle::Impl {
         base.querySymbol = commands.query;
         base.maxGroupsX = c.limits().maxComputeWorkGroupCount[0];
         status = vk::Buffer(c, kTurtleStatusWords * 4, vk::MemoryUsage::DeviceLocal);
-        statusReadback = vk::Buffer(c, kTurtleStatusWords * 4, vk::MemoryUsage::Readback);
+        for (vk::Buffer& readback : statusReadback)
+            readback = vk::Buffer(c, kTurtleStatusWords * 4, vk::MemoryUsage::Readback);
         passArguments = vk::Buffer(c, kGates * kGateWords * 4, vk::MemoryUsage::DeviceLocal,
                                    VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT);
     }
@@ -253,8 +266,8 @@ struct GpuTurtle::Impl {
     Run begin(const stream::DeviceModules& m, const turtle::FieldOptions& options) const;
     // Room for `levels` levels of non-linear modules.
     void reserveLevels(std::uint32_t levels);
-    // What the last interpretation needed, and what the last recording had room for.
-    TurtleRoom needed{}, recordedRoom{};
+    // What the last interpretation needed.
+    TurtleRoom needed{};
     // The main arrays each pass reads and writes, per module (organs counted as if every module drew one, the
     // buffers' capacity): a model of the traffic, not a measurement.
     static std::uint64_t trafficOf(std::uint64_t n, std::uint64_t stride, std::uint64_t rounds,
@@ -286,6 +299,7 @@ struct GpuTurtle::Impl {
 
 const DeviceOrgans& GpuTurtle::Impl::interpret(const stream::DeviceModules& m, const turtle::FieldOptions& options) {
     if (m.countOnDevice) throw std::logic_error("GpuTurtle::interpret: a string not yet derived (record() it)");
+    if (!pending.empty()) throw std::logic_error("GpuTurtle::interpret: recordings in flight (read them first)");
     const std::uint32_t n = m.count;
     levels = 0;
     bytesMoved = 0;
@@ -346,6 +360,12 @@ GpuTurtle::Impl::Run GpuTurtle::Impl::begin(const stream::DeviceModules& m, cons
 const DeviceOrgans& GpuTurtle::Impl::record(VkCommandBuffer cmd, const stream::DeviceModules& m,
                                             const turtle::FieldOptions& options, TurtleRoom room) {
     const std::uint32_t bound = std::max(m.count, 1u);
+    if (pending.size() >= kRecordingsInFlight)
+        throw std::logic_error("GpuTurtle::record: as many recordings in flight as it keeps (read one first)");
+    // Buffers in use by a recording in flight must not be replaced by larger ones.
+    if (!pending.empty() && (bound > reservedModules || m.plants > reservedPlants || room.levels >= levelCapacity ||
+                             room.organs > organs.capacity))
+        throw std::logic_error("GpuTurtle::record: more room than its buffers hold while recordings are in flight");
     checkRange(bound, sizeof(TurtleStep), "steps");
     checkRange(std::uint64_t(bound) * kOrganKinds, 4, "organ flags");
     checkRange(room.organs, sizeof(OrganInstance), "organ instances");
@@ -368,7 +388,8 @@ const DeviceOrgans& GpuTurtle::Impl::record(VkCommandBuffer cmd, const stream::D
     run.push.organCapacity = organs.capacity;
     levels = 0;
     bytesMoved = 0;
-    recordedRoom = TurtleRoom{room.levels, organs.capacity};
+    const std::uint32_t slot = nextSlot;
+    nextSlot = (nextSlot + 1) % kRecordingsInFlight;
     // The stream, and this turtle's buffers, may be in use by what was recorded before.
     vk::memoryBarrier(cmd, Hazard::AnyToAny);
     recordSetup(cmd, run);
@@ -380,8 +401,9 @@ const DeviceOrgans& GpuTurtle::Impl::record(VkCommandBuffer cmd, const stream::D
     recordOrgans(cmd, run, place.groupsFor(organs.capacity));
     vk::memoryBarrier(cmd, Hazard::ComputeToTransfer);
     VkBufferCopy words{0, 0, kTurtleStatusWords * 4};
-    vkCmdCopyBuffer(cmd, status.handle(), statusReadback.handle(), 1, &words);
+    vkCmdCopyBuffer(cmd, status.handle(), statusReadback[slot].handle(), 1, &words);
     vk::memoryBarrier(cmd, Hazard::TransferToHost);
+    pending.push_back({slot, TurtleRoom{room.levels, organs.capacity}});
     return organs;
 }
 
@@ -562,6 +584,8 @@ void GpuTurtle::Impl::recordOrgans(VkCommandBuffer cmd, const Run& run, std::uin
 }
 
 void GpuTurtle::Impl::reserve(std::uint64_t n, std::uint64_t plants) {
+    reservedModules = std::max(reservedModules, n);
+    reservedPlants = std::max(reservedPlants, plants);
     if (plants * 8 > plantCapacity || !plantBounds) {
         plantCapacity = std::max<std::uint64_t>(plants * 8 + plants * 4, 64);
         plantBounds = deviceBuffer(plantCapacity, 4);
@@ -619,12 +643,15 @@ const DeviceOrgans& GpuTurtle::record(VkCommandBuffer cmd, const stream::DeviceM
 
 TurtleRoom GpuTurtle::lastRoom() const { return impl_->needed; }
 
-RecordedInterpretation GpuTurtle::recorded() const {
-    const Impl& m = *impl_;
-    const auto* words = reinterpret_cast<const std::uint32_t*>(m.statusReadback.mapped());
+RecordedInterpretation GpuTurtle::recorded() {
+    Impl& m = *impl_;
+    if (m.pending.empty()) throw std::logic_error("GpuTurtle::recorded: no recording in flight");
+    const Impl::Pending oldest = m.pending.front();
+    m.pending.pop_front();
+    const auto* words = reinterpret_cast<const std::uint32_t*>(m.statusReadback[oldest.slot].mapped());
     RecordedInterpretation r{words[kTurtleStatusModules], words[kTurtleStatusLevels], words[kTurtleStatusOrgans],
                              false};
-    r.fit = r.levels <= m.recordedRoom.levels && r.organs <= m.recordedRoom.organs;
+    r.fit = r.levels <= oldest.room.levels && r.organs <= oldest.room.organs;
     return r;
 }
 

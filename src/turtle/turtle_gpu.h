@@ -61,6 +61,10 @@ struct RecordedInterpretation {
     bool fit = false;
 };
 
+// Recordings a turtle keeps in flight at once (ticks submitted and not yet read back), as the renderer keeps
+// frames (draw::kFramesInFlight).
+inline constexpr std::uint32_t kRecordingsInFlight = 2;
+
 class GpuTurtle {
 public:
     // `species[p % species.size()]` interprets plant p; all share the alphabet `commands` was built from.
@@ -85,8 +89,10 @@ public:
                                const turtle::FieldOptions& field, TurtleRoom room);
     // What the last interpret() needed: room to record the same string again.
     TurtleRoom lastRoom() const;
-    // What the last record() found, once its submission has completed.
-    RecordedInterpretation recorded() const;
+    // What the oldest recording not yet read found, once its submission has completed. Up to
+    // kRecordingsInFlight recordings may be in flight (record() refuses more, or one that needs larger buffers
+    // than those in flight use, and interpret() refuses while any is); each is read once, oldest first.
+    RecordedInterpretation recorded();
 
     // Levels of non-linear commands the last interpretation resolved one after another.
     std::uint32_t lastLevels() const;

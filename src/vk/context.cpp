@@ -1,5 +1,6 @@
 #include "vk/context.h"
 
+#include <utility>
 #include <vector>
 
 #include <fmt/format.h>
@@ -118,6 +119,11 @@ Context::~Context() {
 }
 
 void Context::submitAndWait(const std::function<void(VkCommandBuffer)>& record, std::chrono::seconds timeout) const {
+    Submission submission = submit(record);
+    submission.wait(timeout);
+}
+
+Submission Context::submit(const std::function<void(VkCommandBuffer)>& record) const {
     ++submissions_;
     VkCommandBufferAllocateInfo allocateInfo{};
     allocateInfo.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO;
@@ -126,16 +132,17 @@ void Context::submitAndWait(const std::function<void(VkCommandBuffer)>& record, 
     allocateInfo.commandBufferCount = 1;
     VkCommandBuffer cmd = VK_NULL_HANDLE;
     VK_CHECK(vkAllocateCommandBuffers(device_, &allocateInfo, &cmd));
-    // Freed on every path, including a throw from `record`.
-    struct FreeOnExit {
+    // Freed on a throw from `record` or the submission; once submitted, the Submission frees it.
+    struct FreeOnThrow {
         VkDevice device;
         VkCommandPool pool;
         VkCommandBuffer cmd;
-        ~FreeOnExit() { vkFreeCommandBuffers(device, pool, 1, &cmd); }
-    } freeOnExit{device_, commandPool_.get(), cmd};
+        ~FreeOnThrow() {
+            if (cmd != VK_NULL_HANDLE) vkFreeCommandBuffers(device, pool, 1, &cmd);
+        }
+    } freeOnThrow{device_, commandPool_.get(), cmd};
 
     VkCommandBufferBeginInfo beginInfo{};
-
     beginInfo.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO;
     beginInfo.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
     VK_CHECK(vkBeginCommandBuffer(cmd, &beginInfo));
@@ -144,28 +151,23 @@ void Context::submitAndWait(const std::function<void(VkCommandBuffer)>& record, 
     VK_CHECK(vkEndCommandBuffer(cmd));
 
     VkFenceCreateInfo fenceInfo{};
-
     fenceInfo.sType = VK_STRUCTURE_TYPE_FENCE_CREATE_INFO;
     VkFence rawFence = VK_NULL_HANDLE;
     VK_CHECK(vkCreateFence(device_, &fenceInfo, nullptr, &rawFence));
     UniqueFence fence(device_, rawFence);
 
-    VkSubmitInfo submit{};
-
-    submit.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO;
-    submit.commandBufferCount = 1;
-    submit.pCommandBuffers = &cmd;
-    VK_CHECK(vkQueueSubmit(queue_, 1, &submit, fence.get()));
-    auto nanoseconds = static_cast<std::uint64_t>(std::chrono::nanoseconds(timeout).count());
-    VkResult waited = vkWaitForFences(device_, 1, &rawFence, VK_TRUE, nanoseconds);
-    if (waited == VK_TIMEOUT) {
-        // The GPU may still use the command buffer and fence; leaking them beats destroying objects in use.
-        fence.release();
-        freeOnExit.cmd = VK_NULL_HANDLE;
-        throw VulkanError(fmt::format("GPU work did not finish within {} s", timeout.count()), VK_TIMEOUT);
+    VkSubmitInfo submitInfo{};
+    submitInfo.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO;
+    submitInfo.commandBufferCount = 1;
+    submitInfo.pCommandBuffers = &cmd;
+    VK_CHECK(vkQueueSubmit(queue_, 1, &submitInfo, fence.get()));
+    Submission submission(device_, commandPool_.get(), std::exchange(freeOnThrow.cmd, VK_NULL_HANDLE),
+                          std::move(fence));
+    if (profile_) {
+        submission.wait();
+        profile_->finish();
     }
-    VK_CHECK(waited);
-    if (profile_) profile_->finish();
+    return submission;
 }
 
 void Context::enableKernelProfile() {

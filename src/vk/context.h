@@ -13,6 +13,7 @@
 #include "vk/device_info.h"
 #include "vk/handle.h"
 #include "vk/instance.h"
+#include "vk/submission.h"
 
 namespace simeco::vk {
 
@@ -58,7 +59,10 @@ public:
     // within `timeout` raises VulkanError rather than hanging the program.
     void submitAndWait(const std::function<void(VkCommandBuffer)>& record,
                        std::chrono::seconds timeout = std::chrono::seconds(120)) const;
-    // Submissions waited for since the context was made: on a discrete GPU each costs far more than a small
+    // Records and submits without waiting: the caller waits for the returned submission when it needs the
+    // work's results (frames in flight). With the kernel profile on, it waits at once, to read the timestamps.
+    [[nodiscard]] Submission submit(const std::function<void(VkCommandBuffer)>& record) const;
+    // Submissions made since the context was made: on a discrete GPU each wait costs far more than a small
     // kernel, so the derivation counts its own (GpuDeriveStats::waits).
     std::uint64_t submissions() const { return submissions_; }
 

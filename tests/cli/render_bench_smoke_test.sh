@@ -28,7 +28,7 @@ for e in entries:
     check(e.get("status") == "ok", f"{where}: status {e.get('status')}: {e.get('reason')}")
     for key in ("modules", "organs"):
         positive(e, key, where)
-    for part in ("gpu_turtle", "cpu_turtle", "frame_shadow_volumes", "frame_no_shadows", "tick"):
+    for part in ("gpu_turtle", "cpu_turtle", "frame_shadow_volumes", "frame_no_shadows", "tick", "ticks_in_flight"):
         timed = e.get(part, {})
         positive(timed, "median_seconds", f"{where} {part}")
         positive(timed, "instances_per_second", f"{where} {part}")

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <optional>
 #include <set>
 #include <string>
@@ -19,6 +20,7 @@
 #include "turtle/turtle_gpu.h"
 #include "turtle/turtle_settings.h"
 #include "vk/buffer.h"
+#include "vk/submission.h"
 
 namespace {
 
@@ -150,6 +152,7 @@ TEST_F(FieldTick, ARecordingWithTooLittleRoomSaysSo) {
     gpu::GpuDeriver deriver(context(), g);
     gpu::GpuDeriveStats stats;
     context().submitAndWait([&](VkCommandBuffer cmd) { deriver.record(cmd, options, 1); });
+    EXPECT_THROW(deriver.derive(options, false), std::logic_error); // not before the recording is read
     EXPECT_FALSE(deriver.recorded().has_value());
     deriver.derive(options, false, &stats);
     EXPECT_GT(stats.modules, 10000u); // more than the smallest stream holds: the recording had to stop
@@ -169,6 +172,60 @@ TEST_F(FieldTick, ARecordingWithTooLittleRoomSaysSo) {
     EXPECT_EQ(interpreted.organs, needed.organs);
     shared::OrganTable table = vk::downloadVector<shared::OrganTable>(context(), organs->table, 1)[0];
     for (uint32_t k = 0; k < shared::kOrganKinds; ++k) EXPECT_EQ(table.count[k], 0u) << k;
+}
+
+// Two ticks in flight, each drawn into its own target from a camera of its own: the second is submitted before
+// the first is waited for, a third is refused while both are in flight, and each frame equals the blocking
+// calls' frame from its camera.
+TEST_F(FieldTick, TicksInFlightDrawTheirOwnFrames) {
+    ir::Grammar g = lang::loadGrammarFile(std::string(SIMECO_SOURCE_DIR) + "/grammars/abop/fig2.8-ternary.l");
+    stream::DeriveOptions options;
+    options.plants = 100;
+    options.steps = 3;
+    gpu::GpuDeriver deriver(context(), g);
+    deriver.derive(options, false);
+    stream::DeviceModules modules = deriver.lastString();
+    turtle::TurtleCommands commands = turtle::turtleCommands(g.alphabet);
+    turtle::GpuTurtle turtle(context(), commands, {turtle::turtleSettings(g, g.alphabet)});
+    const turtle::DeviceOrgans& organs = turtle.interpret(modules, {});
+    draw::Bounds bounds = draw::decodeBounds(vk::downloadVector<shared::OrganTable>(context(), organs.table, 1)[0]);
+    draw::Renderer renderer(context());
+    draw::RenderSettings settings[2];
+    for (draw::RenderSettings& one : settings) {
+        one.width = 240;
+        one.height = 180;
+        one.shadows = draw::Shadows::Volume;
+    }
+    settings[1].camera = draw::Camera{};
+    settings[1].camera->azimuthDegrees = 120.0f;
+    settings[1].camera->elevationDegrees = 35.0f;
+    draw::Frame blocking[2];
+    draw::FrameSetup setups[2];
+    for (int k = 0; k < 2; ++k) {
+        blocking[k] = renderer.render(organs.instances, organs.table, bounds, settings[k]);
+        setups[k] = renderer.prepare(organs.table, bounds, settings[k]);
+    }
+    std::unique_ptr<draw::RenderTarget> second = renderer.makeTarget(240, 180);
+    const draw::RenderTarget* targets[2] = {&renderer.offscreenTarget(240, 180), second.get()};
+    const turtle::TurtleRoom room = turtle.lastRoom();
+    auto tick = [&](int k) {
+        return context().submit([&, k](VkCommandBuffer cmd) {
+            const turtle::DeviceOrgans& ticked = turtle.record(cmd, modules, {}, room);
+            renderer.record(cmd, *targets[k], ticked.instances, ticked.table, setups[k]);
+        });
+    };
+
+    vk::Submission inFlight[2] = {tick(0), tick(1)};
+    EXPECT_THROW(tick(0), std::logic_error); // the turtle keeps two recordings in flight
+    draw::Frame frames[2];
+    for (int k = 0; k < 2; ++k) {
+        inFlight[k].wait();
+        EXPECT_TRUE(turtle.recorded().fit);
+        frames[k] = renderer.readBack(*targets[k], setups[k]);
+        expectSameFrame(frames[k], blocking[k]);
+    }
+    EXPECT_FALSE(frames[0].plant == frames[1].plant); // two cameras, two pictures
+    EXPECT_THROW(turtle.recorded(), std::logic_error); // each recording is read once
 }
 
 } // namespace

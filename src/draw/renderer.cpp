@@ -106,9 +106,8 @@ struct Renderer::Resources {
                      const FrameSetup& setup);
     void recordOutlines(VkCommandBuffer cmd, const RenderTarget& target, const FrameSetup& setup);
 
-    // Room for the shadow volumes of organs counted in `counts` (at most maxBytes); returns the capacity.
-    std::uint32_t volumeVerticesFor(const vk::Context& context, const shared::OrganTable& counts,
-                                    std::uint64_t maxBytes);
+    // Room for the shadow volumes of `triangles` casting triangles (at most maxBytes); returns the capacity.
+    std::uint32_t volumeVerticesFor(const vk::Context& context, std::uint64_t triangles, std::uint64_t maxBytes);
 };
 
 CameraView frameCamera(const Bounds& bounds, const RenderSettings& settings) {
@@ -123,12 +122,9 @@ Renderer::Renderer(const vk::Context& context) : context_(context) {
 
 Renderer::~Renderer() = default;
 
-std::uint32_t Renderer::Resources::volumeVerticesFor(const vk::Context& context, const shared::OrganTable& counts,
+std::uint32_t Renderer::Resources::volumeVerticesFor(const vk::Context& context, std::uint64_t triangles,
                                                      std::uint64_t maxBytes) {
-    const OrganMeshData& data = meshes.data();
-    std::uint64_t needed = 0;
-    for (std::uint32_t kind = 0; kind < kOrganKinds; ++kind)
-        needed += std::uint64_t{counts.count[kind]} * data.castingTriangles[kind] * shared::kVolumeVerticesPerTriangle;
+    std::uint64_t needed = triangles * shared::kVolumeVerticesPerTriangle;
     std::uint64_t affordable = maxBytes / sizeof(shared::vec4);
     std::uint64_t limit = std::min<std::uint64_t>(affordable, std::numeric_limits<std::uint32_t>::max());
     needed = std::clamp<std::uint64_t>(needed, shared::kVolumeVerticesPerTriangle, limit);
@@ -156,6 +152,32 @@ RenderTarget& Renderer::offscreenTarget(std::uint32_t width, std::uint32_t heigh
 }
 
 FrameSetup Renderer::prepare(const vk::Buffer& table, const Bounds& bounds, const RenderSettings& settings) {
+    FrameSetup setup = prepareView(bounds, settings);
+    // The host reads the table's counts (not the instances) to size the shadow volumes.
+    if (settings.shadows == Shadows::Volume) {
+        Resources& r = *resources_;
+        setup.counts = vk::downloadVector<shared::OrganTable>(context_, table, 1)[0];
+        std::uint64_t triangles = 0;
+        for (std::uint32_t kind = 0; kind < kOrganKinds; ++kind)
+            triangles += std::uint64_t{setup.counts.count[kind]} * r.meshes.data().castingTriangles[kind];
+        r.volumeVerticesFor(context_, triangles, settings.maxShadowVolumeBytes);
+    }
+    return setup;
+}
+
+FrameSetup Renderer::prepareWithin(std::uint32_t organs, const Bounds& bounds, const RenderSettings& settings) {
+    FrameSetup setup = prepareView(bounds, settings);
+    if (settings.shadows == Shadows::Volume) {
+        Resources& r = *resources_;
+        const OrganMeshData& data = r.meshes.data();
+        std::uint64_t most = *std::max_element(data.castingTriangles.begin(), data.castingTriangles.end());
+        for (std::uint32_t kind = 0; kind < kOrganKinds; ++kind) setup.counts.count[kind] = organs;
+        r.volumeVerticesFor(context_, std::uint64_t{organs} * most, settings.maxShadowVolumeBytes);
+    }
+    return setup;
+}
+
+FrameSetup Renderer::prepareView(const Bounds& bounds, const RenderSettings& settings) {
     const VkPhysicalDeviceLimits& limits = context_.limits();
     if (settings.width == 0 || settings.height == 0 || settings.width > limits.maxFramebufferWidth ||
         settings.height > limits.maxFramebufferHeight) {
@@ -190,12 +212,6 @@ FrameSetup Renderer::prepare(const vk::Buffer& table, const Bounds& bounds, cons
     frame.options = {settings.style == Style::Toon ? shared::kStyleToon : shared::kStyleLit, settings.toonBands, 0, 0};
     ++r.framesPrepared;
     while (!r.retired.empty() && r.retired.front().first + kFramesInFlight < r.framesPrepared) r.retired.pop_front();
-
-    // The host reads the table's counts (not the instances) to size the shadow volumes.
-    if (settings.shadows == Shadows::Volume) {
-        setup.counts = vk::downloadVector<shared::OrganTable>(context_, table, 1)[0];
-        r.volumeVerticesFor(context_, setup.counts, settings.maxShadowVolumeBytes);
-    }
     return setup;
 }
 

@@ -65,6 +65,10 @@ public:
     // The host's part of a frame: the camera and per-frame constants; with shadow volumes the table's counts are
     // read back to size the volume buffer. Throws std::invalid_argument for a zero or too large size.
     FrameSetup prepare(const vk::Buffer& table, const Bounds& bounds, const RenderSettings& settings);
+    // The same for organs only the device counts yet (a tick whose derivation and turtle are recorded before the
+    // frame in its submission): nothing is read back, the shadow volumes get room for `organs` organs of any
+    // kind (at most settings.maxShadowVolumeBytes).
+    FrameSetup prepareWithin(std::uint32_t organs, const Bounds& bounds, const RenderSettings& settings);
     // Records the frame into `cmd`, drawing into `target` (one of this renderer's render pass), with explicit
     // barriers before (the instances and table may come from passes recorded earlier) and after (the target's
     // copies are ready for the host). The caller submits; the frame's constants travel in `cmd`, so up to
@@ -79,6 +83,9 @@ public:
     std::unique_ptr<RenderTarget> makeTarget(std::uint32_t width, std::uint32_t height) const;
 
 private:
+    // The camera and constants, after checking the size and the sun.
+    FrameSetup prepareView(const Bounds& bounds, const RenderSettings& settings);
+
     struct Resources;
     const vk::Context& context_;
     std::unique_ptr<Resources> resources_;

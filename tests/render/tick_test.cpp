@@ -84,8 +84,9 @@ TEST_F(FieldTick, ATickRecordedInOneSubmissionDrawsWhatTheBlockingCallsDraw) {
     expectSameFrame(tick, blocking);
 }
 
-// A tick whose string changes: the next step derived, interpreted and drawn in one submission, from what the
-// last interpretation left (the room it needed, the framing); equal to the blocking calls' frame of that step.
+// A tick whose string changes: the next step derived, interpreted and drawn with shadow volumes in one
+// submission, from what the last interpretation left (the room it needed, the framing); equal to the blocking
+// calls' frame of that step.
 TEST_F(FieldTick, ADerivationStepInterpretedAndDrawnInOneSubmission) {
     ir::Grammar g = lang::loadGrammarFile(std::string(SIMECO_SOURCE_DIR) + "/grammars/abop/fig2.8-ternary.l");
     stream::DeriveOptions before;
@@ -101,7 +102,7 @@ TEST_F(FieldTick, ADerivationStepInterpretedAndDrawnInOneSubmission) {
     draw::RenderSettings settings;
     settings.width = 240;
     settings.height = 180;
-    settings.shadows = draw::Shadows::None; // shadow volumes are sized by the organs the host read last
+    settings.shadows = draw::Shadows::Volume;
 
     // The blocking calls at the step after: the expected frame, framed as the tick frames it.
     gpu::GpuDeriveStats stats;
@@ -120,9 +121,9 @@ TEST_F(FieldTick, ADerivationStepInterpretedAndDrawnInOneSubmission) {
     // The tick, from the state after the step before: room for the string to grow fourfold.
     deriver.derive(before, false);
     turtle.interpret(deriver.lastString(), {});
-    draw::FrameSetup setup = renderer.prepare(last.table, bounds, settings);
-    const draw::RenderTarget& target = renderer.offscreenTarget(settings.width, settings.height);
     const turtle::TurtleRoom room{needed.levels * 2 + 8, needed.organs * 4};
+    draw::FrameSetup setup = renderer.prepareWithin(room.organs, bounds, settings);
+    const draw::RenderTarget& target = renderer.offscreenTarget(settings.width, settings.height);
     const uint64_t submissions = context().submissions();
     context().submitAndWait([&](VkCommandBuffer cmd) {
         stream::DeviceModules next = deriver.record(cmd, after, modulesBefore * 4);

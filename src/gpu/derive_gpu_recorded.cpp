@@ -1,7 +1,8 @@
 // Steps recorded one after the other into one submission, with the stream sizes on the device: each step's
 // sizes kernel (derive/step_sizes.comp) turns the modules of its input into the workgroup counts of its
 // dispatches, so the host waits once per batch of steps instead of twice per step. On a discrete GPU each wait
-// costs far more than a small step's kernels.
+// costs far more than a small step's kernels. GpuDeriver::record writes such a batch into the caller's command
+// buffer instead, for a tick that interprets and draws the string in the same submission.
 #include "gpu/derive_gpu_impl.h"
 
 #include <algorithm>

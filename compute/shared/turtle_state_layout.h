@@ -107,7 +107,7 @@ struct TurtlePush {
     uint tildeSymbol;
     uint querySymbol;
     uint first;       // levels: the level resolved; jumps: the round
-    uint items;       // levels laid out (the deeper ones are not resolved)
+    uint items;       // levels laid out and resolved (a deeper string's table counts no organs)
     uint hitMask;     // searches: marks that end the search with a result
     uint stopMask;    // searches: marks that end it without one
     float spacing;    // field: distance between plants (0: from the widest plant)

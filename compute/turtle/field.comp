@@ -1,7 +1,8 @@
 // Turtle: the organ table's counts and firsts from the scanned flags, the field's spacing from the plants'
 // bounds (the widest plant's horizontal extent times 1.2, as turtle/interpretation.cpp's fieldSpacing), and
-// empty bounds for place.comp to grow; the organs' count into the status words. Organs that outgrew their
-// buffer (a recording that read nothing back sized it) are not drawn: the table counts none. One workgroup.
+// empty bounds for place.comp to grow; the organs' count into the status words. Where a recording that read
+// nothing back gave too little room (organs past their buffer, levels past those resolved), the table counts
+// no organs, so that nothing wrong is drawn. One workgroup.
 #version 450
 #extension GL_GOOGLE_include_directive : require
 #include "compute/shared/derive_layout.h"
@@ -35,7 +36,8 @@ void main() {
     for (uint k = 1u; k < kTurtleWorkgroupSize; ++k) w = max(w, widest[k]);
     spacing = pc.spacing > 0.0 ? pc.spacing : (w > 0.0 ? 1.2 * w : 1.0);
     status[kTurtleStatusOrgans] = total;
-    bool written = total <= pc.organCapacity;
+    // Organs past the buffer are not written, and those of modules deeper than the levels resolved are wrong.
+    bool written = total <= pc.organCapacity && status[kTurtleStatusLevels] <= pc.items;
     for (uint k = 0u; k < kOrganKinds; ++k) {
         uint first = offsets[k * pc.count];
         uint next = k + 1u < kOrganKinds ? offsets[(k + 1u) * pc.count] : total;

@@ -329,6 +329,7 @@ const DeviceOrgans& GpuTurtle::Impl::interpret(const stream::DeviceModules& m, c
         for (std::uint32_t level = 1; level <= run.levels; ++level) nonlinear += counts[level];
     }
     levels = run.levels;
+    run.push.items = run.levels;
     reserveLevels(run.levels);
     bytesMoved = trafficOf(n, m.stride, run.rounds, nonlinear);
     ctx.submitAndWait([&](VkCommandBuffer cmd) { recordStates(cmd, run); });
@@ -385,6 +386,7 @@ const DeviceOrgans& GpuTurtle::Impl::record(VkCommandBuffer cmd, const stream::D
     run.countedOnDevice = true;
     run.marked = ~0u;
     run.levels = room.levels;
+    run.push.items = room.levels;
     run.push.organCapacity = organs.capacity;
     levels = 0;
     bytesMoved = 0;
@@ -532,7 +534,6 @@ void GpuTurtle::Impl::recordStates(VkCommandBuffer cmd, const Run& run) {
     const Scratch& b = scratch;
     if (run.levels > 0 || run.countedOnDevice) { // a recording learns the deepest level from the layout
         TurtlePush p = run.push;
-        p.items = run.levels;
         levelLayout.dispatch(cmd, {b.counts, cursors, levelArguments, status}, p, 1);
         vk::memoryBarrier(cmd, Hazard::ComputeToIndirect);
         dispatchPass(cmd, levelScatter, {b.marks, b.levels[0], cursors, b.order, status}, p, run, kGateNonlinear,

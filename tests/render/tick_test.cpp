@@ -144,7 +144,7 @@ TEST_F(FieldTick, ADerivationStepInterpretedAndDrawnInOneSubmission) {
 }
 
 // Too little room: the derivation says its step did not fit and derives as before afterwards; the turtle says
-// its organs did not fit, and its table counts none, so that nothing is drawn from a buffer they outgrew.
+// its organs or levels did not fit, and its table counts no organs, so that nothing wrong is drawn.
 TEST_F(FieldTick, ARecordingWithTooLittleRoomSaysSo) {
     ir::Grammar g = lang::loadGrammarFile(std::string(SIMECO_SOURCE_DIR) + "/grammars/abop/fig2.8-ternary.l");
     stream::DeriveOptions options;
@@ -173,6 +173,25 @@ TEST_F(FieldTick, ARecordingWithTooLittleRoomSaysSo) {
     EXPECT_EQ(interpreted.organs, needed.organs);
     shared::OrganTable table = vk::downloadVector<shared::OrganTable>(context(), organs->table, 1)[0];
     for (uint32_t k = 0; k < shared::kOrganKinds; ++k) EXPECT_EQ(table.count[k], 0u) << k;
+
+    // Too few levels: the organs of the deeper modules would be wrong, so none is counted either.
+    ASSERT_GT(needed.levels, 0u);
+    context().submitAndWait([&](VkCommandBuffer cmd) {
+        organs = &turtle.record(cmd, deriver.lastString(), {}, {needed.levels - 1, needed.organs});
+    });
+    interpreted = turtle.recorded();
+    EXPECT_FALSE(interpreted.fit);
+    EXPECT_EQ(interpreted.levels, needed.levels);
+    table = vk::downloadVector<shared::OrganTable>(context(), organs->table, 1)[0];
+    for (uint32_t k = 0; k < shared::kOrganKinds; ++k) EXPECT_EQ(table.count[k], 0u) << k;
+    // With the room it needs, the same turtle draws them all.
+    context().submitAndWait(
+        [&](VkCommandBuffer cmd) { organs = &turtle.record(cmd, deriver.lastString(), {}, needed); });
+    EXPECT_TRUE(turtle.recorded().fit);
+    table = vk::downloadVector<shared::OrganTable>(context(), organs->table, 1)[0];
+    uint32_t counted = 0;
+    for (uint32_t k = 0; k < shared::kOrganKinds; ++k) counted += table.count[k];
+    EXPECT_EQ(counted, needed.organs);
 }
 
 // Two ticks in flight, each drawn into its own target from a camera of its own: the second is submitted before

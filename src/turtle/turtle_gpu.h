@@ -81,10 +81,11 @@ public:
 
     // Records interpreting `modules` into `cmd`, reading nothing back: the count is the plant table's last entry
     // on the device, so the string may be one a derivation recorded before in `cmd` writes (`modules.count` then
-    // only bounds it). The marks, levels and organs the host reads between interpret()'s passes are not known:
-    // every search runs, `room` bounds the levels resolved and the organs written, and recorded() tells, after
-    // the submission, whether the string fit (else its table counts no organs: interpret() it, or record again
-    // with more room). Starts with a barrier after everything recorded before; the caller submits.
+    // only bounds it). What interpret() reads between its passes stays on the device: the passes are sized
+    // there (compute/turtle/pass_sizes.comp), `room` bounds the levels resolved and the organs written, and
+    // recorded() tells, after the submission, whether the string fit (else its table counts no organs:
+    // interpret() it, or record again with more room). Starts with a barrier after everything recorded before;
+    // the caller submits.
     const DeviceOrgans& record(VkCommandBuffer cmd, const stream::DeviceModules& modules,
                                const turtle::FieldOptions& field, TurtleRoom room);
     // What the last interpret() needed: room to record the same string again.

@@ -26,7 +26,19 @@ namespace {
 
 using namespace simeco;
 
-class FieldTick : public test::GpuTest {};
+class FieldTick : public test::GpuTest {
+protected:
+    // The README's tree, of which every test grows a field.
+    static ir::Grammar ternaryTree() {
+        return lang::loadGrammarFile(std::string(SIMECO_SOURCE_DIR) + "/grammars/abop/fig2.8-ternary.l");
+    }
+    static stream::DeriveOptions field(uint32_t plants, int steps) {
+        stream::DeriveOptions options;
+        options.plants = plants;
+        options.steps = steps;
+        return options;
+    }
+};
 
 // The frames of two runs that should draw the same field: equal ids, colours within rounding, and a field.
 void expectSameFrame(const draw::Frame& tick, const draw::Frame& blocking) {
@@ -43,10 +55,8 @@ void expectSameFrame(const draw::Frame& tick, const draw::Frame& blocking) {
 }
 
 TEST_F(FieldTick, ATickRecordedInOneSubmissionDrawsWhatTheBlockingCallsDraw) {
-    ir::Grammar g = lang::loadGrammarFile(std::string(SIMECO_SOURCE_DIR) + "/grammars/abop/fig2.8-ternary.l");
-    stream::DeriveOptions options;
-    options.plants = 100;
-    options.steps = 3;
+    ir::Grammar g = ternaryTree();
+    const stream::DeriveOptions options = field(100, 3);
     gpu::GpuDeriver deriver(context(), g);
     deriver.derive(options, /*readBack=*/false);
     stream::DeviceModules modules = deriver.lastString();
@@ -88,12 +98,8 @@ TEST_F(FieldTick, ATickRecordedInOneSubmissionDrawsWhatTheBlockingCallsDraw) {
 // submission, from what the last interpretation left (the room it needed, the framing); equal to the blocking
 // calls' frame of that step.
 TEST_F(FieldTick, ADerivationStepInterpretedAndDrawnInOneSubmission) {
-    ir::Grammar g = lang::loadGrammarFile(std::string(SIMECO_SOURCE_DIR) + "/grammars/abop/fig2.8-ternary.l");
-    stream::DeriveOptions before;
-    before.plants = 100;
-    before.steps = 2;
-    stream::DeriveOptions after = before;
-    after.steps = 3;
+    ir::Grammar g = ternaryTree();
+    const stream::DeriveOptions before = field(100, 2), after = field(100, 3);
     gpu::GpuDeriver deriver(context(), g);
     ASSERT_TRUE(deriver.recordsSteps(after));
     turtle::TurtleCommands commands = turtle::turtleCommands(g.alphabet);
@@ -146,10 +152,8 @@ TEST_F(FieldTick, ADerivationStepInterpretedAndDrawnInOneSubmission) {
 // Too little room: the derivation says its step did not fit and derives as before afterwards; the turtle says
 // its organs or levels did not fit, and its table counts no organs, so that nothing wrong is drawn.
 TEST_F(FieldTick, ARecordingWithTooLittleRoomSaysSo) {
-    ir::Grammar g = lang::loadGrammarFile(std::string(SIMECO_SOURCE_DIR) + "/grammars/abop/fig2.8-ternary.l");
-    stream::DeriveOptions options;
-    options.plants = 100;
-    options.steps = 3;
+    ir::Grammar g = ternaryTree();
+    const stream::DeriveOptions options = field(100, 3);
     gpu::GpuDeriver deriver(context(), g);
     gpu::GpuDeriveStats stats;
     context().submitAndWait([&](VkCommandBuffer cmd) { deriver.record(cmd, options, 1); });
@@ -198,10 +202,8 @@ TEST_F(FieldTick, ARecordingWithTooLittleRoomSaysSo) {
 // the first is waited for, a third is refused while both are in flight, and each frame equals the blocking
 // calls' frame from its camera.
 TEST_F(FieldTick, TicksInFlightDrawTheirOwnFrames) {
-    ir::Grammar g = lang::loadGrammarFile(std::string(SIMECO_SOURCE_DIR) + "/grammars/abop/fig2.8-ternary.l");
-    stream::DeriveOptions options;
-    options.plants = 100;
-    options.steps = 3;
+    ir::Grammar g = ternaryTree();
+    const stream::DeriveOptions options = field(100, 3);
     gpu::GpuDeriver deriver(context(), g);
     deriver.derive(options, false);
     stream::DeviceModules modules = deriver.lastString();

@@ -199,7 +199,7 @@ stream::DeriveResult GpuDeriver::derive(const stream::DeriveOptions& asked, bool
     const uint64_t budget = control.budget();
     const uint64_t submissionsBefore = m.ctx.submissions();
     m.startDerivation(control, options);
-    const bool recorded = m.recordsSteps(options.particles);
+    const bool recorded = m.recordsSteps();
 
     std::optional<vk::Timestamps> timer;
     if (m.ctx.timestampValidBits() > 0) timer.emplace(m.ctx, 2);
@@ -268,8 +268,8 @@ stream::DeriveResult GpuDeriver::derive(const stream::DeriveOptions& asked, bool
 
 bool GpuDeriver::appliesHomomorphism() const { return !impl_->homomorphismHostReason; }
 
-bool GpuDeriver::recordsSteps(const stream::DeriveOptions& options) const {
-    return impl_->recordsSteps(options.particles);
+bool GpuDeriver::recordsSteps() const {
+    return impl_->recordsSteps();
 }
 
 stream::DeviceModules GpuDeriver::lastString() const {

@@ -83,7 +83,7 @@ public:
 
     // Records deriving options.plants plants into `cmd` for the caller to submit, with no wait: the axioms'
     // copy and every step with its sizes on the device, into streams with room for `room` modules (the field's
-    // size, as the last derive() found it, say). Needs recordsSteps(options), at most kMostRecordedSteps steps
+    // size, as the last derive() found it, say). Needs recordsSteps(), at most kMostRecordedSteps steps
     // and no homomorphism. Returns the string the submission writes, counted only on the device (the turtle's
     // record() reads it so). Throws std::logic_error for a derivation it cannot record; derive() and record()
     // refuse while a recording is not yet read by recorded().
@@ -95,8 +95,8 @@ public:
 
     // Whether derive() records its steps one after the other with their sizes on the device, waiting once per batch
     // of steps (the parallel strategy with a fused scan, for grammars without decomposition, cuts or predecessors
-    // of several modules, when no particle state is carried), instead of twice per step.
-    bool recordsSteps(const stream::DeriveOptions& options) const;
+    // of several modules; particle state is carried along), instead of twice per step.
+    bool recordsSteps() const;
 
     // Parallel or Sequential: the strategy this deriver uses.
     GpuStrategy strategy() const;

@@ -19,6 +19,7 @@
 
 #include "codegen/derive_codegen.h"
 #include "compute/shared/derive_layout.h"
+#include "compute/shared/particle_layout.h"
 #include "gpu/bracket_tree.h"
 #include "gpu/derive_gpu.h"
 #include "gpu/scan.h"
@@ -48,6 +49,9 @@ inline constexpr uint32_t kGreedyBlock = 256; // chunks per block of greedy_scan
 
 // The driver ended an invocation's loops early (kFlagLoopCut) where the work cannot be split any finer.
 ir::LimitError loopsCutError(const std::string& what);
+
+// Bytes of one module's particle state.
+inline constexpr uint64_t kParticleBytes = 4ull * shared::kParticleStateFloats;
 
 struct GpuDeriver::Impl {
     const vk::Context& ctx;
@@ -238,6 +242,7 @@ struct GpuDeriver::Impl {
     // After a step without decomposition: each module of streams[from] passes its particle state to its successor
     // in streams[to], at the positions this step's scan gave it.
     void scatterParticles(int from, int to, vk::Timestamps* timer, double& millis);
+    const vk::ComputePipeline& particleScatterKernel();
 
     // Each module of streams[to] takes the particle state of the module of streams[from] it descends from (its
     // origin): after decomposition, the homomorphism or a sequential step.
@@ -283,8 +288,8 @@ struct GpuDeriver::Impl {
     // ---- steps recorded one after the other (derive_gpu_recorded.cpp) ----
 
     // Whether the derivation's steps can run with their sizes on the device: the parallel strategy's steps with a
-    // fused scan and no decomposition, cuts, greedy walks or particle state (`particles`).
-    bool recordsSteps(bool particles) const;
+    // fused scan and no decomposition, cuts or greedy walks.
+    bool recordsSteps() const;
 
     // Every step from `step` on, a batch of up to kMostRecordedSteps steps per submission: the host's plant control
     // runs a batch ahead of the device (the parallel strategy's productions write no plant state), and the

@@ -162,19 +162,24 @@ void GpuDeriver::Impl::scatterParticles(int from, int to, vk::Timestamps* timer,
     Stream& out = streams[to];
     ensureParticles(out);
     if (in.count == 0 || out.count == 0) return;
+    DeriveHelperPush hp{in.count, kernels.fusedScan ? tileSize : 0u, out.count, plants};
+    const vk::ComputePipeline& scatter = particleScatterKernel();
+    submit(
+        [&](VkCommandBuffer cmd) {
+            scatter.dispatch(cmd,
+                             {kernels.fusedScan ? counts : offsets, kernels.fusedScan ? tileOffsets : offsets,
+                              in.particles, out.particles, plantTable(in), scan.totalBuffer()},
+                             hp, scatter.groupsFor(in.count));
+        },
+        timer, millis);
+}
+
+const vk::ComputePipeline& GpuDeriver::Impl::particleScatterKernel() {
     if (!particleScatter) {
         const uint32_t choiceBits[] = {kernels.fusedScan ? kernels.choiceBits : 0u};
         particleScatter = vk::ComputePipeline::embedded(ctx, "derive/particle_scatter", choiceBits);
     }
-    DeriveHelperPush hp{in.count, kernels.fusedScan ? tileSize : 0u, out.count, plants};
-    submit(
-        [&](VkCommandBuffer cmd) {
-            particleScatter->dispatch(cmd,
-                                      {kernels.fusedScan ? counts : offsets, kernels.fusedScan ? tileOffsets : offsets,
-                                       in.particles, out.particles},
-                                      hp, particleScatter->groupsFor(in.count));
-        },
-        timer, millis);
+    return *particleScatter;
 }
 
 void GpuDeriver::Impl::gatherParticles(int from, int to, vk::Timestamps* timer, double& millis) {

@@ -36,10 +36,9 @@ constexpr double kMostGrowth = 64.0;
 
 } // namespace
 
-bool GpuDeriver::Impl::recordsSteps(bool particles) const {
+bool GpuDeriver::Impl::recordsSteps() const {
     return strategy == GpuStrategy::Parallel && kernels.fusedScan && !kernels.hasDecomposition &&
-           !kernels.mayCut && kernels.longestPredecessor <= 1 && !particles &&
-           plantStartsTiled.has_value();
+           !kernels.mayCut && kernels.longestPredecessor <= 1 && plantStartsTiled.has_value();
 }
 
 void GpuDeriver::Impl::reserveBatchState(uint32_t steps) {
@@ -58,22 +57,36 @@ void GpuDeriver::Impl::reserveBatchState(uint32_t steps) {
 
 uint64_t GpuDeriver::Impl::recordedCapacity(const Stream& out) const {
     uint64_t room = std::min<uint64_t>({out.capacity, scratchCapacity - 1, scan.capacity()});
+    if (carriesParticles) room = std::min<uint64_t>(room, out.particles.size() / kParticleBytes);
     return std::min<uint64_t>(room, std::numeric_limits<uint32_t>::max() - 1);
 }
 
 void GpuDeriver::Impl::makeRoom(int cur, uint64_t modules) {
     for (int k = 0; k < 3; ++k) {
         Stream& s = streams[k];
-        if (s.capacity >= modules && s.sym) continue;
-        vk::Buffer oldSymbols = std::move(s.sym), oldParameters = std::move(s.par);
-        ensureStream(s, modules);
-        if (k == cur && s.count > 0) {
-            // The batch reads this string: its modules move to the new buffers first thing in the submission.
-            pendingCopies.push_back({oldSymbols.handle(), s.sym.handle(), {0, 0, bytes(s.count, 4)}});
-            pendingCopies.push_back(
-                {oldParameters.handle(), s.par.handle(), {0, 0, bytes(s.count, 4ull * uint64_t(stride))}});
-            retiredBuffers.push_back(std::move(oldSymbols));
-            retiredBuffers.push_back(std::move(oldParameters));
+        if (s.capacity < modules || !s.sym) {
+            vk::Buffer oldSymbols = std::move(s.sym), oldParameters = std::move(s.par);
+            ensureStream(s, modules);
+            if (k == cur && s.count > 0) {
+                // The batch reads this string: its modules move to the new buffers first thing in the submission.
+                pendingCopies.push_back({oldSymbols.handle(), s.sym.handle(), {0, 0, bytes(s.count, 4)}});
+                pendingCopies.push_back(
+                    {oldParameters.handle(), s.par.handle(), {0, 0, bytes(s.count, 4ull * uint64_t(stride))}});
+                retiredBuffers.push_back(std::move(oldSymbols));
+                retiredBuffers.push_back(std::move(oldParameters));
+            }
+        }
+        // Particle state for as many modules as the stream holds (as far as a buffer binds it), the string's
+        // moved along like its modules.
+        uint64_t particleRoom = std::min<uint64_t>(s.capacity, bufferLimit() / kParticleBytes);
+        if (carriesParticles && s.particles.size() < particleRoom * kParticleBytes) {
+            vk::Buffer oldParticles = std::move(s.particles);
+            s.particles = vk::Buffer(ctx, particleRoom * kParticleBytes, vk::MemoryUsage::DeviceLocal);
+            if (k == cur && s.count > 0 && oldParticles) {
+                pendingCopies.push_back(
+                    {oldParticles.handle(), s.particles.handle(), {0, 0, uint64_t(s.count) * kParticleBytes}});
+                retiredBuffers.push_back(std::move(oldParticles));
+            }
         }
     }
     // The scratch as large as the smallest stream (a step's output is the next step's input), as far as a buffer
@@ -278,6 +291,12 @@ void GpuDeriver::Impl::recordStep(VkCommandBuffer cmd, const RecordedStep& step,
         cmd, {plantTable(input), counts, tileOffsets, plantTable(output), scan.totalBuffer()},
         DeriveHelperPush{shared::kCountOnDevice, tileSize, shared::kCountOnDevice, plants}, stepWords,
         blockOffset(slot, shared::kArgsPlantStarts));
+    if (carriesParticles) // each module's state to its successor's modules, as the write places them
+        particleScatterKernel().dispatchIndirect(
+            cmd,
+            {counts, tileOffsets, input.particles, output.particles, plantTable(input), scan.totalBuffer()},
+            DeriveHelperPush{shared::kCountOnDevice, tileSize, shared::kCountOnDevice, plants}, stepWords,
+            blockOffset(slot, shared::kArgsWrite));
     vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
     if (carries) { // the next step reads the partners this one wrote
         brackets.carried();
@@ -289,7 +308,7 @@ stream::DeviceModules GpuDeriver::record(VkCommandBuffer cmd, const stream::Deri
     Impl& m = *impl_;
     stream::DeriveOptions options = asked;
     if (options.maxModules == 0) options.maxModules = m.defaultModuleBudget(options.particles);
-    if (!m.recordsSteps(options.particles))
+    if (!m.recordsSteps())
         throw std::logic_error("GpuDeriver::record: this grammar's steps need the host between them");
     if (options.homomorphism && (m.homomorphismMatch || m.homomorphismHostReason))
         throw std::logic_error("GpuDeriver::record: the homomorphism runs step by step");
@@ -312,8 +331,13 @@ stream::DeviceModules GpuDeriver::record(VkCommandBuffer cmd, const stream::Deri
     m.recording = std::move(recording);
     m.lastStream = -1; // until recorded() knows the string is there
     const Stream& s = m.streams[last];
-    stream::DeviceModules modules{&s.sym,          &s.par, &s.plantStart, uint32_t(m.recordedCapacity(s)), m.plants,
-                                  uint32_t(m.stride), nullptr};
+    stream::DeviceModules modules{&s.sym,
+                                  &s.par,
+                                  &s.plantStart,
+                                  uint32_t(m.recordedCapacity(s)),
+                                  m.plants,
+                                  uint32_t(m.stride),
+                                  m.carriesParticles ? &s.particles : nullptr};
     modules.countOnDevice = true;
     return modules;
 }

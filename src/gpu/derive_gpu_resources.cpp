@@ -166,11 +166,10 @@ void GpuDeriver::Impl::ensureScratch(uint64_t count) {
 void GpuDeriver::Impl::ensureParticles(Stream& s) {
     if (!carriesParticles) return;
     static_assert(shared::kParticleStateFloats == 4 * shared::kParticleStateVec4s);
-    uint64_t perModule = 4ull * shared::kParticleStateFloats;
-    checkRange(s.count, perModule, "particle state");
-    uint64_t capacity = std::min<uint64_t>(s.capacity, bufferLimit() / perModule);
-    if (!s.particles || s.particles.size() < bytes(s.count, perModule))
-        s.particles = vk::Buffer(ctx, bytes(std::max<uint64_t>(capacity, s.count), perModule),
+    checkRange(s.count, kParticleBytes, "particle state");
+    uint64_t capacity = std::min<uint64_t>(s.capacity, bufferLimit() / kParticleBytes);
+    if (!s.particles || s.particles.size() < bytes(s.count, kParticleBytes))
+        s.particles = vk::Buffer(ctx, bytes(std::max<uint64_t>(capacity, s.count), kParticleBytes),
                                  vk::MemoryUsage::DeviceLocal);
 }
 

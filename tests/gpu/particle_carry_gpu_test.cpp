@@ -120,6 +120,25 @@ TEST_F(ParticleCarryGpuTest, SpeciesThatStopAtDifferentSteps) {
     expectCarried(species, options, "fig1.24d and fig1.31a");
 }
 
+// Steps recorded with their sizes on the device carry the states too, also when a string outgrows its stream in
+// the middle of a batch and its states move to the grown buffers with its modules.
+TEST_F(ParticleCarryGpuTest, RecordedStepsCarryThemWhileTheStreamsGrow) {
+    ir::Grammar g = testing::grammarFromText(
+        testing::lsystem("F(1)", "F(x) --> F(x*2)[+F(x+1)]F(x)[-F(x/2)]F(x-1)\n", 7));
+    stream::DeriveOptions options;
+    options.plants = 3;
+    EXPECT_EQ(compareParticles(context(), {g}, options, gpu::GpuStrategy::Parallel), "");
+    gpu::GpuDeriver deriver(context(), g, gpu::GpuStrategy::Parallel);
+    ASSERT_TRUE(deriver.recordsSteps());
+    options.particles = true;
+    options.initialParticles = axiomStates({g}, options.plants);
+    gpu::GpuDeriveStats stats;
+    deriver.derive(options, false, &stats);
+    // The axioms' states upload, then a batch that stops where the string outgrows its room, and the rest.
+    EXPECT_GE(stats.waits, 3u) << "the string never outgrew the first room";
+    EXPECT_LT(stats.waits, 8u) << "a wait per step";
+}
+
 // The stream the turtle kernels read (lastString) holds the states the derivation returned, or none.
 TEST_F(ParticleCarryGpuTest, TheDeviceStringHoldsTheStates) {
     ir::Grammar g = testing::grammarFromText(testing::lsystem("AB", "A --> AB[A]", 4));

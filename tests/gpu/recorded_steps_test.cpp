@@ -28,7 +28,7 @@ TEST_F(RecordedStepsTest, StreamsGrowAndTheStringsMatchTheCpu) {
         options.plants = plants;
         stream::DeriveResult want = cpu::deriveCpu(g, options);
         gpu::GpuDeriver deriver(context(), g);
-        ASSERT_TRUE(deriver.recordsSteps(options));
+        ASSERT_TRUE(deriver.recordsSteps());
         gpu::GpuDeriveStats first, again;
         EXPECT_EQ(firstDifference(want, deriver.derive(options, true, &first), g.alphabet), "");
         EXPECT_EQ(first.stepMillis.size(), 7u);
@@ -56,7 +56,7 @@ TEST_F(RecordedStepsTest, ContextsMatchTheCpuAcrossSubmissions) {
     options.plants = 3;
     stream::DeriveResult want = cpu::deriveCpu(g, options);
     gpu::GpuDeriver deriver(context(), g);
-    ASSERT_TRUE(deriver.recordsSteps(options));
+    ASSERT_TRUE(deriver.recordsSteps());
     gpu::GpuDeriveStats grown, again;
     EXPECT_EQ(firstDifference(want, deriver.derive(options, true, &grown), g.alphabet), "");
     EXPECT_EQ(grown.bracketTrees, 1u);
@@ -74,7 +74,7 @@ TEST_F(RecordedStepsTest, LongDerivationsRunInBatches) {
     options.plants = 5;
     stream::DeriveResult want = cpu::deriveCpu(g, options);
     gpu::GpuDeriver deriver(context(), g);
-    ASSERT_TRUE(deriver.recordsSteps(options));
+    ASSERT_TRUE(deriver.recordsSteps());
     EXPECT_EQ(firstDifference(want, deriver.derive(options), g.alphabet), "");
     gpu::GpuDeriveStats stats;
     deriver.derive(options, false, &stats);
@@ -95,7 +95,7 @@ TEST_F(RecordedStepsTest, TheModuleBudgetStopsTheStepThatPassesIt) {
     }
     ASSERT_NE(want.find("in step 10"), std::string::npos) << want;
     gpu::GpuDeriver deriver(context(), g);
-    ASSERT_TRUE(deriver.recordsSteps(options));
+    ASSERT_TRUE(deriver.recordsSteps());
     try {
         deriver.derive(options);
         ADD_FAILURE() << "the module budget did not stop the derivation";

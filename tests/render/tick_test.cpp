@@ -101,7 +101,7 @@ TEST_F(FieldTick, ADerivationStepInterpretedAndDrawnInOneSubmission) {
     ir::Grammar g = ternaryTree();
     const stream::DeriveOptions before = field(100, 2), after = field(100, 3);
     gpu::GpuDeriver deriver(context(), g);
-    ASSERT_TRUE(deriver.recordsSteps(after));
+    ASSERT_TRUE(deriver.recordsSteps());
     turtle::TurtleCommands commands = turtle::turtleCommands(g.alphabet);
     turtle::GpuTurtle turtle(context(), commands, {turtle::turtleSettings(g, g.alphabet)});
     draw::Renderer renderer(context());

@@ -65,28 +65,29 @@ void GpuDeriver::Impl::uploadAxioms(const stream::ModuleString& axioms, const st
     std::vector<uint32_t> words(axioms.size());
     for (size_t i = 0; i < axioms.size(); ++i) words[i] = axioms.sym[i] | (uint32_t(axioms.paramCount[i]) << 24);
     std::vector<uint32_t> table(axioms.plantStart.begin(), axioms.plantStart.end());
-    std::span<const std::byte> parts[] = {std::as_bytes(std::span<const uint32_t>(words)),
-                                          std::as_bytes(std::span<const float>(axioms.params)),
-                                          std::as_bytes(std::span<const uint32_t>(table))};
-    const vk::Buffer* targets[] = {&s.sym, &s.par, &s.plantStart};
-    // Through a staging buffer that the first submission copies from: no submission and wait of their own.
-    reserve(axiomStaging, bytes(parts[0].size() + parts[1].size() + parts[2].size(), 1), vk::MemoryUsage::Upload);
-    VkDeviceSize at = 0;
-    for (int k = 0; k < 3; ++k) {
-        if (parts[k].empty()) continue;
-        std::copy(parts[k].begin(), parts[k].end(), axiomStaging.mapped() + at);
-        pendingCopies.push_back({axiomStaging.handle(), targets[k]->handle(), {at, 0, parts[k].size()}});
-        at += parts[k].size();
-    }
     s.count = static_cast<uint32_t>(axioms.size());
+    std::vector<shared::ParticleState> particles;
     if (options.particles) {
-        std::vector<shared::ParticleState> particles;
         for (std::vector<shared::ParticleState>& plant :
              stream::splitAxiomParticles(species, plants, options.initialParticles))
             particles.insert(particles.end(), plant.begin(), plant.end());
         ensureParticles(s);
-        if (!particles.empty())
-            vk::upload(ctx, s.particles, std::as_bytes(std::span<const shared::ParticleState>(particles)));
+    }
+    std::span<const std::byte> parts[] = {std::as_bytes(std::span<const uint32_t>(words)),
+                                          std::as_bytes(std::span<const float>(axioms.params)),
+                                          std::as_bytes(std::span<const uint32_t>(table)),
+                                          std::as_bytes(std::span<const shared::ParticleState>(particles))};
+    const vk::Buffer* targets[] = {&s.sym, &s.par, &s.plantStart, &s.particles};
+    // Through a staging buffer that the first submission copies from: no submission and wait of their own.
+    VkDeviceSize staged = 0;
+    for (const std::span<const std::byte>& part : parts) staged += part.size();
+    reserve(axiomStaging, bytes(staged, 1), vk::MemoryUsage::Upload);
+    VkDeviceSize at = 0;
+    for (int k = 0; k < 4; ++k) {
+        if (parts[k].empty()) continue;
+        std::copy(parts[k].begin(), parts[k].end(), axiomStaging.mapped() + at);
+        pendingCopies.push_back({axiomStaging.handle(), targets[k]->handle(), {at, 0, parts[k].size()}});
+        at += parts[k].size();
     }
     reserve(globals, bytes(uint64_t(plants) * std::max<uint32_t>(globalStride, 1), 8), vk::MemoryUsage::Upload);
     reserve(arrays, bytes(uint64_t(plants) * std::max<uint32_t>(arrayStride, 1), 8), vk::MemoryUsage::Upload);

@@ -134,8 +134,8 @@ TEST_F(ParticleCarryGpuTest, RecordedStepsCarryThemWhileTheStreamsGrow) {
     options.initialParticles = axiomStates({g}, options.plants);
     gpu::GpuDeriveStats stats;
     deriver.derive(options, false, &stats);
-    // The axioms' states upload, then a batch that stops where the string outgrows its room, and the rest.
-    EXPECT_GE(stats.waits, 3u) << "the string never outgrew the first room";
+    // A batch that stops where the string outgrows its room, and the rest (the axioms' states go up with it).
+    EXPECT_GE(stats.waits, 2u) << "the string never outgrew the first room";
     EXPECT_LT(stats.waits, 8u) << "a wait per step";
 }
 

@@ -168,6 +168,10 @@ struct GpuDeriver::Impl {
 
     // Room for the particle state of s's modules, while the derivation carries it.
     void ensureParticles(Stream& s);
+    // Modules whose particle state a buffer for `s` holds: its capacity, as far as a binding reaches.
+    uint64_t particleCapacity(const Stream& s) const {
+        return std::min<uint64_t>(s.capacity, bufferLimit() / kParticleBytes);
+    }
 
     // The module budget of a derivation that names none: what half the device's memory holds of the streams
     // and scratch (stream::deviceBytesPerModule, with the particle state where it is carried) and a quarter of
@@ -328,9 +332,10 @@ struct GpuDeriver::Impl {
     int recordBatch(VkCommandBuffer cmd, const std::vector<RecordedStep>& batch, size_t first, int in, uint32_t seed,
                     uint64_t budget, vk::Timestamps* timer);
     // After the batch's submission: the steps it completed (all of them unless one stopped it), `cur` moved to
-    // their last stream, with the streams' counts and the stats.
-    size_t completeBatch(const std::vector<RecordedStep>& batch, size_t first, int& cur, vk::Timestamps* timer,
-                         GpuDeriveStats& stats);
+    // their last stream, with the streams' counts and the stats. Throws when the step that stopped it passed the
+    // module `budget`.
+    size_t completeBatch(const std::vector<RecordedStep>& batch, size_t first, int& cur, uint64_t budget,
+                         vk::Timestamps* timer, GpuDeriveStats& stats);
     // A derivation record() wrote into a caller's command buffer, until recorded() reads what it left.
     struct Recording {
         std::unique_ptr<stream::PlantControl> control;

@@ -78,10 +78,9 @@ void GpuDeriver::Impl::makeRoom(int cur, uint64_t modules) {
         }
         // Particle state for as many modules as the stream holds (as far as a buffer binds it), the string's
         // moved along like its modules.
-        uint64_t particleRoom = std::min<uint64_t>(s.capacity, bufferLimit() / kParticleBytes);
-        if (carriesParticles && s.particles.size() < particleRoom * kParticleBytes) {
+        if (carriesParticles && s.particles.size() < particleCapacity(s) * kParticleBytes) {
             vk::Buffer oldParticles = std::move(s.particles);
-            s.particles = vk::Buffer(ctx, particleRoom * kParticleBytes, vk::MemoryUsage::DeviceLocal);
+            s.particles = vk::Buffer(ctx, particleCapacity(s) * kParticleBytes, vk::MemoryUsage::DeviceLocal);
             if (k == cur && s.count > 0 && oldParticles) {
                 pendingCopies.push_back(
                     {oldParticles.handle(), s.particles.handle(), {0, 0, uint64_t(s.count) * kParticleBytes}});
@@ -188,7 +187,7 @@ int GpuDeriver::Impl::recordBatch(VkCommandBuffer cmd, const std::vector<Recorde
 }
 
 size_t GpuDeriver::Impl::completeBatch(const std::vector<RecordedStep>& batch, size_t first, int& cur,
-                                       vk::Timestamps* timer, GpuDeriveStats& stats) {
+                                       uint64_t budget, vk::Timestamps* timer, GpuDeriveStats& stats) {
     const uint32_t* words = reinterpret_cast<const uint32_t*>(stepWordsReadback.mapped());
     lastFlags = words[shared::kStepBlocks + 1];
     checkKernelErrors(words[shared::kStepBlocks], lastFlags, false);
@@ -206,6 +205,8 @@ size_t GpuDeriver::Impl::completeBatch(const std::vector<RecordedStep>& batch, s
         if (timer) stats.stepMillis.push_back(timer->elapsedNs(uint32_t(j), uint32_t(j + 1)) / 1e6);
     }
     if (stopped == 0) tableReadFrom = cur;
+    else if ((stopped & 3u) == shared::kStopBudget)
+        checkBudget(words[shared::kStepTotals + done], budget, batch[done].index);
     return done;
 }
 
@@ -215,11 +216,9 @@ size_t GpuDeriver::Impl::runBatch(const std::vector<RecordedStep>& batch, size_t
     std::optional<SubmissionEnd> submission{*this};
     ctx.submitAndWait([&](VkCommandBuffer cmd) { recordBatch(cmd, batch, first, cur, seed, budget, timer); });
     submission.reset();
-    const size_t done = completeBatch(batch, first, cur, timer, stats);
+    const size_t done = completeBatch(batch, first, cur, budget, timer, stats);
     if (done == batch.size()) return done;
-    const uint32_t* words = reinterpret_cast<const uint32_t*>(stepWordsReadback.mapped());
-    const uint64_t total = words[shared::kStepTotals + done];
-    if ((words[shared::kStepStopped] & 3u) == shared::kStopBudget) checkBudget(total, budget, batch[done].index);
+    const uint64_t total = reinterpret_cast<const uint32_t*>(stepWordsReadback.mapped())[shared::kStepTotals + done];
     // The step outgrew its stream: room for it and a few steps more at its rate of growth, as far as the rest of
     // the derivation goes.
     int stepsAhead = std::min<int>(kStepsAhead, int(batch.size() - done - 1) + stepsAfterBatch);
@@ -351,15 +350,10 @@ std::optional<stream::DeriveResult> GpuDeriver::recorded(GpuDeriveStats* statsOu
     GpuDeriveStats stats;
     stats.compileSeconds = m.compileSeconds;
     int cur = 0;
-    const size_t done = m.completeBatch(recording.batch, 0, cur, nullptr, stats);
     m.partnersStream = -1;
     m.partnersLive = false;
-    if (done < recording.batch.size()) {
-        const uint32_t* words = reinterpret_cast<const uint32_t*>(m.stepWordsReadback.mapped());
-        if ((words[shared::kStepStopped] & 3u) == shared::kStopBudget)
-            m.checkBudget(words[shared::kStepTotals + done], recording.budget, recording.batch[done].index);
-        return std::nullopt; // a step outgrew the room it was recorded with
-    }
+    const size_t done = m.completeBatch(recording.batch, 0, cur, recording.budget, nullptr, stats);
+    if (done < recording.batch.size()) return std::nullopt; // a step outgrew the room it was recorded with
     stream::PlantControl& control = *recording.control;
     for (uint32_t plant = 0; plant < m.plants; ++plant) control.finish(plant);
     stream::DeriveResult result;

@@ -167,9 +167,8 @@ void GpuDeriver::Impl::ensureParticles(Stream& s) {
     if (!carriesParticles) return;
     static_assert(shared::kParticleStateFloats == 4 * shared::kParticleStateVec4s);
     checkRange(s.count, kParticleBytes, "particle state");
-    uint64_t capacity = std::min<uint64_t>(s.capacity, bufferLimit() / kParticleBytes);
     if (!s.particles || s.particles.size() < bytes(s.count, kParticleBytes))
-        s.particles = vk::Buffer(ctx, bytes(std::max<uint64_t>(capacity, s.count), kParticleBytes),
+        s.particles = vk::Buffer(ctx, bytes(std::max<uint64_t>(particleCapacity(s), s.count), kParticleBytes),
                                  vk::MemoryUsage::DeviceLocal);
 }
 

@@ -79,22 +79,33 @@ uint plantHintBlocks(uint count) { return (count + kPlantHintBlock - 1u) / kPlan
 
 // Push constants of the fixed helper kernels.
 struct DeriveHelperPush {
-    uint count;   // elements; plant hints and tiled plant starts: kCountOnDevice, the old plant table's last entry
-    uint level;   // depth tree: the level being built; tiled plant starts: the tile size
-    uint total;   // plant starts: modules of the new stream; tiled plant starts: kCountOnDevice, the scan's total
+    uint count;   // elements; or kCountOnDevice: the last entry of the plant table the kernel reads from
+    uint level;   // depth tree: the level being built; tiled plant starts: the tile size; stream copy: its mode
+    uint total;   // plant starts: modules of the new stream, or kCountOnDevice: the scan's total; stream copy: a bound
     uint plants;  // plant starts and hints: plants
+};
+
+// Push constants of derive/stream_copy.comp.
+SIMECO_CONST kCopySettle = 0u;
+SIMECO_CONST kCopyHomomorphism = 1u;
+struct StreamCopyPush {
+    uint mode;   // kCopySettle or kCopyHomomorphism
+    uint bound;  // modules both streams hold at most
+    uint plants;
+    uint stride; // parameter slots per module
 };
 
 // Steps recorded one after the other in one submission (GpuDeriver's recorded steps), with the stream sizes on the
 // device: derive/step_sizes.comp turns each step's counts into the workgroup counts of its dispatches and stops
 // the batch at a step whose string outgrows its stream or the module budget. Its words:
-SIMECO_CONST kStepStopped = 0u;   // 0, or (batch step + 1) << 2 | kStopCapacity or kStopBudget
+SIMECO_CONST kStepStopped = 0u;   // 0, or (batch step + 1) << 2 | kStopCapacity, kStopBudget or kStopDepths
 SIMECO_CONST kStopCapacity = 1u;  // the step's string outgrew the stream it is written to (more room, then again)
 SIMECO_CONST kStopBudget = 2u;    // ... or the module budget
+SIMECO_CONST kStopDepths = 3u;    // its decomposition goes deeper than the depths recorded (more, then again)
 SIMECO_CONST kStepTotals = 4u;    // + batch step: the modules it derived
 SIMECO_CONST kMostRecordedSteps = 64u;
 SIMECO_CONST kStepBlocks = kStepTotals + kMostRecordedSteps; // + batch step * kStepBlockWords
-SIMECO_CONST kStepBlockWords = 128u;
+SIMECO_CONST kStepBlockWords = 136u;
 // A step's block: the workgroup counts (x, y, z) of its dispatches, and the elements its scan adds up.
 SIMECO_CONST kArgsHints = 0u;
 SIMECO_CONST kArgsMatch = 3u;
@@ -107,10 +118,43 @@ SIMECO_CONST kScanCountWord = 15u;
 SIMECO_CONST kArgsModules = 16u;
 SIMECO_CONST kArgsTreeScan = 19u;
 SIMECO_CONST kArgsTreeLevels = 22u;
+// ... and where the step rewrites by depths (decomposition, or the homomorphism, which a batch records as a step
+// of its own): the copy that starts the homomorphism, the result's copy into the step's output stream when the
+// last depth wrote the other one, the particle states' gather, the result's modules and the depth that wrote it,
+// whether the depths ended (no module left to rewrite), the modules the depths read and wrote in all, and the
+// modules the step's own write wrote.
+SIMECO_CONST kArgsCopy = 115u;
+SIMECO_CONST kArgsSettle = 118u;
+SIMECO_CONST kArgsGather = 121u;
+SIMECO_CONST kResultModules = 124u;
+SIMECO_CONST kResultDepth = 125u;
+SIMECO_CONST kDepthsEnded = 126u;
+SIMECO_CONST kDepthsRead = 127u;
+SIMECO_CONST kDepthsWritten = 128u;
+SIMECO_CONST kStepWritten = 129u;
 SIMECO_CONST kStepWords = kStepBlocks + kMostRecordedSteps * kStepBlockWords;
+// The blocks of a step's depths follow the steps' blocks: depth d of batch step s at kStepWords + (s * depths per
+// step + d) * kDepthBlockWords. Each holds the workgroups of the depth's plant hints, of its two scans (the live
+// modules, then the counts; both over its modules), match, write and plant starts, and its modules.
+SIMECO_CONST kDepthArgsHints = 0u;
+SIMECO_CONST kDepthArgsScan = 3u;
+SIMECO_CONST kDepthArgsMatch = 6u;
+SIMECO_CONST kDepthArgsWrite = 9u;
+SIMECO_CONST kDepthArgsPlantStarts = 12u;
+SIMECO_CONST kDepthModules = 15u;
+SIMECO_CONST kDepthBlockWords = 16u;
+
+// What a call of derive/step_sizes.comp sizes (StepSizesPush::mode).
+SIMECO_CONST kSizeStep = 0u;          // a step, before its match
+SIMECO_CONST kSizeStepWrite = 1u;     // ... after its scan: its total, its write
+SIMECO_CONST kSizeDepth = 2u;         // a depth, before the scan of its live modules
+SIMECO_CONST kSizeDepthMatch = 3u;    // ... after it: its match, or the end of the depths
+SIMECO_CONST kSizeDepthWrite = 4u;    // ... after the scan of its counts: its total, its write
+SIMECO_CONST kSizeDepthsEnd = 5u;     // after the depths: the result's copy and gather
+SIMECO_CONST kSizeCopy = 6u;          // the copy that starts the homomorphism
 
 struct StepSizesPush {
-    uint mode;         // 0: before the step's match (its sizes), 1: after its scan (the total, the write's sizes)
+    uint mode;         // kSizeStep ... kSizeCopy
     uint step;         // the step's place in the batch
     uint plants;
     uint tileSize;     // modules per element of the fused scan
@@ -120,14 +164,19 @@ struct StepSizesPush {
     uint maxGroupsX;   // the device's workgroups along x; more go over y
     uint brackets;     // 1: the step builds a bracket tree: also its levels and workgroups
     uint inputBound;   // modules the input holds at most: a count past it is not trusted
+    uint depthBlock;   // depths: the word where the depth's block starts
+    uint depth;        // depths: the depth
+    uint lastDepth;    // depths: 1 when the depths recorded end here short of the grammar's deepest (a probe)
 };
 
 #ifdef __cplusplus
 static_assert(sizeof(DerivePush) == 88);
-static_assert(sizeof(StepSizesPush) == 40);
-static_assert(kArgsTreeLevels + 3u * (kMaxDepthLevels - 1u) <= kStepBlockWords);
+static_assert(sizeof(StepSizesPush) == 52);
+static_assert(kArgsTreeLevels + 3u * (kMaxDepthLevels - 1u) <= kArgsCopy);
+static_assert(kStepWritten < kStepBlockWords);
 static_assert(kLoopProbeTrips < kLoopProbeCounts);
 static_assert(sizeof(DeriveHelperPush) == 16);
+static_assert(sizeof(StreamCopyPush) == 16);
 #endif
 SIMECO_SHARED_END
 

@@ -207,12 +207,16 @@ std::string stepPlantLookup(const codegen::PlantInputs& in, bool frozenCheck, bo
 
 
 // Every kernel's main() rewrites module i, then, if its loops may run long, asks whether the driver cut them
-// (derive_lib.glsl).
+// (derive_lib.glsl). A decomposition depth's modules are those of the stream it rewrites (X), whose table counts
+// them when only the device knows how many there are.
 std::string mainCalling(const std::vector<ir::Grammar>& species, const std::string& body, RuleKind kind,
                         bool writing) {
     const std::string moduleIndex =
         "(gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * gl_WorkGroupSize.x + gl_LocalInvocationID.x";
-    return "void main() {\n    uint i = " + moduleIndex + ";\n    moduleCount = streamCount();\n" + body +
+    const std::string count = kind == RuleKind::Decomposition
+                                  ? "pc.count != kCountOnDevice ? pc.count : plantStartXAt(pc.plants)"
+                                  : "streamCount()";
+    return "void main() {\n    uint i = " + moduleIndex + ";\n    moduleCount = " + count + ";\n" + body +
            (codegen::mayLoopLong(species, kind, writing) ? "    reportLoopsCut();\n" : "") + "}\n";
 }
 

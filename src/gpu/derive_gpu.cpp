@@ -201,6 +201,9 @@ stream::DeriveResult GpuDeriver::derive(const stream::DeriveOptions& asked, bool
     const uint64_t submissionsBefore = m.ctx.submissions();
     m.startDerivation(control, options);
     const bool recorded = m.recordsSteps();
+    if (options.homomorphism && m.homomorphismHostReason)
+        throw std::logic_error("the homomorphism cannot run on the device: " + *m.homomorphismHostReason);
+    const bool homomorphism = options.homomorphism && m.homomorphismMatch;
 
     std::optional<vk::Timestamps> timer;
     if (m.ctx.timestampValidBits() > 0) timer.emplace(m.ctx, 2);
@@ -210,7 +213,7 @@ stream::DeriveResult GpuDeriver::derive(const stream::DeriveOptions& asked, bool
     std::vector<uint8_t> growing(m.plants, 0);
     int cur = 0;
     if (recorded) {
-        cur = m.deriveRecorded(control, cur, seed, budget, stepTimer != nullptr, stats);
+        cur = m.deriveRecorded(control, cur, seed, budget, stepTimer != nullptr, homomorphism, stats);
     } else {
         for (int step = 1; step <= control.steps(); ++step) {
             if (!control.beginFieldStep(step, growing)) break;
@@ -225,17 +228,8 @@ stream::DeriveResult GpuDeriver::derive(const stream::DeriveOptions& asked, bool
             stats.peakModules = std::max<uint64_t>(stats.peakModules, m.streams[cur].count);
             control.endFieldStep(step, growing);
         }
-    }
-    for (uint32_t plant = 0; plant < m.plants; ++plant) control.finish(plant);
-
-    if (options.homomorphism && m.homomorphismMatch) {
-        // As the CPU reference: the homomorphism sees the globals as the Start block sets them, in every plant.
-        for (uint32_t plant = 0; plant < m.plants; ++plant) control.start(plant, nullptr);
-        std::fill(growing.begin(), growing.end(), uint8_t(1));
-        m.uploadPlantState(control, growing);
-        cur = m.applyHomomorphism(cur, seed, budget, stepTimer, stats);
-    } else if (options.homomorphism && m.homomorphismHostReason) {
-        throw std::logic_error("the homomorphism cannot run on the device: " + *m.homomorphismHostReason);
+        for (uint32_t plant = 0; plant < m.plants; ++plant) control.finish(plant);
+        if (homomorphism) cur = m.applyHomomorphism(control, cur, seed, budget, stepTimer != nullptr, stats);
     }
 
     if (!m.pendingCopies.empty()) { // no pass ran: the axioms still wait in their staging buffer

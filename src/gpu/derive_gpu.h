@@ -82,20 +82,23 @@ public:
     stream::DeviceModules lastString() const;
 
     // Records deriving options.plants plants into `cmd` for the caller to submit, with no wait: the axioms'
-    // copy and every step with its sizes on the device, into streams with room for `room` modules (the field's
-    // size, as the last derive() found it, say). Needs recordsSteps(), at most kMostRecordedSteps steps
-    // and no homomorphism. Returns the string the submission writes, counted only on the device (the turtle's
-    // record() reads it so). Throws std::logic_error for a derivation it cannot record; derive() and record()
-    // refuse while a recording is not yet read by recorded().
+    // copy, every step with its sizes on the device (decomposition included) and the homomorphism where asked,
+    // into streams with room for `room` modules (the field's size, as the last derive() found it, say). Needs
+    // recordsSteps() and at most kMostRecordedSteps steps (fewer where they rewrite by many depths). Returns the
+    // string the submission writes, counted only on the device (the turtle's record() reads it so). Throws
+    // std::logic_error for a derivation it cannot record; derive() and record() refuse while a recording is not
+    // yet read by recorded().
     stream::DeviceModules record(VkCommandBuffer cmd, const stream::DeriveOptions& options, uint64_t room);
     // Once record()'s submission has completed: its result (the plant table; the string stays on the device,
-    // lastString()), or nullopt when a step outgrew the room (derive() then). Throws as derive() does when a
-    // step passed the module budget.
+    // lastString()), or nullopt when a step outgrew the room, or its decomposition the depths recorded, which the
+    // next record() then has (derive() then, or record() again). Throws as derive() does when a step passed the
+    // module budget.
     std::optional<stream::DeriveResult> recorded(GpuDeriveStats* stats = nullptr);
 
     // Whether derive() records its steps one after the other with their sizes on the device, waiting once per batch
-    // of steps (the parallel strategy with a fused scan, for grammars without decomposition, cuts or predecessors
-    // of several modules; particle state is carried along), instead of twice per step.
+    // of steps (the parallel strategy with a fused scan, for grammars without cuts or predecessors of several
+    // modules; decomposition and particle state are carried along), instead of twice per step and depth. The
+    // homomorphism is recorded after any derivation.
     bool recordsSteps() const;
 
     // Parallel or Sequential: the strategy this deriver uses.

@@ -50,6 +50,16 @@ inline constexpr uint32_t kGreedyBlock = 256; // chunks per block of greedy_scan
 // The driver ended an invocation's loops early (kFlagLoopCut) where the work cannot be split any finer.
 ir::LimitError loopsCutError(const std::string& what);
 
+// Where batch slot `slot`'s word `which` of its block lies in the step words, in bytes.
+inline VkDeviceSize blockOffset(uint32_t slot, uint32_t which) {
+    return VkDeviceSize(shared::kStepBlocks + slot * shared::kStepBlockWords + which) * 4;
+}
+
+// Depths a recorded step rewrites by at first (GpuDeriver::Impl::decompositionDepths), and the most depth blocks
+// of one batch, which limit its steps where the steps rewrite by many depths.
+inline constexpr int kFirstRecordedDepths = 4;
+inline constexpr uint32_t kMostDepthBlocks = 512;
+
 // Bytes of one module's particle state.
 inline constexpr uint64_t kParticleBytes = 4ull * shared::kParticleStateFloats;
 
@@ -79,16 +89,19 @@ struct GpuDeriver::Impl {
     // classes of species), func() tables and error sites. The derivation's kernels and the homomorphism's lay
     // them out each for its own classes of species (codegen::classifySpecies). `active`: those of the kernels
     // being run (the homomorphism's while it runs).
+    // Each reports its errors in a region of `errors` of its own (at errorOffset), so that a submission that runs
+    // both tells whose sites they are.
     struct KernelTables {
         const std::vector<codegen::ErrorSite>* errors = nullptr;
         vk::Buffer speciesTable, funcTables;
+        VkDeviceSize errorOffset = 0;
     };
     KernelTables derivationTables, homomorphismTables;
     const KernelTables* active = &derivationTables;
     KernelTables tablesOf(const codegen::GeneratedKernels& k) const;
     vk::ComputePipeline plantStarts, plantHintsKernel, cutApply;
     std::optional<vk::ComputePipeline> plantStartsTiled; // with a fused scan, specialised for its match words
-    vk::ComputePipeline greedyReduce, greedyScan, greedyMark, homomorphismStart;
+    vk::ComputePipeline greedyReduce, greedyScan, greedyMark, streamCopy;
     // The particle state's moves, made the first time a derivation carries it: by the step's positions (with a
     // fused scan, specialised for its match words), or from each module's origin.
     std::optional<vk::ComputePipeline> particleScatter, particleGather;
@@ -211,8 +224,10 @@ struct GpuDeriver::Impl {
     // the located error a kernel reported, and kFlagLoopCut unless the caller retries (`retriesCutLoops`).
     uint32_t submit(const std::function<void(VkCommandBuffer)>& record, vk::Timestamps* timer, double& gpuMillis,
                     bool retriesCutLoops = false);
-    // Throws the located error the kernels reported in errors[0] (a site + 1) and errors[1] (flags).
-    void checkKernelErrors(uint32_t site, uint32_t flags, bool retriesCutLoops) const;
+    // Throws the located error kernels with the error `sites` reported in their errors[0] (a site + 1) and
+    // errors[1] (flags).
+    static void checkKernelErrors(const std::vector<codegen::ErrorSite>& sites, uint32_t site, uint32_t flags,
+                                  bool retriesCutLoops);
     static void checkBudget(uint64_t total, uint64_t budget, uint32_t stepIndex);
     void copyTotal(VkCommandBuffer cmd);
 
@@ -259,6 +274,10 @@ struct GpuDeriver::Impl {
     // What a step's match, scan and write read and write for `n` modules that derive `total` (a model, counted
     // by the host).
     uint64_t stepBytesMoved(uint64_t n, uint64_t total) const;
+    // ... and decomposition depths that read `n` modules and wrote `total` in all.
+    uint64_t depthBytesMoved(uint64_t n, uint64_t total) const {
+        return n * (2 * (4 + 4ull * uint64_t(stride)) + 40) + total * (12 + 4ull * uint64_t(stride));
+    }
 
     // One derivation step from streams[cur] into a new stream; returns its index.
     int step(int cur, uint32_t stepIndex, uint32_t seed, uint64_t budget, vk::Timestamps* timer, GpuDeriveStats& stats);
@@ -281,9 +300,10 @@ struct GpuDeriver::Impl {
     int decompose(int old, int x, uint32_t stepIndex, uint32_t seed, uint64_t budget, vk::Timestamps* timer,
                   double& millis, GpuDeriveStats& stats, const RecursivePasses& passes);
 
-    // The homomorphism of the derived string streams[cur], into another stream; returns its index. Every
-    // module is examined at depth 0 with its contexts around itself, and the passes draw from step 0's.
-    int applyHomomorphism(int cur, uint32_t seed, uint64_t budget, vk::Timestamps* timer, GpuDeriveStats& stats);
+    // The homomorphism of the derived string streams[cur], into the next stream, as a batch of its own (after
+    // steps that were not recorded); returns its index. `control`'s plants have finished.
+    int applyHomomorphism(stream::PlantControl& control, int cur, uint32_t seed, uint64_t budget, bool timed,
+                          GpuDeriveStats& stats);
 
     // The derivation's start, for derive() and record() alike: the plants and their axioms, staged for the first
     // submission to copy.
@@ -292,19 +312,22 @@ struct GpuDeriver::Impl {
     // ---- steps recorded one after the other (derive_gpu_recorded.cpp) ----
 
     // Whether the derivation's steps can run with their sizes on the device: the parallel strategy's steps with a
-    // fused scan and no decomposition, cuts or greedy walks.
+    // fused scan (no cuts or greedy walks).
     bool recordsSteps() const;
 
     // Every step from `step` on, a batch of up to kMostRecordedSteps steps per submission: the host's plant control
     // runs a batch ahead of the device (the parallel strategy's productions write no plant state), and the
     // device sizes each step's dispatches from the last. A step that outgrows its stream ends the submission
     // there; the streams grow and the rest of the batch runs again. Returns the stream of the last step.
+    // Every plant finishes (its End block) once the last step is planned, and with `homomorphism` the
+    // homomorphism follows the steps.
     int deriveRecorded(stream::PlantControl& control, int cur, uint32_t seed, uint64_t budget, bool timed,
-                       GpuDeriveStats& stats);
+                       bool homomorphism, GpuDeriveStats& stats);
 
     struct RecordedStep {
-        uint32_t index;  // the derivation step
+        uint32_t index;  // the derivation step (0: the homomorphism)
         bool anyFrozen;  // some plant is copied in it
+        bool homomorphism = false; // the homomorphism of the derived string, after the steps
     };
     // Records pendingCopies, ordered before what follows in the submission.
     void recordPendingCopies(VkCommandBuffer cmd) const;
@@ -320,10 +343,24 @@ struct GpuDeriver::Impl {
     };
     // The pipelines and buffers of recorded steps; no partners carried yet.
     void prepareRecorded(bool timed);
-    // The next batch of up to kMostRecordedSteps steps from `step` on, planned by the host's plant control with
+    // The next batch of up to batchSteps() steps from `step` on, planned by the host's plant control with
     // their plant state in the batch slots; `step` moves past them (past the last step when no plant grows).
+    // Once every step is planned, the plants finish (`finished` is set), and `homomorphism` asks for it to
+    // follow in the batch where there is a slot left (it is then cleared).
     void planBatch(stream::PlantControl& control, int& step, std::vector<RecordedStep>& batch,
-                   std::vector<uint8_t>& growing);
+                   std::vector<uint8_t>& growing, bool& finished, bool& homomorphism);
+    // The homomorphism as the batch's next step: the plants' globals as the Start block sets them, every plant
+    // rewritten (as the CPU reference applies it).
+    void planHomomorphism(stream::PlantControl& control, std::vector<RecordedStep>& batch);
+    // Steps a batch holds: as many as there are slots, fewer where the steps rewrite by many depths.
+    size_t batchSteps() const;
+    // Depth blocks a recorded step has in the step words: the decomposition's depths recorded, and one to probe
+    // for more. The homomorphism, a batch's last step, has as many as its own depths need.
+    uint32_t depthBlocksPerStep() const;
+    // The step words for `batch` with its depths.
+    void reserveStepWords(const std::vector<RecordedStep>& batch);
+    // Where batch slot `slot`'s depth `depth` has its block in the step words, as a word index.
+    uint32_t depthBlock(uint32_t slot, int depth) const;
     // Runs batch steps `first` on from streams[cur] in one submission; returns the steps done, `cur` their stream.
     size_t runBatch(const std::vector<RecordedStep>& batch, size_t first, int& cur, uint32_t seed, uint64_t budget,
                     bool timed, int stepsAfterBatch, GpuDeriveStats& stats);
@@ -346,6 +383,26 @@ struct GpuDeriver::Impl {
     std::optional<Recording> recording;
     void recordStep(VkCommandBuffer cmd, const RecordedStep& step, uint32_t slot, int in, uint32_t seed,
                     uint64_t budget);
+    // Depths recorded per step, for the decomposition and the homomorphism: a few at first, more each time a
+    // step needs more (kStopDepths), up to the grammar's deepest.
+    int decompositionDepths = 0, homomorphismDepths = 0;
+    // After a step that stopped for lack of depths: more of them for the next recording.
+    void deepen(const RecordedStep& step);
+    // A step's push constants for derive/step_sizes.comp, its mode and depth fields left at 0.
+    shared::StepSizesPush sizesPush(uint32_t slot, const Stream& input, const Stream& output, uint64_t budget,
+                                    bool buildsTree) const;
+    // The rewriting by depths of a step whose input is streams[old]: its first depth reads the next stream and
+    // the depths write the stream after it and the next in turn, `depths` of them and, short of the passes'
+    // deepest, one more that only looks for modules left to rewrite (kStopDepths). Then the result goes into the
+    // next stream, and each module takes its origin's particle state.
+    void recordDepths(VkCommandBuffer cmd, uint32_t slot, int old, const RecursivePasses& passes, int depths,
+                      uint32_t stepIndex, uint32_t seed, uint64_t budget);
+    // derive/stream_copy.comp in `mode` from `from` into `to`, with the workgroups at `argumentsOffset` of the
+    // step words.
+    void recordStreamCopy(VkCommandBuffer cmd, uint32_t mode, const Stream& from, Stream& to,
+                          VkDeviceSize argumentsOffset);
+    // The homomorphism of streams[in] as batch step `slot`.
+    void recordHomomorphism(VkCommandBuffer cmd, uint32_t slot, int in, uint32_t seed, uint64_t budget);
     // Room for `modules` in every stream (streams[cur] keeps its string) and in the scratch.
     void makeRoom(int cur, uint64_t modules);
     // Modules the output of a recorded step may hold: its stream's room, and the next step's scratch.

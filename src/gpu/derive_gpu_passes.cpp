@@ -1,5 +1,6 @@
-// The parallel strategy's passes: each step's match, scan and write over all plants, decomposition and the
-// homomorphism depth by depth, and the moves of the particle state.
+// The parallel strategy's passes, each waited for: each step's match, scan and write over all plants and its
+// decomposition depth by depth, where the steps are not recorded (derive_gpu_recorded.cpp), and the moves of the
+// particle state.
 #include "gpu/derive_gpu_impl.h"
 
 #include <cstring>
@@ -64,13 +65,13 @@ uint32_t GpuDeriver::Impl::submit(const std::function<void(VkCommandBuffer)>& re
     std::memcpy(words, readback.mapped(), sizeof words);
     lastFlags = words[2];
     lastUnfinished = words[3] != 0;
-    checkKernelErrors(words[1], words[2], retriesCutLoops);
+    checkKernelErrors(*active->errors, words[1], words[2], retriesCutLoops);
     return words[0];
 }
 
-void GpuDeriver::Impl::checkKernelErrors(uint32_t site, uint32_t flags, bool retriesCutLoops) const {
+void GpuDeriver::Impl::checkKernelErrors(const std::vector<codegen::ErrorSite>& sites, uint32_t site, uint32_t flags,
+                                         bool retriesCutLoops) {
     if (site != 0) {
-        const std::vector<codegen::ErrorSite>& sites = *active->errors;
         if (site - 1 < sites.size()) throw ir::InputError(sites[site - 1].loc, sites[site - 1].message);
         throw std::runtime_error("a derivation kernel reported an unknown error");
     }
@@ -114,7 +115,7 @@ std::vector<vk::BufferRange> GpuDeriver::Impl::deriveBindings(const Stream& stri
         strings.sym, strings.par, plantTable(strings), brackets.tree(), brackets.levelInfo(), brackets.partners(),
         slot ? vk::BufferRange(batchGlobals, at * globalsSlice, globalsSlice) : vk::BufferRange(globals),
         slot ? vk::BufferRange(batchArrays, at * arraysSlice, arraysSlice) : vk::BufferRange(arrays),
-        active->funcTables, active->speciesTable, errors,
+        active->funcTables, active->speciesTable, vk::BufferRange(errors, active->errorOffset, 16),
         slot ? vk::BufferRange(batchFrozen, at * frozenSlice, frozenSlice) : vk::BufferRange(plantFrozen)};
     buffers.insert(buffers.end(), rest.begin(), rest.end());
     buffers.push_back(plantHints);
@@ -154,7 +155,8 @@ void GpuDeriver::Impl::overwriting(int index) {
 void GpuDeriver::Impl::recordPlantStarts(VkCommandBuffer cmd, const Stream& from, const Stream& to, uint32_t n,
                                          uint32_t total) {
     DeriveHelperPush hp{n, 0, total, plants};
-    plantStarts.dispatch(cmd, {plantTable(from), offsets, plantTable(to)}, hp, plantStarts.groupsFor(plants + 1));
+    plantStarts.dispatch(cmd, {plantTable(from), offsets, plantTable(to), scan.totalBuffer()}, hp,
+                         plantStarts.groupsFor(plants + 1));
 }
 
 void GpuDeriver::Impl::scatterParticles(int from, int to, vk::Timestamps* timer, double& millis) {
@@ -190,7 +192,7 @@ void GpuDeriver::Impl::gatherParticles(int from, int to, vk::Timestamps* timer, 
     DeriveHelperPush hp{out.count, 0, 0, plants};
     submit(
         [&](VkCommandBuffer cmd) {
-            particleGather->dispatch(cmd, {out.origin, streams[from].particles, out.particles}, hp,
+            particleGather->dispatch(cmd, {out.origin, streams[from].particles, out.particles, plantTable(out)}, hp,
                                      particleGather->groupsFor(out.count));
         },
         timer, millis);
@@ -362,51 +364,10 @@ int GpuDeriver::Impl::decompose(int old, int x, uint32_t stepIndex, uint32_t see
             },
             timer, millis);
         Y.count = total;
-        stats.bytesMoved += uint64_t(n) * (2 * (4 + 4ull * uint64_t(stride)) + 40) + uint64_t(total) * (12 + 4ull * uint64_t(stride));
+        stats.bytesMoved += depthBytesMoved(n, total);
         std::swap(x, y);
     }
     return x;
-}
-
-int GpuDeriver::Impl::applyHomomorphism(int cur, uint32_t seed, uint64_t budget, vk::Timestamps* timer,
-                                        GpuDeriveStats& stats) {
-    Stream& derived = streams[cur];
-    uint32_t n = derived.count;
-    if (n == 0) return cur;
-    int x = (cur + 1) % 3;
-    Stream& X = streams[x];
-    overwriting(x);
-    ensureStream(X, n);
-    ensureScratch(n);
-    double millis = 0;
-    submit(
-        [&](VkCommandBuffer cmd) {
-            VkBufferCopy symbols{0, 0, bytes(n, 4)}, parameters{0, 0, bytes(n, 4ull * uint64_t(stride))},
-                table{0, 0, bytes(plants + 1, 4)};
-            vkCmdCopyBuffer(cmd, derived.sym.handle(), X.sym.handle(), 1, &symbols);
-            vkCmdCopyBuffer(cmd, derived.par.handle(), X.par.handle(), 1, &parameters);
-            vkCmdCopyBuffer(cmd, derived.plantStart.handle(), X.plantStart.handle(), 1, &table);
-            vk::cmdFill(cmd, errors, 0);
-            vk::memoryBarrier(cmd, Hazard::TransferToCompute);
-            DeriveHelperPush hp{n, 0, 0, plants};
-            homomorphismStart.dispatch(cmd, {X.live, X.origin}, hp, homomorphismStart.groupsFor(n));
-            if (homomorphismKernels.needsBrackets) recordBrackets(cmd, cur);
-            vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
-        },
-        timer, millis);
-    X.count = n;
-    active = &homomorphismTables;
-    RecursivePasses passes{&*homomorphismMatch, &*homomorphismWrite, homomorphismKernels.maxDecompositionDepth};
-    int result;
-    try {
-        result = decompose(cur, x, 0, seed, budget, timer, millis, stats, passes);
-    } catch (...) {
-        active = &derivationTables;
-        throw;
-    }
-    active = &derivationTables;
-    if (carriesParticles) gatherParticles(cur, result, timer, millis);
-    return result;
 }
 
 } // namespace simeco::gpu

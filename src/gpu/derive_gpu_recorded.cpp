@@ -2,7 +2,8 @@
 // sizes kernel (derive/step_sizes.comp) turns the modules of its input into the workgroup counts of its
 // dispatches, so the host waits once per batch of steps instead of twice per step. On a discrete GPU each wait
 // costs far more than a small step's kernels. GpuDeriver::record writes such a batch into the caller's command
-// buffer instead, for a tick that interprets and draws the string in the same submission.
+// buffer instead, for a tick that interprets and draws the string in the same submission. Steps that rewrite by
+// depths (decomposition, the homomorphism) are recorded in derive_gpu_depths.cpp.
 #include "gpu/derive_gpu_impl.h"
 
 #include <algorithm>
@@ -24,11 +25,6 @@ using vk::Hazard;
 
 namespace {
 
-// Where batch slot `slot`'s word `which` of its block lies in the step words, in bytes.
-VkDeviceSize blockOffset(uint32_t slot, uint32_t which) {
-    return VkDeviceSize(shared::kStepBlocks + slot * shared::kStepBlockWords + which) * 4;
-}
-
 // Steps ahead a stream that overflowed makes room for, at the rate the overflowing step grew, and the most it
 // grows by at once: a few steps keep the submissions few without holding far more memory than the string.
 constexpr int kStepsAhead = 4;
@@ -37,8 +33,8 @@ constexpr double kMostGrowth = 64.0;
 } // namespace
 
 bool GpuDeriver::Impl::recordsSteps() const {
-    return strategy == GpuStrategy::Parallel && kernels.fusedScan && !kernels.hasDecomposition &&
-           !kernels.mayCut && kernels.longestPredecessor <= 1 && plantStartsTiled.has_value();
+    return strategy == GpuStrategy::Parallel && kernels.fusedScan && !kernels.mayCut &&
+           kernels.longestPredecessor <= 1 && plantStartsTiled.has_value();
 }
 
 void GpuDeriver::Impl::reserveBatchState(uint32_t steps) {
@@ -91,7 +87,8 @@ void GpuDeriver::Impl::makeRoom(int cur, uint64_t modules) {
     // The scratch as large as the smallest stream (a step's output is the next step's input), as far as a buffer
     // holds it with its one word more.
     ensureScratch(std::min({streams[0].capacity, streams[1].capacity, streams[2].capacity, bufferLimit() / 4 - 1}));
-    if (kernels.needsBrackets) { // sized before recording: a recorded step must not replace a buffer
+    // Sized before recording: a recorded step must not replace a buffer.
+    if (kernels.needsBrackets || homomorphismKernels.needsBrackets) {
         uint32_t most = uint32_t(std::max({recordedCapacity(streams[0]), recordedCapacity(streams[1]),
                                           recordedCapacity(streams[2])}));
         vk::Buffer replaced = brackets.reserve(most);
@@ -106,11 +103,8 @@ void GpuDeriver::Impl::makeRoom(int cur, uint64_t modules) {
 
 void GpuDeriver::Impl::prepareRecorded(bool timed) {
     if (!stepSizes) stepSizes = vk::ComputePipeline::embedded(ctx, "derive/step_sizes");
-    if (!stepWords) {
-        stepWords = vk::Buffer(ctx, shared::kStepWords * 4, vk::MemoryUsage::DeviceLocal,
-                               VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT);
-        stepWordsReadback = vk::Buffer(ctx, (shared::kStepBlocks + 3) * 4, vk::MemoryUsage::Readback);
-    }
+    // The step words' blocks, and the derivation's and the homomorphism's error words.
+    reserve(stepWordsReadback, (shared::kStepWords + 6) * 4, vk::MemoryUsage::Readback);
     if (timed && !batchTimer) batchTimer.emplace(ctx, shared::kMostRecordedSteps + 1);
     reserve(tableReadback, bytes(plants + 1, 4), vk::MemoryUsage::Readback);
     reserveBatchState(shared::kMostRecordedSteps);
@@ -118,11 +112,12 @@ void GpuDeriver::Impl::prepareRecorded(bool timed) {
 }
 
 void GpuDeriver::Impl::planBatch(stream::PlantControl& control, int& step, std::vector<RecordedStep>& batch,
-                                 std::vector<uint8_t>& growing) {
+                                 std::vector<uint8_t>& growing, bool& finished, bool& homomorphism) {
     batch.clear();
-    for (; step <= control.steps() && batch.size() < shared::kMostRecordedSteps; ++step) {
+    const int steps = control.steps();
+    for (; step <= steps && batch.size() < batchSteps(); ++step) {
         if (!control.beginFieldStep(step, growing)) {
-            step = control.steps() + 1;
+            step = steps + 1;
             break;
         }
         VkDeviceSize slot = batch.size();
@@ -133,16 +128,25 @@ void GpuDeriver::Impl::planBatch(stream::PlantControl& control, int& step, std::
         batch.push_back({uint32_t(step), frozen});
         control.endFieldStep(step, growing);
     }
+    if (step > steps && !finished) { // every step is planned
+        for (uint32_t plant = 0; plant < plants; ++plant) control.finish(plant);
+        finished = true;
+    }
+    if (finished && homomorphism && batch.size() < batchSteps()) {
+        planHomomorphism(control, batch);
+        homomorphism = false;
+    }
 }
 
 int GpuDeriver::Impl::deriveRecorded(stream::PlantControl& control, int cur, uint32_t seed, uint64_t budget,
-                                     bool timed, GpuDeriveStats& stats) {
+                                     bool timed, bool homomorphism, GpuDeriveStats& stats) {
     prepareRecorded(timed);
     makeRoom(cur, streams[cur].count);
     std::vector<uint8_t> growing(plants, 0);
     std::vector<RecordedStep> batch;
-    for (int step = 1; step <= control.steps();) {
-        planBatch(control, step, batch, growing);
+    bool finished = false;
+    for (int step = 1; !finished || homomorphism;) {
+        planBatch(control, step, batch, growing, finished, homomorphism);
         int stepsAfterBatch = std::max(control.steps() - step + 1, 0);
         for (size_t done = 0; done < batch.size();)
             done = runBatch(batch, done, cur, seed, budget, timed, stepsAfterBatch, stats);
@@ -166,20 +170,25 @@ int GpuDeriver::Impl::recordBatch(VkCommandBuffer cmd, const std::vector<Recorde
         timer->cmdReset(cmd);
         timer->cmdWrite(cmd, uint32_t(first), VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT);
     }
+    reserveStepWords(batch);
     recordPendingCopies(cmd);
     vk::cmdFill(cmd, errors, 0);
     vk::cmdFill(cmd, stepWords, 0);
     vk::memoryBarrier(cmd, Hazard::TransferToCompute);
     for (size_t j = first; j < batch.size(); ++j) {
-        recordStep(cmd, batch[j], uint32_t(j), in, seed, budget);
+        if (batch[j].homomorphism) recordHomomorphism(cmd, uint32_t(j), in, seed, budget);
+        else recordStep(cmd, batch[j], uint32_t(j), in, seed, budget);
         in = (in + 1) % 3;
         if (timer) timer->cmdWrite(cmd, uint32_t(j + 1));
     }
     vk::memoryBarrier(cmd, Hazard::ComputeToTransfer);
-    VkBufferCopy words{0, 0, shared::kStepBlocks * 4}, errorWords{0, shared::kStepBlocks * 4, 12},
-        table{0, 0, bytes(plants + 1, 4)};
-    vkCmdCopyBuffer(cmd, stepWords.handle(), stepWordsReadback.handle(), 1, &words);
-    vkCmdCopyBuffer(cmd, errors.handle(), stepWordsReadback.handle(), 1, &errorWords);
+    const VkDeviceSize errorWords = shared::kStepWords * 4;
+    VkBufferCopy copies[] = {{0, 0, errorWords},
+                             {derivationTables.errorOffset, errorWords, 12},
+                             {homomorphismTables.errorOffset, errorWords + 12, 12}};
+    vkCmdCopyBuffer(cmd, stepWords.handle(), stepWordsReadback.handle(), 1, &copies[0]);
+    vkCmdCopyBuffer(cmd, errors.handle(), stepWordsReadback.handle(), 2, &copies[1]);
+    VkBufferCopy table{0, 0, bytes(plants + 1, 4)};
     // The last step's plant table, which the caller reads when no step stopped the batch.
     vkCmdCopyBuffer(cmd, streams[in].plantStart.handle(), tableReadback.handle(), 1, &table);
     vk::memoryBarrier(cmd, Hazard::TransferToHost);
@@ -189,20 +198,29 @@ int GpuDeriver::Impl::recordBatch(VkCommandBuffer cmd, const std::vector<Recorde
 size_t GpuDeriver::Impl::completeBatch(const std::vector<RecordedStep>& batch, size_t first, int& cur,
                                        uint64_t budget, vk::Timestamps* timer, GpuDeriveStats& stats) {
     const uint32_t* words = reinterpret_cast<const uint32_t*>(stepWordsReadback.mapped());
-    lastFlags = words[shared::kStepBlocks + 1];
-    checkKernelErrors(words[shared::kStepBlocks], lastFlags, false);
+    const uint32_t* errorWords = words + shared::kStepWords;
+    lastFlags = errorWords[1] | errorWords[4];
+    checkKernelErrors(*derivationTables.errors, errorWords[0], errorWords[1], false);
+    if (homomorphismTables.errors) checkKernelErrors(*homomorphismTables.errors, errorWords[3], errorWords[4], false);
     const uint32_t stopped = words[shared::kStepStopped];
     const size_t done = stopped != 0 ? (stopped >> 2) - 1 : batch.size();
     for (size_t j = first; j < done; ++j) bracketTrees += treeBuilt[j] ? 1u : 0u;
     // Partners were carried through every recorded step; the stream the rest goes on from has those of step `done`.
-    if (kernels.carriesPartners && axiomsBalanced && (batch.size() - done) % 2 == 1) brackets.carried();
+    const auto carried = std::count_if(batch.begin() + std::ptrdiff_t(done), batch.end(),
+                                       [](const RecordedStep& step) { return !step.homomorphism; });
+    if (kernels.carriesPartners && axiomsBalanced && carried % 2 == 1) brackets.carried();
     for (size_t j = first; j < done; ++j) {
         uint32_t n = streams[cur].count, total = words[shared::kStepTotals + j];
+        const uint32_t* block = words + shared::kStepBlocks + j * shared::kStepBlockWords;
         cur = (cur + 1) % 3;
         streams[cur].count = total;
-        stats.bytesMoved += stepBytesMoved(n, total);
+        // The homomorphism copies its input before its depths; a step matches it.
+        stats.bytesMoved += batch[j].homomorphism ? 2 * uint64_t(n) * (4 + 4ull * uint64_t(stride))
+                                                  : stepBytesMoved(n, block[shared::kStepWritten]);
+        stats.bytesMoved += depthBytesMoved(block[shared::kDepthsRead], block[shared::kDepthsWritten]);
         stats.peakModules = std::max<uint64_t>(stats.peakModules, total);
-        if (timer) stats.stepMillis.push_back(timer->elapsedNs(uint32_t(j), uint32_t(j + 1)) / 1e6);
+        if (timer && !batch[j].homomorphism)
+            stats.stepMillis.push_back(timer->elapsedNs(uint32_t(j), uint32_t(j + 1)) / 1e6);
     }
     if (stopped == 0) tableReadFrom = cur;
     else if ((stopped & 3u) == shared::kStopBudget)
@@ -218,10 +236,16 @@ size_t GpuDeriver::Impl::runBatch(const std::vector<RecordedStep>& batch, size_t
     submission.reset();
     const size_t done = completeBatch(batch, first, cur, budget, timer, stats);
     if (done == batch.size()) return done;
-    const uint64_t total = reinterpret_cast<const uint32_t*>(stepWordsReadback.mapped())[shared::kStepTotals + done];
+    const uint32_t* words = reinterpret_cast<const uint32_t*>(stepWordsReadback.mapped());
+    if ((words[shared::kStepStopped] & 3u) == shared::kStopDepths) {
+        deepen(batch[done]);
+        return done;
+    }
+    const uint64_t total = words[shared::kStepTotals + done];
     // The step outgrew its stream: room for it and a few steps more at its rate of growth, as far as the rest of
-    // the derivation goes.
+    // the derivation goes. A step that rewrites by depths may have stopped at any depth, short of its own total.
     int stepsAhead = std::min<int>(kStepsAhead, int(batch.size() - done - 1) + stepsAfterBatch);
+    if (batch[done].homomorphism || kernels.hasDecomposition) stepsAhead = std::max(stepsAhead, 1);
     double rate = double(total) / double(std::max<uint32_t>(streams[cur].count, 1));
     double growth = std::min(std::pow(std::max(rate, 1.0), stepsAhead), kMostGrowth);
     uint64_t room = std::max<uint64_t>(total, uint64_t(double(total) * growth));
@@ -229,6 +253,22 @@ size_t GpuDeriver::Impl::runBatch(const std::vector<RecordedStep>& batch, size_t
     room = std::min<uint64_t>(room, std::max<uint64_t>(total, bufferLimit() / (4ull * uint64_t(stride))));
     makeRoom(cur, room);
     return done;
+}
+
+StepSizesPush GpuDeriver::Impl::sizesPush(uint32_t slot, const Stream& input, const Stream& output, uint64_t budget,
+                                          bool buildsTree) const {
+    StepSizesPush sizes{};
+    sizes.mode = shared::kSizeStep;
+    sizes.step = slot;
+    sizes.plants = plants;
+    sizes.tileSize = tileSize;
+    sizes.chunkedMatch = kernels.chunkedMatch ? 1u : 0u;
+    sizes.capacity = uint32_t(recordedCapacity(output));
+    sizes.budget = uint32_t(std::min<uint64_t>(budget, std::numeric_limits<uint32_t>::max()));
+    sizes.maxGroupsX = ctx.limits().maxComputeWorkGroupCount[0];
+    sizes.brackets = buildsTree ? 1u : 0u;
+    sizes.inputBound = uint32_t(recordedCapacity(input));
+    return sizes;
 }
 
 void GpuDeriver::Impl::recordStep(VkCommandBuffer cmd, const RecordedStep& step, uint32_t slot, int in,
@@ -239,16 +279,7 @@ void GpuDeriver::Impl::recordStep(VkCommandBuffer cmd, const RecordedStep& step,
     // Where each step's write carries the partners of the brackets it writes, the first step builds a tree.
     const bool carries = kernels.carriesPartners && axiomsBalanced;
     treeBuilt[slot] = kernels.needsBrackets && !(carries && partnersLive);
-    StepSizesPush sizes{0,
-                        slot,
-                        plants,
-                        tileSize,
-                        kernels.chunkedMatch ? 1u : 0u,
-                        uint32_t(recordedCapacity(output)),
-                        uint32_t(std::min<uint64_t>(budget, std::numeric_limits<uint32_t>::max())),
-                        ctx.limits().maxComputeWorkGroupCount[0],
-                        treeBuilt[slot] ? 1u : 0u,
-                        uint32_t(recordedCapacity(input))};
+    StepSizesPush sizes = sizesPush(slot, input, output, budget, treeBuilt[slot]);
     stepSizes->dispatch(cmd, {plantTable(input), scan.totalBuffer(), stepWords, brackets.levelInfo()}, sizes, 1);
     vk::memoryBarrier(cmd, Hazard::ComputeToIndirect);
     if (treeBuilt[slot]) {
@@ -274,7 +305,7 @@ void GpuDeriver::Impl::recordStep(VkCommandBuffer cmd, const RecordedStep& step,
                                blockOffset(slot, shared::kArgsScan));
     vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
 
-    sizes.mode = 1;
+    sizes.mode = shared::kSizeStepWrite;
     stepSizes->dispatch(cmd, {plantTable(input), scan.totalBuffer(), stepWords, brackets.levelInfo()}, sizes, 1);
     vk::memoryBarrier(cmd, Hazard::ComputeToIndirect);
     if (kernels.carriesPartners)
@@ -290,13 +321,15 @@ void GpuDeriver::Impl::recordStep(VkCommandBuffer cmd, const RecordedStep& step,
         cmd, {plantTable(input), counts, tileOffsets, plantTable(output), scan.totalBuffer()},
         DeriveHelperPush{shared::kCountOnDevice, tileSize, shared::kCountOnDevice, plants}, stepWords,
         blockOffset(slot, shared::kArgsPlantStarts));
-    if (carriesParticles) // each module's state to its successor's modules, as the write places them
+    if (carriesParticles && !kernels.hasDecomposition) // each module's state to its successor's modules
         particleScatterKernel().dispatchIndirect(
             cmd,
             {counts, tileOffsets, input.particles, output.particles, plantTable(input), scan.totalBuffer()},
             DeriveHelperPush{shared::kCountOnDevice, tileSize, shared::kCountOnDevice, plants}, stepWords,
             blockOffset(slot, shared::kArgsWrite));
     vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+    if (kernels.hasDecomposition)
+        recordDepths(cmd, slot, in, decompositionPasses(), decompositionDepths, step.index, seed, budget);
     if (carries) { // the next step reads the partners this one wrote
         brackets.carried();
         partnersLive = true;
@@ -309,8 +342,9 @@ stream::DeviceModules GpuDeriver::record(VkCommandBuffer cmd, const stream::Deri
     if (options.maxModules == 0) options.maxModules = m.defaultModuleBudget(options.particles);
     if (!m.recordsSteps())
         throw std::logic_error("GpuDeriver::record: this grammar's steps need the host between them");
-    if (options.homomorphism && (m.homomorphismMatch || m.homomorphismHostReason))
-        throw std::logic_error("GpuDeriver::record: the homomorphism runs step by step");
+    if (options.homomorphism && m.homomorphismHostReason)
+        throw std::logic_error("the homomorphism cannot run on the device: " + *m.homomorphismHostReason);
+    const bool homomorphism = options.homomorphism && m.homomorphismMatch;
 
     Impl::Recording recording;
     recording.control = std::make_unique<stream::PlantControl>(m.species, options);
@@ -322,10 +356,11 @@ stream::DeviceModules GpuDeriver::record(VkCommandBuffer cmd, const stream::Deri
     m.makeRoom(0, std::max<uint64_t>(std::min(room, recording.budget), m.streams[0].count));
     std::vector<uint8_t> growing(m.plants, 0);
     int step = 1;
-    m.planBatch(control, step, recording.batch, growing);
-    if (step <= control.steps())
+    bool finished = false, homomorphismLeft = homomorphism;
+    m.planBatch(control, step, recording.batch, growing, finished, homomorphismLeft);
+    if (!finished || homomorphismLeft)
         throw std::logic_error(fmt::format("GpuDeriver::record: at most {} steps in one recording",
-                                           shared::kMostRecordedSteps));
+                                           m.batchSteps() - (homomorphism ? 1 : 0)));
     const int last = m.recordBatch(cmd, recording.batch, 0, 0, control.seed(), recording.budget, nullptr);
     m.recording = std::move(recording);
     m.lastStream = -1; // until recorded() knows the string is there
@@ -353,9 +388,12 @@ std::optional<stream::DeriveResult> GpuDeriver::recorded(GpuDeriveStats* statsOu
     m.partnersStream = -1;
     m.partnersLive = false;
     const size_t done = m.completeBatch(recording.batch, 0, cur, recording.budget, nullptr, stats);
-    if (done < recording.batch.size()) return std::nullopt; // a step outgrew the room it was recorded with
+    if (done < recording.batch.size()) { // a step outgrew the room or the depths it was recorded with
+        const uint32_t* words = reinterpret_cast<const uint32_t*>(m.stepWordsReadback.mapped());
+        if ((words[shared::kStepStopped] & 3u) == shared::kStopDepths) m.deepen(recording.batch[done]);
+        return std::nullopt;
+    }
     stream::PlantControl& control = *recording.control;
-    for (uint32_t plant = 0; plant < m.plants; ++plant) control.finish(plant);
     stream::DeriveResult result;
     result.steps = control.mostStepsDerived();
     result.string.stride = m.stride;

@@ -25,7 +25,7 @@ GpuDeriver::Impl::Impl(const vk::Context& c, std::vector<ir::Grammar> grammars, 
       greedyReduce(vk::ComputePipeline::embedded(c, "derive/greedy_reduce")),
       greedyScan(vk::ComputePipeline::embedded(c, "derive/greedy_scan")),
       greedyMark(vk::ComputePipeline::embedded(c, "derive/greedy_mark")),
-      homomorphismStart(vk::ComputePipeline::embedded(c, "derive/homomorphism_start")), scan(c), brackets(c, scan) {
+      streamCopy(vk::ComputePipeline::embedded(c, "derive/stream_copy")), scan(c), brackets(c, scan) {
     if (species.empty()) throw std::invalid_argument("GpuDeriver: no species");
     for (const ir::Grammar& g : species) {
         if (std::optional<std::string> reason = codegen::gpuUnsupportedReason(g))
@@ -75,7 +75,11 @@ GpuDeriver::Impl::Impl(const vk::Context& c, std::vector<ir::Grammar> grammars, 
     buildHomomorphism(build);
     compileSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-    errors = vk::Buffer(ctx, 16, vk::MemoryUsage::DeviceLocal);
+    decompositionDepths = std::min(kernels.maxDecompositionDepth, kFirstRecordedDepths);
+    homomorphismDepths = std::min(homomorphismKernels.maxDecompositionDepth, kFirstRecordedDepths);
+    // The homomorphism's error words after the derivation's, at a binding's offset.
+    homomorphismTables.errorOffset = vk::alignUp(16, ctx.limits().minStorageBufferOffsetAlignment);
+    errors = vk::Buffer(ctx, homomorphismTables.errorOffset + 16, vk::MemoryUsage::DeviceLocal);
     readback = vk::Buffer(ctx, 16, vk::MemoryUsage::Readback);
 }
 

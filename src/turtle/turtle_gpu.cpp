@@ -464,8 +464,15 @@ void GpuTurtle::Impl::recordSetup(VkCommandBuffer cmd, const Run& run) {
     vk::memoryBarrier(cmd, Hazard::TransferToCompute);
     if (run.countedOnDevice) {
         // The bracket tree's levels and workgroups as a recorded derivation step sizes its own tree.
-        const shared::StepSizesPush sizes{0, 0, run.plants, shared::kScanTileSize, 0, run.n, ~0u,
-                                          run.push.maxGroupsX, 1, run.n};
+        shared::StepSizesPush sizes{};
+        sizes.mode = shared::kSizeStep;
+        sizes.plants = run.plants;
+        sizes.tileSize = shared::kScanTileSize;
+        sizes.capacity = run.n;
+        sizes.budget = ~0u;
+        sizes.maxGroupsX = run.push.maxGroupsX;
+        sizes.brackets = 1;
+        sizes.inputBound = run.n;
         stepSizes->dispatch(cmd, {run.starts, scan.totalBuffer(), treeArguments, brackets.levelInfo()}, sizes, 1);
         vk::memoryBarrier(cmd, Hazard::ComputeToIndirect);
         brackets.recordCountedOnDevice(cmd, run.symbols, run.n, treeArguments, shared::kStepBlocks * 4);

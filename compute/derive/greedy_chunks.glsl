@@ -3,8 +3,10 @@
 // module with s modules still to skip, the state becomes s - 1, or, when s is 0 (the module starts a rewrite),
 // the length of the production chosen there minus 1; a plant's first module and a module dropped by a cut
 // reset it to 0. Chunks of kGreedyChunk modules compose their functions (packed 4 bits per entry state),
-// greedy_scan.comp composes the chunks in order, then each chunk marks its starts.
-const uint kGreedyChunk = 256u;
+// greedy_scan.comp composes the chunks in order, then each chunk marks its starts. A count only the device knows
+// (kCountOnDevice: a recorded step) is the plant table's last entry.
+
+uint greedyModules() { return pc.count != kCountOnDevice ? pc.count : plantStart[pc.plants]; }
 
 uint strictLength(uint choice) { return choice == kChoiceDropped ? 1u : (choice >> 24u) + 1u; }
 

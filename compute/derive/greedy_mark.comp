@@ -15,9 +15,9 @@ layout(push_constant) uniform Push { DeriveHelperPush pc; };
 
 void main() {
     uint chunk = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * gl_WorkGroupSize.x + gl_LocalInvocationID.x;
-    uint first = chunk * kGreedyChunk;
-    if (first >= pc.count) return;
-    uint last = min(first + kGreedyChunk, pc.count);
+    uint first = chunk * kGreedyChunk, count = greedyModules();
+    if (first >= count) return;
+    uint last = min(first + kGreedyChunk, count);
     uint state = entries[chunk];
     for (uint i = first; i < last; ++i) {
         bool starts;

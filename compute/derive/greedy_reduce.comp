@@ -13,9 +13,9 @@ layout(push_constant) uniform Push { DeriveHelperPush pc; };
 
 void main() {
     uint chunk = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * gl_WorkGroupSize.x + gl_LocalInvocationID.x;
-    uint first = chunk * kGreedyChunk;
-    if (first >= pc.count) return;
-    uint last = min(first + kGreedyChunk, pc.count);
+    uint first = chunk * kGreedyChunk, count = greedyModules();
+    if (first >= count) return;
+    uint last = min(first + kGreedyChunk, count);
     uint packed = 0u;
     for (uint entry = 0u; entry < pc.level; ++entry) { // pc.level: the number of states (longest predecessor)
         uint state = entry;

@@ -16,5 +16,7 @@ void main() {
     if (p > pc.plants) return;
     uint count = pc.count != kCountOnDevice ? pc.count : oldStarts[pc.plants];
     uint start = oldStarts[p];
-    newStarts[p] = start < count ? offsets[start] : pc.total != kCountOnDevice ? pc.total : scanTotal;
+    // An empty scan writes no total.
+    uint total = pc.total != kCountOnDevice ? pc.total : count == 0u ? 0u : scanTotal;
+    newStarts[p] = start < count ? offsets[start] : total;
 }

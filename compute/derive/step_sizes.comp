@@ -1,12 +1,12 @@
 // The sizes of a recorded step's dispatches, from counts only the device knows (GpuDeriver's recorded steps):
-// before the step's match (kSizeStep) the workgroups of its plant hints, match and scan from the modules of its
-// input; after its scan (kSizeStepWrite) the step's total, and the workgroups of its write and plant starts. A
-// step whose string outgrows the stream it is written to or the module budget stops the batch: its write and
-// every later dispatch get no workgroups, so the string it reads stays as it was for the host to continue from.
-// A step that rewrites by depths (decomposition, the homomorphism) sizes each depth the same way: its live
-// modules (kSizeDepth), its match (kSizeDepthMatch; none once no module is live, and every later depth gets no
-// workgroups), its write (kSizeDepthWrite); then the copy of the result into the step's output stream when the
-// last depth wrote the other one (kSizeDepthsEnd).
+// before the step's match (kSizeStep) the workgroups of its plant hints, match and scan (and of its cuts and
+// greedy walk) from the modules of its input; after its scan (kSizeStepWrite) the step's total, and the
+// workgroups of its write and plant starts. A step whose string outgrows the stream it is written to or the
+// module budget stops the batch: its write and every later dispatch get no workgroups, so the string it reads
+// stays as it was for the host to continue from. A step that rewrites by depths (decomposition, the
+// homomorphism) sizes each depth the same way: its live modules (kSizeDepth), its match (kSizeDepthMatch; none
+// once no module is live, and every later depth gets no workgroups), its write (kSizeDepthWrite); then the copy
+// of the result into the step's output stream when the last depth wrote the other one (kSizeDepthsEnd).
 #version 450
 #extension GL_GOOGLE_include_directive : require
 #include "compute/shared/config.h"
@@ -69,6 +69,12 @@ void sizeStep(uint block, bool stopped) {
                                                               kDeriveWorkgroupSize));
         setGroups(block + kArgsScan, groupsOf(scanned, kScanTileSize));
         if (pc.brackets != 0u) treeSizes(block, stopped ? 0u : modules, stopped);
+        // Cuts and the greedy walk, where the match does not scan its counts itself.
+        uint counted = stopped ? 0u : modules, chunks = groupsOf(counted, kGreedyChunk);
+        setGroups(block + kArgsCut, groupsOf(counted, kDeriveWorkgroupSize));
+        setGroups(block + kArgsChunks, groupsOf(chunks, kDeriveWorkgroupSize));
+        setGroups(block + kArgsBlocks, groupsOf(groupsOf(chunks, kGreedyBlock), kDeriveWorkgroupSize));
+        setGroups(block + kArgsOne, counted == 0u ? 0u : 1u);
         return;
     }
     bool writes = false;

@@ -68,6 +68,11 @@ SIMECO_CONST kFlagOverLimit = 2u;    // a plant counted more than moduleLimit mo
 // kernel is retried with smaller chunks, the parallel passes cannot be split and report it.
 SIMECO_CONST kFlagLoopCut = 4u;
 
+// The greedy walk over predecessors of several modules (derive/greedy_*.comp): modules a chunk walks, and
+// chunks per block of derive/greedy_scan.comp.
+SIMECO_CONST kGreedyChunk = 256u;
+SIMECO_CONST kGreedyBlock = 256u;
+
 // Modules per entry of the plant hints (derive/plant_hints.comp); a stream of n modules has
 // plantHintBlocks(n) + 1 hints.
 SIMECO_CONST kPlantHintBlock = 64u;
@@ -105,7 +110,7 @@ SIMECO_CONST kStopDepths = 3u;    // its decomposition goes deeper than the dept
 SIMECO_CONST kStepTotals = 4u;    // + batch step: the modules it derived
 SIMECO_CONST kMostRecordedSteps = 64u;
 SIMECO_CONST kStepBlocks = kStepTotals + kMostRecordedSteps; // + batch step * kStepBlockWords
-SIMECO_CONST kStepBlockWords = 136u;
+SIMECO_CONST kStepBlockWords = 144u;
 // A step's block: the workgroup counts (x, y, z) of its dispatches, and the elements its scan adds up.
 SIMECO_CONST kArgsHints = 0u;
 SIMECO_CONST kArgsMatch = 3u;
@@ -132,6 +137,13 @@ SIMECO_CONST kDepthsEnded = 126u;
 SIMECO_CONST kDepthsRead = 127u;
 SIMECO_CONST kDepthsWritten = 128u;
 SIMECO_CONST kStepWritten = 129u;
+// ... and where its match does not scan its counts itself (cuts, predecessors of several modules): the cut's
+// application over every module, the greedy walk's dispatches over its chunks, over their blocks, and its one
+// invocation that walks the blocks.
+SIMECO_CONST kArgsCut = 130u;
+SIMECO_CONST kArgsChunks = 133u;
+SIMECO_CONST kArgsBlocks = 136u;
+SIMECO_CONST kArgsOne = 139u;
 SIMECO_CONST kStepWords = kStepBlocks + kMostRecordedSteps * kStepBlockWords;
 // The blocks of a step's depths follow the steps' blocks: depth d of batch step s at kStepWords + (s * depths per
 // step + d) * kDepthBlockWords. Each holds the workgroups of the depth's plant hints, of its two scans (the live
@@ -173,7 +185,7 @@ struct StepSizesPush {
 static_assert(sizeof(DerivePush) == 88);
 static_assert(sizeof(StepSizesPush) == 52);
 static_assert(kArgsTreeLevels + 3u * (kMaxDepthLevels - 1u) <= kArgsCopy);
-static_assert(kStepWritten < kStepBlockWords);
+static_assert(kArgsOne + 3u <= kStepBlockWords);
 static_assert(kLoopProbeTrips < kLoopProbeCounts);
 static_assert(sizeof(DeriveHelperPush) == 16);
 static_assert(sizeof(StreamCopyPush) == 16);

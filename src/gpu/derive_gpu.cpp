@@ -57,6 +57,7 @@ void GpuDeriver::Impl::uploadAxioms(const stream::ModuleString& axioms, const st
     retiredBuffers.clear();
     for (Stream& s : streams) {
         // The plant tables are bound with the plant count's range, which may change between derivations.
+        if (!s.plantStart || s.plantStart.size() < bytes(plants + 1, 4)) mayReplace("plant tables");
         reserve(s.plantStart, bytes(plants + 1, 4), vk::MemoryUsage::DeviceLocal);
         s.count = 0;
     }
@@ -81,12 +82,12 @@ void GpuDeriver::Impl::uploadAxioms(const stream::ModuleString& axioms, const st
     // Through a staging buffer that the first submission copies from: no submission and wait of their own.
     VkDeviceSize staged = 0;
     for (const std::span<const std::byte>& part : parts) staged += part.size();
-    reserve(axiomStaging, bytes(staged, 1), vk::MemoryUsage::Upload);
+    reserve(host().axiomStaging, bytes(staged, 1), vk::MemoryUsage::Upload);
     VkDeviceSize at = 0;
     for (int k = 0; k < 4; ++k) {
         if (parts[k].empty()) continue;
-        std::copy(parts[k].begin(), parts[k].end(), axiomStaging.mapped() + at);
-        pendingCopies.push_back({axiomStaging.handle(), targets[k]->handle(), {at, 0, parts[k].size()}});
+        std::copy(parts[k].begin(), parts[k].end(), host().axiomStaging.mapped() + at);
+        pendingCopies.push_back({host().axiomStaging.handle(), targets[k]->handle(), {at, 0, parts[k].size()}});
         at += parts[k].size();
     }
     reserve(globals, bytes(uint64_t(plants) * std::max<uint32_t>(globalStride, 1), 8), vk::MemoryUsage::Upload);
@@ -139,8 +140,6 @@ void GpuDeriver::Impl::downloadPlantState(stream::PlantControl& control) const {
 }
 
 void GpuDeriver::Impl::startDerivation(stream::PlantControl& control, const stream::DeriveOptions& options) {
-    // A recorded derivation may still be running on the device with the buffers this one would write.
-    if (recording) throw std::logic_error("GpuDeriver: a recorded derivation is not read yet (recorded())");
     plants = control.plants();
     carriesParticles = options.particles;
     partnersStream = -1;
@@ -199,8 +198,10 @@ stream::DeriveResult GpuDeriver::derive(const stream::DeriveOptions& asked, bool
     const uint32_t seed = control.seed();
     const uint64_t budget = control.budget();
     const uint64_t submissionsBefore = m.ctx.submissions();
+    // A recorded derivation may still be running on the device with the buffers this one would write.
+    if (!m.recordings.empty())
+        throw std::logic_error("GpuDeriver: a recorded derivation is not read yet (recorded())");
     m.startDerivation(control, options);
-    const bool recorded = m.recordsSteps();
     if (options.homomorphism && m.homomorphismHostReason)
         throw std::logic_error("the homomorphism cannot run on the device: " + *m.homomorphismHostReason);
     const bool homomorphism = options.homomorphism && m.homomorphismMatch;
@@ -212,19 +213,15 @@ stream::DeriveResult GpuDeriver::derive(const stream::DeriveOptions& asked, bool
     // A plant freezes once it has derived its species' length, or after the step in which it called stop().
     std::vector<uint8_t> growing(m.plants, 0);
     int cur = 0;
-    if (recorded) {
+    if (m.recordsSteps()) {
         cur = m.deriveRecorded(control, cur, seed, budget, stepTimer != nullptr, homomorphism, stats);
     } else {
         for (int step = 1; step <= control.steps(); ++step) {
             if (!control.beginFieldStep(step, growing)) break;
             m.uploadPlantState(control, growing);
-            if (m.strategy == GpuStrategy::Sequential) {
-                cur = m.stepSequential(cur, uint32_t(step), seed, budget, stepTimer, stats);
-                // The sequential kernel's productions write the state; the host reads it back after each step.
-                m.downloadPlantState(control);
-            } else {
-                cur = m.step(cur, uint32_t(step), seed, budget, stepTimer, stats);
-            }
+            cur = m.stepSequential(cur, uint32_t(step), seed, budget, stepTimer, stats);
+            // The sequential kernel's productions write the state; the host reads it back after each step.
+            m.downloadPlantState(control);
             stats.peakModules = std::max<uint64_t>(stats.peakModules, m.streams[cur].count);
             control.endFieldStep(step, growing);
         }
@@ -248,7 +245,7 @@ stream::DeriveResult GpuDeriver::derive(const stream::DeriveOptions& asked, bool
     } else {
         result.string.stride = m.stride;
         if (m.tableReadFrom == cur) { // the last batch read it back
-            const uint32_t* table = reinterpret_cast<const uint32_t*>(m.tableReadback.mapped());
+            const uint32_t* table = reinterpret_cast<const uint32_t*>(m.host().tableReadback.mapped());
             result.string.plantStart.assign(table, table + m.plants + 1);
         } else {
             std::vector<uint32_t> table = vk::downloadVector<uint32_t>(m.ctx, final.plantStart, m.plants + 1);
@@ -259,6 +256,13 @@ stream::DeriveResult GpuDeriver::derive(const stream::DeriveOptions& asked, bool
     stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (statsOut) *statsOut = stats;
     return result;
+}
+
+void GpuDeriver::Impl::mayReplace(const char* what) const {
+    if (!recordings.empty())
+        throw std::logic_error(fmt::format("GpuDeriver::record: the {} would grow while a recorded derivation is in "
+                                           "flight; read it first (recorded()), or record within its room",
+                                           what));
 }
 
 bool GpuDeriver::appliesHomomorphism() const { return !impl_->homomorphismHostReason; }

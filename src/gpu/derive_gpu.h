@@ -77,28 +77,31 @@ public:
     stream::DeriveResult derive(const stream::DeriveOptions& options, bool readBack = true,
                                 GpuDeriveStats* stats = nullptr);
 
-    // The string the last derive() left on the device (read back or not), valid until the next derive() or the
-    // deriver's end: what the turtle kernels interpret without a round trip through the host.
+    // The string the last derive() left on the device (read back or not), or the derivation recorded() read last,
+    // valid until the next derive(), the submission of a recording still in flight, or the deriver's end: what the
+    // turtle kernels interpret without a round trip through the host.
     stream::DeviceModules lastString() const;
 
     // Records deriving options.plants plants into `cmd` for the caller to submit, with no wait: the axioms'
     // copy, every step with its sizes on the device (decomposition included) and the homomorphism where asked,
     // into streams with room for `room` modules (the field's size, as the last derive() found it, say). Needs
     // recordsSteps() and at most kMostRecordedSteps steps (fewer where they rewrite by many depths). Returns the
-    // string the submission writes, counted only on the device (the turtle's record() reads it so). Throws
-    // std::logic_error for a derivation it cannot record; derive() and record() refuse while a recording is not
-    // yet read by recorded().
+    // string the submission writes, counted only on the device (the turtle's record() reads it so), until the
+    // next recording's submission runs. Two recordings may be in flight: the second is recorded (and submitted)
+    // before the first is read, with its own host-side buffers, and must fit the device buffers the first one
+    // uses (its room no larger). Throws std::logic_error for a derivation it cannot record, a third in flight, or
+    // a second that would grow those buffers; derive() refuses while a recording is not yet read by recorded().
     stream::DeviceModules record(VkCommandBuffer cmd, const stream::DeriveOptions& options, uint64_t room);
-    // Once record()'s submission has completed: its result (the plant table; the string stays on the device,
-    // lastString()), or nullopt when a step outgrew the room, or its decomposition the depths recorded, which the
-    // next record() then has (derive() then, or record() again). Throws as derive() does when a step passed the
-    // module budget.
+    // Once the oldest recording's submission has completed: its result (the plant table; the string stays on the
+    // device, lastString()), or nullopt when a step outgrew the room, or its decomposition the depths recorded,
+    // which the next record() then has (read the other recording in flight, then derive() or record() again).
+    // Throws as derive() does when a step passed the module budget.
     std::optional<stream::DeriveResult> recorded(GpuDeriveStats* stats = nullptr);
 
     // Whether derive() records its steps one after the other with their sizes on the device, waiting once per batch
-    // of steps (the parallel strategy with a fused scan, for grammars without cuts or predecessors of several
-    // modules; decomposition and particle state are carried along), instead of twice per step and depth. The
-    // homomorphism is recorded after any derivation.
+    // of steps (the parallel strategy: cuts, predecessors of several modules, decomposition and particle state
+    // included), rather than stepping the sequential strategy's kernel from the host. The homomorphism is recorded
+    // after any derivation.
     bool recordsSteps() const;
 
     // Parallel or Sequential: the strategy this deriver uses.

@@ -38,8 +38,9 @@ void GpuDeriver::Impl::reserveStepWords(const std::vector<RecordedStep>& batch) 
     const uint64_t blocks = (batch.size() - (homomorphism ? 1 : 0)) * depthBlocksPerStep() +
                             (homomorphism ? uint64_t(homomorphismDepths) + 1 : 0);
     const VkDeviceSize size = (shared::kStepWords + blocks * shared::kDepthBlockWords) * 4;
-    if (!stepWords || stepWords.size() < size)
-        stepWords = vk::Buffer(ctx, size, vk::MemoryUsage::DeviceLocal, VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT);
+    if (stepWords && stepWords.size() >= size) return;
+    mayReplace("step words");
+    stepWords = vk::Buffer(ctx, size, vk::MemoryUsage::DeviceLocal, VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT);
 }
 
 void GpuDeriver::Impl::deepen(const RecordedStep& step) {
@@ -52,9 +53,9 @@ void GpuDeriver::Impl::planHomomorphism(stream::PlantControl& control, std::vect
     for (uint32_t plant = 0; plant < plants; ++plant) control.start(plant, nullptr);
     const std::vector<uint8_t> growing(plants, 1);
     const VkDeviceSize slot = batch.size();
-    writePlantState(control, growing, reinterpret_cast<double*>(batchGlobals.mapped() + slot * globalsSlice),
-                    reinterpret_cast<double*>(batchArrays.mapped() + slot * arraysSlice),
-                    reinterpret_cast<uint32_t*>(batchFrozen.mapped() + slot * frozenSlice));
+    writePlantState(control, growing, reinterpret_cast<double*>(host().batchGlobals.mapped() + slot * globalsSlice),
+                    reinterpret_cast<double*>(host().batchArrays.mapped() + slot * arraysSlice),
+                    reinterpret_cast<uint32_t*>(host().batchFrozen.mapped() + slot * frozenSlice));
     batch.push_back({0, false, true});
 }
 
@@ -84,8 +85,8 @@ void GpuDeriver::Impl::recordHomomorphism(VkCommandBuffer cmd, uint32_t slot, in
     const Stream& input = streams[in];
     Stream& output = streams[(in + 1) % 3];
     batchSlot = int(slot);
-    treeBuilt[slot] = homomorphismKernels.needsBrackets;
-    StepSizesPush sizes = sizesPush(slot, input, output, budget, treeBuilt[slot]);
+    host().treeBuilt[slot] = homomorphismKernels.needsBrackets;
+    StepSizesPush sizes = sizesPush(slot, input, output, budget, host().treeBuilt[slot]);
     const std::initializer_list<vk::BufferRange> sizeBindings{plantTable(input), scan.totalBuffer(), stepWords,
                                                               brackets.levelInfo()};
     stepSizes->dispatch(cmd, sizeBindings, sizes, 1);
@@ -93,7 +94,7 @@ void GpuDeriver::Impl::recordHomomorphism(VkCommandBuffer cmd, uint32_t slot, in
     sizes.mode = shared::kSizeCopy;
     stepSizes->dispatch(cmd, sizeBindings, sizes, 1);
     vk::memoryBarrier(cmd, Hazard::ComputeToIndirect);
-    if (treeBuilt[slot]) {
+    if (host().treeBuilt[slot]) {
         brackets.recordCountedOnDevice(cmd, input.sym, uint32_t(recordedCapacity(input)), stepWords,
                                        blockOffset(slot, 0));
         vk::memoryBarrier(cmd, Hazard::ComputeToCompute);

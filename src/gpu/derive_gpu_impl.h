@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <deque>
 #include <functional>
 #include <initializer_list>
 #include <map>
@@ -44,8 +45,8 @@ struct Stream {
 
 inline VkDeviceSize bytes(uint64_t count, uint64_t size) { return std::max<VkDeviceSize>(count * size, 4); }
 
-inline constexpr uint32_t kGreedyChunk = 256; // as greedy_chunks.glsl
-inline constexpr uint32_t kGreedyBlock = 256; // chunks per block of greedy_scan.comp
+using shared::kGreedyBlock;
+using shared::kGreedyChunk;
 
 // The driver ended an invocation's loops early (kFlagLoopCut) where the work cannot be split any finer.
 ir::LimitError loopsCutError(const std::string& what);
@@ -54,6 +55,9 @@ ir::LimitError loopsCutError(const std::string& what);
 inline VkDeviceSize blockOffset(uint32_t slot, uint32_t which) {
     return VkDeviceSize(shared::kStepBlocks + slot * shared::kStepBlockWords + which) * 4;
 }
+
+// Derivations recorded into callers' command buffers that may be in flight at once (GpuDeriver::record).
+inline constexpr int kDerivationsInFlight = 2;
 
 // Depths a recorded step rewrites by at first (GpuDeriver::Impl::decompositionDepths), and the most depth blocks
 // of one batch, which limit its steps where the steps rewrite by many depths.
@@ -136,11 +140,23 @@ struct GpuDeriver::Impl {
     Stream streams[3];
     uint32_t plants = 1;
     double compileSeconds = 0;
-    // Steps recorded one after the other (derive_gpu_recorded.cpp): the sizes kernel, its words, their read-back,
-    // each batch step's slice of the plant state, and the streams' buffers replaced while their string must stay.
+    // Steps recorded one after the other (derive_gpu_recorded.cpp): the sizes kernel and its words.
     std::optional<vk::ComputePipeline> stepSizes;
-    vk::Buffer stepWords, stepWordsReadback;
-    vk::Buffer batchGlobals, batchArrays, batchFrozen;
+    vk::Buffer stepWords;
+    // What the host writes for a batch and reads back from it: a set for each derivation in flight, so that a
+    // second recording writes and reads its own while the first one's submission runs. The axioms' staging
+    // buffer, each batch step's slice of the plant state, the step words and the last plant table read back, and
+    // whether each batch step builds a bracket tree.
+    struct HostSide {
+        vk::Buffer axiomStaging;
+        vk::Buffer batchGlobals, batchArrays, batchFrozen;
+        vk::Buffer stepWordsReadback, tableReadback;
+        bool treeBuilt[shared::kMostRecordedSteps] = {};
+    };
+    HostSide hostSides[kDerivationsInFlight];
+    int hostSide = 0; // the set of the derivation being recorded or read
+    HostSide& host() { return hostSides[hostSide]; }
+    const HostSide& host() const { return hostSides[hostSide]; }
     VkDeviceSize globalsSlice = 0, arraysSlice = 0, frozenSlice = 0;
     std::optional<vk::Timestamps> batchTimer;
     // Copies the next submission records first (the axioms from their staging buffer, a grown stream's string from
@@ -151,16 +167,15 @@ struct GpuDeriver::Impl {
     };
     std::vector<PendingCopy> pendingCopies;
     std::vector<vk::Buffer> retiredBuffers;
-    vk::Buffer axiomStaging;
-    // The plant table of streams[tableReadFrom], read back at the end of the last batch (-1: none).
-    vk::Buffer tableReadback;
+    // host().tableReadback holds the plant table of streams[tableReadFrom], read back at the end of the last batch
+    // (-1: none).
     int tableReadFrom = -1;
     // The plant state the derivation kernels bind: the host's buffers, or batch step `batchSlot`'s slices.
     int batchSlot = -1;
     // Recorded steps of grammars with contexts: brackets.partners() holds those of the next step's input, carried
-    // by the steps' writes; and whether each batch slot's step builds a bracket tree.
+    // by the steps' writes.
     bool partnersLive = false;
-    bool treeBuilt[shared::kMostRecordedSteps] = {};
+    uint32_t bracketRoom = 0; // modules the bracket tree was last reserved for by makeRoom
 
     // ---- kernels and buffers (derive_gpu_resources.cpp) ----
 
@@ -229,20 +244,13 @@ struct GpuDeriver::Impl {
     static void checkKernelErrors(const std::vector<codegen::ErrorSite>& sites, uint32_t site, uint32_t flags,
                                   bool retriesCutLoops);
     static void checkBudget(uint64_t total, uint64_t budget, uint32_t stepIndex);
-    void copyTotal(VkCommandBuffer cmd);
 
-    // Which modules start a rewrite when predecessors of several modules consume their neighbours.
-    void recordGreedyWalk(VkCommandBuffer cmd, const Stream& in);
-
-    // The bindings every generated derivation kernel starts with (see declarations() in derive_codegen.cpp):
-    // the string being rewritten, its brackets, the plants' globals and arrays, function tables, the context
-    // filter and the error word; `rest` follows them. `n`: the invocations (p.count modules, or its chunks).
+    // Dispatches a generated derivation kernel with the workgroup counts a recorded step's sizes kernel wrote at
+    // `argumentsOffset` of stepWords. Its bindings start as every generated derivation kernel's do
+    // (deriveBindings; see declarations() in derive_codegen.cpp): the string being rewritten, its brackets, the
+    // plants' globals and arrays, function tables, the context filter and the error word; `rest` follows them.
     // `parameterVectors`: the kernel reads each module's parameters as one vector too, the last binding
     // (GeneratedKernels::matchReadsParameterVectors, writeReadsParameterVectors).
-    void dispatchDerive(VkCommandBuffer cmd, const vk::ComputePipeline& kernel, const Stream& strings,
-                        std::initializer_list<vk::BufferRange> rest, const shared::DerivePush& p, uint32_t n,
-                        bool parameterVectors = false);
-    // The same with the workgroup counts a recorded step's sizes kernel wrote at `argumentsOffset` of stepWords.
     void dispatchDeriveIndirect(VkCommandBuffer cmd, const vk::ComputePipeline& kernel, const Stream& strings,
                                 std::initializer_list<vk::BufferRange> rest, const shared::DerivePush& p,
                                 VkDeviceSize argumentsOffset, bool parameterVectors);
@@ -255,20 +263,14 @@ struct GpuDeriver::Impl {
     // Called before a pass writes streams[index]: partners describing it no longer do.
     void overwriting(int index);
 
-    // Each plant's first module in the stream written with `offsets`.
-    void recordPlantStarts(VkCommandBuffer cmd, const Stream& from, const Stream& to, uint32_t n, uint32_t total);
-
-    // After a step without decomposition: each module of streams[from] passes its particle state to its successor
-    // in streams[to], at the positions this step's scan gave it.
-    void scatterParticles(int from, int to, vk::Timestamps* timer, double& millis);
+    // After a step without decomposition, each module passes its particle state to its successor's modules, at
+    // the positions the step's scan gave them.
     const vk::ComputePipeline& particleScatterKernel();
 
     // Each module of streams[to] takes the particle state of the module of streams[from] it descends from (its
     // origin): after decomposition, the homomorphism or a sequential step.
     void gatherParticles(int from, int to, vk::Timestamps* timer, double& millis);
 
-    // The hints the next derivation kernels find plants of `s` with; they stay valid until the next call.
-    void recordPlantHints(VkCommandBuffer cmd, const Stream& s);
     vk::BufferRange plantTable(const Stream& s) const { return vk::BufferRange(s.plantStart, 0, bytes(plants + 1, 4)); }
 
     // What a step's match, scan and write read and write for `n` modules that derive `total` (a model, counted
@@ -279,15 +281,6 @@ struct GpuDeriver::Impl {
         return n * (2 * (4 + 4ull * uint64_t(stride)) + 40) + total * (12 + 4ull * uint64_t(stride));
     }
 
-    // One derivation step from streams[cur] into a new stream; returns its index.
-    int step(int cur, uint32_t stepIndex, uint32_t seed, uint64_t budget, vk::Timestamps* timer, GpuDeriveStats& stats);
-
-    // One step's match, scan and write. With a fused scan (GeneratedKernels::fusedScan) match also sums each
-    // subgroup's counts and the host scans only those sums; otherwise the counts, which cuts and the greedy walk
-    // change after the match, get a scan of their own.
-    void matchScanWrite(int cur, int outIndex, uint32_t stepIndex, uint32_t seed, uint64_t budget,
-                        vk::Timestamps* timer, double& millis);
-
     // Recursive rewriting by depth: the decomposition's kernels, or the homomorphism's.
     struct RecursivePasses {
         const vk::ComputePipeline* match;
@@ -296,12 +289,8 @@ struct GpuDeriver::Impl {
     };
     RecursivePasses decompositionPasses() const;
 
-    // Decomposition depth by depth, from streams[x]; the string being rewritten (contexts) is streams[old].
-    int decompose(int old, int x, uint32_t stepIndex, uint32_t seed, uint64_t budget, vk::Timestamps* timer,
-                  double& millis, GpuDeriveStats& stats, const RecursivePasses& passes);
-
     // The homomorphism of the derived string streams[cur], into the next stream, as a batch of its own (after
-    // steps that were not recorded); returns its index. `control`'s plants have finished.
+    // the sequential strategy's steps); returns its index. `control`'s plants have finished.
     int applyHomomorphism(stream::PlantControl& control, int cur, uint32_t seed, uint64_t budget, bool timed,
                           GpuDeriveStats& stats);
 
@@ -311,8 +300,7 @@ struct GpuDeriver::Impl {
 
     // ---- steps recorded one after the other (derive_gpu_recorded.cpp) ----
 
-    // Whether the derivation's steps can run with their sizes on the device: the parallel strategy's steps with a
-    // fused scan (no cuts or greedy walks).
+    // Whether the derivation's steps run with their sizes on the device: the parallel strategy's.
     bool recordsSteps() const;
 
     // Every step from `step` on, a batch of up to kMostRecordedSteps steps per submission: the host's plant control
@@ -373,16 +361,27 @@ struct GpuDeriver::Impl {
     // module `budget`.
     size_t completeBatch(const std::vector<RecordedStep>& batch, size_t first, int& cur, uint64_t budget,
                          vk::Timestamps* timer, GpuDeriveStats& stats);
-    // A derivation record() wrote into a caller's command buffer, until recorded() reads what it left.
+    // A derivation record() wrote into a caller's command buffer, until recorded() reads what it left: its
+    // host side, and the buffers its recording replaced, kept until its submission has ended.
     struct Recording {
         std::unique_ptr<stream::PlantControl> control;
         std::vector<RecordedStep> batch;
         uint64_t budget = 0;
         uint64_t submissionsBefore = 0;
+        int hostSide = 0;
+        std::vector<vk::Buffer> retired;
     };
-    std::optional<Recording> recording;
+    std::deque<Recording> recordings; // oldest first, at most kDerivationsInFlight
+    // While a recording is in flight the buffers its submission uses stay as they are: a second recording that
+    // would grow one is refused (throws std::logic_error naming `what`).
+    void mayReplace(const char* what) const;
     void recordStep(VkCommandBuffer cmd, const RecordedStep& step, uint32_t slot, int in, uint32_t seed,
                     uint64_t budget);
+    // A step's match and scan where the match does not scan its counts itself (GeneratedKernels::fusedScan): its
+    // counts, which cuts and the greedy walk change after the match, get a scan of their own, into `offsets`.
+    void recordSeparateScan(VkCommandBuffer cmd, uint32_t slot, const Stream& input, const shared::DerivePush& p);
+    // Which modules start a rewrite when predecessors of several modules consume their neighbours.
+    void recordGreedyWalk(VkCommandBuffer cmd, uint32_t slot, const Stream& in);
     // Depths recorded per step, for the decomposition and the homomorphism: a few at first, more each time a
     // step needs more (kStopDepths), up to the grammar's deepest.
     int decompositionDepths = 0, homomorphismDepths = 0;

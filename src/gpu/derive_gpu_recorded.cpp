@@ -33,8 +33,7 @@ constexpr double kMostGrowth = 64.0;
 } // namespace
 
 bool GpuDeriver::Impl::recordsSteps() const {
-    return strategy == GpuStrategy::Parallel && kernels.fusedScan && !kernels.mayCut &&
-           kernels.longestPredecessor <= 1 && plantStartsTiled.has_value();
+    return strategy == GpuStrategy::Parallel;
 }
 
 void GpuDeriver::Impl::reserveBatchState(uint32_t steps) {
@@ -46,9 +45,9 @@ void GpuDeriver::Impl::reserveBatchState(uint32_t steps) {
         reserve(buffer, sliceBytes * steps, vk::MemoryUsage::Upload);
         slice = sliceBytes;
     };
-    slices(batchGlobals, globalsSlice, globalsBytes);
-    slices(batchArrays, arraysSlice, arraysBytes);
-    slices(batchFrozen, frozenSlice, frozenBytes);
+    slices(host().batchGlobals, globalsSlice, globalsBytes);
+    slices(host().batchArrays, arraysSlice, arraysBytes);
+    slices(host().batchFrozen, frozenSlice, frozenBytes);
 }
 
 uint64_t GpuDeriver::Impl::recordedCapacity(const Stream& out) const {
@@ -61,6 +60,7 @@ void GpuDeriver::Impl::makeRoom(int cur, uint64_t modules) {
     for (int k = 0; k < 3; ++k) {
         Stream& s = streams[k];
         if (s.capacity < modules || !s.sym) {
+            mayReplace("streams"); // before the old buffers are moved out
             vk::Buffer oldSymbols = std::move(s.sym), oldParameters = std::move(s.par);
             ensureStream(s, modules);
             if (k == cur && s.count > 0) {
@@ -75,6 +75,7 @@ void GpuDeriver::Impl::makeRoom(int cur, uint64_t modules) {
         // Particle state for as many modules as the stream holds (as far as a buffer binds it), the string's
         // moved along like its modules.
         if (carriesParticles && s.particles.size() < particleCapacity(s) * kParticleBytes) {
+            mayReplace("particle states");
             vk::Buffer oldParticles = std::move(s.particles);
             s.particles = vk::Buffer(ctx, particleCapacity(s) * kParticleBytes, vk::MemoryUsage::DeviceLocal);
             if (k == cur && s.count > 0 && oldParticles) {
@@ -91,6 +92,8 @@ void GpuDeriver::Impl::makeRoom(int cur, uint64_t modules) {
     if (kernels.needsBrackets || homomorphismKernels.needsBrackets) {
         uint32_t most = uint32_t(std::max({recordedCapacity(streams[0]), recordedCapacity(streams[1]),
                                           recordedCapacity(streams[2])}));
+        if (most > bracketRoom) mayReplace("bracket tree");
+        bracketRoom = std::max(bracketRoom, most);
         vk::Buffer replaced = brackets.reserve(most);
         if (replaced && partnersLive && streams[cur].count > 0) { // the next step reads these partners
             VkBufferCopy live{0, 0, bytes(streams[cur].count, 4)};
@@ -104,9 +107,9 @@ void GpuDeriver::Impl::makeRoom(int cur, uint64_t modules) {
 void GpuDeriver::Impl::prepareRecorded(bool timed) {
     if (!stepSizes) stepSizes = vk::ComputePipeline::embedded(ctx, "derive/step_sizes");
     // The step words' blocks, and the derivation's and the homomorphism's error words.
-    reserve(stepWordsReadback, (shared::kStepWords + 6) * 4, vk::MemoryUsage::Readback);
+    reserve(host().stepWordsReadback, (shared::kStepWords + 6) * 4, vk::MemoryUsage::Readback);
     if (timed && !batchTimer) batchTimer.emplace(ctx, shared::kMostRecordedSteps + 1);
-    reserve(tableReadback, bytes(plants + 1, 4), vk::MemoryUsage::Readback);
+    reserve(host().tableReadback, bytes(plants + 1, 4), vk::MemoryUsage::Readback);
     reserveBatchState(shared::kMostRecordedSteps);
     partnersLive = false;
 }
@@ -122,9 +125,9 @@ void GpuDeriver::Impl::planBatch(stream::PlantControl& control, int& step, std::
         }
         VkDeviceSize slot = batch.size();
         bool frozen = writePlantState(control, growing,
-                                      reinterpret_cast<double*>(batchGlobals.mapped() + slot * globalsSlice),
-                                      reinterpret_cast<double*>(batchArrays.mapped() + slot * arraysSlice),
-                                      reinterpret_cast<uint32_t*>(batchFrozen.mapped() + slot * frozenSlice));
+                                      reinterpret_cast<double*>(host().batchGlobals.mapped() + slot * globalsSlice),
+                                      reinterpret_cast<double*>(host().batchArrays.mapped() + slot * arraysSlice),
+                                      reinterpret_cast<uint32_t*>(host().batchFrozen.mapped() + slot * frozenSlice));
         batch.push_back({uint32_t(step), frozen});
         control.endFieldStep(step, growing);
     }
@@ -166,6 +169,8 @@ void GpuDeriver::Impl::recordPendingCopies(VkCommandBuffer cmd) const {
 
 int GpuDeriver::Impl::recordBatch(VkCommandBuffer cmd, const std::vector<RecordedStep>& batch, size_t first, int in,
                                   uint32_t seed, uint64_t budget, vk::Timestamps* timer) {
+    // After whatever the queue ran before (a derivation in flight and the passes that read its string).
+    vk::memoryBarrier(cmd, Hazard::AnyToTransfer);
     if (timer) {
         timer->cmdReset(cmd);
         timer->cmdWrite(cmd, uint32_t(first), VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT);
@@ -186,25 +191,25 @@ int GpuDeriver::Impl::recordBatch(VkCommandBuffer cmd, const std::vector<Recorde
     VkBufferCopy copies[] = {{0, 0, errorWords},
                              {derivationTables.errorOffset, errorWords, 12},
                              {homomorphismTables.errorOffset, errorWords + 12, 12}};
-    vkCmdCopyBuffer(cmd, stepWords.handle(), stepWordsReadback.handle(), 1, &copies[0]);
-    vkCmdCopyBuffer(cmd, errors.handle(), stepWordsReadback.handle(), 2, &copies[1]);
+    vkCmdCopyBuffer(cmd, stepWords.handle(), host().stepWordsReadback.handle(), 1, &copies[0]);
+    vkCmdCopyBuffer(cmd, errors.handle(), host().stepWordsReadback.handle(), 2, &copies[1]);
     VkBufferCopy table{0, 0, bytes(plants + 1, 4)};
     // The last step's plant table, which the caller reads when no step stopped the batch.
-    vkCmdCopyBuffer(cmd, streams[in].plantStart.handle(), tableReadback.handle(), 1, &table);
+    vkCmdCopyBuffer(cmd, streams[in].plantStart.handle(), host().tableReadback.handle(), 1, &table);
     vk::memoryBarrier(cmd, Hazard::TransferToHost);
     return in;
 }
 
 size_t GpuDeriver::Impl::completeBatch(const std::vector<RecordedStep>& batch, size_t first, int& cur,
                                        uint64_t budget, vk::Timestamps* timer, GpuDeriveStats& stats) {
-    const uint32_t* words = reinterpret_cast<const uint32_t*>(stepWordsReadback.mapped());
+    const uint32_t* words = reinterpret_cast<const uint32_t*>(host().stepWordsReadback.mapped());
     const uint32_t* errorWords = words + shared::kStepWords;
     lastFlags = errorWords[1] | errorWords[4];
     checkKernelErrors(*derivationTables.errors, errorWords[0], errorWords[1], false);
     if (homomorphismTables.errors) checkKernelErrors(*homomorphismTables.errors, errorWords[3], errorWords[4], false);
     const uint32_t stopped = words[shared::kStepStopped];
     const size_t done = stopped != 0 ? (stopped >> 2) - 1 : batch.size();
-    for (size_t j = first; j < done; ++j) bracketTrees += treeBuilt[j] ? 1u : 0u;
+    for (size_t j = first; j < done; ++j) bracketTrees += host().treeBuilt[j] ? 1u : 0u;
     // Partners were carried through every recorded step; the stream the rest goes on from has those of step `done`.
     const auto carried = std::count_if(batch.begin() + std::ptrdiff_t(done), batch.end(),
                                        [](const RecordedStep& step) { return !step.homomorphism; });
@@ -236,7 +241,7 @@ size_t GpuDeriver::Impl::runBatch(const std::vector<RecordedStep>& batch, size_t
     submission.reset();
     const size_t done = completeBatch(batch, first, cur, budget, timer, stats);
     if (done == batch.size()) return done;
-    const uint32_t* words = reinterpret_cast<const uint32_t*>(stepWordsReadback.mapped());
+    const uint32_t* words = reinterpret_cast<const uint32_t*>(host().stepWordsReadback.mapped());
     if ((words[shared::kStepStopped] & 3u) == shared::kStopDepths) {
         deepen(batch[done]);
         return done;
@@ -278,11 +283,11 @@ void GpuDeriver::Impl::recordStep(VkCommandBuffer cmd, const RecordedStep& step,
     batchSlot = int(slot);
     // Where each step's write carries the partners of the brackets it writes, the first step builds a tree.
     const bool carries = kernels.carriesPartners && axiomsBalanced;
-    treeBuilt[slot] = kernels.needsBrackets && !(carries && partnersLive);
-    StepSizesPush sizes = sizesPush(slot, input, output, budget, treeBuilt[slot]);
+    host().treeBuilt[slot] = kernels.needsBrackets && !(carries && partnersLive);
+    StepSizesPush sizes = sizesPush(slot, input, output, budget, host().treeBuilt[slot]);
     stepSizes->dispatch(cmd, {plantTable(input), scan.totalBuffer(), stepWords, brackets.levelInfo()}, sizes, 1);
     vk::memoryBarrier(cmd, Hazard::ComputeToIndirect);
-    if (treeBuilt[slot]) {
+    if (host().treeBuilt[slot]) {
         brackets.recordCountedOnDevice(cmd, input.sym, uint32_t(recordedCapacity(input)), stepWords,
                                        blockOffset(slot, 0));
         vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
@@ -297,36 +302,53 @@ void GpuDeriver::Impl::recordStep(VkCommandBuffer cmd, const RecordedStep& step,
                                           blockOffset(slot, shared::kArgsHints));
         vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
     }
-    dispatchDeriveIndirect(cmd, stepMatch(), input, {counts, drawStarts, cutDelta, tileSums}, p,
-                           blockOffset(slot, shared::kArgsMatch), kernels.matchReadsParameterVectors);
-    vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
-    scan.recordCountedOnDevice(cmd, tileSums, tileOffsets, stepWords,
-                               uint32_t(blockOffset(slot, shared::kScanCountWord) / 4), stepWords,
-                               blockOffset(slot, shared::kArgsScan));
+    const uint32_t countWord = uint32_t(blockOffset(slot, shared::kScanCountWord) / 4);
+    if (kernels.fusedScan) {
+        dispatchDeriveIndirect(cmd, stepMatch(), input, {counts, drawStarts, cutDelta, tileSums}, p,
+                               blockOffset(slot, shared::kArgsMatch), kernels.matchReadsParameterVectors);
+        vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+        scan.recordCountedOnDevice(cmd, tileSums, tileOffsets, stepWords, countWord, stepWords,
+                                   blockOffset(slot, shared::kArgsScan));
+    } else {
+        recordSeparateScan(cmd, slot, input, p);
+    }
     vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
 
     sizes.mode = shared::kSizeStepWrite;
     stepSizes->dispatch(cmd, {plantTable(input), scan.totalBuffer(), stepWords, brackets.levelInfo()}, sizes, 1);
     vk::memoryBarrier(cmd, Hazard::ComputeToIndirect);
-    if (kernels.carriesPartners)
+    // With a fused scan the write takes each module's count before it in its tile and the tiles' offsets, the
+    // plant starts and the particles' moves likewise; otherwise its offset and its choice.
+    const DeriveHelperPush counted{shared::kCountOnDevice, kernels.fusedScan ? tileSize : 0u, shared::kCountOnDevice,
+                                   plants};
+    const VkDeviceSize writeArguments = blockOffset(slot, shared::kArgsWrite);
+    if (!kernels.fusedScan) {
+        dispatchDeriveIndirect(cmd, stepWrite(), input,
+                               {offsets, choices, drawStarts, output.sym, output.par, output.origin, output.live}, p,
+                               writeArguments, kernels.writeReadsParameterVectors);
+        plantStarts.dispatchIndirect(cmd, {plantTable(input), offsets, plantTable(output), scan.totalBuffer()},
+                                     counted, stepWords, blockOffset(slot, shared::kArgsPlantStarts));
+    } else if (kernels.carriesPartners) {
         dispatchDeriveIndirect(cmd, stepWrite(), input,
                                {counts, tileOffsets, drawStarts, output.sym, output.par, output.origin, output.live,
                                 brackets.carriedPartners(uint32_t(recordedCapacity(output)))},
-                               p, blockOffset(slot, shared::kArgsWrite), kernels.writeReadsParameterVectors);
-    else
+                               p, writeArguments, kernels.writeReadsParameterVectors);
+    } else {
         dispatchDeriveIndirect(cmd, stepWrite(), input,
                                {counts, tileOffsets, drawStarts, output.sym, output.par, output.origin, output.live},
-                               p, blockOffset(slot, shared::kArgsWrite), kernels.writeReadsParameterVectors);
-    plantStartsTiled->dispatchIndirect(
-        cmd, {plantTable(input), counts, tileOffsets, plantTable(output), scan.totalBuffer()},
-        DeriveHelperPush{shared::kCountOnDevice, tileSize, shared::kCountOnDevice, plants}, stepWords,
-        blockOffset(slot, shared::kArgsPlantStarts));
-    if (carriesParticles && !kernels.hasDecomposition) // each module's state to its successor's modules
+                               p, writeArguments, kernels.writeReadsParameterVectors);
+    }
+    if (kernels.fusedScan)
+        plantStartsTiled->dispatchIndirect(
+            cmd, {plantTable(input), counts, tileOffsets, plantTable(output), scan.totalBuffer()}, counted,
+            stepWords, blockOffset(slot, shared::kArgsPlantStarts));
+    if (carriesParticles && !kernels.hasDecomposition) { // each module's state to its successor's modules
+        const vk::Buffer& before = kernels.fusedScan ? counts : offsets;
+        const vk::Buffer& offset = kernels.fusedScan ? tileOffsets : offsets;
         particleScatterKernel().dispatchIndirect(
-            cmd,
-            {counts, tileOffsets, input.particles, output.particles, plantTable(input), scan.totalBuffer()},
-            DeriveHelperPush{shared::kCountOnDevice, tileSize, shared::kCountOnDevice, plants}, stepWords,
-            blockOffset(slot, shared::kArgsWrite));
+            cmd, {before, offset, input.particles, output.particles, plantTable(input), scan.totalBuffer()}, counted,
+            stepWords, writeArguments);
+    }
     vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
     if (kernels.hasDecomposition)
         recordDepths(cmd, slot, in, decompositionPasses(), decompositionDepths, step.index, seed, budget);
@@ -336,17 +358,65 @@ void GpuDeriver::Impl::recordStep(VkCommandBuffer cmd, const RecordedStep& step,
     }
 }
 
+void GpuDeriver::Impl::recordSeparateScan(VkCommandBuffer cmd, uint32_t slot, const Stream& input,
+                                          const DerivePush& p) {
+    if (kernels.mayCut) { // the match adds up each cut's reach
+        vk::memoryBarrier(cmd, Hazard::ComputeToTransfer);
+        vk::cmdFill(cmd, cutDelta, 0);
+        vk::memoryBarrier(cmd, Hazard::TransferToCompute);
+    }
+    dispatchDeriveIndirect(cmd, stepMatch(), input, {counts, choices, drawStarts, cutDelta}, p,
+                           blockOffset(slot, shared::kArgsMatch), kernels.matchReadsParameterVectors);
+    vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+    const uint32_t countWord = uint32_t(blockOffset(slot, shared::kScanCountWord) / 4);
+    const DeriveHelperPush counted{shared::kCountOnDevice, 0, 0, plants};
+    if (kernels.mayCut) {
+        scan.recordCountedOnDevice(cmd, cutDelta, cutBefore, stepWords, countWord, stepWords,
+                                   blockOffset(slot, shared::kArgsScan));
+        vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+        cutApply.dispatchIndirect(cmd, {cutDelta, cutBefore, counts, choices, plantTable(input)}, counted, stepWords,
+                                  blockOffset(slot, shared::kArgsCut));
+        vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+    }
+    if (kernels.longestPredecessor > 1) recordGreedyWalk(cmd, slot, input);
+    scan.recordCountedOnDevice(cmd, counts, offsets, stepWords, countWord, stepWords,
+                               blockOffset(slot, shared::kArgsScan));
+}
+
+void GpuDeriver::Impl::recordGreedyWalk(VkCommandBuffer cmd, uint32_t slot, const Stream& in) {
+    const DeriveHelperPush chunked{shared::kCountOnDevice, kernels.longestPredecessor, 0, plants};
+    greedyReduce.dispatchIndirect(cmd, {choices, plantTable(in), chunkFunctions}, chunked, stepWords,
+                                  blockOffset(slot, shared::kArgsChunks));
+    vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+    for (uint32_t phase = 0; phase < 3; ++phase) {
+        greedyScan.dispatchIndirect(cmd, {chunkFunctions, chunkEntries, blockFunctions, blockEntries, plantTable(in)},
+                                    DeriveHelperPush{shared::kCountOnDevice, phase, 0, plants}, stepWords,
+                                    blockOffset(slot, phase == 1 ? shared::kArgsOne : shared::kArgsBlocks));
+        vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+    }
+    greedyMark.dispatchIndirect(cmd, {choices, plantTable(in), chunkEntries, counts}, chunked, stepWords,
+                                blockOffset(slot, shared::kArgsChunks));
+    vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+}
+
 stream::DeviceModules GpuDeriver::record(VkCommandBuffer cmd, const stream::DeriveOptions& asked, uint64_t room) {
     Impl& m = *impl_;
     stream::DeriveOptions options = asked;
     if (options.maxModules == 0) options.maxModules = m.defaultModuleBudget(options.particles);
     if (!m.recordsSteps())
-        throw std::logic_error("GpuDeriver::record: this grammar's steps need the host between them");
+        throw std::logic_error("GpuDeriver::record: the sequential strategy's steps need the host between them");
     if (options.homomorphism && m.homomorphismHostReason)
         throw std::logic_error("the homomorphism cannot run on the device: " + *m.homomorphismHostReason);
     const bool homomorphism = options.homomorphism && m.homomorphismMatch;
+    if (m.recordings.size() >= size_t(kDerivationsInFlight))
+        throw std::logic_error(fmt::format("GpuDeriver::record: {} recorded derivations are in flight; read the "
+                                           "oldest first (recorded())",
+                                           m.recordings.size()));
 
+    // A host side of its own, while the other recording in flight reads its results from the other.
+    m.hostSide = m.recordings.empty() ? 0 : (m.recordings.back().hostSide + 1) % kDerivationsInFlight;
     Impl::Recording recording;
+    recording.hostSide = m.hostSide;
     recording.control = std::make_unique<stream::PlantControl>(m.species, options);
     recording.submissionsBefore = m.ctx.submissions();
     stream::PlantControl& control = *recording.control;
@@ -362,7 +432,12 @@ stream::DeviceModules GpuDeriver::record(VkCommandBuffer cmd, const stream::Deri
         throw std::logic_error(fmt::format("GpuDeriver::record: at most {} steps in one recording",
                                            m.batchSteps() - (homomorphism ? 1 : 0)));
     const int last = m.recordBatch(cmd, recording.batch, 0, 0, control.seed(), recording.budget, nullptr);
-    m.recording = std::move(recording);
+    // The copies are in `cmd`; the buffers they read stay until its submission has ended.
+    recording.retired = std::move(m.retiredBuffers);
+    m.retiredBuffers.clear();
+    m.pendingCopies.clear();
+    m.batchSlot = -1;
+    m.recordings.push_back(std::move(recording));
     m.lastStream = -1; // until recorded() knows the string is there
     const Stream& s = m.streams[last];
     stream::DeviceModules modules{&s.sym,
@@ -378,10 +453,10 @@ stream::DeviceModules GpuDeriver::record(VkCommandBuffer cmd, const stream::Deri
 
 std::optional<stream::DeriveResult> GpuDeriver::recorded(GpuDeriveStats* statsOut) {
     Impl& m = *impl_;
-    if (!m.recording) throw std::logic_error("GpuDeriver::recorded() without record()");
-    Impl::Recording recording = std::move(*m.recording);
-    m.recording.reset();
-    Impl::SubmissionEnd submission{m};
+    if (m.recordings.empty()) throw std::logic_error("GpuDeriver::recorded() without record()");
+    Impl::Recording recording = std::move(m.recordings.front());
+    m.recordings.pop_front();
+    m.hostSide = recording.hostSide;
     GpuDeriveStats stats;
     stats.compileSeconds = m.compileSeconds;
     int cur = 0;
@@ -389,7 +464,7 @@ std::optional<stream::DeriveResult> GpuDeriver::recorded(GpuDeriveStats* statsOu
     m.partnersLive = false;
     const size_t done = m.completeBatch(recording.batch, 0, cur, recording.budget, nullptr, stats);
     if (done < recording.batch.size()) { // a step outgrew the room or the depths it was recorded with
-        const uint32_t* words = reinterpret_cast<const uint32_t*>(m.stepWordsReadback.mapped());
+        const uint32_t* words = reinterpret_cast<const uint32_t*>(m.host().stepWordsReadback.mapped());
         if ((words[shared::kStepStopped] & 3u) == shared::kStopDepths) m.deepen(recording.batch[done]);
         return std::nullopt;
     }
@@ -397,7 +472,7 @@ std::optional<stream::DeriveResult> GpuDeriver::recorded(GpuDeriveStats* statsOu
     stream::DeriveResult result;
     result.steps = control.mostStepsDerived();
     result.string.stride = m.stride;
-    const uint32_t* table = reinterpret_cast<const uint32_t*>(m.tableReadback.mapped());
+    const uint32_t* table = reinterpret_cast<const uint32_t*>(m.host().tableReadback.mapped());
     result.string.plantStart.assign(table, table + m.plants + 1);
     m.lastStream = cur;
     stats.modules = m.streams[cur].count;

@@ -132,6 +132,7 @@ void GpuDeriver::Impl::checkRange(uint64_t count, uint64_t size, const char* wha
 
 void GpuDeriver::Impl::ensureStream(Stream& s, uint64_t count) {
     if (s.capacity >= count && s.sym) return;
+    mayReplace("streams");
     uint64_t capacity = std::max<uint64_t>({count + count / 2, 1024, s.capacity});
     uint64_t limit = bufferLimit();
     capacity = std::min<uint64_t>(capacity, limit / (4ull * uint64_t(stride)));
@@ -146,8 +147,10 @@ void GpuDeriver::Impl::ensureStream(Stream& s, uint64_t count) {
 }
 
 void GpuDeriver::Impl::ensureScratch(uint64_t count) {
+    if (scan.capacity() < count + 1) mayReplace("scan");
     scan.reserve(static_cast<uint32_t>(count + 1));
     if (scratchCapacity >= count + 1 && counts) return;
+    mayReplace("scratch");
     uint64_t capacity = std::max<uint64_t>(count + count / 2 + 1, 1024);
     capacity = std::min<uint64_t>(capacity, bufferLimit() / 4);
     capacity = std::max<uint64_t>(capacity, count + 1);

@@ -82,6 +82,28 @@ TEST_F(RecordedStepsTest, LongDerivationsRunInBatches) {
     EXPECT_EQ(stats.stepMillis.size(), steps);
 }
 
+// Steps whose match does not scan its counts itself: a cut drops the rest of its branch, and predecessors of
+// several modules consume their neighbours in a greedy walk; both are sized on the device like any step, so the
+// strings match while the streams grow, and a derivation whose streams have room is one submission.
+TEST_F(RecordedStepsTest, CutsAndPredecessorsOfSeveralModulesRecord) {
+    ir::Grammar g = simeco::testing::grammarFromText(simeco::testing::lsystem(
+        "XA(0)A(1)[B(0)]A(2)",
+        "A(a)A(b) --> A(a+1)[B(a)]A(b)A(a+b)A(a)\nB(n) : n > 2 --> %\nB(n) --> A(n)A(n)B(n+1)\n", 9));
+    ASSERT_FALSE(codegen::generateDeriveKernels({g}).fusedScan);
+    stream::DeriveOptions options;
+    options.plants = 3;
+    stream::DeriveResult want = cpu::deriveCpu(g, options);
+    ASSERT_GT(want.string.size(), 4000u);
+    gpu::GpuDeriver deriver(context(), g);
+    ASSERT_TRUE(deriver.recordsSteps());
+    gpu::GpuDeriveStats grown, again;
+    EXPECT_EQ(firstDifference(want, deriver.derive(options, true, &grown), g.alphabet), "");
+    deriver.derive(options, false, &again);
+    EXPECT_GE(grown.waits, 3u) << "the string never outgrew the first room";
+    EXPECT_EQ(again.waits, 1u);
+    EXPECT_EQ(again.modules, want.string.size());
+}
+
 // The budget ends a recorded derivation with the CPU's message, naming the step; the deriver stays usable.
 TEST_F(RecordedStepsTest, TheModuleBudgetStopsTheStepThatPassesIt) {
     ir::Grammar g = simeco::testing::grammarFromText(simeco::testing::lsystem("F", "F --> FF\n", 40));

@@ -32,6 +32,14 @@ protected:
     static ir::Grammar ternaryTree() {
         return lang::loadGrammarFile(std::string(SIMECO_SOURCE_DIR) + "/grammars/abop/fig2.8-ternary.l");
     }
+    // Frames small enough for the tests, with shadow volumes.
+    static draw::RenderSettings smallFrame() {
+        draw::RenderSettings settings;
+        settings.width = 240;
+        settings.height = 180;
+        settings.shadows = draw::Shadows::Volume;
+        return settings;
+    }
     static stream::DeriveOptions field(uint32_t plants, int steps) {
         stream::DeriveOptions options;
         options.plants = plants;
@@ -67,10 +75,7 @@ TEST_F(FieldTick, ATickRecordedInOneSubmissionDrawsWhatTheBlockingCallsDraw) {
     const turtle::DeviceOrgans& organs = turtle.interpret(modules, {});
     shared::OrganTable table = vk::downloadVector<shared::OrganTable>(context(), organs.table, 1)[0];
     draw::Bounds bounds = draw::decodeBounds(table);
-    draw::RenderSettings settings;
-    settings.width = 240;
-    settings.height = 180;
-    settings.shadows = draw::Shadows::Volume;
+    const draw::RenderSettings settings = smallFrame();
     draw::Renderer renderer(context());
     draw::Frame blocking = renderer.render(organs.instances, organs.table, bounds, settings);
 
@@ -105,10 +110,7 @@ TEST_F(FieldTick, ADerivationStepInterpretedAndDrawnInOneSubmission) {
     turtle::TurtleCommands commands = turtle::turtleCommands(g.alphabet);
     turtle::GpuTurtle turtle(context(), commands, {turtle::turtleSettings(g, g.alphabet)});
     draw::Renderer renderer(context());
-    draw::RenderSettings settings;
-    settings.width = 240;
-    settings.height = 180;
-    settings.shadows = draw::Shadows::Volume;
+    const draw::RenderSettings settings = smallFrame();
 
     // The blocking calls at the step after: the expected frame, framed as the tick frames it.
     gpu::GpuDeriveStats stats;
@@ -212,12 +214,7 @@ TEST_F(FieldTick, TicksInFlightDrawTheirOwnFrames) {
     const turtle::DeviceOrgans& organs = turtle.interpret(modules, {});
     draw::Bounds bounds = draw::decodeBounds(vk::downloadVector<shared::OrganTable>(context(), organs.table, 1)[0]);
     draw::Renderer renderer(context());
-    draw::RenderSettings settings[2];
-    for (draw::RenderSettings& one : settings) {
-        one.width = 240;
-        one.height = 180;
-        one.shadows = draw::Shadows::Volume;
-    }
+    draw::RenderSettings settings[2] = {smallFrame(), smallFrame()};
     settings[1].camera = draw::Camera{};
     settings[1].camera->azimuthDegrees = 120.0f;
     settings[1].camera->elevationDegrees = 35.0f;
@@ -248,6 +245,76 @@ TEST_F(FieldTick, TicksInFlightDrawTheirOwnFrames) {
     }
     EXPECT_FALSE(frames[0].plant == frames[1].plant); // two cameras, two pictures
     EXPECT_THROW(turtle.recorded(), std::logic_error); // each recording is read once
+}
+
+
+// Two ticks that derive in flight: each derives a field of its own (the second a step further), interprets it and
+// draws it into its own target; the second is recorded and submitted before the first is read, a third
+// derivation is refused while both are in flight, and each frame equals the blocking calls' frame of its field.
+TEST_F(FieldTick, DerivingTicksInFlightDrawTheirOwnFields) {
+    ir::Grammar g = ternaryTree();
+    const stream::DeriveOptions options[2] = {field(100, 2), field(100, 3)};
+    gpu::GpuDeriver deriver(context(), g);
+    turtle::TurtleCommands commands = turtle::turtleCommands(g.alphabet);
+    turtle::GpuTurtle turtle(context(), commands, {turtle::turtleSettings(g, g.alphabet)});
+    draw::Renderer renderer(context());
+    const draw::RenderSettings settings = smallFrame();
+
+    // The blocking calls: each field's frame, framed as its tick frames it; the larger field last, so that the
+    // deriver's and the turtle's buffers hold what both ticks need.
+    draw::Frame blocking[2];
+    draw::Bounds bounds[2];
+    uint64_t modules[2];
+    uint32_t organs[2];
+    for (int k = 0; k < 2; ++k) {
+        gpu::GpuDeriveStats stats;
+        deriver.derive(options[k], false, &stats);
+        modules[k] = stats.modules;
+        const turtle::DeviceOrgans& interpreted = turtle.interpret(deriver.lastString(), {});
+        bounds[k] = draw::decodeBounds(vk::downloadVector<shared::OrganTable>(context(), interpreted.table, 1)[0]);
+        organs[k] = turtle.lastRoom().organs;
+        blocking[k] = renderer.render(interpreted.instances, interpreted.table, bounds[k], settings);
+    }
+    ASSERT_GT(modules[1], modules[0]);
+    const turtle::TurtleRoom room = turtle.lastRoom();
+    draw::FrameSetup setups[2];
+    for (int k = 0; k < 2; ++k) setups[k] = renderer.prepareWithin(room.organs, bounds[k], settings);
+    std::unique_ptr<draw::RenderTarget> second = renderer.makeTarget(240, 180);
+    const draw::RenderTarget* targets[2] = {&renderer.offscreenTarget(240, 180), second.get()};
+    auto tick = [&](int k) {
+        return context().submit([&, k](VkCommandBuffer cmd) {
+            stream::DeviceModules next = deriver.record(cmd, options[k], modules[1]);
+            const turtle::DeviceOrgans& ticked = turtle.record(cmd, next, {}, room);
+            renderer.record(cmd, *targets[k], ticked.instances, ticked.table, setups[k]);
+        });
+    };
+
+    vk::Submission first = tick(0);
+    // A second recording that would grow the streams the first one's submission uses is refused.
+    EXPECT_THROW(deriver.record(VK_NULL_HANDLE, options[1], modules[1] * 64), std::logic_error);
+    vk::Submission inFlight[2] = {std::move(first), tick(1)};
+    EXPECT_THROW(deriver.record(VK_NULL_HANDLE, options[0], modules[1]), std::logic_error); // two in flight
+    EXPECT_THROW(deriver.derive(options[0], false), std::logic_error);
+    // Both ended before either is read: each one's sizes are its own.
+    for (vk::Submission& submission : inFlight) submission.wait();
+    for (int k = 0; k < 2; ++k) {
+        gpu::GpuDeriveStats stats;
+        std::optional<stream::DeriveResult> derived = deriver.recorded(&stats);
+        ASSERT_TRUE(derived.has_value());
+        EXPECT_EQ(derived->steps, options[k].steps);
+        EXPECT_EQ(stats.modules, modules[k]);
+        EXPECT_EQ(derived->string.plantStart.back(), modules[k]); // its own plant table
+        turtle::RecordedInterpretation interpreted = turtle.recorded();
+        EXPECT_TRUE(interpreted.fit);
+        EXPECT_EQ(interpreted.modules, modules[k]);
+        EXPECT_EQ(interpreted.organs, organs[k]);
+        expectSameFrame(renderer.readBack(*targets[k], setups[k]), blocking[k]);
+    }
+    EXPECT_THROW(deriver.recorded(), std::logic_error); // each recording is read once
+    // Read, the deriver derives as before.
+    gpu::GpuDeriveStats stats;
+    deriver.derive(options[1], false, &stats);
+    EXPECT_EQ(stats.modules, modules[1]);
 }
 
 } // namespace

@@ -382,6 +382,11 @@ struct GpuDeriver::Impl {
     void recordSeparateScan(VkCommandBuffer cmd, uint32_t slot, const Stream& input, const shared::DerivePush& p);
     // Which modules start a rewrite when predecessors of several modules consume their neighbours.
     void recordGreedyWalk(VkCommandBuffer cmd, uint32_t slot, const Stream& in);
+    // A step's write, its plant starts and its particle states' moves. With a fused scan the write takes each
+    // module's counts before it in its tile and the tiles' offsets, the plant starts and the moves likewise;
+    // otherwise each module's offset and choice.
+    void recordStepWrite(VkCommandBuffer cmd, uint32_t slot, const Stream& input, Stream& output,
+                         const shared::DerivePush& p);
     // Depths recorded per step, for the decomposition and the homomorphism: a few at first, more each time a
     // step needs more (kStopDepths), up to the grammar's deepest.
     int decompositionDepths = 0, homomorphismDepths = 0;

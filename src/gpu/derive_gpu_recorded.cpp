@@ -317,8 +317,18 @@ void GpuDeriver::Impl::recordStep(VkCommandBuffer cmd, const RecordedStep& step,
     sizes.mode = shared::kSizeStepWrite;
     stepSizes->dispatch(cmd, {plantTable(input), scan.totalBuffer(), stepWords, brackets.levelInfo()}, sizes, 1);
     vk::memoryBarrier(cmd, Hazard::ComputeToIndirect);
-    // With a fused scan the write takes each module's count before it in its tile and the tiles' offsets, the
-    // plant starts and the particles' moves likewise; otherwise its offset and its choice.
+    recordStepWrite(cmd, slot, input, output, p);
+    vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+    if (kernels.hasDecomposition)
+        recordDepths(cmd, slot, in, decompositionPasses(), decompositionDepths, step.index, seed, budget);
+    if (carries) { // the next step reads the partners this one wrote
+        brackets.carried();
+        partnersLive = true;
+    }
+}
+
+void GpuDeriver::Impl::recordStepWrite(VkCommandBuffer cmd, uint32_t slot, const Stream& input, Stream& output,
+                                       const DerivePush& p) {
     const DeriveHelperPush counted{shared::kCountOnDevice, kernels.fusedScan ? tileSize : 0u, shared::kCountOnDevice,
                                    plants};
     const VkDeviceSize writeArguments = blockOffset(slot, shared::kArgsWrite);
@@ -348,13 +358,6 @@ void GpuDeriver::Impl::recordStep(VkCommandBuffer cmd, const RecordedStep& step,
         particleScatterKernel().dispatchIndirect(
             cmd, {before, offset, input.particles, output.particles, plantTable(input), scan.totalBuffer()}, counted,
             stepWords, writeArguments);
-    }
-    vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
-    if (kernels.hasDecomposition)
-        recordDepths(cmd, slot, in, decompositionPasses(), decompositionDepths, step.index, seed, budget);
-    if (carries) { // the next step reads the partners this one wrote
-        brackets.carried();
-        partnersLive = true;
     }
 }
 

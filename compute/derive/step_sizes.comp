@@ -6,7 +6,8 @@
 // stays as it was for the host to continue from. A step that rewrites by depths (decomposition, the
 // homomorphism) sizes each depth the same way: its live modules (kSizeDepth), its match (kSizeDepthMatch; none
 // once no module is live, and every later depth gets no workgroups), its write (kSizeDepthWrite); then the copy
-// of the result into the step's output stream when the last depth wrote the other one (kSizeDepthsEnd).
+// of the result into the step's output stream when the last depth wrote the other one (kSizeDepthsEnd). A step
+// whose depths an earlier batch stopped for want of depths goes on from the last depth written (kSizeResume).
 #version 450
 #extension GL_GOOGLE_include_directive : require
 #include "compute/shared/config.h"
@@ -31,13 +32,16 @@ void setGroups(uint at, uint groups) {
 }
 
 // As gpu::BracketTree::record lays out the levels of n modules' depth minima: level k holds ceil(n / 2^k), up to
-// the level of one.
+// the level of one. Once the batch has stopped, the levels stay those of the tree built last: a step stopped for
+// want of depths goes on reading it in the next batch.
 void treeSizes(uint block, uint n, bool stopped) {
     uint offset = 0u, size = max(n, 1u);
     bool used = true;
     for (uint level = 0u; level < kMaxDepthLevels; ++level) {
-        levelInfo[level] = used ? offset : 0u;
-        levelInfo[kMaxDepthLevels + level] = used ? size : 0u;
+        if (!stopped) {
+            levelInfo[level] = used ? offset : 0u;
+            levelInfo[kMaxDepthLevels + level] = used ? size : 0u;
+        }
         if (level > 0u) {
             uint groups = used && !stopped ? groupsOf(size, kDeriveWorkgroupSize) : 0u;
             setGroups(block + kArgsTreeLevels + 3u * (level - 1u), groups);
@@ -149,6 +153,13 @@ void main() {
         setGroups(block + kArgsSettle, groupsOf(copied, kDeriveWorkgroupSize));
         setGroups(block + kArgsGather, groupsOf(modules, kDeriveWorkgroupSize));
         if (!stopped) words[kStepTotals + pc.step] = modules;
+    } else if (pc.mode == kSizeResume) { // the depths go on from the string depth pc.depth wrote
+        if (!stopped) {
+            uint modules = min(inputStarts[pc.plants], pc.inputBound);
+            words[kStepTotals + pc.step] = modules;
+            words[block + kResultModules] = modules;
+            words[block + kResultDepth] = pc.depth;
+        }
     } else { // kSizeCopy
         uint modules = stopped ? 0u : min(inputStarts[pc.plants], pc.inputBound);
         if (!stopped) {

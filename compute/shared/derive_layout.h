@@ -164,6 +164,7 @@ SIMECO_CONST kSizeDepthMatch = 3u;    // ... after it: its match, or the end of 
 SIMECO_CONST kSizeDepthWrite = 4u;    // ... after the scan of its counts: its total, its write
 SIMECO_CONST kSizeDepthsEnd = 5u;     // after the depths: the result's copy and gather
 SIMECO_CONST kSizeCopy = 6u;          // the copy that starts the homomorphism
+SIMECO_CONST kSizeResume = 7u;        // a step's depths going on from pc.depth, where an earlier batch stopped
 
 struct StepSizesPush {
     uint mode;         // kSizeStep ... kSizeCopy

@@ -101,6 +101,11 @@ void GpuDeriver::Impl::recordHomomorphism(VkCommandBuffer cmd, uint32_t slot, in
     }
     recordStreamCopy(cmd, shared::kCopyHomomorphism, input, output, blockOffset(slot, shared::kArgsCopy));
     vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+    recordHomomorphismDepths(cmd, slot, in, 0, seed, budget);
+}
+
+void GpuDeriver::Impl::recordHomomorphismDepths(VkCommandBuffer cmd, uint32_t slot, int in, int firstDepth,
+                                                uint32_t seed, uint64_t budget) {
     // The homomorphism's kernels read their own tables and report their errors apart.
     active = &homomorphismTables;
     struct Restore {
@@ -108,30 +113,49 @@ void GpuDeriver::Impl::recordHomomorphism(VkCommandBuffer cmd, uint32_t slot, in
         ~Restore() { impl.active = &impl.derivationTables; }
     } restore{*this};
     const RecursivePasses passes{&*homomorphismMatch, &*homomorphismWrite, homomorphismKernels.maxDecompositionDepth};
-    recordDepths(cmd, slot, in, passes, homomorphismDepths, 0, seed, budget);
+    recordDepths(cmd, slot, in, passes, firstDepth, homomorphismDepths, 0, seed, budget);
+}
+
+void GpuDeriver::Impl::recordResumedDepths(VkCommandBuffer cmd, const RecordedStep& step, uint32_t slot, int in,
+                                           uint32_t seed, uint64_t budget) {
+    batchSlot = int(slot);
+    host().treeBuilt[slot] = false; // the bracket tree of its input is still the one its first submission built
+    // The string the last depth wrote: the next stream after an even depth, the one after it after an odd one.
+    const Stream& last = streams[(in + 1 + step.resumeDepth % 2) % 3];
+    StepSizesPush sizes = sizesPush(slot, last, last, budget, false);
+    sizes.mode = shared::kSizeResume;
+    sizes.depth = uint32_t(step.resumeDepth);
+    stepSizes->dispatch(cmd, {plantTable(last), scan.totalBuffer(), stepWords, brackets.levelInfo()}, sizes, 1);
+    vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+    if (step.homomorphism)
+        recordHomomorphismDepths(cmd, slot, in, step.resumeDepth, seed, budget);
+    else
+        recordDepths(cmd, slot, in, decompositionPasses(), step.resumeDepth, decompositionDepths, step.index, seed,
+                     budget);
 }
 
 void GpuDeriver::Impl::recordDepths(VkCommandBuffer cmd, uint32_t slot, int old, const RecursivePasses& passes,
-                                    int depths, uint32_t stepIndex, uint32_t seed, uint64_t budget) {
+                                    int firstDepth, int depths, uint32_t stepIndex, uint32_t seed, uint64_t budget) {
     const Stream& oldStream = streams[old];
     Stream& first = streams[(old + 1) % 3];
     Stream& second = streams[(old + 2) % 3];
-    const bool probes = depths < passes.maxDepth;
-    for (int depth = 0; depth < depths + (probes ? 1 : 0); ++depth) {
+    const int end = std::min(firstDepth + depths, passes.maxDepth);
+    const bool probes = end < passes.maxDepth;
+    for (int depth = firstDepth; depth < end + (probes ? 1 : 0); ++depth) {
         Stream& X = depth % 2 == 0 ? first : second;
         Stream& Y = depth % 2 == 0 ? second : first;
-        const uint32_t block = depthBlock(slot, depth);
+        const uint32_t block = depthBlock(slot, depth - firstDepth);
         StepSizesPush sizes = sizesPush(slot, X, Y, budget, false);
         sizes.depthBlock = block;
         sizes.depth = uint32_t(depth);
-        sizes.lastDepth = depth == depths ? 1u : 0u;
+        sizes.lastDepth = depth == end ? 1u : 0u;
         const std::initializer_list<vk::BufferRange> sizeBindings{plantTable(X), scan.totalBuffer(), stepWords,
                                                                   brackets.levelInfo()};
         sizes.mode = shared::kSizeDepth;
         stepSizes->dispatch(cmd, sizeBindings, sizes, 1);
         vk::memoryBarrier(cmd, Hazard::ComputeToIndirect);
         const DeriveHelperPush counted{shared::kCountOnDevice, 0, shared::kCountOnDevice, plants};
-        if (depth < depths)
+        if (depth < end)
             plantHintsKernel.dispatchIndirect(cmd, {plantTable(X), plantHints}, counted, stepWords,
                                               VkDeviceSize(block + shared::kDepthArgsHints) * 4);
         scan.recordCountedOnDevice(cmd, X.live, examined, stepWords, block + shared::kDepthModules, stepWords,
@@ -140,7 +164,7 @@ void GpuDeriver::Impl::recordDepths(VkCommandBuffer cmd, uint32_t slot, int old,
         sizes.mode = shared::kSizeDepthMatch;
         stepSizes->dispatch(cmd, sizeBindings, sizes, 1);
         vk::memoryBarrier(cmd, Hazard::ComputeToIndirect);
-        if (depth == depths) break; // the probe: whether modules are left past the depths recorded
+        if (depth == end) break; // the probe: whether modules are left past the depths recorded
 
         DerivePush p = push(shared::kCountOnDevice, stepIndex, seed, stream::decompositionPass(stepIndex, depth),
                             shared::kCountOnDevice, uint32_t(depth));

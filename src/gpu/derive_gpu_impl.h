@@ -316,6 +316,9 @@ struct GpuDeriver::Impl {
         uint32_t index;  // the derivation step (0: the homomorphism)
         bool anyFrozen;  // some plant is copied in it
         bool homomorphism = false; // the homomorphism of the derived string, after the steps
+        // > 0: the step's depths go on from this one, which an earlier submission wrote before it stopped for
+        // want of depths; its match and write, or the homomorphism's copy, are done.
+        int resumeDepth = 0;
     };
     // Records pendingCopies, ordered before what follows in the submission.
     void recordPendingCopies(VkCommandBuffer cmd) const;
@@ -350,7 +353,7 @@ struct GpuDeriver::Impl {
     // Where batch slot `slot`'s depth `depth` has its block in the step words, as a word index.
     uint32_t depthBlock(uint32_t slot, int depth) const;
     // Runs batch steps `first` on from streams[cur] in one submission; returns the steps done, `cur` their stream.
-    size_t runBatch(const std::vector<RecordedStep>& batch, size_t first, int& cur, uint32_t seed, uint64_t budget,
+    size_t runBatch(std::vector<RecordedStep>& batch, size_t first, int& cur, uint32_t seed, uint64_t budget,
                     bool timed, int stepsAfterBatch, GpuDeriveStats& stats);
     // Records batch steps `first` on from streams[in] into `cmd`, then copies of their sizes and the last plant
     // table for the host; returns the stream the last step writes.
@@ -392,15 +395,22 @@ struct GpuDeriver::Impl {
     int decompositionDepths = 0, homomorphismDepths = 0;
     // After a step that stopped for lack of depths: more of them for the next recording.
     void deepen(const RecordedStep& step);
+    // The step words' block of a step whose depths go on from resumeDepth (kSizeResume), and those depths.
+    void recordResumedDepths(VkCommandBuffer cmd, const RecordedStep& step, uint32_t slot, int in, uint32_t seed,
+                             uint64_t budget);
     // A step's push constants for derive/step_sizes.comp, its mode and depth fields left at 0.
     shared::StepSizesPush sizesPush(uint32_t slot, const Stream& input, const Stream& output, uint64_t budget,
                                     bool buildsTree) const;
     // The rewriting by depths of a step whose input is streams[old]: its first depth reads the next stream and
-    // the depths write the stream after it and the next in turn, `depths` of them and, short of the passes'
-    // deepest, one more that only looks for modules left to rewrite (kStopDepths). Then the result goes into the
-    // next stream, and each module takes its origin's particle state.
-    void recordDepths(VkCommandBuffer cmd, uint32_t slot, int old, const RecursivePasses& passes, int depths,
-                      uint32_t stepIndex, uint32_t seed, uint64_t budget);
+    // the depths write the stream after it and the next in turn (an even depth reads the next stream), `depths`
+    // of them from `firstDepth` on and, short of the passes' deepest, one more that only looks for modules left
+    // to rewrite (kStopDepths). Then the result goes into the next stream, and each module takes its origin's
+    // particle state.
+    void recordDepths(VkCommandBuffer cmd, uint32_t slot, int old, const RecursivePasses& passes, int firstDepth,
+                      int depths, uint32_t stepIndex, uint32_t seed, uint64_t budget);
+    // The homomorphism's depths from `firstDepth` on, with its kernels' tables.
+    void recordHomomorphismDepths(VkCommandBuffer cmd, uint32_t slot, int in, int firstDepth, uint32_t seed,
+                                  uint64_t budget);
     // derive/stream_copy.comp in `mode` from `from` into `to`, with the workgroups at `argumentsOffset` of the
     // step words.
     void recordStreamCopy(VkCommandBuffer cmd, uint32_t mode, const Stream& from, Stream& to,

@@ -181,7 +181,8 @@ int GpuDeriver::Impl::recordBatch(VkCommandBuffer cmd, const std::vector<Recorde
     vk::cmdFill(cmd, stepWords, 0);
     vk::memoryBarrier(cmd, Hazard::TransferToCompute);
     for (size_t j = first; j < batch.size(); ++j) {
-        if (batch[j].homomorphism) recordHomomorphism(cmd, uint32_t(j), in, seed, budget);
+        if (batch[j].resumeDepth > 0) recordResumedDepths(cmd, batch[j], uint32_t(j), in, seed, budget);
+        else if (batch[j].homomorphism) recordHomomorphism(cmd, uint32_t(j), in, seed, budget);
         else recordStep(cmd, batch[j], uint32_t(j), in, seed, budget);
         in = (in + 1) % 3;
         if (timer) timer->cmdWrite(cmd, uint32_t(j + 1));
@@ -219,9 +220,11 @@ size_t GpuDeriver::Impl::completeBatch(const std::vector<RecordedStep>& batch, s
         const uint32_t* block = words + shared::kStepBlocks + j * shared::kStepBlockWords;
         cur = (cur + 1) % 3;
         streams[cur].count = total;
-        // The homomorphism copies its input before its depths; a step matches it.
-        stats.bytesMoved += batch[j].homomorphism ? 2 * uint64_t(n) * (4 + 4ull * uint64_t(stride))
-                                                  : stepBytesMoved(n, block[shared::kStepWritten]);
+        // The homomorphism copies its input before its depths; a step matches it (unless an earlier submission
+        // did, and this one went on with its depths).
+        if (batch[j].resumeDepth == 0)
+            stats.bytesMoved += batch[j].homomorphism ? 2 * uint64_t(n) * (4 + 4ull * uint64_t(stride))
+                                                      : stepBytesMoved(n, block[shared::kStepWritten]);
         stats.bytesMoved += depthBytesMoved(block[shared::kDepthsRead], block[shared::kDepthsWritten]);
         stats.peakModules = std::max<uint64_t>(stats.peakModules, total);
         if (timer && !batch[j].homomorphism)
@@ -233,7 +236,7 @@ size_t GpuDeriver::Impl::completeBatch(const std::vector<RecordedStep>& batch, s
     return done;
 }
 
-size_t GpuDeriver::Impl::runBatch(const std::vector<RecordedStep>& batch, size_t first, int& cur, uint32_t seed,
+size_t GpuDeriver::Impl::runBatch(std::vector<RecordedStep>& batch, size_t first, int& cur, uint32_t seed,
                                   uint64_t budget, bool timed, int stepsAfterBatch, GpuDeriveStats& stats) {
     vk::Timestamps* timer = timed ? &*batchTimer : nullptr;
     std::optional<SubmissionEnd> submission{*this};
@@ -243,9 +246,14 @@ size_t GpuDeriver::Impl::runBatch(const std::vector<RecordedStep>& batch, size_t
     if (done == batch.size()) return done;
     const uint32_t* words = reinterpret_cast<const uint32_t*>(host().stepWordsReadback.mapped());
     if ((words[shared::kStepStopped] & 3u) == shared::kStopDepths) {
+        // The step goes on from the last depth it wrote, with more depths.
         deepen(batch[done]);
+        const uint32_t* block = words + shared::kStepBlocks + done * shared::kStepBlockWords;
+        batch[done].resumeDepth = int(block[shared::kResultDepth]);
         return done;
     }
+    // The streams grow, and only the step's input keeps its string: the step runs again from its start.
+    batch[done].resumeDepth = 0;
     const uint64_t total = words[shared::kStepTotals + done];
     // The step outgrew its stream: room for it and a few steps more at its rate of growth, as far as the rest of
     // the derivation goes. A step that rewrites by depths may have stopped at any depth, short of its own total.
@@ -320,7 +328,7 @@ void GpuDeriver::Impl::recordStep(VkCommandBuffer cmd, const RecordedStep& step,
     recordStepWrite(cmd, slot, input, output, p);
     vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
     if (kernels.hasDecomposition)
-        recordDepths(cmd, slot, in, decompositionPasses(), decompositionDepths, step.index, seed, budget);
+        recordDepths(cmd, slot, in, decompositionPasses(), 0, decompositionDepths, step.index, seed, budget);
     if (carries) { // the next step reads the partners this one wrote
         brackets.carried();
         partnersLive = true;

@@ -52,11 +52,30 @@ const std::string kDeepening = "S(x) --> S(x+1) D(x+1)\n"
                                "homomorphism\nmaximum depth: 2\n"
                                "F(x) > F(y) --> F(x+y) G\n"
                                "G --> H\n";
+// The same in branches, with a left context that reads the string being rewritten across a branch, draws that
+// depend on the depth, and a string that doubles at every depth: a step that goes on with more depths in a later
+// submission goes on from the depth it reached, with the bracket tree its first submission built, and runs again
+// from its start when it then outgrows its streams.
+const std::string kDeepeningInBranches = "S(x) --> S(x+1)[G][D(x+1)]E\n"
+                                         "decomposition\nmaximum depth: 9\n"
+                                         "D(x) : x > 0 --> B(x + ran(1)) D(x-1) D(x-1)\n"
+                                         "S(y) < B(x) --> F(x+y)\n"
+                                         "B(x) --> F(x)\n";
 
 TEST_F(RecordedDepthsTest, DecompositionDeeperThanRecordedRunsAgainWithMoreDepths) {
-    ir::Grammar g = simeco::testing::grammarFromText(simeco::testing::lsystem("S(0)", kDeepening, 12));
-    for (bool homomorphism : {false, true}) {
-        SCOPED_TRACE(homomorphism ? "with the homomorphism" : "without");
+    struct Case {
+        const char* axiom;
+        const std::string& productions;
+        bool homomorphism;
+        int steps;
+    };
+    // In branches the first step's decomposition stops in the middle of its rewriting, not at its last depth; from
+    // S(9) it also outgrows the streams' first room after that.
+    for (const Case& c : {Case{"S(0)", kDeepening, false, 12}, Case{"S(0)", kDeepening, true, 12},
+                          Case{"S(5)", kDeepeningInBranches, false, 3}, Case{"S(9)", kDeepeningInBranches, false, 3}}) {
+        SCOPED_TRACE(c.productions + (c.homomorphism ? "with the homomorphism" : ""));
+        ir::Grammar g = simeco::testing::grammarFromText(simeco::testing::lsystem(c.axiom, c.productions, c.steps));
+        const bool homomorphism = c.homomorphism;
         stream::DeriveOptions options;
         options.plants = 3;
         options.homomorphism = homomorphism;
@@ -67,7 +86,7 @@ TEST_F(RecordedDepthsTest, DecompositionDeeperThanRecordedRunsAgainWithMoreDepth
         gpu::GpuDeriver deriver(context(), g);
         gpu::GpuDeriveStats deepened, again;
         deriver.derive(options, false, &deepened);
-        EXPECT_EQ(deepened.stepMillis.size(), 12u) << "a step time for each step, none for the homomorphism";
+        EXPECT_EQ(deepened.stepMillis.size(), size_t(c.steps)) << "a step time for each step, none for the rest";
         EXPECT_GE(deepened.waits, 2u) << "the decomposition never went deeper than the depths recorded";
         // The next derivation records the depths and the room the first one found it needs: one submission.
         deriver.derive(options, false, &again);

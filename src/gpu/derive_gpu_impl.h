@@ -1,7 +1,7 @@
 // The GPU deriver's state, shared by the files that implement it: its kernels and buffers
-// (derive_gpu_resources.cpp), the parallel passes (derive_gpu_passes.cpp), steps recorded with their sizes on the
-// device (derive_gpu_recorded.cpp), the sequential strategy (derive_gpu_sequential.cpp) and the derivation itself
-// (derive_gpu.cpp). Private to src/gpu/.
+// (derive_gpu_resources.cpp), what the kernels share (derive_gpu_passes.cpp), steps recorded with their sizes on
+// the device (derive_gpu_recorded.cpp) and those that rewrite by depths (derive_gpu_depths.cpp), the sequential
+// strategy (derive_gpu_sequential.cpp) and the derivation itself (derive_gpu.cpp). Private to src/gpu/.
 #pragma once
 
 #include <algorithm>
@@ -229,7 +229,7 @@ struct GpuDeriver::Impl {
     // Stream `s` read back to the host, with its particle state when `particles`.
     stream::ModuleString readBack(const Stream& s, bool particles) const;
 
-    // ---- the parallel passes (derive_gpu_passes.cpp) ----
+    // ---- what the kernels share (derive_gpu_passes.cpp) ----
 
     shared::DerivePush push(uint32_t count, uint32_t step, uint32_t seed, uint32_t pass, uint32_t oldCount,
                             uint32_t depth) const;
@@ -289,11 +289,6 @@ struct GpuDeriver::Impl {
     };
     RecursivePasses decompositionPasses() const;
 
-    // The homomorphism of the derived string streams[cur], into the next stream, as a batch of its own (after
-    // the sequential strategy's steps); returns its index. `control`'s plants have finished.
-    int applyHomomorphism(stream::PlantControl& control, int cur, uint32_t seed, uint64_t budget, bool timed,
-                          GpuDeriveStats& stats);
-
     // The derivation's start, for derive() and record() alike: the plants and their axioms, staged for the first
     // submission to copy.
     void startDerivation(stream::PlantControl& control, const stream::DeriveOptions& options);
@@ -340,18 +335,6 @@ struct GpuDeriver::Impl {
     // follow in the batch where there is a slot left (it is then cleared).
     void planBatch(stream::PlantControl& control, int& step, std::vector<RecordedStep>& batch,
                    std::vector<uint8_t>& growing, bool& finished, bool& homomorphism);
-    // The homomorphism as the batch's next step: the plants' globals as the Start block sets them, every plant
-    // rewritten (as the CPU reference applies it).
-    void planHomomorphism(stream::PlantControl& control, std::vector<RecordedStep>& batch);
-    // Steps a batch holds: as many as there are slots, fewer where the steps rewrite by many depths.
-    size_t batchSteps() const;
-    // Depth blocks a recorded step has in the step words: the decomposition's depths recorded, and one to probe
-    // for more. The homomorphism, a batch's last step, has as many as its own depths need.
-    uint32_t depthBlocksPerStep() const;
-    // The step words for `batch` with its depths.
-    void reserveStepWords(const std::vector<RecordedStep>& batch);
-    // Where batch slot `slot`'s depth `depth` has its block in the step words, as a word index.
-    uint32_t depthBlock(uint32_t slot, int depth) const;
     // Runs batch steps `first` on from streams[cur] in one submission; returns the steps done, `cur` their stream.
     size_t runBatch(std::vector<RecordedStep>& batch, size_t first, int& cur, uint32_t seed, uint64_t budget,
                     bool timed, int stepsAfterBatch, GpuDeriveStats& stats);
@@ -390,17 +373,39 @@ struct GpuDeriver::Impl {
     // otherwise each module's offset and choice.
     void recordStepWrite(VkCommandBuffer cmd, uint32_t slot, const Stream& input, Stream& output,
                          const shared::DerivePush& p);
+    // A step's push constants for derive/step_sizes.comp, its mode and depth fields left at 0.
+    shared::StepSizesPush sizesPush(uint32_t slot, const Stream& input, const Stream& output, uint64_t budget,
+                                    bool buildsTree) const;
+    // Room for `modules` in every stream (streams[cur] keeps its string) and in the scratch.
+    void makeRoom(int cur, uint64_t modules);
+    // Modules the output of a recorded step may hold: its stream's room, and the next step's scratch.
+    uint64_t recordedCapacity(const Stream& out) const;
+    // Batch slots' plant state, for `steps` steps.
+    void reserveBatchState(uint32_t steps);
+
+    // ---- steps that rewrite by depths: decomposition and the homomorphism (derive_gpu_depths.cpp) ----
+
+    // The homomorphism as the batch's next step: the plants' globals as the Start block sets them, every plant
+    // rewritten (as the CPU reference applies it).
+    void planHomomorphism(stream::PlantControl& control, std::vector<RecordedStep>& batch);
+    // Steps a batch holds: as many as there are slots, fewer where the steps rewrite by many depths.
+    size_t batchSteps() const;
+    // Depth blocks a recorded step has in the step words: the decomposition's depths recorded, and one to probe
+    // for more. The homomorphism, a batch's last step, has as many as its own depths need.
+    uint32_t depthBlocksPerStep() const;
+    // The step words for `batch` with its depths.
+    void reserveStepWords(const std::vector<RecordedStep>& batch);
+    // Where batch slot `slot`'s depth `depth` has its block in the step words, as a word index.
+    uint32_t depthBlock(uint32_t slot, int depth) const;
     // Depths recorded per step, for the decomposition and the homomorphism: a few at first, more each time a
     // step needs more (kStopDepths), up to the grammar's deepest.
     int decompositionDepths = 0, homomorphismDepths = 0;
     // After a step that stopped for lack of depths: more of them for the next recording.
     void deepen(const RecordedStep& step);
-    // The step words' block of a step whose depths go on from resumeDepth (kSizeResume), and those depths.
+    // A step whose depths go on from its resumeDepth: its result so far into its block (kSizeResume), then its
+    // depths from there.
     void recordResumedDepths(VkCommandBuffer cmd, const RecordedStep& step, uint32_t slot, int in, uint32_t seed,
                              uint64_t budget);
-    // A step's push constants for derive/step_sizes.comp, its mode and depth fields left at 0.
-    shared::StepSizesPush sizesPush(uint32_t slot, const Stream& input, const Stream& output, uint64_t budget,
-                                    bool buildsTree) const;
     // The rewriting by depths of a step whose input is streams[old]: its first depth reads the next stream and
     // the depths write the stream after it and the next in turn (an even depth reads the next stream), `depths`
     // of them from `firstDepth` on and, short of the passes' deepest, one more that only looks for modules left
@@ -417,12 +422,10 @@ struct GpuDeriver::Impl {
                           VkDeviceSize argumentsOffset);
     // The homomorphism of streams[in] as batch step `slot`.
     void recordHomomorphism(VkCommandBuffer cmd, uint32_t slot, int in, uint32_t seed, uint64_t budget);
-    // Room for `modules` in every stream (streams[cur] keeps its string) and in the scratch.
-    void makeRoom(int cur, uint64_t modules);
-    // Modules the output of a recorded step may hold: its stream's room, and the next step's scratch.
-    uint64_t recordedCapacity(const Stream& out) const;
-    // Batch slots' plant state, for `steps` steps.
-    void reserveBatchState(uint32_t steps);
+    // The homomorphism of the derived string streams[cur], into the next stream, as a batch of its own (after
+    // the sequential strategy's steps); returns its index. `control`'s plants have finished.
+    int applyHomomorphism(stream::PlantControl& control, int cur, uint32_t seed, uint64_t budget, bool timed,
+                          GpuDeriveStats& stats);
 
     // ---- the sequential strategy (derive_gpu_sequential.cpp) ----
 

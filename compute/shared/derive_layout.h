@@ -85,8 +85,8 @@ uint plantHintBlocks(uint count) { return (count + kPlantHintBlock - 1u) / kPlan
 // Push constants of the fixed helper kernels.
 struct DeriveHelperPush {
     uint count;   // elements; or kCountOnDevice: the last entry of the plant table the kernel reads from
-    uint level;   // depth tree: the level being built; tiled plant starts: the tile size; stream copy: its mode
-    uint total;   // plant starts: modules of the new stream, or kCountOnDevice: the scan's total; stream copy: a bound
+    uint level;   // depth tree: the level being built; tiled plant starts: the tile size
+    uint total;   // plant starts: modules of the new stream, or kCountOnDevice: the scan's total
     uint plants;  // plant starts and hints: plants
 };
 
@@ -167,7 +167,7 @@ SIMECO_CONST kSizeCopy = 6u;          // the copy that starts the homomorphism
 SIMECO_CONST kSizeResume = 7u;        // a step's depths going on from pc.depth, where an earlier batch stopped
 
 struct StepSizesPush {
-    uint mode;         // kSizeStep ... kSizeCopy
+    uint mode;         // kSizeStep ... kSizeResume
     uint step;         // the step's place in the batch
     uint plants;
     uint tileSize;     // modules per element of the fused scan

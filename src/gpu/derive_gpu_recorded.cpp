@@ -188,8 +188,10 @@ int GpuDeriver::Impl::recordBatch(VkCommandBuffer cmd, const std::vector<Recorde
         if (timer) timer->cmdWrite(cmd, uint32_t(j + 1));
     }
     vk::memoryBarrier(cmd, Hazard::ComputeToTransfer);
+    // The words the host reads: the stop, the totals and the blocks of the batch's steps.
+    const VkDeviceSize read = (shared::kStepBlocks + batch.size() * shared::kStepBlockWords) * 4;
     const VkDeviceSize errorWords = shared::kStepWords * 4;
-    VkBufferCopy copies[] = {{0, 0, errorWords},
+    VkBufferCopy copies[] = {{0, 0, read},
                              {derivationTables.errorOffset, errorWords, 12},
                              {homomorphismTables.errorOffset, errorWords + 12, 12}};
     vkCmdCopyBuffer(cmd, stepWords.handle(), host().stepWordsReadback.handle(), 1, &copies[0]);

@@ -69,9 +69,10 @@ public:
         control_.finish(plant_);
     }
 
-    // Takes modules [begin, end) of `s` as the derived string, with the globals as the Start block leaves them.
-    void adopt(const ModuleString& s, size_t begin, size_t end) {
-        control_.start(plant_, nullptr);
+    // Takes modules [begin, end) of `s` as the derived string, with the globals as the Start block leaves them,
+    // or as they are when `restart` is false (a derivation that goes on).
+    void adopt(const ModuleString& s, size_t begin, size_t end, bool restart = true) {
+        if (restart) control_.start(plant_, nullptr);
         cur_.clear();
         cur_.reserve(end - begin);
         for (size_t i = begin; i < end; ++i) cur_.push(s.sym[i], s.paramsOf(i), s.paramCount[i]);
@@ -95,6 +96,12 @@ public:
             checkBudget(next_.size());
         }
         std::swap(cur_, next_);
+    }
+
+    // One step more, its random draws keyed by `step`.
+    void derive(uint32_t step) {
+        step_ = step;
+        rewrite();
     }
 
     ModuleString& result() { return cur_; }
@@ -514,5 +521,54 @@ ModuleString applyHomomorphismCpu(const std::vector<ir::Grammar>& species, const
     }
     return out;
 }
+
+SteppedDerivation::SteppedDerivation(const std::vector<ir::Grammar>& species, const DeriveOptions& options)
+    : species_(species), options_(options), control_(species, options) {
+    string_ = control_.startAll();
+    if (options.particles) {
+        for (std::vector<shared::ParticleState>& plant :
+             stream::splitAxiomParticles(species, control_.plants(), options.initialParticles))
+            string_.particles.insert(string_.particles.end(), plant.begin(), plant.end());
+    }
+    if (string_.size() > control_.budget())
+        throw ir::LimitError(fmt::format("the axioms alone exceed the module budget of {} modules", control_.budget()));
+}
+
+uint32_t SteppedDerivation::advance(const std::vector<uint8_t>& due) {
+    if (due.size() != control_.plants()) throw std::invalid_argument("SteppedDerivation::advance: one flag per plant");
+    std::vector<uint8_t> growing(control_.plants(), 0);
+    uint32_t deriving = 0;
+    for (uint32_t plant = 0; plant < control_.plants(); ++plant) {
+        growing[plant] = due[plant] && control_.beginStep(plant, control_.stepsDerived(plant) + 1);
+        deriving += growing[plant];
+    }
+    if (deriving == 0) return 0;
+    ++fieldStep_;
+    ModuleString next;
+    next.stride = string_.stride;
+    next.plantStart.push_back(0);
+    const uint64_t budget = control_.budget();
+    for (uint32_t plant = 0; plant < control_.plants(); ++plant) {
+        const size_t begin = string_.plantStart[plant], end = string_.plantStart[plant + 1];
+        if (!growing[plant]) {
+            ModuleString copy;
+            copy.stride = string_.stride;
+            for (size_t i = begin; i < end; ++i) copy.pushFrom(string_, i);
+            if (!string_.particles.empty())
+                copy.particles.assign(string_.particles.begin() + begin, string_.particles.begin() + end);
+            appendPlant(next, copy);
+            continue;
+        }
+        PlantDeriver deriver(control_, plant, budget - std::min<uint64_t>(budget, next.size()), budget);
+        deriver.adopt(string_, begin, end, false);
+        deriver.derive(fieldStep_);
+        control_.endStep(plant, control_.stepsDerived(plant) + 1);
+        appendPlant(next, deriver.result());
+    }
+    string_ = std::move(next);
+    return deriving;
+}
+
+ModuleString SteppedDerivation::drawn() const { return applyHomomorphismCpu(species_, string_, options_); }
 
 } // namespace simeco::cpu

@@ -11,6 +11,7 @@
 #include "ir/grammar.h"
 #include "stream/derive_options.h"
 #include "stream/module_string.h"
+#include "stream/plant_control.h"
 
 namespace simeco::cpu {
 
@@ -27,5 +28,27 @@ stream::DeriveResult deriveSpeciesCpu(const std::vector<ir::Grammar>& species, c
 // species' homomorphism, with the globals as the Start block sets them.
 stream::ModuleString applyHomomorphismCpu(const std::vector<ir::Grammar>& species, const stream::ModuleString& derived,
                                   const stream::DeriveOptions& options);
+
+// Derivation step by step over simulated time, the reference of GpuDeriver::begin, advance, current and drawn:
+// the plants start from their axioms; advance() derives one more step of the plants `due` flags that have steps
+// left (the others are copied) and returns how many derived, their random draws keyed by the count of advance()
+// calls that derived; current() is the derived string, whose particle state the simulation updates between
+// steps; drawn() is it under the homomorphism.
+class SteppedDerivation {
+public:
+    SteppedDerivation(const std::vector<ir::Grammar>& species, const stream::DeriveOptions& options);
+    uint32_t advance(const std::vector<uint8_t>& due);
+    stream::ModuleString& current() { return string_; }
+    const stream::ModuleString& current() const { return string_; }
+    stream::ModuleString drawn() const;
+    uint32_t plants() const { return control_.plants(); }
+
+private:
+    const std::vector<ir::Grammar>& species_;
+    stream::DeriveOptions options_;
+    stream::PlantControl control_;
+    stream::ModuleString string_;
+    uint32_t fieldStep_ = 0;
+};
 
 } // namespace simeco::cpu

@@ -201,6 +201,7 @@ stream::DeriveResult GpuDeriver::derive(const stream::DeriveOptions& asked, bool
     // A recorded derivation may still be running on the device with the buffers this one would write.
     if (!m.recordings.empty())
         throw std::logic_error("GpuDeriver: a recorded derivation is not read yet (recorded())");
+    m.stepped.reset();
     m.startDerivation(control, options);
     if (options.homomorphism && m.homomorphismHostReason)
         throw std::logic_error("the homomorphism cannot run on the device: " + *m.homomorphismHostReason);

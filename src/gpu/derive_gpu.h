@@ -98,6 +98,20 @@ public:
     // Throws as derive() does when a step passed the module budget.
     std::optional<stream::DeriveResult> recorded(GpuDeriveStats* stats = nullptr);
 
+    // Derivation step by step over simulated time, for the growth simulation, which derives a plant whenever its
+    // DeriveTime is due: begin() starts every plant from its axiom (options.steps, else each species' derivation
+    // length, bounds the steps a plant derives; the particle state is carried when options.particles asks);
+    // advance() derives one more step of the plants `due` flags that have steps left (the others are copied,
+    // as frozen plants are) and returns how many derived; current() is the derived string, on the device, whose
+    // particle state the simulation updates in place between steps; drawn() is that string under the
+    // homomorphism (the globals as the Start block sets them), written into another stream and valid until the
+    // next advance() or drawn(), or current() where no species has a homomorphism. A plant's random draws in a
+    // step are keyed by the count of advance() calls that derived, not by its own steps, on both engines
+    // (cpu::SteppedDerivation). Needs recordsSteps(); derive() and record() end the stepped derivation.
+    void begin(const stream::DeriveOptions& options);
+    uint32_t advance(const std::vector<uint8_t>& due);
+    stream::DeviceModules current() const;
+    stream::DeviceModules drawn();
     // Whether derive() records its steps one after the other with their sizes on the device, waiting once per batch
     // of steps (the parallel strategy: cuts, predecessors of several modules, decomposition and particle state
     // included), rather than stepping the sequential strategy's kernel from the host. The homomorphism is recorded

@@ -427,6 +427,22 @@ struct GpuDeriver::Impl {
     int applyHomomorphism(stream::PlantControl& control, int cur, uint32_t seed, uint64_t budget, bool timed,
                           GpuDeriveStats& stats);
 
+    // ---- derivation step by step over simulated time (derive_gpu_stepped.cpp) ----
+
+    // What begin() started: the plants' control, kept between steps, and the stream their string is in.
+    struct Stepped {
+        stream::PlantControl control;
+        stream::DeriveOptions options;
+        uint32_t seed = 0;
+        uint64_t budget = 0;
+        uint32_t fieldStep = 0; // advance() calls that derived: the random streams' step
+        int cur = 0;
+    };
+    std::unique_ptr<Stepped> stepped;
+    Stepped& steppedState(const char* call) const;
+    // Runs `batch` from the stepped string's stream; returns the stream it ends in.
+    int runSteppedBatch(std::vector<RecordedStep>& batch, int stepsAfterBatch);
+
     // ---- the sequential strategy (derive_gpu_sequential.cpp) ----
 
     // The stack levels the deepest decomposition can use (one level per depth, and the last one's modules).

@@ -434,6 +434,7 @@ stream::DeviceModules GpuDeriver::record(VkCommandBuffer cmd, const stream::Deri
     recording.submissionsBefore = m.ctx.submissions();
     stream::PlantControl& control = *recording.control;
     recording.budget = control.budget();
+    m.stepped.reset();
     m.startDerivation(control, options);
     m.prepareRecorded(false);
     m.makeRoom(0, std::max<uint64_t>(std::min(room, recording.budget), m.streams[0].count));

@@ -54,6 +54,8 @@ public:
     void finish(uint32_t plant);
     // Steps derived by the plant that went furthest.
     int mostStepsDerived() const;
+    // Steps the plant has derived.
+    int stepsDerived(uint32_t plant) const { return derived_[plant]; }
 
 private:
     void run(uint32_t plant, const std::vector<ir::Stmt>& block, uint32_t step, ControlBlock which);

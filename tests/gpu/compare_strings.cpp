@@ -4,6 +4,11 @@
 #include <cmath>
 #include <cstdint>
 #include <sstream>
+#include <vector>
+
+#include "compute/shared/derive_layout.h"
+#include "compute/shared/particle_layout.h"
+#include "vk/buffer.h"
 
 namespace simeco::test {
 
@@ -50,6 +55,27 @@ std::string firstDifference(const stream::DeriveResult& want, const stream::Deri
             << a.plantStart.size() << "); ";
     }
     return out.str();
+}
+
+stream::DeriveResult readModules(const vk::Context& context, const stream::DeviceModules& modules, int steps) {
+    stream::DeriveResult result;
+    result.steps = steps;
+    stream::ModuleString& s = result.string;
+    s.stride = int(modules.stride);
+    std::vector<std::uint32_t> table =
+        vk::downloadVector<std::uint32_t>(context, *modules.plantStarts, modules.plants + 1);
+    s.plantStart.assign(table.begin(), table.end());
+    const std::uint32_t count = table.back();
+    if (count == 0) return result;
+    std::vector<std::uint32_t> words = vk::downloadVector<std::uint32_t>(context, *modules.symbols, count);
+    s.params = vk::downloadVector<float>(context, *modules.params, std::size_t(count) * modules.stride);
+    for (std::size_t i = 0; i < words.size(); ++i) {
+        s.sym.push_back(words[i] & shared::kSymbolMask);
+        s.paramCount.push_back(static_cast<std::uint8_t>(words[i] >> shared::kSymbolBits));
+        for (std::size_t k = s.paramCount.back(); k < modules.stride; ++k) s.params[i * modules.stride + k] = 0.0f;
+    }
+    if (modules.particles) s.particles = vk::downloadVector<shared::ParticleState>(context, *modules.particles, count);
+    return result;
 }
 
 } // namespace simeco::test

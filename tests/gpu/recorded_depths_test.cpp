@@ -21,27 +21,6 @@ namespace {
 
 using RecordedDepthsTest = GpuTest;
 
-// The string a recorded derivation left on the device, read back as derive() returns it.
-stream::DeriveResult readBack(const vk::Context& context, const stream::DeviceModules& modules, int steps) {
-    stream::DeriveResult result;
-    result.steps = steps;
-    stream::ModuleString& s = result.string;
-    s.stride = int(modules.stride);
-    std::vector<std::uint32_t> table =
-        vk::downloadVector<std::uint32_t>(context, *modules.plantStarts, modules.plants + 1);
-    s.plantStart.assign(table.begin(), table.end());
-    const std::uint32_t count = table.back();
-    if (count == 0) return result;
-    std::vector<std::uint32_t> words = vk::downloadVector<std::uint32_t>(context, *modules.symbols, count);
-    s.params = vk::downloadVector<float>(context, *modules.params, std::size_t(count) * modules.stride);
-    for (std::size_t i = 0; i < words.size(); ++i) {
-        s.sym.push_back(words[i] & shared::kSymbolMask);
-        s.paramCount.push_back(static_cast<std::uint8_t>(words[i] >> shared::kSymbolBits));
-        for (std::size_t k = s.paramCount.back(); k < modules.stride; ++k) s.params[i * modules.stride + k] = 0.0f;
-    }
-    return result;
-}
-
 // Each step's decomposition goes one depth deeper than the last: past the depths a step records at first, and in
 // the later steps to the maximum depth, which ends it with modules left to rewrite and its string in the stream
 // the step did not write (an odd depth): it is copied back.
@@ -116,7 +95,7 @@ TEST_F(RecordedDepthsTest, TheHomomorphismIsRecordedWithTheSteps) {
     ASSERT_TRUE(got.has_value()) << "no recording had the depths it needs";
     EXPECT_GT(recordings, 1) << "the decomposition never went deeper than the depths recorded";
     EXPECT_EQ(got->string.plantStart, want.string.plantStart);
-    EXPECT_EQ(firstDifference(want, readBack(context(), modules, got->steps), g.alphabet), "");
+    EXPECT_EQ(firstDifference(want, readModules(context(), modules, got->steps), g.alphabet), "");
 }
 
 // An error in the homomorphism, found in the submission that also runs the steps, is located in the

@@ -1,0 +1,90 @@
+// Derivation step by step over simulated time: the growth simulation derives a plant whenever its DeriveTime is
+// due, so the string stays on the device between steps, its particle state updated in place, and the
+// homomorphism is drawn from it without ending the derivation.
+#include <stdexcept>
+#include <string>
+
+#include "gpu/derive_gpu_impl.h"
+
+namespace simeco::gpu {
+
+GpuDeriver::Impl::Stepped& GpuDeriver::Impl::steppedState(const char* call) const {
+    if (!stepped) throw std::logic_error(std::string("GpuDeriver::") + call + " before begin()");
+    return *stepped;
+}
+
+int GpuDeriver::Impl::runSteppedBatch(std::vector<RecordedStep>& batch, int stepsAfterBatch) {
+    Stepped& s = *stepped;
+    int cur = s.cur;
+    GpuDeriveStats stats;
+    for (size_t done = 0; done < batch.size();)
+        done = runBatch(batch, done, cur, s.seed, s.budget, false, stepsAfterBatch, stats);
+    // The next batch builds its bracket tree afresh: partners carried from this one would describe its input.
+    partnersStream = -1;
+    partnersLive = false;
+    return cur;
+}
+
+void GpuDeriver::begin(const stream::DeriveOptions& asked) {
+    Impl& m = *impl_;
+    if (!m.recordsSteps()) throw std::logic_error("GpuDeriver::begin: stepping needs the parallel strategy");
+    if (!m.recordings.empty())
+        throw std::logic_error("GpuDeriver::begin: a recorded derivation is not read yet (recorded())");
+    stream::DeriveOptions options = asked;
+    if (options.maxModules == 0) options.maxModules = m.defaultModuleBudget(options.particles);
+    m.stepped.reset();
+    stream::PlantControl control(m.species, options);
+    m.startDerivation(control, options);
+    const uint32_t seed = control.seed();
+    const uint64_t budget = control.budget();
+    m.stepped = std::make_unique<Impl::Stepped>(Impl::Stepped{std::move(control), options, seed, budget, 0, 0});
+    m.prepareRecorded(false);
+    m.makeRoom(0, m.streams[0].count);
+    Impl::SubmissionEnd submission{m};
+    m.ctx.submitAndWait([&](VkCommandBuffer cmd) { m.recordPendingCopies(cmd); });
+    m.lastStream = 0;
+}
+
+uint32_t GpuDeriver::advance(const std::vector<uint8_t>& due) {
+    Impl& m = *impl_;
+    Impl::Stepped& s = m.steppedState("advance");
+    if (due.size() != m.plants) throw std::invalid_argument("GpuDeriver::advance: one flag per plant");
+    std::vector<uint8_t> growing(m.plants, 0);
+    uint32_t deriving = 0;
+    for (uint32_t plant = 0; plant < m.plants; ++plant) {
+        growing[plant] = due[plant] && s.control.beginStep(plant, s.control.stepsDerived(plant) + 1);
+        deriving += growing[plant];
+    }
+    if (deriving == 0) return 0;
+    ++s.fieldStep;
+    bool frozen = m.writePlantState(s.control, growing, reinterpret_cast<double*>(m.host().batchGlobals.mapped()),
+                                    reinterpret_cast<double*>(m.host().batchArrays.mapped()),
+                                    reinterpret_cast<uint32_t*>(m.host().batchFrozen.mapped()));
+    for (uint32_t plant = 0; plant < m.plants; ++plant)
+        if (growing[plant]) s.control.endStep(plant, s.control.stepsDerived(plant) + 1);
+    std::vector<Impl::RecordedStep> batch{{s.fieldStep, frozen}};
+    s.cur = m.runSteppedBatch(batch, 1);
+    m.lastStream = s.cur;
+    return deriving;
+}
+
+stream::DeviceModules GpuDeriver::current() const {
+    const Impl& m = *impl_;
+    const Stream& s = m.streams[m.steppedState("current").cur];
+    return stream::DeviceModules{&s.sym,   &s.par, &s.plantStart, s.count, m.plants, static_cast<uint32_t>(m.stride),
+                                 m.carriesParticles ? &s.particles : nullptr};
+}
+
+stream::DeviceModules GpuDeriver::drawn() {
+    Impl& m = *impl_;
+    Impl::Stepped& s = m.steppedState("drawn");
+    if (!m.homomorphismMatch) return current();
+    // The homomorphism sees the globals as the Start block sets them; the steps go on with their own.
+    stream::PlantControl control(m.species, s.options);
+    std::vector<Impl::RecordedStep> batch;
+    m.planHomomorphism(control, batch);
+    m.lastStream = m.runSteppedBatch(batch, 0);
+    return lastString();
+}
+
+} // namespace simeco::gpu

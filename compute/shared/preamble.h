@@ -2,8 +2,8 @@
 //
 // In C++ a shared header's names live in namespace simeco::shared (between SIMECO_SHARED_BEGIN and
 // SIMECO_SHARED_END) and GLSL's `uint` and `vec4` are C++ types of the same size; SIMECO_CONST declares a
-// constant and SIMECO_FN a function the same way in both. Only the layouts' own C++ extras (constructors,
-// static_asserts) stay behind `#ifdef __cplusplus`.
+// constant (SIMECO_CONST_FLOAT a float one) and SIMECO_FN a function the same way in both. Only the layouts' own
+// C++ extras (constructors, static_asserts) stay behind `#ifdef __cplusplus`.
 #ifndef SIMECO_SHARED_PREAMBLE_H
 #define SIMECO_SHARED_PREAMBLE_H
 
@@ -18,11 +18,13 @@ struct vec4 {
 #define SIMECO_SHARED_BEGIN namespace simeco::shared {
 #define SIMECO_SHARED_END }
 #define SIMECO_CONST inline constexpr uint
+#define SIMECO_CONST_FLOAT inline constexpr float
 #define SIMECO_FN inline
 #else
 #define SIMECO_SHARED_BEGIN
 #define SIMECO_SHARED_END
 #define SIMECO_CONST const uint
+#define SIMECO_CONST_FLOAT const float
 #define SIMECO_FN
 #endif
 

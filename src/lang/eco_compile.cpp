@@ -56,7 +56,7 @@ std::optional<ir::Expr> conjoin(std::optional<ir::Expr> a, std::optional<ir::Exp
 
 class PlantCompiler {
 public:
-    explicit PlantCompiler(const ir::EcoScene& scene) {
+    PlantCompiler(const ir::EcoScene& scene, EcoDrawing drawing) : drawing_(drawing) {
         grammar_.sourceFile = scene.file;
         // The engines keep cpfg's step counters in the first global slots, whatever the language.
         grammar_.globalNames = {"Q", "Z"};
@@ -71,7 +71,7 @@ public:
         grammar_.axiom = successorModules(plant.grow.axiom);
         for (const ir::EcoRule& rule : plant.grow.rules) lowerRule(rule);
         grammar_.productions.present = !plant.grow.rules.empty();
-        addEcoOrganGeometry(plant, grammar_);
+        addEcoOrganGeometry(plant, grammar_, drawing_);
 
         grammar_.contextSkip.resize(grammar_.alphabet.size(), false);
         for (const char* rotation : kRotationNames) grammar_.contextSkip[symbol(rotation)] = true;
@@ -170,15 +170,16 @@ private:
     }
 
     ir::Grammar grammar_;
+    EcoDrawing drawing_;
 };
 
 } // namespace
 
-ir::Grammar compileEcoPlant(const ir::EcoScene& scene, size_t plantIndex) {
+ir::Grammar compileEcoPlant(const ir::EcoScene& scene, size_t plantIndex, EcoDrawing drawing) {
     if (plantIndex >= scene.plants.size())
         throw ir::InputError({scene.file, 0, 0}, fmt::format("the scene has {} plant(s); there is no plant {}",
                                                              scene.plants.size(), plantIndex));
-    return PlantCompiler(scene).compile(scene.plants[plantIndex]);
+    return PlantCompiler(scene, drawing).compile(scene.plants[plantIndex]);
 }
 
 } // namespace simeco::lang

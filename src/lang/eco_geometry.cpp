@@ -30,7 +30,8 @@ float growth(const ir::EcoOrgan& organ, const ir::EcoStage* stage) {
 
 class GeometryBuilder {
 public:
-    GeometryBuilder(const ir::EcoPlant& plant, ir::Grammar& g) : plant_(plant), g_(g) {
+    GeometryBuilder(const ir::EcoPlant& plant, ir::Grammar& g, EcoDrawing drawing)
+        : plant_(plant), g_(g), drawing_(drawing) {
         // Index 0 stays black and 1 bark-brown, as in simeco's default palette; stage colours follow.
         g_.view.palette = {{0.0f, 0.0f, 0.0f}, {0.20f, 0.11f, 0.05f}, {0.09f, 0.30f, 0.05f}};
     }
@@ -52,6 +53,7 @@ public:
 private:
     const ir::EcoPlant& plant_;
     ir::Grammar& g_;
+    EcoDrawing drawing_;
     std::map<std::array<float, 3>, int> colorIndex_;
 
     // The stage's Color, tinted by its Material's diffuse factor (MTRL's first three numbers, scaled so that
@@ -99,6 +101,10 @@ private:
         std::vector<ir::SuccessorModule> out;
         if (kind == EcoOrganKind::Apex) return out;
         out.push_back(module(";", {float(colorOf(organ, stage, kind))}, loc));
+        if (drawing_ == EcoDrawing::Grown) {
+            grownDrawing(kind, loc, out);
+            return out;
+        }
         float grown = growth(organ, stage);
         switch (kind) {
         case EcoOrganKind::Stem:
@@ -128,6 +134,31 @@ private:
         default: break;
         }
         return out;
+    }
+
+    // The drawing at the sizes the particle has grown to: each size a code the growth simulation replaces.
+    void grownDrawing(EcoOrganKind kind, const ir::SourceLoc& loc, std::vector<ir::SuccessorModule>& out) {
+        auto code = [](uint32_t c) { return shared::kGrownValue - float(c); };
+        switch (kind) {
+        case EcoOrganKind::Stem:
+        case EcoOrganKind::Root:
+            out.push_back(module("!", {code(shared::kGrownWidth)}, loc));
+            out.push_back(module("rotu", {code(shared::kGrownRoll)}, loc));
+            out.push_back(module("rotr", {code(shared::kGrownPitch)}, loc));
+            out.push_back(module("rotu", {code(shared::kGrownUnroll)}, loc));
+            out.push_back(module("G", {code(shared::kGrownLength)}, loc));
+            break;
+        case EcoOrganKind::Leaf:
+            out.push_back(module("~", {}, loc));
+            out.push_back(module("leaf", {code(shared::kGrownLeafSize)}, loc));
+            break;
+        case EcoOrganKind::Flower:
+        case EcoOrganKind::Fruit:
+            out.push_back(module("@", {}, loc));
+            out.push_back(module(kind == EcoOrganKind::Flower ? "c" : "O", {code(shared::kGrownLength)}, loc));
+            break;
+        default: break;
+        }
     }
 
     // `X(s) : s == stage --> drawing` for each described stage, then `X(s) --> default drawing`.
@@ -169,6 +200,8 @@ private:
 
 } // namespace
 
-void addEcoOrganGeometry(const ir::EcoPlant& plant, ir::Grammar& g) { GeometryBuilder(plant, g).build(); }
+void addEcoOrganGeometry(const ir::EcoPlant& plant, ir::Grammar& g, EcoDrawing drawing) {
+    GeometryBuilder(plant, g, drawing).build();
+}
 
 } // namespace simeco::lang

@@ -1,8 +1,9 @@
-// What a SimEco plant's organs look like to the turtle, until the particle simulation grows them: a
-// homomorphism that draws each segment by its organ and stage (lang/eco_compile lowers the Grow block; this
-// adds the drawing).
+// What a SimEco plant's organs look like to the turtle: a homomorphism that draws each segment by its organ and
+// stage (lang/eco_compile lowers the Grow block; this adds the drawing), at the sizes its particle has grown to
+// (the growth simulation) or at those its stage reaches at the end of its GrowTime (a derivation alone).
 #pragma once
 
+#include "compute/shared/growth_layout.h"
 #include "ir/eco_scene.h"
 #include "ir/grammar.h"
 
@@ -19,14 +20,17 @@ namespace simeco::lang {
 //   fruit T:         ;(colour) @ O(diameter)         a sphere
 //   apex A:          nothing
 // A stage's unset properties come from the organ's Default stage, then from simeco's defaults below. These are
-// the sizes the stage's growth reaches at the end of its GrowTime; the particle simulation will replace them
-// with each module's own age.
-void addEcoOrganGeometry(const ir::EcoPlant& plant, ir::Grammar& g);
+// the sizes the stage's growth reaches at the end of its GrowTime (EcoDrawing::Final).
+// Grown: the sizes are kGrownValue codes (compute/shared/growth_layout.h) that the growth simulation replaces
+// with each module's particle's; a stem segment also tilts by its particle's pitch and roll:
+//   stem S, root R:  ;(colour) !(width) rotu(roll) rotr(pitch) rotu(-roll) G(length)
+enum class EcoDrawing { Final, Grown };
+void addEcoOrganGeometry(const ir::EcoPlant& plant, ir::Grammar& g, EcoDrawing drawing = EcoDrawing::Final);
 
 inline constexpr float kEcoDefaultGrowTime = 1.0f;
 inline constexpr float kEcoDefaultStemLength = 1.0f;
 inline constexpr float kEcoDefaultStemWidth = 0.1f;
-inline constexpr float kEcoLeafModelSize = 1.0f;
+inline constexpr float kEcoLeafModelSize = shared::kLeafModelSize;
 inline constexpr float kEcoDefaultFlowerSize = 0.3f;
 
 } // namespace simeco::lang

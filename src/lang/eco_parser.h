@@ -9,6 +9,7 @@
 
 #include "ir/eco_scene.h"
 #include "ir/grammar.h"
+#include "lang/eco_geometry.h"
 
 namespace simeco::lang {
 
@@ -16,9 +17,9 @@ ir::EcoScene parseEcoFile(const std::string& path);
 // `file` names the text in error messages and in the scene.
 ir::EcoScene parseEcoText(const std::string& text, const std::string& file);
 
-// The Grow block of one plant as a grammar (each plant is its own grammar). Throws InputError when the
-// scene has no plant `plantIndex`.
-ir::Grammar compileEcoPlant(const ir::EcoScene& scene, size_t plantIndex);
+// The Grow block of one plant as a grammar (each plant is its own grammar), its organs drawn as `drawing` says
+// (lang/eco_geometry.h). Throws InputError when the scene has no plant `plantIndex`.
+ir::Grammar compileEcoPlant(const ir::EcoScene& scene, size_t plantIndex, EcoDrawing drawing = EcoDrawing::Final);
 
 // Derivation steps of a plant whose script sets no `DerivationLength` (see eco_compile.cpp).
 inline constexpr int kDefaultEcoDerivationLength = 10;

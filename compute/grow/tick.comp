@@ -1,0 +1,93 @@
+// One growth tick of every particle of the derived string (compute/shared/growth_layout.h): which modules continue
+// a particle and which are born, aging, each organ's growth by its stage row for its GrowTime, and its cone noise
+// every NoiseTime while it grows. Reads the particles as the last tick left them and writes the next states
+// into particlesOut, since a module's birth depends on the states of the modules before it. The CPU reference is
+// src/grow/tick_cpu.cpp.
+#version 450
+#extension GL_GOOGLE_include_directive : require
+#include "compute/shared/config.h"
+#include "compute/shared/derive_layout.h"
+#include "compute/shared/growth_layout.h"
+#include "compute/shared/particle_layout.h"
+#include "compute/shared/random.h"
+
+layout(local_size_x = kGrowWorkgroupSize) in;
+layout(set = 0, binding = 0, std430) readonly buffer Symbols { uint symbols[]; };
+layout(set = 0, binding = 1, std430) readonly buffer Params { float params[]; };
+layout(set = 0, binding = 2, std430) readonly buffer Starts { uint plantStart[]; };
+layout(set = 0, binding = 3, std430) readonly buffer ParticlesIn { float particlesIn[]; };
+layout(set = 0, binding = 4, std430) writeonly buffer ParticlesOut { float particlesOut[]; };
+layout(set = 0, binding = 5, std430) readonly buffer Classes { uint classes[]; };
+layout(set = 0, binding = 6, std430) readonly buffer SpeciesWords { uint speciesWords[]; };
+layout(set = 0, binding = 7, std430) readonly buffer Rows { float rows[]; };
+layout(push_constant) uniform Push { GrowPush pc; };
+
+#include "compute/grow/growth.glsl"
+
+const float kTwoPi = 6.28318530717958647692;
+
+uint idOf(uint i) { return floatBitsToUint(particlesIn[kParticleStateFloats * i + kParticleId]); }
+uint classOf(uint species, uint i) { return classes[species * pc.symbols + (symbols[i] & kSymbolMask)]; }
+
+// The first float of the organ's stage row in species `species`: the stage's own, else the organ's Default row.
+uint stageRow(uint species, uint organ, float stage) {
+    uint words = species * kSpeciesGrowthWords;
+    uint first = speciesWords[words + kSpeciesFirstRow + organ];
+    uint count = speciesWords[words + kSpeciesRowCount + organ];
+    for (uint r = first; r < first + count; ++r)
+        if (rows[r * kStageRowFloats + kStageNumber] == stage) return r * kStageRowFloats;
+    return speciesWords[words + kSpeciesDefaultRow + organ] * kStageRowFloats;
+}
+
+float property(uint row, uint k, uint plant, uint id) {
+    float lo = rows[row + propertyMin(k)], hi = rows[row + propertyMax(k)];
+    return lo + (hi - lo) * randomUnit(pc.seed, plant, kGrowPropertyPass, id, k);
+}
+
+void main() {
+    uint i = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * gl_WorkGroupSize.x + gl_LocalInvocationID.x;
+    if (i >= pc.count) return;
+    uint plant = plantOf(i, pc.plants);
+    uint species = plant % pc.species;
+    uint start = plantStart[plant];
+    float p[kParticleStateFloats];
+    for (uint k = 0u; k < kParticleStateFloats; ++k) p[k] = particlesIn[kParticleStateFloats * i + k];
+    uint klass = classOf(species, i);
+    bool organ = klass < kGrowOrganKinds;
+    float stage = organ && (symbols[i] >> kSymbolBits) > 0u ? params[pc.stride * i] : 0.0;
+
+    // Continues the particle it shares with the modules before it when it is of the particle's class, unless one
+    // of them of that class does.
+    uint id = idOf(i);
+    bool born = id == 0u || floatBitsToUint(p[kParticleClass]) != klass;
+    for (uint j = i; !born && j > start && idOf(j - 1u) == id; --j) born = classOf(species, j - 1u) == klass;
+    if (born) {
+        for (uint k = 0u; k < kParticleStateFloats; ++k) p[k] = 0.0;
+        p[kParticleStage] = stage;
+        p[kParticleClass] = uintBitsToFloat(klass);
+        p[kParticleId] = uintBitsToFloat(randomBits(pc.seed, plant, kGrowIdentityPass, i - start, pc.tick) | 1u);
+    } else if (p[kParticleStage] != stage) {
+        p[kParticleStage] = stage;
+        p[kParticleStageAge] = 0.0;
+    }
+
+    if (organ && speciesWords[species * kSpeciesGrowthWords + kSpeciesFirstRow + klass] != kGrowNoRow) {
+        uint row = stageRow(species, klass, stage);
+        uint self = floatBitsToUint(p[kParticleId]);
+        float growing = clamp(property(row, kGrowTime, plant, self) - p[kParticleStageAge], 0.0, pc.dt);
+        p[kParticleElongation] += property(row, kGrowRate, plant, self) * growing;
+        p[kParticleBroadening] += property(row, kBroadenRate, plant, self) * growing;
+        p[kParticleNoiseClock] += pc.dt;
+        float noiseTime = property(row, kNoiseTime, plant, self), cone = property(row, kConeNoise, plant, self);
+        if (growing > 0.0 && noiseTime > 0.0 && cone > 0.0 && p[kParticleNoiseClock] >= noiseTime) {
+            p[kParticleNoiseClock] = mod(p[kParticleNoiseClock], noiseTime);
+            float u = randomUnit(pc.seed, plant, kGrowNoisePass, self, 2u * pc.tick);
+            float v = randomUnit(pc.seed, plant, kGrowNoisePass, self, 2u * pc.tick + 1u);
+            p[kParticlePitch] = cone * sqrt(u);
+            p[kParticleRoll] = kTwoPi * v;
+        }
+    }
+    p[kParticleAge] += pc.dt;
+    p[kParticleStageAge] += pc.dt;
+    for (uint k = 0u; k < kParticleStateFloats; ++k) particlesOut[kParticleStateFloats * i + k] = p[k];
+}

@@ -1,0 +1,91 @@
+// The growth tick's tables and push constants, shared by C++ (src/grow/) and GLSL (compute/grow/).
+//
+// Each tick every module of the derived string is a particle that ages and grows (compute/grow/tick.comp; the
+// CPU reference is grow/tick_cpu.cpp). What it grows by comes from its species' stage table: a SimEco organ's
+// module (A S L F T R, its first parameter the stage) reads the row of its stage, else its organ's Default row,
+// each property a range [min, max] drawn once per particle. Other modules only age.
+//
+// Which modules continue a particle: a derivation step gives every module of a successor the state of the module
+// it replaces, so the modules that share a particle's identity and stand together came from one module. The
+// first of them of the particle's class (an organ kind, or for other modules their symbol) continues the
+// particle, with its age, length and width (a stem rewritten into a stem of the next stage goes on growing);
+// the others are born there: they start at zero with an identity of their own, at the tip of the module before
+// them in the string (where the turtle puts them).
+//
+// The drawn string (the derived string under the homomorphism, each module with its origin's state) gets its
+// sizes from the particles: SimEco's homomorphism writes kGrownValue codes as the parameters of the modules that
+// draw an organ, and compute/grow/grown_sizes.comp replaces each code with the value it names.
+#ifndef SIMECO_SHARED_GROWTH_LAYOUT_H
+#define SIMECO_SHARED_GROWTH_LAYOUT_H
+
+#include "compute/shared/preamble.h"
+
+SIMECO_SHARED_BEGIN
+
+SIMECO_CONST kGrowWorkgroupSize = 128u;
+
+// Module classes (per species and symbol): the six SimEco organ kinds (ir::EcoOrganKind's order), then every
+// other module as kGrowPlainClass + its symbol.
+SIMECO_CONST kGrowOrganKinds = 6u;
+SIMECO_CONST kGrowPlainClass = 8u;
+
+// A species' words (kSpeciesGrowthWords per species): per organ kind its first stage row, its row count and its
+// Default row (kGrowNoRow: none), then flags.
+SIMECO_CONST kSpeciesGrowthWords = 20u;
+SIMECO_CONST kSpeciesFirstRow = 0u;
+SIMECO_CONST kSpeciesRowCount = 6u;
+SIMECO_CONST kSpeciesDefaultRow = 12u;
+SIMECO_CONST kSpeciesFlags = 18u;
+SIMECO_CONST kGrowNoRow = 0xFFFFFFFFu;
+// The species' drawn modules carry kGrownValue codes (SimEco's homomorphism).
+SIMECO_CONST kSpeciesDrawsGrowth = 1u;
+
+// A stage row: the stage number, then each property's min and max; rows of an organ sorted by stage.
+SIMECO_CONST kStageRowFloats = 20u;
+SIMECO_CONST kStageNumber = 0u;
+SIMECO_CONST kGrowRate = 0u;
+SIMECO_CONST kGrowTime = 1u;
+SIMECO_CONST kLifeTime = 2u;
+SIMECO_CONST kBroadenRate = 3u;
+SIMECO_CONST kWeightFactor = 4u;
+SIMECO_CONST kConeNoise = 5u;
+SIMECO_CONST kNoiseTime = 6u;
+SIMECO_CONST kStrength = 7u;
+SIMECO_CONST kGeotropism = 8u;
+SIMECO_CONST kStageProperties = 9u;
+SIMECO_FN uint propertyMin(uint property) { return 1u + 2u * property; }
+SIMECO_FN uint propertyMax(uint property) { return 2u + 2u * property; }
+
+// The random streams of growth: passes far above any derivation step's, keyed by plant and particle identity.
+SIMECO_CONST kGrowPropertyPass = 0xFFFFFF00u; // a property's draw in its range: draw = property
+SIMECO_CONST kGrowNoisePass = 0xFFFFFF01u;    // a cone noise turn: draw = 2 x tick (+1)
+SIMECO_CONST kGrowIdentityPass = 0xFFFFFF02u; // a newborn particle's identity: module index, draw = tick
+
+// Parameter codes of drawn modules: kGrownValue - code, replaced by the particle's value.
+SIMECO_CONST_FLOAT kGrownValue = -65536.0f;
+SIMECO_CONST kGrownLength = 0u;       // its elongation
+SIMECO_CONST kGrownWidth = 1u;        // its broadening
+SIMECO_CONST kGrownLeafSize = 2u;     // the leaf model's size x (1 + its growth), unfolding over its first DeriveTime
+SIMECO_CONST kGrownPitch = 3u;        // its pitch, in radians
+SIMECO_CONST kGrownRoll = 4u;         // its roll, in radians
+SIMECO_CONST kGrownUnroll = 5u;       // minus its roll: the frame turns back after the tilt
+SIMECO_CONST kGrownCodes = 6u;
+// A leaf model's size before it grows.
+SIMECO_CONST_FLOAT kLeafModelSize = 1.0f;
+
+// Push constants of tick.comp and grown_sizes.comp. `count` is kCountOnDevice where the plant table's last entry
+// counts the modules.
+struct GrowPush {
+    float dt;       // seconds this tick advances
+    uint tick;      // ticks before this one
+    uint seed;
+    uint plants;
+    uint species;
+    uint symbols;   // alphabet size: the class table's row length
+    uint count;
+    uint stride;    // parameters per module
+};
+
+SIMECO_SHARED_END
+
+#endif

@@ -1,0 +1,37 @@
+#include "grow/growing_species.h"
+
+#include <filesystem>
+
+#include "ir/source_loc.h"
+#include "ir/species.h"
+#include "lang/eco_parser.h"
+#include "lang/load_grammar.h"
+
+namespace simeco::grow {
+
+GrowingSpecies loadGrowingSpecies(const std::string& path, std::vector<ir::EcoWarning>* warnings) {
+    GrowingSpecies g;
+    if (std::filesystem::path(path).extension() != ".eco") {
+        g.species = ir::unifySpecies(lang::loadSpecies(path, warnings));
+        g.ecoPlants.assign(g.species.size(), nullptr);
+        return g;
+    }
+    ir::EcoScene scene = lang::parseEcoFile(path);
+    if (warnings) warnings->insert(warnings->end(), scene.warnings.begin(), scene.warnings.end());
+    return growingSpecies(std::move(scene));
+}
+
+GrowingSpecies growingSpecies(ir::EcoScene parsed) {
+    GrowingSpecies g;
+    auto scene = std::make_shared<ir::EcoScene>(std::move(parsed));
+    if (scene->plants.empty()) throw ir::InputError(scene->loc, "the scene has no plant");
+    std::vector<ir::Grammar> species;
+    for (size_t i = 0; i < scene->plants.size(); ++i)
+        species.push_back(lang::compileEcoPlant(*scene, i, lang::EcoDrawing::Grown));
+    g.species = ir::unifySpecies(std::move(species));
+    for (const ir::EcoPlant& plant : scene->plants) g.ecoPlants.push_back(&plant);
+    g.scene = std::move(scene);
+    return g;
+}
+
+} // namespace simeco::grow

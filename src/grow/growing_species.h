@@ -1,0 +1,25 @@
+// The species of a field that grows: an `.eco` scene's plants drawn at the sizes their particles grow to
+// (lang::EcoDrawing::Grown), with the scene they come from, or the grammar of a cpfg `.l` or quick `.lsys` file.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "ir/eco_scene.h"
+#include "ir/grammar.h"
+
+namespace simeco::grow {
+
+struct GrowingSpecies {
+    std::shared_ptr<const ir::EcoScene> scene; // null for a grammar file
+    std::vector<ir::Grammar> species;          // one alphabet (ir::unifySpecies)
+    std::vector<const ir::EcoPlant*> ecoPlants; // per species: its plant in the scene, or null
+};
+
+// A parsed scene's plants.
+GrowingSpecies growingSpecies(ir::EcoScene scene);
+// Reads any input as lang::loadSpecies does; a scene's warnings go to `warnings` when given.
+GrowingSpecies loadGrowingSpecies(const std::string& path, std::vector<ir::EcoWarning>* warnings = nullptr);
+
+} // namespace simeco::grow

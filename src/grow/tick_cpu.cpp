@@ -1,0 +1,125 @@
+#include "grow/tick_cpu.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <stdexcept>
+
+#include "compute/shared/growth_layout.h"
+#include "compute/shared/particle_layout.h"
+#include "compute/shared/random.h"
+#include "ir/species.h"
+
+namespace simeco::grow {
+
+namespace {
+
+constexpr float kTwoPi = 6.28318530717958647692f;
+
+uint32_t idOf(const shared::ParticleState& p) { return std::bit_cast<uint32_t>(p.value[shared::kParticleId]); }
+
+// The row of `organ`'s stage in species `species`: the stage's own, else the organ's Default row.
+const float* stageRow(const GrowthTables& t, uint32_t species, uint32_t organ, float stage) {
+    const uint32_t* words = t.species.data() + size_t(species) * shared::kSpeciesGrowthWords;
+    const uint32_t first = words[shared::kSpeciesFirstRow + organ];
+    if (first == shared::kGrowNoRow) return nullptr;
+    for (uint32_t r = first; r < first + words[shared::kSpeciesRowCount + organ]; ++r)
+        if (t.rows[size_t(r) * shared::kStageRowFloats + shared::kStageNumber] == stage)
+            return &t.rows[size_t(r) * shared::kStageRowFloats];
+    return &t.rows[size_t(words[shared::kSpeciesDefaultRow + organ]) * shared::kStageRowFloats];
+}
+
+// An organ's growth over one tick, by its stage's row.
+void growOrgan(const TickSettings& ts, const float* row, uint32_t plant, float* p) {
+    const uint32_t id = std::bit_cast<uint32_t>(p[shared::kParticleId]);
+    auto property = [&](uint32_t k) {
+        const float lo = row[shared::propertyMin(k)], hi = row[shared::propertyMax(k)];
+        return lo + (hi - lo) * shared::randomUnit(ts.seed, plant, shared::kGrowPropertyPass, id, k);
+    };
+    const float growing = std::clamp(property(shared::kGrowTime) - p[shared::kParticleStageAge], 0.0f, ts.dt);
+    p[shared::kParticleElongation] += property(shared::kGrowRate) * growing;
+    p[shared::kParticleBroadening] += property(shared::kBroadenRate) * growing;
+    p[shared::kParticleNoiseClock] += ts.dt;
+    const float noiseTime = property(shared::kNoiseTime), cone = property(shared::kConeNoise);
+    if (growing > 0.0f && noiseTime > 0.0f && cone > 0.0f && p[shared::kParticleNoiseClock] >= noiseTime) {
+        p[shared::kParticleNoiseClock] = std::fmod(p[shared::kParticleNoiseClock], noiseTime);
+        const float u = shared::randomUnit(ts.seed, plant, shared::kGrowNoisePass, id, 2 * ts.tick);
+        const float v = shared::randomUnit(ts.seed, plant, shared::kGrowNoisePass, id, 2 * ts.tick + 1);
+        p[shared::kParticlePitch] = cone * std::sqrt(u);
+        p[shared::kParticleRoll] = kTwoPi * v;
+    }
+}
+
+} // namespace
+
+void tickCpu(const TickSettings& ts, stream::ModuleString& s) {
+    const GrowthTables& t = *ts.tables;
+    if (s.particles.size() != s.size()) throw std::invalid_argument("tickCpu: the string carries no particle state");
+    const std::vector<shared::ParticleState> before = s.particles;
+    for (uint32_t plant = 0; plant + 1 < s.plantStart.size(); ++plant) {
+        const uint32_t species = ir::speciesOfPlant(plant, ts.species);
+        const uint32_t* classes = t.classes.data() + size_t(species) * t.symbols;
+        const size_t start = s.plantStart[plant], end = s.plantStart[plant + 1];
+        for (size_t i = start; i < end; ++i) {
+            float* p = s.particles[i].value;
+            const uint32_t klass = classes[s.sym[i]];
+            const bool organ = klass < shared::kGrowOrganKinds;
+            const float stage = organ && s.paramCount[i] > 0 ? s.paramsOf(i)[0] : 0.0f;
+            // Continues the particle it shares with the modules before it when it is of the particle's class,
+            // unless one of them of that class does.
+            const uint32_t id = idOf(before[i]);
+            bool born = id == 0 || std::bit_cast<uint32_t>(before[i].value[shared::kParticleClass]) != klass;
+            for (size_t j = i; !born && j > start && idOf(before[j - 1]) == id; --j)
+                born = classes[s.sym[j - 1]] == klass;
+            if (born) {
+                s.particles[i] = {};
+                p[shared::kParticleStage] = stage;
+                p[shared::kParticleClass] = std::bit_cast<float>(klass);
+                const uint32_t fresh =
+                    shared::randomBits(ts.seed, plant, shared::kGrowIdentityPass, uint32_t(i - start), ts.tick) | 1u;
+                p[shared::kParticleId] = std::bit_cast<float>(fresh);
+            } else if (p[shared::kParticleStage] != stage) {
+                p[shared::kParticleStage] = stage;
+                p[shared::kParticleStageAge] = 0.0f;
+            }
+            if (organ) {
+                if (const float* row = stageRow(t, species, klass, stage)) growOrgan(ts, row, plant, p);
+            }
+            p[shared::kParticleAge] += ts.dt;
+            p[shared::kParticleStageAge] += ts.dt;
+        }
+    }
+}
+
+float grownValue(uint32_t code, const float* p, float deriveTime) {
+    switch (code) {
+    case shared::kGrownLength: return p[shared::kParticleElongation];
+    case shared::kGrownWidth: return p[shared::kParticleBroadening];
+    case shared::kGrownLeafSize: // a leaf unfolds over its first DeriveTime
+        return shared::kLeafModelSize * (1.0f + p[shared::kParticleElongation]) *
+               std::min(p[shared::kParticleAge] / deriveTime, 1.0f);
+    case shared::kGrownPitch: return p[shared::kParticlePitch];
+    case shared::kGrownRoll: return p[shared::kParticleRoll];
+    default: return -p[shared::kParticleRoll];
+    }
+}
+
+void growSizesCpu(const TickSettings& ts, const std::vector<float>& deriveTimes, stream::ModuleString& drawn) {
+    const GrowthTables& t = *ts.tables;
+    for (uint32_t plant = 0; plant + 1 < drawn.plantStart.size(); ++plant) {
+        const uint32_t species = ir::speciesOfPlant(plant, ts.species);
+        if (!(t.species[size_t(species) * shared::kSpeciesGrowthWords + shared::kSpeciesFlags] &
+              shared::kSpeciesDrawsGrowth))
+            continue;
+        for (size_t i = drawn.plantStart[plant]; i < drawn.plantStart[plant + 1]; ++i) {
+            float* params = drawn.params.data() + i * size_t(drawn.stride);
+            for (uint32_t k = 0; k < drawn.paramCount[i]; ++k) {
+                const float code = shared::kGrownValue - params[k];
+                if (code >= 0.0f && code < float(shared::kGrownCodes) && code == std::floor(code))
+                    params[k] = grownValue(uint32_t(code), drawn.particles[i].value, deriveTimes[plant]);
+            }
+        }
+    }
+}
+
+} // namespace simeco::grow

@@ -1,0 +1,65 @@
+#include "grow/tick_gpu.h"
+
+#include <span>
+#include <stdexcept>
+
+#include "compute/shared/growth_layout.h"
+#include "compute/shared/particle_layout.h"
+#include "vk/barriers.h"
+#include "vk/context.h"
+
+namespace simeco::grow {
+
+namespace {
+
+shared::GrowPush growPush(const stream::DeviceModules& modules, const TickSettings& s, uint32_t symbols) {
+    return shared::GrowPush{s.dt, s.tick, s.seed, modules.plants, s.species, symbols, modules.count, modules.stride};
+}
+
+} // namespace
+
+GpuGrowth::GpuGrowth(const vk::Context& context, const GrowthTables& tables, const std::vector<float>& deriveTimes)
+    : context_(context), symbols_(tables.symbols), tickKernel_(vk::ComputePipeline::embedded(context, "grow/tick")),
+      sizesKernel_(vk::ComputePipeline::embedded(context, "grow/grown_sizes")),
+      classes_(vk::deviceBufferWith(context, std::span<const uint32_t>(tables.classes))),
+      species_(vk::deviceBufferWith(context, std::span<const uint32_t>(tables.species))),
+      rows_(vk::deviceBufferWith(context, std::span<const float>(tables.rows))),
+      deriveTimes_(vk::deviceBufferWith(context, std::span<const float>(deriveTimes))) {}
+
+void GpuGrowth::recordTick(VkCommandBuffer cmd, const stream::DeviceModules& derived, const TickSettings& settings) {
+    if (!derived.particles) throw std::logic_error("GpuGrowth::recordTick: the string carries no particle state");
+    if (derived.count == 0) return;
+    const VkDeviceSize bytes = VkDeviceSize(derived.count) * sizeof(shared::ParticleState);
+    if (!nextStates_ || nextStates_.size() < bytes)
+        nextStates_ = vk::Buffer(context_, bytes + bytes / 2, vk::MemoryUsage::DeviceLocal);
+    // After the passes that wrote the string (a derivation step, the last tick's copy).
+    vk::memoryBarrier(cmd, vk::Hazard::AnyToAny);
+    tickKernel_.dispatch(cmd,
+                         {*derived.symbols, *derived.params, *derived.plantStarts, *derived.particles, nextStates_,
+                          classes_, species_, rows_},
+                         growPush(derived, settings, symbols_), tickKernel_.groupsFor(derived.count));
+    vk::memoryBarrier(cmd, vk::Hazard::ComputeToTransfer);
+    VkBufferCopy copy{0, 0, bytes};
+    vkCmdCopyBuffer(cmd, nextStates_.handle(), derived.particles->handle(), 1, &copy);
+    vk::memoryBarrier(cmd, vk::Hazard::TransferToAny);
+}
+
+void GpuGrowth::recordSizes(VkCommandBuffer cmd, const stream::DeviceModules& drawn, const TickSettings& settings) {
+    if (!drawn.particles) throw std::logic_error("GpuGrowth::recordSizes: the string carries no particle state");
+    if (drawn.count == 0) return;
+    vk::memoryBarrier(cmd, vk::Hazard::AnyToAny);
+    sizesKernel_.dispatch(cmd, {*drawn.symbols, *drawn.params, *drawn.plantStarts, *drawn.particles, species_,
+                                deriveTimes_},
+                          growPush(drawn, settings, symbols_), sizesKernel_.groupsFor(drawn.count));
+    vk::memoryBarrier(cmd, vk::Hazard::ComputeToCompute);
+}
+
+void GpuGrowth::tick(const stream::DeviceModules& derived, const TickSettings& settings) {
+    context_.submitAndWait([&](VkCommandBuffer cmd) { recordTick(cmd, derived, settings); });
+}
+
+void GpuGrowth::growSizes(const stream::DeviceModules& drawn, const TickSettings& settings) {
+    context_.submitAndWait([&](VkCommandBuffer cmd) { recordSizes(cmd, drawn, settings); });
+}
+
+} // namespace simeco::grow

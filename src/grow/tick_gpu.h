@@ -1,0 +1,45 @@
+// The growth tick on the device: compute/grow/tick.comp over the derived string's particles, and
+// compute/grow/grown_sizes.comp over the drawn string, recorded into the caller's command buffer (a blocking
+// convenience beside each). The same state as the CPU reference's (grow/tick_cpu.h), which the tests compare.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+#include "grow/growth_tables.h"
+#include "grow/tick_cpu.h"
+#include "stream/device_modules.h"
+#include "vk/buffer.h"
+#include "vk/pipeline.h"
+
+namespace simeco::vk {
+class Context;
+}
+
+namespace simeco::grow {
+
+class GpuGrowth {
+public:
+    // The tables and each plant's DeriveTime go to the device once.
+    GpuGrowth(const vk::Context& context, const GrowthTables& tables, const std::vector<float>& deriveTimes);
+
+    // One tick of `derived`'s particles (which it must carry), in place: the next states are written beside them
+    // and copied back. `settings.tables` is not read (the device's copy is).
+    void recordTick(VkCommandBuffer cmd, const stream::DeviceModules& derived, const TickSettings& settings);
+    // The drawn string's kGrownValue codes replaced with its particles' values, in place.
+    void recordSizes(VkCommandBuffer cmd, const stream::DeviceModules& drawn, const TickSettings& settings);
+
+    void tick(const stream::DeviceModules& derived, const TickSettings& settings);
+    void growSizes(const stream::DeviceModules& drawn, const TickSettings& settings);
+
+private:
+    const vk::Context& context_;
+    uint32_t symbols_;
+    vk::ComputePipeline tickKernel_, sizesKernel_;
+    vk::Buffer classes_, species_, rows_, deriveTimes_;
+    vk::Buffer nextStates_; // the tick's output, copied back into the string's particles
+};
+
+} // namespace simeco::grow

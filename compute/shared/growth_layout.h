@@ -70,8 +70,9 @@ SIMECO_CONST kGrownPitch = 3u;        // its pitch, in radians
 SIMECO_CONST kGrownRoll = 4u;         // its roll, in radians
 SIMECO_CONST kGrownUnroll = 5u;       // minus its roll: the frame turns back after the tilt
 SIMECO_CONST kGrownCodes = 6u;
-// A leaf model's size before it grows.
-SIMECO_CONST_FLOAT kLeafModelSize = 1.0f;
+// A leaf model's size before it grows, in the scripts' units: the seed plants' leaves are about as long as an
+// internode grows in its first stages (GrowRate 0.5 for GrowTime 3 s).
+SIMECO_CONST_FLOAT kLeafModelSize = 3.0f;
 
 // Push constants of tick.comp and grown_sizes.comp. `count` is kCountOnDevice where the plant table's last entry
 // counts the modules.

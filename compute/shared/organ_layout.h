@@ -54,7 +54,17 @@ struct OrganTable {
     int boundsMax[4];
 };
 
+// Where a plant stands and which way it grows: the rows of an affine map from the plant's own frame (drawn at the
+// origin, growing along +y) into the field: a rotation in xyz, the plant's place in w.
+struct PlantPlacement {
+    vec4 x;
+    vec4 y;
+    vec4 z;
+};
+
 #ifdef __cplusplus
+inline bool operator==(const PlantPlacement& a, const PlantPlacement& b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
+static_assert(sizeof(PlantPlacement) == 48);
 static_assert(sizeof(OrganInstance) == 112);
 static_assert(sizeof(OrganTable) == 80);
 #endif

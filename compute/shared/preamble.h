@@ -13,6 +13,7 @@ namespace simeco::shared {
 using uint = uint32_t;
 struct vec4 {
     float x, y, z, w;
+    bool operator==(const vec4&) const = default;
 };
 } // namespace simeco::shared
 #define SIMECO_SHARED_BEGIN namespace simeco::shared {

@@ -113,7 +113,7 @@ struct TurtlePush {
     float spacing;    // field: distance between plants (0: from the widest plant)
     uint organCapacity; // instances the buffer holds: no organ is written past them
     uint maxGroupsX;    // workgroups a dispatch holds along x (level_layout.comp splits larger ones over y)
-    uint pad0;
+    uint placed;        // place: each plant stands at its PlantPlacement (1), else on the grid (0)
 };
 
 #ifdef __cplusplus

@@ -55,6 +55,10 @@ uint fieldColumns(uint plants) {
     return c;
 }
 
+// A plant's point or direction in the field (shared/organ_layout.h's PlantPlacement; turtle_cpu.cpp does the same).
+vec3 turnDirection(PlantPlacement m, vec3 v) { return vec3(dot(m.x.xyz, v), dot(m.y.xyz, v), dot(m.z.xyz, v)); }
+vec3 placePoint(PlantPlacement m, vec3 p) { return turnDirection(m, p) + vec3(m.x.w, m.y.w, m.z.w); }
+
 vec3 fieldCell(uint plant, uint plants) {
     uint columns = fieldColumns(plants);
     uint rows = (max(plants, 1u) + columns - 1u) / columns;

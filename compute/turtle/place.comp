@@ -1,4 +1,5 @@
-// Turtle, last pass: moves each instance to its plant's place in the field and grows the table's bounds.
+// Turtle, last pass: moves each instance to its plant's place in the field (its PlantPlacement, else its cell of
+// the grid) and grows the table's bounds.
 #version 450
 #extension GL_GOOGLE_include_directive : require
 #include "compute/shared/derive_layout.h"
@@ -8,6 +9,7 @@ layout(set = 0, binding = 0, std430) readonly buffer Total { uint total; };
 layout(set = 0, binding = 1, std430) readonly buffer Field { float spacing; };
 layout(set = 0, binding = 2, std430) buffer Instances { OrganInstance instances[]; };
 layout(set = 0, binding = 3, std430) buffer Table { OrganTable table; };
+layout(set = 0, binding = 4, std430) readonly buffer Placements { PlantPlacement placements[]; };
 layout(push_constant) uniform Push { TurtlePush pc; };
 #include "compute/turtle/turtle_math.glsl"
 #include "compute/turtle/organ_bounds.glsl"
@@ -16,11 +18,26 @@ void main() {
     uint s = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * gl_WorkGroupSize.x + gl_LocalInvocationID.x;
     if (s >= min(total, pc.organCapacity)) return;
     OrganInstance o = instances[s];
-    vec3 d = fieldCell(o.plant, pc.plants) * spacing;
-    o.position.xyz += d;
-    if (o.kind == kOrganTriangle) {
-        o.heading.xyz += d;
-        o.up.xyz += d;
+    if (pc.placed != 0u) {
+        // A triangle's three vectors are its corners; every other organ's are a point and directions.
+        PlantPlacement m = placements[o.plant];
+        o.position.xyz = placePoint(m, o.position.xyz);
+        if (o.kind == kOrganTriangle) {
+            o.heading.xyz = placePoint(m, o.heading.xyz);
+            o.up.xyz = placePoint(m, o.up.xyz);
+        } else {
+            o.heading.xyz = turnDirection(m, o.heading.xyz);
+            o.up.xyz = turnDirection(m, o.up.xyz);
+            o.previousHeading.xyz = turnDirection(m, o.previousHeading.xyz);
+            o.nextHeading.xyz = turnDirection(m, o.nextHeading.xyz);
+        }
+    } else {
+        vec3 d = fieldCell(o.plant, pc.plants) * spacing;
+        o.position.xyz += d;
+        if (o.kind == kOrganTriangle) {
+            o.heading.xyz += d;
+            o.up.xyz += d;
+        }
     }
     instances[s] = o;
     Box b = organBox(o);

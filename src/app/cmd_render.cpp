@@ -10,6 +10,7 @@
 #include "app/commands.h"
 #include "app/error_report.h"
 #include "app/field_options.h"
+#include "app/render_options.h"
 #include "draw/image_writers.h"
 #include "draw/renderer.h"
 #include "turtle/turtle_gpu.h"
@@ -33,36 +34,13 @@ bool hasExtension(const std::string& path, const char* ext) {
     return std::filesystem::path(path).extension() == ext;
 }
 
-draw::RenderSettings renderSettings(const RenderArgs& args) {
-    draw::RenderSettings s;
-    unsigned w = 0, h = 0;
-    char x = 0;
-    if (std::sscanf(args.size.c_str(), "%u%c%u", &w, &x, &h) != 3 || x != 'x' || w == 0 || h == 0 || w > 16384 ||
-        h > 16384)
-        throw CommandLineError(fmt::format("--size '{}': expected WIDTHxHEIGHT, each 1 to 16384", args.size));
-    s.width = w;
-    s.height = h;
-    if (!args.camera.empty()) {
-        draw::Camera c;
-        int read = std::sscanf(args.camera.c_str(), "%f,%f,%f", &c.azimuthDegrees, &c.elevationDegrees, &c.distance);
-        if (read < 2 || c.elevationDegrees <= -90 || c.elevationDegrees >= 90)
-            throw CommandLineError(fmt::format(
-                "--camera '{}': expected azimuth,elevation[,distance] in degrees, elevation within (-90, 90)",
-                args.camera));
-        s.camera = c;
-    }
-    s.style = args.style == "toon" ? draw::Style::Toon : draw::Style::Lit;
-    s.shadows = args.shadows == "none" ? draw::Shadows::None : draw::Shadows::Volume;
-    return s;
-}
-
 void runRender(const RenderArgs& args) {
     bool exr = hasExtension(args.output, ".exr");
     if (!exr && !hasExtension(args.output, ".png"))
         throw CommandLineError(fmt::format("-o '{}': the image is written as .exr or .png", args.output));
     if (!args.png.empty() && !hasExtension(args.png, ".png"))
         throw CommandLineError(fmt::format("--png '{}': expected a .png file name", args.png));
-    draw::RenderSettings settings = renderSettings(args);
+    draw::RenderSettings settings = renderSettings(args.size, args.camera, args.style, args.shadows);
 
     // Rendering needs the device whichever backend derives and interprets.
     const field::FieldSource& source = args.source;

@@ -15,5 +15,6 @@ void registerDevicesCommand(CLI::App& app, CommandContext& ctx);
 void registerBenchCommand(CLI::App& app, CommandContext& ctx);
 void registerRenderCommand(CLI::App& app, CommandContext& ctx);
 void registerExportCommand(CLI::App& app, CommandContext& ctx);
+void registerRunCommand(CLI::App& app, CommandContext& ctx);
 
 } // namespace simeco::app

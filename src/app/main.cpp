@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
     simeco::app::registerBenchCommand(app, ctx);
     simeco::app::registerRenderCommand(app, ctx);
     simeco::app::registerExportCommand(app, ctx);
+    simeco::app::registerRunCommand(app, ctx);
 
     try {
         app.parse(argc, argv);

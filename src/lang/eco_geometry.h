@@ -30,7 +30,7 @@ void addEcoOrganGeometry(const ir::EcoPlant& plant, ir::Grammar& g, EcoDrawing d
 inline constexpr float kEcoDefaultGrowTime = 1.0f;
 inline constexpr float kEcoDefaultStemLength = 1.0f;
 inline constexpr float kEcoDefaultStemWidth = 0.1f;
-inline constexpr float kEcoLeafModelSize = shared::kLeafModelSize;
+inline constexpr float kEcoLeafModelSize = 1.0f;
 inline constexpr float kEcoDefaultFlowerSize = 0.3f;
 
 } // namespace simeco::lang

@@ -38,11 +38,20 @@ struct Interpretation {
     float spacing = 1.0f;                              // between neighbouring plants of the field's grid
 };
 
-// How plants stand: in rows and columns on the ground (y = 0), `spacing` apart; 0 spaces them by the widest
-// plant's horizontal extent (times 1.2), so that neighbours do not overlap.
+// How plants stand: each at its placement where there is one per plant; else in rows and columns on the ground
+// (y = 0), `spacing` apart; 0 spaces them by the widest plant's horizontal extent (times 1.2), so that neighbours
+// do not overlap.
 struct FieldOptions {
     float spacing = 0.0f;
+    std::vector<shared::PlantPlacement> placements;
 };
+
+// Where a placement puts the plant's base.
+inline glm::vec3 plantOrigin(const shared::PlantPlacement& m) { return {m.x.w, m.y.w, m.z.w}; }
+
+// The placement of a plant standing at `position`, turned by `yaw` radians about its own axis, then tilted (by
+// the shortest turn) from growing along +y to growing along `direction` (+y where it is zero).
+shared::PlantPlacement placementAt(glm::vec3 position, glm::vec3 direction, float yaw);
 
 // The grid position of plant p of `plants` in units of spacing: centred on the origin, x across, z along.
 glm::vec3 fieldCell(uint32_t plant, uint32_t plants);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include <glm/geometric.hpp>
 
@@ -301,6 +302,35 @@ void translate(OrganInstance& o, glm::vec3 d) {
     }
 }
 
+glm::vec3 turnDirection(const shared::PlantPlacement& m, glm::vec3 v) {
+    return {m.x.x * v.x + m.x.y * v.y + m.x.z * v.z, m.y.x * v.x + m.y.y * v.y + m.y.z * v.z,
+            m.z.x * v.x + m.z.y * v.y + m.z.z * v.z};
+}
+
+void turnDirection(const shared::PlantPlacement& m, shared::vec4& v) {
+    glm::vec3 t = turnDirection(m, glm::vec3(v.x, v.y, v.z));
+    v.x = t.x, v.y = t.y, v.z = t.z;
+}
+
+void placePoint(const shared::PlantPlacement& m, shared::vec4& p) {
+    turnDirection(m, p);
+    p.x += m.x.w, p.y += m.y.w, p.z += m.z.w;
+}
+
+// The organ in the field: a triangle's three vectors are its corners, every other organ's a point and directions.
+void place(OrganInstance& o, const shared::PlantPlacement& m) {
+    placePoint(m, o.position);
+    if (o.kind == kOrganTriangle) {
+        placePoint(m, o.heading);
+        placePoint(m, o.up);
+        return;
+    }
+    turnDirection(m, o.heading);
+    turnDirection(m, o.up);
+    turnDirection(m, o.previousHeading);
+    turnDirection(m, o.nextHeading);
+}
+
 } // namespace
 
 Interpretation interpretCpu(const stream::ModuleString& string, const TurtleCommands& commands,
@@ -316,11 +346,15 @@ Interpretation interpretCpu(const stream::ModuleString& string, const TurtleComm
     }
     float spacing = fieldSpacing(field, plantBounds);
     result.spacing = spacing;
+    const bool placed = !field.placements.empty();
+    if (placed && field.placements.size() != plants)
+        throw std::invalid_argument("interpretCpu: one placement per plant");
     for (uint32_t p = 0; p < plants; ++p) {
-        glm::vec3 origin = fieldCell(p, plants) * spacing;
+        const glm::vec3 origin = placed ? plantOrigin(field.placements[p]) : fieldCell(p, plants) * spacing;
         result.plantOrigins.push_back(origin);
         for (OrganInstance& o : perPlant[p]) {
-            translate(o, origin);
+            if (placed) place(o, field.placements[p]);
+            else translate(o, origin);
             result.bounds.add(organBounds(o));
             ++result.count[o.kind];
         }

@@ -100,6 +100,10 @@ struct GpuTurtle::Impl {
     // derivation step sizes them (made on the first such recording).
     std::optional<vk::ComputePipeline> stepSizes;
     vk::Buffer commandTable, speciesTable, palettes, surfaceScales, surfaceShapes;
+    // Each plant's placement in the field, where the caller gives them (FieldOptions::placements).
+    vk::Buffer placements;
+    // Takes the field's placements, kept while they are the same; refused when they change under a recording.
+    void setPlacements(const turtle::FieldOptions& options, std::uint32_t plants);
     TurtlePush base{};
     std::uint32_t levels = 0;
     std::uint64_t bytesMoved = 0;
@@ -314,6 +318,7 @@ const DeviceOrgans& GpuTurtle::Impl::interpret(const stream::DeviceModules& m, c
     checkRange(std::uint64_t(n) * kOrganKinds, 4, "organ flags");
     reserve(n, m.plants);
     if (scan.capacity() < n * kOrganKinds) scan.reserve(n * kOrganKinds);
+    setPlacements(options, m.plants);
     Run run = begin(m, options);
 
     // The host reads three things between the passes: which marks occur (to skip the searches nothing needs),
@@ -351,6 +356,7 @@ GpuTurtle::Impl::Run GpuTurtle::Impl::begin(const stream::DeviceModules& m, cons
     run.push.plants = m.plants;
     run.push.stride = m.stride;
     run.push.spacing = options.spacing;
+    run.push.placed = options.placements.empty() ? 0u : 1u;
     run.groups = setup.groupsFor(m.count);
     run.chunkGroups = setup.groupsFor((std::uint64_t(m.count) + kTurtleChunk - 1) / kTurtleChunk);
     // Chains of targets are at most n long; odd, so that the jumps end in the second buffer of each pair.
@@ -380,6 +386,7 @@ const DeviceOrgans& GpuTurtle::Impl::record(VkCommandBuffer cmd, const stream::D
                                    vk::MemoryUsage::DeviceLocal, VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT);
     vk::Buffer replaced = brackets.reserve(bound); // the turtle reads no partners: nothing to carry over
 
+    setPlacements(options, m.plants);
     stream::DeviceModules bounded = m;
     bounded.count = bound;
     Run run = begin(bounded, options);
@@ -587,8 +594,21 @@ void GpuTurtle::Impl::recordOrgans(VkCommandBuffer cmd, const Run& run, std::uin
                  run.push, run, kGateModules, Over::Modules);
     field.dispatch(cmd, {b.offsets, scan.totalBuffer(), plantBounds, organs.table, organs.field, status}, run.push, 1);
     vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
-    place.dispatch(cmd, {scan.totalBuffer(), organs.field, organs.instances, organs.table}, run.push, organGroups);
+    place.dispatch(cmd, {scan.totalBuffer(), organs.field, organs.instances, organs.table, placements}, run.push,
+                   organGroups);
     vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+}
+
+void GpuTurtle::Impl::setPlacements(const turtle::FieldOptions& options, std::uint32_t plants) {
+    if (!options.placements.empty() && options.placements.size() != plants)
+        throw std::invalid_argument("GpuTurtle: one placement per plant");
+    if (placements && options.placements == organs.placements) return;
+    if (!pending.empty()) throw std::logic_error("GpuTurtle: the placements changed while recordings are in flight");
+    static const PlantPlacement none{};
+    placements = options.placements.empty()
+                     ? vk::deviceBufferWith(ctx, std::span<const PlantPlacement>(&none, 1))
+                     : vk::deviceBufferWith(ctx, std::span<const PlantPlacement>(options.placements));
+    organs.placements = options.placements;
 }
 
 void GpuTurtle::Impl::reserve(std::uint64_t n, std::uint64_t plants) {
@@ -700,7 +720,9 @@ turtle::Interpretation readBack(const vk::Context& context, const DeviceOrgans& 
         result.bounds.add(b.max);
     }
     result.spacing = spacing;
-    for (std::uint32_t p = 0; p < plants; ++p) result.plantOrigins.push_back(turtle::fieldCell(p, plants) * spacing);
+    for (std::uint32_t p = 0; p < plants; ++p)
+        result.plantOrigins.push_back(p < organs.placements.size() ? turtle::plantOrigin(organs.placements[p])
+                                                                   : turtle::fieldCell(p, plants) * spacing);
     return result;
 }
 

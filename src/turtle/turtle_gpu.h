@@ -43,6 +43,7 @@ struct DeviceOrgans {
     vk::Buffer table;
     vk::Buffer field; // one float: the spacing of the plants' grid
     std::uint32_t capacity = 0; // instances the buffer holds
+    std::vector<shared::PlantPlacement> placements; // where the plants stand, when not on the grid
 };
 
 // The room a recording that reads nothing back interprets a string in: levels of non-linear modules

@@ -218,6 +218,40 @@ TEST_F(TurtleGpuTest, AFieldOfPlantsMatchesTheCpuTurtle) {
     EXPECT_EQ(tally.compared, 2);
 }
 
+// Plants placed by the field (turtle::FieldOptions::placements): turned, tilted and moved as their placements say,
+// on the device as on the CPU; a trunk starts at its plant's place and grows along its direction.
+TEST_F(TurtleGpuTest, PlacedPlantsStandWhereTheirPlacementsPutThem) {
+    ir::Grammar g = lang::loadGrammarFile((kGrammars / "abop" / "fig2.8-ternary.l").string());
+    stream::DeriveOptions options;
+    options.plants = 4;
+    options.steps = 3;
+    stream::ModuleString string = cpu::deriveCpu(g, options).string;
+    turtle::TurtleCommands commands = turtle::turtleCommands(g.alphabet);
+    std::vector<turtle::TurtleSettings> species{turtle::turtleSettings(g, g.alphabet)};
+    turtle::FieldOptions field;
+    const std::vector<glm::vec3> places{{3, 0, -2}, {-5, 1, 0}, {0, 0, 7}, {2, -1, 2}};
+    const std::vector<glm::vec3> directions{{0, 1, 0}, {1, 1, 0}, {0, 0.1f, 0}, {0, -1, 0}};
+    for (size_t p = 0; p < places.size(); ++p)
+        field.placements.push_back(turtle::placementAt(places[p], directions[p], 0.7f * float(p)));
+    turtle::Interpretation want = turtle::interpretCpu(string, commands, species, field);
+    turtle::GpuTurtle turtle(context(), commands, species);
+    turtle::UploadedModules modules(context(), string);
+    turtle::Interpretation got = turtle::readBack(context(), turtle.interpret(modules.view(), field), 4);
+    EXPECT_EQ(firstDifference(want, got), "");
+    ASSERT_EQ(got.plantOrigins.size(), 4u);
+    for (uint32_t p = 0; p < 4; ++p) {
+        EXPECT_LT(glm::length(got.plantOrigins[p] - places[p]), 1e-6f) << p;
+        // The plant's first stem: its trunk.
+        const shared::OrganInstance* trunk = nullptr;
+        for (uint32_t i = 0; i < want.count[shared::kOrganStem] && !trunk; ++i)
+            if (want.organs[want.first[shared::kOrganStem] + i].plant == p)
+                trunk = &want.organs[want.first[shared::kOrganStem] + i];
+        ASSERT_NE(trunk, nullptr) << p;
+        EXPECT_LT(glm::length(v3(trunk->position) - places[p]), 1e-5f) << p;
+        EXPECT_GT(glm::dot(v3(trunk->heading), glm::normalize(directions[p])), 0.9999f) << p;
+    }
+}
+
 // Derivation and turtle without the host in between: the turtle kernels read the string the derivation
 // kernels left on the device (what `simeco render` does when there is no homomorphism to apply).
 TEST_F(TurtleGpuTest, TheDerivedStringOnTheDeviceMatchesTheCpuTurtle) {

@@ -1,0 +1,156 @@
+// `simeco run`: grow a field over simulated time, tick by tick, and write what it did: a line of statistics per
+// tick, a row per plant at the end, and frames of the field as it grows.
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "app/commands.h"
+#include "app/error_report.h"
+#include "app/field_options.h"
+#include "app/render_options.h"
+#include "draw/image_writers.h"
+#include "draw/renderer.h"
+#include "field/field.h"
+#include "field/simulation.h"
+#include "turtle/interpretation.h"
+#include "vk/context.h"
+
+namespace simeco::app {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct RunArgs {
+    field::SimulationOptions simulation;
+    double time = 0;     // 0: until every plant has grown
+    uint32_t frames = 0; // a frame every N ticks; 0: the last only
+    std::string out = "run";
+    std::string size = "960x720";
+    std::string camera;
+    std::string style = "lit";
+    std::string shadows = "volume";
+    std::string device;
+};
+
+// One line on a terminal, rewritten as the run goes.
+class Progress {
+public:
+    Progress(double until, double dt) : until_(until), dt_(dt), shown_(isatty(fileno(stderr)) != 0) {}
+    void show(const field::Simulation& s, double ticksPerSecond) {
+        if (!shown_) return;
+        const double done = std::clamp(s.time() / until_, 0.0, 1.0);
+        const int filled = int(done * 30);
+        const double eta = ticksPerSecond > 0 ? (until_ - s.time()) / dt_ / ticksPerSecond : 0;
+        std::fprintf(stderr, "\r[%s%s] %.1f/%.1f s  %u plants  %llu modules  %.1f ticks/s  ETA %.0f s ",
+                     std::string(size_t(filled), '#').c_str(), std::string(size_t(30 - filled), '.').c_str(),
+                     s.time(), until_, s.plants(), static_cast<unsigned long long>(s.modules()), ticksPerSecond,
+                     std::max(eta, 0.0));
+    }
+    ~Progress() {
+        if (shown_) std::fprintf(stderr, "\n");
+    }
+
+private:
+    double until_, dt_;
+    bool shown_;
+};
+
+// The field now, framed on what is drawn and on where the plants stand.
+draw::Frame drawField(draw::Renderer& renderer, const vk::Context& context, field::Simulation& simulation,
+                      const draw::RenderSettings& settings) {
+    const turtle::DeviceOrgans& organs = simulation.interpret();
+    field::OrganExtent extent = field::organExtent(context, organs);
+    draw::Bounds bounds = extent.bounds;
+    for (const shared::PlantPlacement& p : simulation.placements()) {
+        const glm::vec3 origin = turtle::plantOrigin(p);
+        if (extent.organs == 0) bounds.min = bounds.max = origin;
+        bounds.min = glm::min(bounds.min, origin);
+        bounds.max = glm::max(bounds.max, origin);
+        extent.organs = std::max(extent.organs, 1u);
+    }
+    return renderer.render(organs.instances, organs.table, bounds, settings);
+}
+
+void runRun(const RunArgs& args) {
+    draw::RenderSettings settings = renderSettings(args.size, args.camera, args.style, args.shadows);
+    vk::ContextOptions contextOptions;
+    contextOptions.device = args.device;
+    vk::Context context(contextOptions);
+    field::Simulation simulation(args.simulation, &context);
+    const double until = args.time > 0 ? args.time : simulation.grownBy();
+    const uint64_t ticks = uint64_t(std::ceil(until / args.simulation.dt - 1e-9));
+    const fs::path out(args.out);
+    fs::create_directories(out);
+
+    draw::Renderer renderer(context);
+    draw::OutputBatch outputs;
+    std::string stats;
+    Progress progress(until, args.simulation.dt);
+    const auto start = std::chrono::steady_clock::now();
+    for (uint64_t k = 0; k < ticks; ++k) {
+        const field::TickReport report = simulation.tick();
+        stats += fmt::format("{{\"tick\": {}, \"time\": {}, \"plants\": {}, \"modules\": {}, \"derived\": {}}}\n",
+                             report.tick, report.time, simulation.plants(), report.modules, report.derived);
+        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        progress.show(simulation, double(k + 1) / std::max(seconds, 1e-9));
+        if (args.frames > 0 && (k + 1) % args.frames == 0 && k + 1 < ticks)
+            draw::writePng(outputs, out / fmt::format("frame-{:05}.png", k + 1),
+                           drawField(renderer, context, simulation, settings));
+    }
+    draw::Frame last = drawField(renderer, context, simulation, settings);
+    draw::writeExr(outputs, out / "final.exr", last);
+    draw::writePng(outputs, out / "final.png", last);
+    if (args.frames > 0) draw::writePng(outputs, out / fmt::format("frame-{:05}.png", ticks), last);
+    outputs.write(out / "stats.jsonl", [&](const fs::path& temporary) {
+        std::ofstream file(temporary, std::ios::binary);
+        file << stats;
+        if (!file.flush()) throw draw::OutputError("cannot write the statistics");
+    });
+    outputs.commit();
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::printf("%s: %u plants grown for %.1f s in %llu ticks, %llu modules, %.2f s -> %s\n",
+                args.simulation.file.c_str(), simulation.plants(), simulation.time(),
+                static_cast<unsigned long long>(ticks), static_cast<unsigned long long>(simulation.modules()), seconds,
+                out.string().c_str());
+}
+
+} // namespace
+
+void registerRunCommand(CLI::App& app, CommandContext& ctx) {
+    auto args = std::make_shared<RunArgs>();
+    CLI::App* cmd = app.add_subcommand("run", "Grow a field of plants over simulated time and render it");
+    field::SimulationOptions& s = args->simulation;
+    cmd->add_option("scene", s.file, "scene (.eco) or grammar (.l, .lsys)")->required();
+    cmd->add_option("--time", args->time, "simulated seconds (default: until every plant has grown)")
+        ->check(CLI::Range(0.0, 1e9));
+    cmd->add_option("--dt", s.dt, "simulated seconds per tick (default 0.5)")->check(CLI::Range(1e-3, 1e6));
+    cmd->add_option("--frames", args->frames, "write a PNG frame every N ticks (default: the last frame only)");
+    cmd->add_option("--out", args->out, "folder of the outputs (default: run)");
+    cmd->add_option("--seed", s.seed, "seed of the random streams (default: the file's seed, else 0)")
+        ->check(CLI::Range(int64_t(0), int64_t(UINT32_MAX)));
+    cmd->add_option("--plants", s.plants, "plants in the field; a scene's species take turns (default: the scene's)")
+        ->check(CLI::Range(1u, 1000000u));
+    cmd->add_option("--spacing", s.spacing, "distance between plants of a field (default: from a grown plant)")
+        ->check(CLI::Range(0.0f, 1e6f));
+    cmd->add_option("--size", args->size, "image size WIDTHxHEIGHT (default 960x720)");
+    cmd->add_option("--camera", args->camera, "azimuth,elevation[,distance] in degrees (default: framed on the field)");
+    cmd->add_option("--style", args->style, "lit or toon")->check(CLI::IsMember({"lit", "toon"}));
+    cmd->add_option("--shadows", args->shadows, "volume or none")->check(CLI::IsMember({"volume", "none"}));
+    addBackendOption(*cmd, s.backend, "derivation, growth and turtle: gpu (compute kernels) or cpu (references)");
+    cmd->add_option("--max-modules", s.maxModules, "module budget (default: sized to this machine's memory)");
+    addTimeLimitOption(*cmd, s.maxSeconds);
+    cmd->add_option("--device", args->device, "Vulkan device: an index or a name part (see `simeco devices`)");
+    cmd->callback([args, &ctx] { ctx.exitCode = runReportingErrors([&] { runRun(*args); }); });
+}
+
+} // namespace simeco::app

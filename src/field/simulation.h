@@ -1,0 +1,72 @@
+// A field that grows over simulated time (the growth simulation of ../shared ARCHITECTURE's tick): each tick the
+// plants whose DeriveTime is due derive one step, then every particle ages and grows; the field is drawn from
+// the derived string under its homomorphism, its organs sized by their particles. On the device (the GPU
+// backend: the strings and particles stay there) or by the CPU references.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "compute/shared/organ_layout.h"
+#include "field/backend.h"
+#include "grow/growing_species.h"
+#include "stream/derive_options.h"
+#include "turtle/turtle_gpu.h"
+
+namespace simeco::vk {
+class Context;
+}
+
+namespace simeco::field {
+
+struct SimulationOptions {
+    std::string file;
+    uint32_t plants = 0;   // 0: one plant of each species, where the scene puts it
+    int64_t seed = -1;     // -1: the grammar's `seed:` (or 0)
+    float dt = 0.5f;       // simulated seconds per tick
+    float spacing = 0.0f;  // between neighbouring plants of a field of many; 0: from the plants' grown size
+    uint64_t maxModules = 0;
+    double maxSeconds = stream::kDefaultMaxSeconds;
+    Backend backend = Backend::Gpu;
+};
+
+// What a tick did.
+struct TickReport {
+    uint32_t tick = 0;     // ticks before this one
+    double time = 0;       // simulated seconds after it
+    uint32_t derived = 0;  // plants that derived a step in it
+    uint64_t modules = 0;  // of the derived string, after it
+};
+
+class Simulation {
+public:
+    // Loads the file (lang::EcoDrawing::Grown for a scene), places the plants and starts them from their axioms.
+    // `context` is used by the GPU backend, and by interpret() with either.
+    Simulation(const SimulationOptions& options, const vk::Context* context);
+    ~Simulation();
+    Simulation(const Simulation&) = delete;
+    Simulation& operator=(const Simulation&) = delete;
+
+    TickReport tick();
+
+    double time() const;
+    uint32_t ticks() const;
+    uint32_t plants() const;
+    uint64_t modules() const;
+    // When every plant has derived its steps and every organ's growth has ended, at the latest.
+    double grownBy() const;
+    const grow::GrowingSpecies& species() const;
+    const std::vector<shared::PlantPlacement>& placements() const;
+
+    // The field's organs as they are now, on the device: the turtle kernels' (or with the CPU backend the
+    // reference turtle's, uploaded), valid until the next interpret().
+    const turtle::DeviceOrgans& interpret();
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+} // namespace simeco::field

@@ -65,20 +65,64 @@ private:
     bool shown_;
 };
 
-// The field now, framed on what is drawn and on where the plants stand.
-draw::Frame drawField(draw::Renderer& renderer, const vk::Context& context, field::Simulation& simulation,
-                      const draw::RenderSettings& settings) {
-    const turtle::DeviceOrgans& organs = simulation.interpret();
-    field::OrganExtent extent = field::organExtent(context, organs);
-    draw::Bounds bounds = extent.bounds;
+// The field's organs as they are now and their extent, framed with where the plants stand.
+struct Drawn {
+    const turtle::DeviceOrgans* organs = nullptr;
+    draw::Bounds bounds;
+};
+
+Drawn interpretField(const vk::Context& context, field::Simulation& simulation) {
+    Drawn d;
+    d.organs = &simulation.interpret();
+    field::OrganExtent extent = field::organExtent(context, *d.organs);
+    d.bounds = extent.bounds;
     for (const shared::PlantPlacement& p : simulation.placements()) {
         const glm::vec3 origin = turtle::plantOrigin(p);
-        if (extent.organs == 0) bounds.min = bounds.max = origin;
-        bounds.min = glm::min(bounds.min, origin);
-        bounds.max = glm::max(bounds.max, origin);
+        if (extent.organs == 0) d.bounds.min = d.bounds.max = origin;
+        d.bounds.min = glm::min(d.bounds.min, origin);
+        d.bounds.max = glm::max(d.bounds.max, origin);
         extent.organs = std::max(extent.organs, 1u);
     }
-    return renderer.render(organs.instances, organs.table, bounds, settings);
+    return d;
+}
+
+// A tick's line of stats.jsonl: the field's totals.
+std::string statsLine(const field::TickReport& report, uint32_t plants,
+                      const std::vector<shared::PlantStatistics>& perPlant) {
+    uint64_t organs = 0;
+    double leafArea = 0, light = 0;
+    for (const shared::PlantStatistics& s : perPlant) {
+        organs += s.organs;
+        leafArea += s.leafArea;
+        light += s.light;
+    }
+    return fmt::format("{{\"tick\": {}, \"time\": {}, \"plants\": {}, \"modules\": {}, \"derived\": {}, "
+                       "\"organs\": {}, \"leaf_area\": {:.9g}, \"light\": {:.9g}}}\n",
+                       report.tick, report.time, plants, report.modules, report.derived, organs, leafArea, light);
+}
+
+// plants.csv: a row per plant in plant order.
+std::string plantsTable(const field::Simulation& simulation, const std::vector<shared::PlantStatistics>& perPlant) {
+    std::string csv = "plant,species,x,z,alive,modules,height,leaf_area,light\n";
+    const std::vector<uint64_t> modules = simulation.plantModules();
+    for (uint32_t p = 0; p < simulation.plants(); ++p) {
+        const glm::vec3 at = turtle::plantOrigin(simulation.placements()[p]);
+        std::string species = simulation.speciesName(p);
+        std::replace(species.begin(), species.end(), '"', '\'');
+        const shared::PlantStatistics& s = perPlant[p];
+        // Every plant lives on until competition for light can starve it.
+        csv += fmt::format("{},\"{}\",{:.9g},{:.9g},1,{},{:.9g},{:.9g},{:.9g}\n", p, species, at.x, at.z, modules[p],
+                           s.height, s.leafArea, s.light);
+    }
+    return csv;
+}
+
+void writeText(draw::OutputBatch& outputs, const fs::path& path, const std::string& text) {
+    outputs.write(path, [&](const fs::path& temporary) {
+        std::ofstream file(temporary, std::ios::binary);
+        file << text;
+        if (!file.flush()) throw draw::OutputError(fmt::format("cannot write {}", path.string()));
+    });
 }
 
 void runRun(const RunArgs& args) {
@@ -88,34 +132,35 @@ void runRun(const RunArgs& args) {
     vk::Context context(contextOptions);
     field::Simulation simulation(args.simulation, &context);
     const double until = args.time > 0 ? args.time : simulation.grownBy();
-    const uint64_t ticks = uint64_t(std::ceil(until / args.simulation.dt - 1e-9));
+    const uint64_t ticks = std::max<uint64_t>(1, uint64_t(std::ceil(until / args.simulation.dt - 1e-9)));
     const fs::path out(args.out);
     fs::create_directories(out);
 
     draw::Renderer renderer(context);
     draw::OutputBatch outputs;
     std::string stats;
+    std::vector<shared::PlantStatistics> perPlant;
     Progress progress(until, args.simulation.dt);
     const auto start = std::chrono::steady_clock::now();
     for (uint64_t k = 0; k < ticks; ++k) {
         const field::TickReport report = simulation.tick();
-        stats += fmt::format("{{\"tick\": {}, \"time\": {}, \"plants\": {}, \"modules\": {}, \"derived\": {}}}\n",
-                             report.tick, report.time, simulation.plants(), report.modules, report.derived);
+        const Drawn drawn = interpretField(context, simulation);
+        perPlant = simulation.statistics();
+        stats += statsLine(report, simulation.plants(), perPlant);
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         progress.show(simulation, double(k + 1) / std::max(seconds, 1e-9));
-        if (args.frames > 0 && (k + 1) % args.frames == 0 && k + 1 < ticks)
-            draw::writePng(outputs, out / fmt::format("frame-{:05}.png", k + 1),
-                           drawField(renderer, context, simulation, settings));
+        const bool last = k + 1 == ticks;
+        if (last || (args.frames > 0 && (k + 1) % args.frames == 0)) {
+            draw::Frame frame = renderer.render(drawn.organs->instances, drawn.organs->table, drawn.bounds, settings);
+            if (args.frames > 0) draw::writePng(outputs, out / fmt::format("frame-{:05}.png", k + 1), frame);
+            if (last) {
+                draw::writeExr(outputs, out / "final.exr", frame);
+                draw::writePng(outputs, out / "final.png", frame);
+            }
+        }
     }
-    draw::Frame last = drawField(renderer, context, simulation, settings);
-    draw::writeExr(outputs, out / "final.exr", last);
-    draw::writePng(outputs, out / "final.png", last);
-    if (args.frames > 0) draw::writePng(outputs, out / fmt::format("frame-{:05}.png", ticks), last);
-    outputs.write(out / "stats.jsonl", [&](const fs::path& temporary) {
-        std::ofstream file(temporary, std::ios::binary);
-        file << stats;
-        if (!file.flush()) throw draw::OutputError("cannot write the statistics");
-    });
+    writeText(outputs, out / "stats.jsonl", stats);
+    writeText(outputs, out / "plants.csv", plantsTable(simulation, perPlant));
     outputs.commit();
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::printf("%s: %u plants grown for %.1f s in %llu ticks, %llu modules, %.2f s -> %s\n",

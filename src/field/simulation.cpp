@@ -3,11 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <stdexcept>
 
 #include "compute/shared/growth_layout.h"
 #include "compute/shared/random.h"
 #include "cpu/derive.h"
+#include "field/plant_statistics.h"
 #include "gpu/derive_gpu.h"
 #include "grow/growth_tables.h"
 #include "grow/tick_cpu.h"
@@ -17,6 +19,7 @@
 #include "turtle/turtle_commands.h"
 #include "turtle/turtle_cpu.h"
 #include "turtle/turtle_settings.h"
+#include "vk/buffer.h"
 #include "vk/context.h"
 
 namespace simeco::field {
@@ -77,6 +80,18 @@ struct Simulation::Impl {
     // The CPU backend: the references, and their organs uploaded for drawing.
     std::unique_ptr<cpu::SteppedDerivation> reference;
     turtle::DeviceOrgans uploaded;
+    // What interpret() drew last: the drawn string's particle state and the organs, where statistics() reads them.
+    const vk::Buffer* drawnParticles = nullptr;
+    const turtle::DeviceOrgans* drawnOrgans = nullptr;
+    std::vector<shared::ParticleState> hostParticles;
+    turtle::Interpretation hostOrgans;
+    std::unique_ptr<GpuPlantStatistics> statistics;
+
+    std::vector<float> baseHeights() const {
+        std::vector<float> bases;
+        for (const shared::PlantPlacement& p : field.placements) bases.push_back(turtle::plantOrigin(p).y);
+        return bases;
+    }
 
     grow::TickSettings settings(uint32_t tick) const {
         return {&tables, uint32_t(g.species.size()), options.dt, tick, seed};
@@ -179,6 +194,7 @@ TickReport Simulation::tick() {
     Impl& m = *impl_;
     TickReport report;
     report.tick = m.ticks;
+    m.drawnOrgans = nullptr; // the organs drawn before describe the field before the tick
     m.time = double(m.ticks + 1) * m.options.dt;
     std::vector<uint8_t> due(m.derive.plants, 0);
     for (uint32_t p = 0; p < m.derive.plants; ++p)
@@ -212,12 +228,49 @@ const turtle::DeviceOrgans& Simulation::interpret() {
         const stream::DeviceModules drawn = m.deriver->drawn();
         if (m.tables.drawsGrowth()) m.growth->growSizes(drawn, ts);
         if (!m.turtle) m.turtle = std::make_unique<turtle::GpuTurtle>(*m.context, m.commands, m.turtles);
-        return m.turtle->interpret(drawn, m.field);
+        m.drawnParticles = drawn.particles;
+        m.drawnOrgans = &m.turtle->interpret(drawn, m.field);
+        return *m.drawnOrgans;
     }
     stream::ModuleString drawn = m.reference->drawn();
     if (m.tables.drawsGrowth()) grow::growSizesCpu(ts, m.deriveTimes, drawn);
-    m.uploaded = turtle::uploadOrgans(*m.context, turtle::interpretCpu(drawn, m.commands, m.turtles, m.field));
+    m.hostOrgans = turtle::interpretCpu(drawn, m.commands, m.turtles, m.field);
+    m.hostParticles = std::move(drawn.particles);
+    m.uploaded = turtle::uploadOrgans(*m.context, m.hostOrgans);
+    m.drawnOrgans = &m.uploaded;
     return m.uploaded;
+}
+
+std::vector<shared::PlantStatistics> Simulation::statistics() {
+    Impl& m = *impl_;
+    if (!m.drawnOrgans) throw std::logic_error("Simulation::statistics before interpret()");
+    if (!m.deriver) return plantStatisticsCpu(m.hostOrgans, m.baseHeights(), m.hostParticles);
+    if (!m.statistics) m.statistics = std::make_unique<GpuPlantStatistics>(*m.context);
+    m.context->submitAndWait(
+        [&](VkCommandBuffer cmd) { m.statistics->record(cmd, *m.drawnOrgans, m.drawnParticles, m.baseHeights()); });
+    return m.statistics->read();
+}
+
+std::vector<uint64_t> Simulation::plantModules() const {
+    const Impl& m = *impl_;
+    std::vector<uint64_t> starts;
+    if (m.deriver) {
+        const stream::DeviceModules derived = m.deriver->current();
+        std::vector<uint32_t> table = vk::downloadVector<uint32_t>(*m.context, *derived.plantStarts, derived.plants + 1);
+        starts.assign(table.begin(), table.end());
+    } else {
+        starts.assign(m.reference->current().plantStart.begin(), m.reference->current().plantStart.end());
+    }
+    std::vector<uint64_t> modules;
+    for (size_t p = 0; p + 1 < starts.size(); ++p) modules.push_back(starts[p + 1] - starts[p]);
+    return modules;
+}
+
+std::string Simulation::speciesName(uint32_t plant) const {
+    const Impl& m = *impl_;
+    const uint32_t s = ir::speciesOfPlant(plant, m.g.species.size());
+    if (m.g.ecoPlants[s]) return m.g.ecoPlants[s]->name;
+    return std::filesystem::path(m.options.file).stem().string();
 }
 
 double Simulation::time() const { return impl_->time; }

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "compute/shared/organ_layout.h"
+#include "compute/shared/plant_statistics_layout.h"
 #include "field/backend.h"
 #include "grow/growing_species.h"
 #include "stream/derive_options.h"
@@ -58,11 +59,18 @@ public:
     // When every plant has derived its steps and every organ's growth has ended, at the latest.
     double grownBy() const;
     const grow::GrowingSpecies& species() const;
+    // The name of a plant's species: its scene plant's, else the grammar file's.
+    std::string speciesName(uint32_t plant) const;
+    // Each plant's modules in the derived string (read back from the device's plant table).
+    std::vector<uint64_t> plantModules() const;
     const std::vector<shared::PlantPlacement>& placements() const;
 
     // The field's organs as they are now, on the device: the turtle kernels' (or with the CPU backend the
     // reference turtle's, uploaded), valid until the next interpret().
     const turtle::DeviceOrgans& interpret();
+    // Each plant's statistics from the organs interpret() drew last, in plant order; the host reads back a few
+    // words per plant.
+    std::vector<shared::PlantStatistics> statistics();
 
 private:
     struct Impl;

@@ -265,34 +265,6 @@ private:
     }
 };
 
-Bounds organBounds(const OrganInstance& o) {
-    Bounds b;
-    if (!organIsFinite(o)) { // infinite bounds, which the outputs refuse (finite_organs.h)
-        b.add(glm::vec3(-INFINITY));
-        b.add(glm::vec3(INFINITY));
-        return b;
-    }
-    glm::vec3 p = v3(o.position), h = v3(o.heading);
-    switch (o.kind) {
-    case kOrganStem: {
-        float r = std::max(o.heading.w, o.up.w);
-        b.add(p, r);
-        b.add(p + h * o.position.w, r);
-        break;
-    }
-    case kOrganLeaf:
-        b.add(p, 0.5f * o.heading.w);
-        b.add(p + h * o.position.w, 0.5f * o.heading.w);
-        break;
-    case kOrganTriangle:
-        b.add(p);
-        b.add(h);
-        b.add(v3(o.up));
-        break;
-    default: b.add(p, o.heading.w); break;
-    }
-    return b;
-}
 
 void translate(OrganInstance& o, glm::vec3 d) {
     o.position.x += d.x, o.position.y += d.y, o.position.z += d.z;
@@ -332,6 +304,35 @@ void place(OrganInstance& o, const shared::PlantPlacement& m) {
 }
 
 } // namespace
+
+Bounds organBounds(const OrganInstance& o) {
+    Bounds b;
+    if (!organIsFinite(o)) { // infinite bounds, which the outputs refuse (finite_organs.h)
+        b.add(glm::vec3(-INFINITY));
+        b.add(glm::vec3(INFINITY));
+        return b;
+    }
+    glm::vec3 p = v3(o.position), h = v3(o.heading);
+    switch (o.kind) {
+    case kOrganStem: {
+        float r = std::max(o.heading.w, o.up.w);
+        b.add(p, r);
+        b.add(p + h * o.position.w, r);
+        break;
+    }
+    case kOrganLeaf:
+        b.add(p, 0.5f * o.heading.w);
+        b.add(p + h * o.position.w, 0.5f * o.heading.w);
+        break;
+    case kOrganTriangle:
+        b.add(p);
+        b.add(h);
+        b.add(v3(o.up));
+        break;
+    default: b.add(p, o.heading.w); break;
+    }
+    return b;
+}
 
 Interpretation interpretCpu(const stream::ModuleString& string, const TurtleCommands& commands,
                             const std::vector<TurtleSettings>& species, const FieldOptions& field) {

@@ -17,6 +17,10 @@ namespace simeco::turtle {
 Interpretation interpretCpu(const stream::ModuleString& string, const TurtleCommands& commands,
                             const std::vector<TurtleSettings>& species, const FieldOptions& field = {});
 
+// The box an organ takes, as the turtle kernels bound it (compute/turtle/organ_bounds.glsl): infinite for an organ
+// whose values are not all finite.
+Bounds organBounds(const shared::OrganInstance& o);
+
 // Query modules ?P, ?H, ?L, ?U get the turtle's position or vector where they stand (in the plant's own
 // space), as cpfg fills them after interpreting the string: two parameters get x and y, three x, y and z.
 void fillQueries(stream::ModuleString& string, const TurtleCommands& commands,

@@ -1,0 +1,48 @@
+// What the growth simulation reports of each plant (compute/shared/plant_statistics_layout.h), from the organs the
+// turtle drew: on the device (compute/grow/plant_statistics.comp), with the host reading back a few words per
+// plant, and by the CPU reference the tests compare it with.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+#include "compute/shared/particle_layout.h"
+#include "compute/shared/plant_statistics_layout.h"
+#include "turtle/interpretation.h"
+#include "turtle/turtle_gpu.h"
+#include "vk/buffer.h"
+#include "vk/pipeline.h"
+
+namespace simeco::field {
+
+// The area of a leaf blade of each shape at unit length and width: the leaf mesh's (draw/organ_meshes.h).
+std::array<float, shared::kLeafShapes> leafShapeAreas();
+
+// `baseHeights`: the height each plant stands at; `drawnParticles`: the drawn string's particle state, one per
+// module (the light), or empty.
+std::vector<shared::PlantStatistics> plantStatisticsCpu(const turtle::Interpretation& organs,
+                                                        const std::vector<float>& baseHeights,
+                                                        const std::vector<shared::ParticleState>& drawnParticles);
+
+class GpuPlantStatistics {
+public:
+    explicit GpuPlantStatistics(const vk::Context& context);
+    // Records the statistics of the plants `organs` hold, and their copy for the host, into `cmd`.
+    // `drawnParticles`: the drawn string's particle state, or null.
+    void record(VkCommandBuffer cmd, const turtle::DeviceOrgans& organs, const vk::Buffer* drawnParticles,
+                const std::vector<float>& baseHeights);
+    // After the recording's submission has completed.
+    std::vector<shared::PlantStatistics> read() const;
+
+private:
+    const vk::Context& context_;
+    vk::ComputePipeline kernel_;
+    vk::Buffer shapeAreas_, bases_, statistics_, readback_, noParticles_;
+    std::vector<float> uploadedBases_;
+    uint32_t plants_ = 0;
+};
+
+} // namespace simeco::field

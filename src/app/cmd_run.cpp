@@ -12,6 +12,7 @@
 #include <string>
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include "app/commands.h"
 #include "app/error_report.h"
@@ -65,40 +66,38 @@ private:
     bool shown_;
 };
 
-// The field's organs as they are now and their extent, framed with where the plants stand.
-struct Drawn {
-    const turtle::DeviceOrgans* organs = nullptr;
-    draw::Bounds bounds;
-};
-
-Drawn interpretField(const vk::Context& context, field::Simulation& simulation) {
-    Drawn d;
-    d.organs = &simulation.interpret();
-    field::OrganExtent extent = field::organExtent(context, *d.organs);
-    d.bounds = extent.bounds;
-    for (const shared::PlantPlacement& p : simulation.placements()) {
-        const glm::vec3 origin = turtle::plantOrigin(p);
-        if (extent.organs == 0) d.bounds.min = d.bounds.max = origin;
-        d.bounds.min = glm::min(d.bounds.min, origin);
-        d.bounds.max = glm::max(d.bounds.max, origin);
-        extent.organs = std::max(extent.organs, 1u);
-    }
-    return d;
-}
-
-// A tick's line of stats.jsonl: the field's totals.
-std::string statsLine(const field::TickReport& report, uint32_t plants,
+// A tick's line of stats.jsonl: the field's totals, and each species' (in the order of the scene).
+std::string statsLine(const field::Simulation& simulation, const field::TickReport& report,
                       const std::vector<shared::PlantStatistics>& perPlant) {
-    uint64_t organs = 0;
-    double leafArea = 0, light = 0;
-    for (const shared::PlantStatistics& s : perPlant) {
-        organs += s.organs;
-        leafArea += s.leafArea;
-        light += s.light;
+    struct Totals {
+        uint32_t plants = 0;
+        uint64_t organs = 0;
+        double leafArea = 0, light = 0;
+        void add(const shared::PlantStatistics& s) {
+            ++plants;
+            organs += s.organs;
+            leafArea += s.leafArea;
+            light += s.light;
+        }
+    };
+    Totals field;
+    std::vector<std::pair<std::string, Totals>> species;
+    for (uint32_t p = 0; p < perPlant.size(); ++p) {
+        field.add(perPlant[p]);
+        const std::string name = simulation.speciesName(p);
+        auto it = std::find_if(species.begin(), species.end(), [&](const auto& s) { return s.first == name; });
+        if (it == species.end()) it = species.insert(species.end(), {name, Totals{}});
+        it->second.add(perPlant[p]);
     }
+    std::string bySpecies;
+    for (const auto& [name, t] : species)
+        bySpecies += fmt::format("{}{}: {{\"plants\": {}, \"organs\": {}, \"leaf_area\": {:.9g}, \"light\": {:.9g}}}",
+                                 bySpecies.empty() ? "" : ", ", nlohmann::json(name).dump(), t.plants, t.organs,
+                                 t.leafArea, t.light);
     return fmt::format("{{\"tick\": {}, \"time\": {}, \"plants\": {}, \"modules\": {}, \"derived\": {}, "
-                       "\"organs\": {}, \"leaf_area\": {:.9g}, \"light\": {:.9g}}}\n",
-                       report.tick, report.time, plants, report.modules, report.derived, organs, leafArea, light);
+                       "\"organs\": {}, \"leaf_area\": {:.9g}, \"light\": {:.9g}, \"species\": {{{}}}}}\n",
+                       report.tick, report.time, field.plants, report.modules, report.derived, field.organs,
+                       field.leafArea, field.light, bySpecies);
 }
 
 // plants.csv: a row per plant in plant order.
@@ -137,6 +136,8 @@ void runRun(const RunArgs& args) {
     fs::create_directories(out);
 
     draw::Renderer renderer(context);
+    draw::Bounds framed = simulation.grownBounds();
+    if (framed.empty()) framed = draw::Bounds{};
     draw::OutputBatch outputs;
     std::string stats;
     std::vector<shared::PlantStatistics> perPlant;
@@ -144,14 +145,15 @@ void runRun(const RunArgs& args) {
     const auto start = std::chrono::steady_clock::now();
     for (uint64_t k = 0; k < ticks; ++k) {
         const field::TickReport report = simulation.tick();
-        const Drawn drawn = interpretField(context, simulation);
+        const turtle::DeviceOrgans& organs = simulation.interpret();
         perPlant = simulation.statistics();
-        stats += statsLine(report, simulation.plants(), perPlant);
+        stats += statsLine(simulation, report, perPlant);
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         progress.show(simulation, double(k + 1) / std::max(seconds, 1e-9));
         const bool last = k + 1 == ticks;
         if (last || (args.frames > 0 && (k + 1) % args.frames == 0)) {
-            draw::Frame frame = renderer.render(drawn.organs->instances, drawn.organs->table, drawn.bounds, settings);
+            // Framed on the grown field, so that the camera stays put while the field grows.
+            draw::Frame frame = renderer.render(organs.instances, organs.table, framed, settings);
             if (args.frames > 0) draw::writePng(outputs, out / fmt::format("frame-{:05}.png", k + 1), frame);
             if (last) {
                 draw::writeExr(outputs, out / "final.exr", frame);

@@ -97,7 +97,8 @@ struct Simulation::Impl {
         return {&tables, uint32_t(g.species.size()), options.dt, tick, seed};
     }
     std::vector<shared::PlantPlacement> placeField(uint32_t plants, float spacing) const;
-    float grownSpacing() const;
+    std::vector<turtle::Bounds> grownPlants() const;
+    std::vector<turtle::Bounds> speciesBounds; // grownPlants()
 };
 
 std::vector<shared::PlantPlacement> Simulation::Impl::placeField(uint32_t plants, float spacing) const {
@@ -122,9 +123,9 @@ std::vector<shared::PlantPlacement> Simulation::Impl::placeField(uint32_t plants
     return placements;
 }
 
-// How far apart the plants of a field of many stand: one plant of each species grown on the CPU, its widest
-// horizontal extent, times 1.2, so that grown neighbours touch but do not overlap.
-float Simulation::Impl::grownSpacing() const {
+// Each species' plant grown to the end on the CPU, in its own frame: what a field of many spaces its plants by and
+// what a camera that does not move while the field grows frames.
+std::vector<turtle::Bounds> Simulation::Impl::grownPlants() const {
     stream::DeriveOptions one = derive;
     one.plants = uint32_t(g.species.size());
     cpu::SteppedDerivation plant(g.species, one);
@@ -145,10 +146,12 @@ float Simulation::Impl::grownSpacing() const {
     if (tables.drawsGrowth()) grow::growSizesCpu(ts, times, drawn);
     std::vector<turtle::Bounds> bounds(one.plants);
     turtle::Interpretation organs = turtle::interpretCpu(drawn, commands, turtles, {});
-    for (const shared::OrganInstance& o : organs.organs)
-        bounds[o.plant].add({o.position.x - organs.plantOrigins[o.plant].x, 0, o.position.z - organs.plantOrigins[o.plant].z});
-    turtle::FieldOptions none;
-    return turtle::fieldSpacing(none, bounds);
+    for (const shared::OrganInstance& o : organs.organs) {
+        const turtle::Bounds box = turtle::organBounds(o);
+        bounds[o.plant].add(box.min - organs.plantOrigins[o.plant]);
+        bounds[o.plant].add(box.max - organs.plantOrigins[o.plant]);
+    }
+    return bounds;
 }
 
 Simulation::Simulation(const SimulationOptions& options, const vk::Context* context) : impl_(std::make_unique<Impl>()) {
@@ -173,7 +176,9 @@ Simulation::Simulation(const SimulationOptions& options, const vk::Context* cont
     m.commands = turtle::turtleCommands(alphabet);
     for (const ir::Grammar& grammar : m.g.species) m.turtles.push_back(turtle::turtleSettings(grammar, alphabet));
     const bool asScene = m.g.scene && m.derive.plants == m.g.species.size();
-    const float spacing = asScene ? 0.0f : options.spacing > 0 ? options.spacing : m.grownSpacing();
+    m.speciesBounds = m.grownPlants();
+    // A field of many: grown neighbours touch but do not overlap (turtle::fieldSpacing).
+    const float spacing = asScene ? 0.0f : turtle::fieldSpacing({options.spacing, {}}, m.speciesBounds);
     m.field.placements = m.placeField(m.derive.plants, spacing);
 
     if (options.backend == Backend::Gpu) {
@@ -271,6 +276,24 @@ std::string Simulation::speciesName(uint32_t plant) const {
     const uint32_t s = ir::speciesOfPlant(plant, m.g.species.size());
     if (m.g.ecoPlants[s]) return m.g.ecoPlants[s]->name;
     return std::filesystem::path(m.options.file).stem().string();
+}
+
+draw::Bounds Simulation::grownBounds() const {
+    const Impl& m = *impl_;
+    draw::Bounds field{glm::vec3(1e30f), glm::vec3(-1e30f)};
+    for (uint32_t p = 0; p < m.derive.plants; ++p) {
+        const turtle::Bounds& b = m.speciesBounds[ir::speciesOfPlant(p, m.g.species.size())];
+        if (b.empty()) continue;
+        const shared::PlantPlacement& at = m.field.placements[p];
+        for (int corner = 0; corner < 8; ++corner) {
+            const glm::vec3 c((corner & 1) ? b.max.x : b.min.x, (corner & 2) ? b.max.y : b.min.y,
+                              (corner & 4) ? b.max.z : b.min.z);
+            const glm::vec3 q = turtle::placePoint(at, c);
+            field.min = glm::min(field.min, q);
+            field.max = glm::max(field.max, q);
+        }
+    }
+    return field;
 }
 
 double Simulation::time() const { return impl_->time; }

@@ -11,6 +11,7 @@
 
 #include "compute/shared/organ_layout.h"
 #include "compute/shared/plant_statistics_layout.h"
+#include "draw/bounds.h"
 #include "field/backend.h"
 #include "grow/growing_species.h"
 #include "stream/derive_options.h"
@@ -58,6 +59,9 @@ public:
     uint64_t modules() const;
     // When every plant has derived its steps and every organ's growth has ended, at the latest.
     double grownBy() const;
+    // Where the field will reach when grown, as one plant of each species grows on the CPU (a plant's own random
+    // draws may take it a little further): what a camera that stays put while the field grows frames.
+    draw::Bounds grownBounds() const;
     const grow::GrowingSpecies& species() const;
     // The name of a plant's species: its scene plant's, else the grammar file's.
     std::string speciesName(uint32_t plant) const;

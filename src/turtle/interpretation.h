@@ -46,8 +46,15 @@ struct FieldOptions {
     std::vector<shared::PlantPlacement> placements;
 };
 
-// Where a placement puts the plant's base.
+// Where a placement puts the plant's base, a direction of the plant's frame, and a point of it.
 inline glm::vec3 plantOrigin(const shared::PlantPlacement& m) { return {m.x.w, m.y.w, m.z.w}; }
+inline glm::vec3 turnDirection(const shared::PlantPlacement& m, glm::vec3 v) {
+    return {m.x.x * v.x + m.x.y * v.y + m.x.z * v.z, m.y.x * v.x + m.y.y * v.y + m.y.z * v.z,
+            m.z.x * v.x + m.z.y * v.y + m.z.z * v.z};
+}
+inline glm::vec3 placePoint(const shared::PlantPlacement& m, glm::vec3 p) {
+    return turnDirection(m, p) + plantOrigin(m);
+}
 
 // The placement of a plant standing at `position`, turned by `yaw` radians about its own axis, then tilted (by
 // the shortest turn) from growing along +y to growing along `direction` (+y where it is zero).

@@ -274,13 +274,8 @@ void translate(OrganInstance& o, glm::vec3 d) {
     }
 }
 
-glm::vec3 turnDirection(const shared::PlantPlacement& m, glm::vec3 v) {
-    return {m.x.x * v.x + m.x.y * v.y + m.x.z * v.z, m.y.x * v.x + m.y.y * v.y + m.y.z * v.z,
-            m.z.x * v.x + m.z.y * v.y + m.z.z * v.z};
-}
-
 void turnDirection(const shared::PlantPlacement& m, shared::vec4& v) {
-    glm::vec3 t = turnDirection(m, glm::vec3(v.x, v.y, v.z));
+    glm::vec3 t = turtle::turnDirection(m, glm::vec3(v.x, v.y, v.z));
     v.x = t.x, v.y = t.y, v.z = t.z;
 }
 

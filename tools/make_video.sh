@@ -1,0 +1,49 @@
+#!/usr/bin/env bash
+# Turns a `simeco run --frames N` folder's frames (frame-00001.png, ...) into a time-lapse: an MP4 (H.264) or an
+# animated GIF, chosen by the output's extension.
+# Usage: tools/make_video.sh RUN_DIR OUT.mp4|OUT.gif [FRAMES_PER_SECOND]
+# Needs ffmpeg (Debian package ffmpeg, installed here with apt-get when missing).
+set -euo pipefail
+if [ $# -lt 2 ] || [ $# -gt 3 ]; then
+  echo "usage: $0 RUN_DIR OUT.mp4|OUT.gif [FRAMES_PER_SECOND]" >&2
+  exit 2
+fi
+dir=$1
+out=$2
+fps=${3:-12}
+frames=$(find "$dir" -maxdepth 1 -name 'frame-*.png' | sort)
+[ -n "$frames" ] || { echo "$0: no frame-*.png in $dir (run simeco run with --frames N)" >&2; exit 2; }
+case "$out" in
+  *.mp4 | *.gif) ;;
+  *) echo "$0: $out: the video is written as .mp4 or .gif" >&2; exit 2 ;;
+esac
+
+if ! command -v ffmpeg >/dev/null 2>&1; then
+  sudo_cmd=""
+  [ "$(id -u)" -ne 0 ] && sudo_cmd="sudo"
+  echo "make_video: installing ffmpeg" >&2
+  $sudo_cmd apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo_cmd apt-get install -y -qq --no-install-recommends ffmpeg
+fi
+
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+# The frames numbered from 1 without gaps, whatever N the run wrote them every.
+k=0
+for f in $frames; do
+  k=$((k + 1))
+  ln -s "$(realpath "$f")" "$(printf '%s/%06d.png' "$work" "$k")"
+done
+# Written under a temporary name next to the output, then renamed: no partial video is left behind.
+temporary="$(dirname "$out")/.$(basename "$out").partial.${out##*.}"
+trap 'rm -rf "$work" "$temporary"' EXIT
+if [[ "$out" == *.gif ]]; then
+  ffmpeg -loglevel error -y -framerate "$fps" -i "$work/%06d.png" \
+    -vf "split[a][b];[a]palettegen[p];[b][p]paletteuse" "$temporary"
+else
+  # H.264 needs even sizes; yuv420p plays everywhere.
+  ffmpeg -loglevel error -y -framerate "$fps" -i "$work/%06d.png" -vf "scale=trunc(iw/2)*2:trunc(ih/2)*2" \
+    -c:v libx264 -pix_fmt yuv420p "$temporary"
+fi
+mv "$temporary" "$out"
+echo "$out: $k frames at $fps frames/s"

@@ -116,7 +116,18 @@ struct TurtlePush {
     uint placed;        // place: each plant stands at its PlantPlacement (1), else on the grid (0)
 };
 
+// turtle/organ_merge.comp: one batch's organs into the field's instances.
+struct OrganMergePush {
+    uint count[kOrganKinds];       // the batch's organs of each kind, one kind after the other from `source`
+    uint destination[kOrganKinds]; // where each kind's go in the field's instances
+    uint source;                   // the batch's first instance in the buffer the batches were kept in
+    uint organs;                   // the batch's organs
+    uint firstPlant;               // added to each organ's plant
+    uint firstModule;              // added to each organ's module
+};
+
 #ifdef __cplusplus
+static_assert(sizeof(OrganMergePush) == 56);
 static_assert(sizeof(TurtleState) == 64);
 static_assert(sizeof(TurtleStep) == 112);
 static_assert(sizeof(TurtleSpecies) == 48);

@@ -6,16 +6,18 @@
 #include <filesystem>
 #include <stdexcept>
 
-#include "compute/shared/growth_layout.h"
 #include "compute/shared/random.h"
+#include "compute/shared/turtle_state_layout.h"
 #include "cpu/derive.h"
+#include "field/field_placement.h"
+#include "field/grown_plants.h"
 #include "field/plant_statistics.h"
 #include "gpu/derive_gpu.h"
 #include "grow/growth_tables.h"
 #include "grow/tick_cpu.h"
 #include "grow/tick_gpu.h"
 #include "ir/species.h"
-#include "turtle/interpretation.h"
+#include "turtle/organ_merge.h"
 #include "turtle/turtle_commands.h"
 #include "turtle/turtle_cpu.h"
 #include "turtle/turtle_settings.h"
@@ -26,36 +28,36 @@ namespace simeco::field {
 
 namespace {
 
-constexpr float kTwoPi = 6.28318530717958647692f;
-// The random draws of a plant's placement: module key 1 of the growth property pass, one draw per number.
-constexpr uint32_t kPlacementKey = 1;
+// The drawn modules a batch of plants may hold, by the grown plants' count: half of what the turtle's largest
+// per-module buffer (TurtleStep) holds in the smallest storage binding Vulkan guarantees (2^27 bytes), the other
+// half left to plants that grow larger than the one grown before the field. Fixed, so that a seed grows the same
+// field on every device.
+constexpr uint64_t kBatchDrawnModules = (uint64_t(1) << 27) / sizeof(shared::TurtleStep) / 2;
 
-float drawn(const ir::EcoNumber& n, uint32_t seed, uint32_t plant, uint32_t draw) {
-    if (!n.random) return n.min;
-    return n.min + (n.max - n.min) * shared::randomUnit(seed, plant, shared::kGrowPropertyPass, kPlacementKey, draw);
+// The random streams of batch b: the field's seed for the first, another for each other, so that plants at the
+// same place in two batches differ.
+uint32_t batchSeed(uint32_t seed, uint32_t batch) {
+    return batch == 0 ? seed : shared::lowbias32(seed ^ (0x9e3779b9u * batch));
 }
 
-glm::vec3 drawn(const ir::EcoVector& v, uint32_t seed, uint32_t plant, uint32_t firstDraw) {
-    return {drawn(v.x, seed, plant, firstDraw), drawn(v.y, seed, plant, firstDraw + 1),
-            drawn(v.z, seed, plant, firstDraw + 2)};
-}
-
-// The latest a plant is done: its steps, one DeriveTime each, then the longest growth of any stage.
-double latestGrowth(const std::vector<ir::Grammar>& species, const grow::GrowthTables& tables,
-               const std::vector<float>& deriveTimes, int fixedSteps) {
-    float longestGrowth = 0;
-    for (size_t r = 0; r < tables.rows.size(); r += shared::kStageRowFloats)
-        longestGrowth = std::max(longestGrowth, tables.rows[r + shared::propertyMax(shared::kGrowTime)]);
-    double latest = 0;
-    for (uint32_t p = 0; p < deriveTimes.size(); ++p) {
-        const ir::Grammar& g = species[ir::speciesOfPlant(p, species.size())];
-        const int steps = fixedSteps >= 0 ? fixedSteps : g.derivationLength;
-        latest = std::max(latest, double(deriveTimes[p]) * steps);
-    }
-    return latest + longestGrowth;
+template <typename T> std::vector<T> slice(const std::vector<T>& v, uint32_t first, uint32_t count) {
+    return std::vector<T>(v.begin() + first, v.begin() + first + count);
 }
 
 } // namespace
+
+// Plants [first, first + count) of the field, derived and grown on their own: each stage of the field runs batch by
+// batch, so that no buffer binds more than a batch's modules.
+struct Batch {
+    uint32_t first = 0, count = 0;
+    uint32_t seed = 0;
+    std::vector<float> deriveTimes;
+    turtle::FieldOptions field; // its plants' placements
+    std::unique_ptr<gpu::GpuDeriver> deriver;
+    std::unique_ptr<grow::GpuGrowth> growth;
+    std::unique_ptr<cpu::SteppedDerivation> reference;
+    uint64_t modules = 0;
+};
 
 struct Simulation::Impl {
     const vk::Context* context = nullptr;
@@ -66,92 +68,69 @@ struct Simulation::Impl {
     grow::GrowthTables tables;
     std::vector<float> deriveTimes;
     std::vector<float> nextStep;
+    std::vector<shared::PlantPlacement> placements;
+    GrownPlants grown;
     double time = 0;
     uint32_t ticks = 0;
-    uint64_t modules = 0;
     turtle::TurtleCommands commands;
     std::vector<turtle::TurtleSettings> turtles;
-    turtle::FieldOptions field;
+    std::vector<Batch> batches;
 
-    // The GPU backend: the stepped derivation, the growth kernels and the turtle kernels.
-    std::unique_ptr<gpu::GpuDeriver> deriver;
-    std::unique_ptr<grow::GpuGrowth> growth;
+    // Drawing: the turtle kernels, the batches' organs merged, each plant's statistics of the last interpret().
     std::unique_ptr<turtle::GpuTurtle> turtle;
-    // The CPU backend: the references, and their organs uploaded for drawing.
-    std::unique_ptr<cpu::SteppedDerivation> reference;
-    turtle::DeviceOrgans uploaded;
-    // What interpret() drew last: the drawn string's particle state and the organs, where statistics() reads them.
-    const vk::Buffer* drawnParticles = nullptr;
-    const turtle::DeviceOrgans* drawnOrgans = nullptr;
-    std::vector<shared::ParticleState> hostParticles;
-    turtle::Interpretation hostOrgans;
+    std::unique_ptr<turtle::OrganMerge> merge;
     std::unique_ptr<GpuPlantStatistics> statistics;
+    turtle::DeviceOrgans uploaded; // the CPU backend's organs
+    std::vector<shared::PlantStatistics> lastStatistics;
+    bool drawn = false;
 
-    std::vector<float> baseHeights() const {
+    grow::TickSettings settings(const Batch& b, uint32_t tick) const {
+        return {&tables, uint32_t(g.species.size()), options.dt, tick, b.seed};
+    }
+    std::vector<float> baseHeights(const Batch& b) const {
         std::vector<float> bases;
-        for (const shared::PlantPlacement& p : field.placements) bases.push_back(turtle::plantOrigin(p).y);
+        for (const shared::PlantPlacement& p : b.field.placements) bases.push_back(turtle::plantOrigin(p).y);
         return bases;
     }
-
-    grow::TickSettings settings(uint32_t tick) const {
-        return {&tables, uint32_t(g.species.size()), options.dt, tick, seed};
-    }
-    std::vector<shared::PlantPlacement> placeField(uint32_t plants, float spacing) const;
-    std::vector<turtle::Bounds> grownPlants() const;
-    std::vector<turtle::Bounds> speciesBounds; // grownPlants()
+    void makeBatches(uint32_t plantsPerBatch);
+    const turtle::DeviceOrgans& interpretOnDevice();
+    const turtle::DeviceOrgans& interpretOnHost();
 };
 
-std::vector<shared::PlantPlacement> Simulation::Impl::placeField(uint32_t plants, float spacing) const {
-    std::vector<shared::PlantPlacement> placements;
-    const size_t species = g.species.size();
-    // One plant of each species of a scene stands where the scene puts it.
-    const bool asScene = g.scene && plants == species;
-    for (uint32_t p = 0; p < plants; ++p) {
-        const ir::EcoPlant* eco = g.ecoPlants[ir::speciesOfPlant(p, species)];
-        const float yaw = kTwoPi * shared::randomUnit(seed, p, shared::kGrowPropertyPass, kPlacementKey, 6);
-        const glm::vec3 direction = eco ? drawn(eco->direction, seed, p, 3) : glm::vec3(0, 1, 0);
-        glm::vec3 position = eco ? drawn(eco->position, seed, p, 0) : glm::vec3(0);
-        if (!asScene) {
-            // A jittered grid: rows and columns `spacing` apart, each plant moved by up to 0.3 of it.
-            const float jx = shared::randomUnit(seed, p, shared::kGrowPropertyPass, kPlacementKey, 7) - 0.5f;
-            const float jz = shared::randomUnit(seed, p, shared::kGrowPropertyPass, kPlacementKey, 8) - 0.5f;
-            const glm::vec3 cell = turtle::fieldCell(p, plants);
-            position = glm::vec3(cell.x + 0.6f * jx, 0.0f, cell.z + 0.6f * jz) * spacing;
+void Simulation::Impl::makeBatches(uint32_t plantsPerBatch) {
+    const uint32_t species = uint32_t(g.species.size());
+    if (plantsPerBatch == 0) {
+        // As many plants as the grown plants' drawn modules allow.
+        uint64_t perRound = 0;
+        for (uint64_t m : grown.drawnModules) perRound += std::max<uint64_t>(m, 1);
+        plantsPerBatch = uint32_t(std::min<uint64_t>(std::max<uint64_t>(1, kBatchDrawnModules / perRound), 1u << 24)) *
+                         species;
+    }
+    // Whole rounds of the species, so that plant p of a batch is of the field's species of p.
+    plantsPerBatch = std::max(species, plantsPerBatch / species * species);
+    for (uint32_t first = 0; first < derive.plants; first += plantsPerBatch) {
+        Batch b;
+        b.first = first;
+        b.count = std::min(plantsPerBatch, derive.plants - first);
+        b.seed = batchSeed(seed, uint32_t(batches.size()));
+        b.deriveTimes = slice(deriveTimes, first, b.count);
+        b.field.placements = slice(placements, first, b.count);
+        stream::DeriveOptions batch = derive;
+        batch.plants = b.count;
+        batch.seed = b.seed;
+        // The field's module budget shared by its batches as their plants.
+        if (batch.maxModules > 0) batch.maxModules = std::max<uint64_t>(1, derive.maxModules / derive.plants * b.count);
+        if (options.backend == Backend::Gpu) {
+            b.deriver = std::make_unique<gpu::GpuDeriver>(*context, g.species, gpu::GpuStrategy::Parallel);
+            b.deriver->begin(batch);
+            b.growth = std::make_unique<grow::GpuGrowth>(*context, tables, b.deriveTimes);
+            b.modules = b.deriver->current().count;
+        } else {
+            b.reference = std::make_unique<cpu::SteppedDerivation>(g.species, batch);
+            b.modules = b.reference->current().size();
         }
-        placements.push_back(turtle::placementAt(position, direction, yaw));
+        batches.push_back(std::move(b));
     }
-    return placements;
-}
-
-// Each species' plant grown to the end on the CPU, in its own frame: what a field of many spaces its plants by and
-// what a camera that does not move while the field grows frames.
-std::vector<turtle::Bounds> Simulation::Impl::grownPlants() const {
-    stream::DeriveOptions one = derive;
-    one.plants = uint32_t(g.species.size());
-    cpu::SteppedDerivation plant(g.species, one);
-    std::vector<float> times(deriveTimes.begin(), deriveTimes.begin() + std::min(deriveTimes.size(), g.species.size()));
-    times.resize(one.plants, grow::kDefaultDeriveTime);
-    const double until = latestGrowth(g.species, tables, times, derive.steps);
-    std::vector<float> next = times;
-    grow::TickSettings ts = settings(0);
-    ts.dt = std::max(0.25f, *std::min_element(times.begin(), times.end()) / 2);
-    for (double t = 0; t < until + ts.dt; t += ts.dt, ++ts.tick) {
-        std::vector<uint8_t> due(one.plants, 0);
-        for (uint32_t p = 0; p < one.plants; ++p)
-            if (t + ts.dt >= next[p]) due[p] = 1, next[p] += times[p];
-        plant.advance(due);
-        grow::tickCpu(ts, plant.current());
-    }
-    stream::ModuleString drawn = plant.drawn();
-    if (tables.drawsGrowth()) grow::growSizesCpu(ts, times, drawn);
-    std::vector<turtle::Bounds> bounds(one.plants);
-    turtle::Interpretation organs = turtle::interpretCpu(drawn, commands, turtles, {});
-    for (const shared::OrganInstance& o : organs.organs) {
-        const turtle::Bounds box = turtle::organBounds(o);
-        bounds[o.plant].add(box.min - organs.plantOrigins[o.plant]);
-        bounds[o.plant].add(box.max - organs.plantOrigins[o.plant]);
-    }
-    return bounds;
 }
 
 Simulation::Simulation(const SimulationOptions& options, const vk::Context* context) : impl_(std::make_unique<Impl>()) {
@@ -159,6 +138,8 @@ Simulation::Simulation(const SimulationOptions& options, const vk::Context* cont
     m.context = context;
     m.options = options;
     if (!(options.dt > 0) || !std::isfinite(options.dt)) throw std::invalid_argument("the tick's dt must be positive");
+    if (options.backend == Backend::Gpu && !context)
+        throw std::logic_error("the GPU backend grows the field on a Vulkan device");
     std::vector<ir::EcoWarning> warnings;
     m.g = grow::loadGrowingSpecies(options.file, &warnings);
     for (const ir::EcoWarning& w : warnings)
@@ -169,28 +150,20 @@ Simulation::Simulation(const SimulationOptions& options, const vk::Context* cont
     m.derive.maxSeconds = options.maxSeconds;
     m.derive.particles = true;
     m.seed = options.seed >= 0 ? uint32_t(options.seed) : m.g.species.front().seed;
+    m.derive.seed = m.seed;
     m.tables = grow::growthTables(m.g.species, m.g.ecoPlants);
     m.deriveTimes = grow::plantDeriveTimes(m.g.ecoPlants, m.derive.plants, m.seed);
     m.nextStep = m.deriveTimes;
     const ir::Alphabet& alphabet = m.g.species.front().alphabet;
     m.commands = turtle::turtleCommands(alphabet);
     for (const ir::Grammar& grammar : m.g.species) m.turtles.push_back(turtle::turtleSettings(grammar, alphabet));
-    const bool asScene = m.g.scene && m.derive.plants == m.g.species.size();
-    m.speciesBounds = m.grownPlants();
+    m.grown = growOneOfEach(m.g, m.tables, m.derive, m.seed, m.deriveTimes,
+                            latestGrowth(m.g.species, m.tables, m.deriveTimes, m.derive.steps), m.commands, m.turtles);
     // A field of many: grown neighbours touch but do not overlap (turtle::fieldSpacing).
-    const float spacing = asScene ? 0.0f : turtle::fieldSpacing({options.spacing, {}}, m.speciesBounds);
-    m.field.placements = m.placeField(m.derive.plants, spacing);
-
-    if (options.backend == Backend::Gpu) {
-        if (!context) throw std::logic_error("the GPU backend grows the field on a Vulkan device");
-        m.deriver = std::make_unique<gpu::GpuDeriver>(*context, m.g.species, gpu::GpuStrategy::Parallel);
-        m.deriver->begin(m.derive);
-        m.growth = std::make_unique<grow::GpuGrowth>(*context, m.tables, m.deriveTimes);
-        m.modules = m.deriver->current().count;
-    } else {
-        m.reference = std::make_unique<cpu::SteppedDerivation>(m.g.species, m.derive);
-        m.modules = m.reference->current().size();
-    }
+    const float spacing =
+        placedAsScene(m.g, m.derive.plants) ? 0.0f : turtle::fieldSpacing({options.spacing, {}}, m.grown.bounds);
+    m.placements = placeField(m.g, m.derive.plants, m.seed, spacing);
+    m.makeBatches(options.plantsPerBatch);
 }
 
 Simulation::~Simulation() = default;
@@ -199,7 +172,7 @@ TickReport Simulation::tick() {
     Impl& m = *impl_;
     TickReport report;
     report.tick = m.ticks;
-    m.drawnOrgans = nullptr; // the organs drawn before describe the field before the tick
+    m.drawn = false; // what was drawn before describes the field before the tick
     m.time = double(m.ticks + 1) * m.options.dt;
     std::vector<uint8_t> due(m.derive.plants, 0);
     for (uint32_t p = 0; p < m.derive.plants; ++p)
@@ -207,67 +180,101 @@ TickReport Simulation::tick() {
             due[p] = 1;
             m.nextStep[p] += m.deriveTimes[p];
         }
-    const grow::TickSettings ts = m.settings(m.ticks);
-    if (m.deriver) {
-        report.derived = m.deriver->advance(due);
-        const stream::DeviceModules derived = m.deriver->current();
-        m.growth->tick(derived, ts);
-        m.modules = derived.count;
-    } else {
-        report.derived = m.reference->advance(due);
-        grow::tickCpu(ts, m.reference->current());
-        m.modules = m.reference->current().size();
+    for (Batch& b : m.batches) {
+        const std::vector<uint8_t> batchDue = slice(due, b.first, b.count);
+        const grow::TickSettings ts = m.settings(b, m.ticks);
+        if (b.deriver) {
+            report.derived += b.deriver->advance(batchDue);
+            const stream::DeviceModules derived = b.deriver->current();
+            b.growth->tick(derived, ts);
+            b.modules = derived.count;
+        } else {
+            report.derived += b.reference->advance(batchDue);
+            grow::tickCpu(ts, b.reference->current());
+            b.modules = b.reference->current().size();
+        }
+        report.modules += b.modules;
     }
     ++m.ticks;
     report.time = m.time;
-    report.modules = m.modules;
     return report;
+}
+
+const turtle::DeviceOrgans& Simulation::Impl::interpretOnDevice() {
+    if (!turtle) turtle = std::make_unique<turtle::GpuTurtle>(*context, commands, turtles);
+    if (!statistics) statistics = std::make_unique<GpuPlantStatistics>(*context);
+    if (batches.size() > 1 && !merge) merge = std::make_unique<turtle::OrganMerge>(*context);
+    if (merge) merge->begin();
+    lastStatistics.clear();
+    uint64_t firstModule = 0;
+    const turtle::DeviceOrgans* organs = nullptr;
+    for (Batch& b : batches) {
+        // The sizes of this moment: the last tick's.
+        const grow::TickSettings ts = settings(b, ticks == 0 ? 0 : ticks - 1);
+        const stream::DeviceModules drawnModules = b.deriver->drawn();
+        if (tables.drawsGrowth()) b.growth->growSizes(drawnModules, ts);
+        organs = &turtle->interpret(drawnModules, b.field);
+        context->submitAndWait(
+            [&](VkCommandBuffer cmd) { statistics->record(cmd, *organs, drawnModules.particles, baseHeights(b)); });
+        const std::vector<shared::PlantStatistics> s = statistics->read();
+        lastStatistics.insert(lastStatistics.end(), s.begin(), s.end());
+        if (merge) merge->keep(*organs, b.first, firstModule);
+        firstModule += drawnModules.count;
+    }
+    return merge ? merge->merge() : *organs;
+}
+
+const turtle::DeviceOrgans& Simulation::Impl::interpretOnHost() {
+    // The batches' drawn strings one after the other: the field's.
+    stream::ModuleString field;
+    field.plantStart.push_back(0);
+    for (Batch& b : batches) {
+        stream::ModuleString drawnModules = b.reference->drawn();
+        if (tables.drawsGrowth())
+            grow::growSizesCpu(settings(b, ticks == 0 ? 0 : ticks - 1), b.deriveTimes, drawnModules);
+        field.stride = std::max(field.stride, drawnModules.stride);
+        for (size_t i = 0; i < drawnModules.size(); ++i) field.pushFrom(drawnModules, i);
+        field.particles.insert(field.particles.end(), drawnModules.particles.begin(), drawnModules.particles.end());
+        for (size_t p = 1; p < drawnModules.plantStart.size(); ++p)
+            field.plantStart.push_back(field.plantStart[b.first] + drawnModules.plantStart[p]);
+    }
+    turtle::FieldOptions where;
+    where.placements = placements;
+    const turtle::Interpretation organs = turtle::interpretCpu(field, commands, turtles, where);
+    std::vector<float> bases;
+    for (const shared::PlantPlacement& p : placements) bases.push_back(turtle::plantOrigin(p).y);
+    lastStatistics = plantStatisticsCpu(organs, bases, field.particles);
+    uploaded = turtle::uploadOrgans(*context, organs);
+    return uploaded;
 }
 
 const turtle::DeviceOrgans& Simulation::interpret() {
     Impl& m = *impl_;
     if (!m.context) throw std::logic_error("Simulation::interpret: drawing needs a Vulkan device");
-    // The sizes of this moment: the last tick's.
-    const grow::TickSettings ts = m.settings(m.ticks == 0 ? 0 : m.ticks - 1);
-    if (m.deriver) {
-        const stream::DeviceModules drawn = m.deriver->drawn();
-        if (m.tables.drawsGrowth()) m.growth->growSizes(drawn, ts);
-        if (!m.turtle) m.turtle = std::make_unique<turtle::GpuTurtle>(*m.context, m.commands, m.turtles);
-        m.drawnParticles = drawn.particles;
-        m.drawnOrgans = &m.turtle->interpret(drawn, m.field);
-        return *m.drawnOrgans;
-    }
-    stream::ModuleString drawn = m.reference->drawn();
-    if (m.tables.drawsGrowth()) grow::growSizesCpu(ts, m.deriveTimes, drawn);
-    m.hostOrgans = turtle::interpretCpu(drawn, m.commands, m.turtles, m.field);
-    m.hostParticles = std::move(drawn.particles);
-    m.uploaded = turtle::uploadOrgans(*m.context, m.hostOrgans);
-    m.drawnOrgans = &m.uploaded;
-    return m.uploaded;
+    const turtle::DeviceOrgans& organs = m.options.backend == Backend::Gpu ? m.interpretOnDevice() : m.interpretOnHost();
+    m.drawn = true;
+    return organs;
 }
 
-std::vector<shared::PlantStatistics> Simulation::statistics() {
-    Impl& m = *impl_;
-    if (!m.drawnOrgans) throw std::logic_error("Simulation::statistics before interpret()");
-    if (!m.deriver) return plantStatisticsCpu(m.hostOrgans, m.baseHeights(), m.hostParticles);
-    if (!m.statistics) m.statistics = std::make_unique<GpuPlantStatistics>(*m.context);
-    m.context->submitAndWait(
-        [&](VkCommandBuffer cmd) { m.statistics->record(cmd, *m.drawnOrgans, m.drawnParticles, m.baseHeights()); });
-    return m.statistics->read();
+std::vector<shared::PlantStatistics> Simulation::statistics() const {
+    if (!impl_->drawn) throw std::logic_error("Simulation::statistics before interpret() after the last tick");
+    return impl_->lastStatistics;
 }
 
 std::vector<uint64_t> Simulation::plantModules() const {
     const Impl& m = *impl_;
-    std::vector<uint64_t> starts;
-    if (m.deriver) {
-        const stream::DeviceModules derived = m.deriver->current();
-        std::vector<uint32_t> table = vk::downloadVector<uint32_t>(*m.context, *derived.plantStarts, derived.plants + 1);
-        starts.assign(table.begin(), table.end());
-    } else {
-        starts.assign(m.reference->current().plantStart.begin(), m.reference->current().plantStart.end());
-    }
     std::vector<uint64_t> modules;
-    for (size_t p = 0; p + 1 < starts.size(); ++p) modules.push_back(starts[p + 1] - starts[p]);
+    for (const Batch& b : m.batches) {
+        std::vector<uint64_t> starts;
+        if (b.deriver) {
+            const stream::DeviceModules derived = b.deriver->current();
+            std::vector<uint32_t> table = vk::downloadVector<uint32_t>(*m.context, *derived.plantStarts, b.count + 1);
+            starts.assign(table.begin(), table.end());
+        } else {
+            starts.assign(b.reference->current().plantStart.begin(), b.reference->current().plantStart.end());
+        }
+        for (size_t p = 0; p + 1 < starts.size(); ++p) modules.push_back(starts[p + 1] - starts[p]);
+    }
     return modules;
 }
 
@@ -282,13 +289,12 @@ draw::Bounds Simulation::grownBounds() const {
     const Impl& m = *impl_;
     draw::Bounds field{glm::vec3(1e30f), glm::vec3(-1e30f)};
     for (uint32_t p = 0; p < m.derive.plants; ++p) {
-        const turtle::Bounds& b = m.speciesBounds[ir::speciesOfPlant(p, m.g.species.size())];
+        const turtle::Bounds& b = m.grown.bounds[ir::speciesOfPlant(p, m.g.species.size())];
         if (b.empty()) continue;
-        const shared::PlantPlacement& at = m.field.placements[p];
         for (int corner = 0; corner < 8; ++corner) {
             const glm::vec3 c((corner & 1) ? b.max.x : b.min.x, (corner & 2) ? b.max.y : b.min.y,
                               (corner & 4) ? b.max.z : b.min.z);
-            const glm::vec3 q = turtle::placePoint(at, c);
+            const glm::vec3 q = turtle::placePoint(m.placements[p], c);
             field.min = glm::min(field.min, q);
             field.max = glm::max(field.max, q);
         }
@@ -299,11 +305,16 @@ draw::Bounds Simulation::grownBounds() const {
 double Simulation::time() const { return impl_->time; }
 uint32_t Simulation::ticks() const { return impl_->ticks; }
 uint32_t Simulation::plants() const { return impl_->derive.plants; }
-uint64_t Simulation::modules() const { return impl_->modules; }
+uint32_t Simulation::batches() const { return uint32_t(impl_->batches.size()); }
+uint64_t Simulation::modules() const {
+    uint64_t modules = 0;
+    for (const Batch& b : impl_->batches) modules += b.modules;
+    return modules;
+}
 double Simulation::grownBy() const {
     return latestGrowth(impl_->g.species, impl_->tables, impl_->deriveTimes, impl_->derive.steps);
 }
 const grow::GrowingSpecies& Simulation::species() const { return impl_->g; }
-const std::vector<shared::PlantPlacement>& Simulation::placements() const { return impl_->field.placements; }
+const std::vector<shared::PlantPlacement>& Simulation::placements() const { return impl_->placements; }
 
 } // namespace simeco::field

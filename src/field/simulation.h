@@ -1,7 +1,8 @@
-// A field that grows over simulated time (the growth simulation of ../shared ARCHITECTURE's tick): each tick the
-// plants whose DeriveTime is due derive one step, then every particle ages and grows; the field is drawn from
-// the derived string under its homomorphism, its organs sized by their particles. On the device (the GPU
-// backend: the strings and particles stay there) or by the CPU references.
+// A field that grows over simulated time: each tick the plants whose DeriveTime is due derive one step, then every
+// particle ages and grows; the field is drawn from the derived string under its homomorphism, its organs sized by
+// their particles. On the device (the GPU backend: the strings and particles stay there) or by the CPU
+// references. A large field runs in batches of plants, each stage batch by batch, so that no buffer binds more
+// than a batch's modules; the batches' organs are merged into one field to draw.
 #pragma once
 
 #include <cstdint>
@@ -29,6 +30,9 @@ struct SimulationOptions {
     int64_t seed = -1;     // -1: the grammar's `seed:` (or 0)
     float dt = 0.5f;       // simulated seconds per tick
     float spacing = 0.0f;  // between neighbouring plants of a field of many; 0: from the plants' grown size
+    // Plants derived, grown and interpreted together; 0: as many as a storage binding of every device holds
+    // (see simulation.cpp). Each batch but the first has random streams of its own.
+    uint32_t plantsPerBatch = 0;
     uint64_t maxModules = 0;
     double maxSeconds = stream::kDefaultMaxSeconds;
     Backend backend = Backend::Gpu;
@@ -56,6 +60,7 @@ public:
     double time() const;
     uint32_t ticks() const;
     uint32_t plants() const;
+    uint32_t batches() const;
     uint64_t modules() const;
     // When every plant has derived its steps and every organ's growth has ended, at the latest.
     double grownBy() const;
@@ -72,9 +77,9 @@ public:
     // The field's organs as they are now, on the device: the turtle kernels' (or with the CPU backend the
     // reference turtle's, uploaded), valid until the next interpret().
     const turtle::DeviceOrgans& interpret();
-    // Each plant's statistics from the organs interpret() drew last, in plant order; the host reads back a few
-    // words per plant.
-    std::vector<shared::PlantStatistics> statistics();
+    // Each plant's statistics, in plant order, counted with the organs interpret() drew after the last tick (the
+    // host reads back a few words per plant).
+    std::vector<shared::PlantStatistics> statistics() const;
 
 private:
     struct Impl;

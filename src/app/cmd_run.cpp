@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/commands.h"
+#include "app/default_scene.h"
 #include "app/error_report.h"
 #include "app/field_options.h"
 #include "app/render_options.h"
@@ -124,7 +125,12 @@ void writeText(draw::OutputBatch& outputs, const fs::path& path, const std::stri
     });
 }
 
-void runRun(const RunArgs& args) {
+void runRun(RunArgs args) {
+    if (args.simulation.file.empty()) { // the built-in garden
+        args.simulation.file = kDefaultSceneName;
+        args.simulation.sceneText = kDefaultSceneText;
+        if (args.simulation.plants == 0) args.simulation.plants = kDefaultScenePlants;
+    }
     draw::RenderSettings settings = renderSettings(args.size, args.camera, args.style, args.shadows);
     vk::ContextOptions contextOptions;
     contextOptions.device = args.device;
@@ -177,10 +183,12 @@ void registerRunCommand(CLI::App& app, CommandContext& ctx) {
     auto args = std::make_shared<RunArgs>();
     CLI::App* cmd = app.add_subcommand("run", "Grow a field of plants over simulated time and render it");
     field::SimulationOptions& s = args->simulation;
-    cmd->add_option("scene", s.file, "scene (.eco) or grammar (.l, .lsys)")->required();
+    cmd->add_option("scene", s.file,
+                    fmt::format("scene (.eco) or grammar (.l, .lsys); none: the built-in garden, {1} plants of {0}",
+                                kDefaultSceneName, kDefaultScenePlants));
     cmd->add_option("--time", args->time, "simulated seconds (default: until every plant has grown)")
         ->check(CLI::Range(0.0, 1e9));
-    cmd->add_option("--dt", s.dt, "simulated seconds per tick (default 0.5)")->check(CLI::Range(1e-3, 1e6));
+    cmd->add_option("--dt", s.dt, "simulated seconds per tick (default 1)")->check(CLI::Range(1e-3, 1e6));
     cmd->add_option("--frames", args->frames, "write a PNG frame every N ticks (default: the last frame only)");
     cmd->add_option("--out", args->out, "folder of the outputs (default: run)");
     cmd->add_option("--seed", s.seed, "seed of the random streams (default: the file's seed, else 0)")

@@ -17,6 +17,7 @@
 #include "grow/tick_cpu.h"
 #include "grow/tick_gpu.h"
 #include "ir/species.h"
+#include "lang/eco_parser.h"
 #include "turtle/organ_merge.h"
 #include "turtle/turtle_commands.h"
 #include "turtle/turtle_cpu.h"
@@ -141,7 +142,13 @@ Simulation::Simulation(const SimulationOptions& options, const vk::Context* cont
     if (options.backend == Backend::Gpu && !context)
         throw std::logic_error("the GPU backend grows the field on a Vulkan device");
     std::vector<ir::EcoWarning> warnings;
-    m.g = grow::loadGrowingSpecies(options.file, &warnings);
+    if (options.sceneText.empty()) {
+        m.g = grow::loadGrowingSpecies(options.file, &warnings);
+    } else {
+        ir::EcoScene scene = lang::parseEcoText(options.sceneText, options.file);
+        warnings = scene.warnings;
+        m.g = grow::growingSpecies(std::move(scene));
+    }
     for (const ir::EcoWarning& w : warnings)
         std::fprintf(stderr, "%s:%d:%d: warning: %s\n", w.loc.file.c_str(), w.loc.line, w.loc.col, w.message.c_str());
     m.derive.plants = options.plants ? options.plants : uint32_t(m.g.species.size());

@@ -25,10 +25,11 @@ class Context;
 namespace simeco::field {
 
 struct SimulationOptions {
-    std::string file;
+    std::string file;      // a scene or grammar file, or the name `sceneText` goes by in messages
+    std::string sceneText; // a scene's text, read instead of `file` when not empty
     uint32_t plants = 0;   // 0: one plant of each species, where the scene puts it
     int64_t seed = -1;     // -1: the grammar's `seed:` (or 0)
-    float dt = 0.5f;       // simulated seconds per tick
+    float dt = 1.0f;       // simulated seconds per tick
     float spacing = 0.0f;  // between neighbouring plants of a field of many; 0: from the plants' grown size
     // Plants derived, grown and interpreted together; 0: as many as a storage binding of every device holds
     // (see simulation.cpp). Each batch but the first has random streams of its own.

@@ -78,6 +78,11 @@ for g, c in zip(gpu, cpu):
 PY
 check "the device grows the field as the CPU references do" $?
 
+(cd "$work" && "$simeco" run --plants 3 --time 4 --size 64x48 >"$work/default.txt" 2>&1)
+[ -s "$work/run/final.png" ] && grep -q '^0,"Lantan camara",' "$work/run/plants.csv" &&
+  grep -q '^2,"Oxalis corniculata",' "$work/run/plants.csv" && [ "$(wc -l <"$work/run/stats.jsonl")" -eq 4 ]
+check "with no scene, run grows the built-in garden into ./run ($(head -c 200 "$work/default.txt"))" $?
+
 printf 'EcoSystem 1.0 "Bad" {\n  Plant "P" {\n    Stem { Default { GrowRate = ; } }\n  }\n}\n' >"$work/bad.eco"
 "$simeco" run "$work/bad.eco" --out "$work/bad" >/dev/null 2>"$work/err.txt"
 code=$?

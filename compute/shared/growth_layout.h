@@ -53,8 +53,12 @@ SIMECO_CONST kNoiseTime = 6u;
 SIMECO_CONST kStrength = 7u;
 SIMECO_CONST kGeotropism = 8u;
 SIMECO_CONST kStageProperties = 9u;
-SIMECO_FN uint propertyMin(uint property) { return 1u + 2u * property; }
-SIMECO_FN uint propertyMax(uint property) { return 2u + 2u * property; }
+SIMECO_FN uint propertyMin(uint property) {
+    return 1u + 2u * property;
+}
+SIMECO_FN uint propertyMax(uint property) {
+    return 2u + 2u * property;
+}
 
 // The random streams of growth: passes far above any derivation step's, keyed by plant and particle identity.
 SIMECO_CONST kGrowPropertyPass = 0xFFFFFF00u; // a property's draw in its range: draw = property
@@ -63,12 +67,12 @@ SIMECO_CONST kGrowIdentityPass = 0xFFFFFF02u; // a newborn particle's identity: 
 
 // Parameter codes of drawn modules: kGrownValue - code, replaced by the particle's value.
 SIMECO_CONST_FLOAT kGrownValue = -65536.0f;
-SIMECO_CONST kGrownLength = 0u;       // its elongation
-SIMECO_CONST kGrownWidth = 1u;        // its broadening
-SIMECO_CONST kGrownLeafSize = 2u;     // the leaf model's size x (1 + its growth), unfolding over its first DeriveTime
-SIMECO_CONST kGrownPitch = 3u;        // its pitch, in radians
-SIMECO_CONST kGrownRoll = 4u;         // its roll, in radians
-SIMECO_CONST kGrownUnroll = 5u;       // minus its roll: the frame turns back after the tilt
+SIMECO_CONST kGrownLength = 0u;   // its elongation
+SIMECO_CONST kGrownWidth = 1u;    // its broadening
+SIMECO_CONST kGrownLeafSize = 2u; // the leaf model's size x (1 + its growth), unfolding over its first DeriveTime
+SIMECO_CONST kGrownPitch = 3u;    // its pitch, in radians
+SIMECO_CONST kGrownRoll = 4u;     // its roll, in radians
+SIMECO_CONST kGrownUnroll = 5u;   // minus its roll: the frame turns back after the tilt
 SIMECO_CONST kGrownCodes = 6u;
 // A leaf model's size before it grows, in the scripts' units: the seed plants' leaves are about as long as an
 // internode grows in its first stages (GrowRate 0.5 for GrowTime 3 s).
@@ -77,14 +81,14 @@ SIMECO_CONST_FLOAT kLeafModelSize = 3.0f;
 // Push constants of tick.comp and grown_sizes.comp. `count` is kCountOnDevice where the plant table's last entry
 // counts the modules.
 struct GrowPush {
-    float dt;       // seconds this tick advances
-    uint tick;      // ticks before this one
+    float dt;  // seconds this tick advances
+    uint tick; // ticks before this one
     uint seed;
     uint plants;
     uint species;
-    uint symbols;   // alphabet size: the class table's row length
+    uint symbols; // alphabet size: the class table's row length
     uint count;
-    uint stride;    // parameters per module
+    uint stride; // parameters per module
 };
 
 SIMECO_SHARED_END

@@ -63,7 +63,9 @@ struct PlantPlacement {
 };
 
 #ifdef __cplusplus
-inline bool operator==(const PlantPlacement& a, const PlantPlacement& b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
+inline bool operator==(const PlantPlacement& a, const PlantPlacement& b) {
+    return a.x == b.x && a.y == b.y && a.z == b.z;
+}
 static_assert(sizeof(PlantPlacement) == 48);
 static_assert(sizeof(OrganInstance) == 112);
 static_assert(sizeof(OrganTable) == 80);

@@ -54,8 +54,8 @@ public:
         const int filled = int(done * 30);
         const double eta = ticksPerSecond > 0 ? (until_ - s.time()) / dt_ / ticksPerSecond : 0;
         std::fprintf(stderr, "\r[%s%s] %.1f/%.1f s  %u plants  %llu modules  %.1f ticks/s  ETA %.0f s ",
-                     std::string(size_t(filled), '#').c_str(), std::string(size_t(30 - filled), '.').c_str(),
-                     s.time(), until_, s.plants(), static_cast<unsigned long long>(s.modules()), ticksPerSecond,
+                     std::string(size_t(filled), '#').c_str(), std::string(size_t(30 - filled), '.').c_str(), s.time(),
+                     until_, s.plants(), static_cast<unsigned long long>(s.modules()), ticksPerSecond,
                      std::max(eta, 0.0));
     }
     ~Progress() {

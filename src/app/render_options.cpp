@@ -13,8 +13,7 @@ draw::RenderSettings renderSettings(const std::string& size, const std::string& 
     draw::RenderSettings s;
     unsigned w = 0, h = 0;
     char x = 0;
-    if (std::sscanf(size.c_str(), "%u%c%u", &w, &x, &h) != 3 || x != 'x' || w == 0 || h == 0 || w > 16384 ||
-        h > 16384)
+    if (std::sscanf(size.c_str(), "%u%c%u", &w, &x, &h) != 3 || x != 'x' || w == 0 || h == 0 || w > 16384 || h > 16384)
         throw CommandLineError(fmt::format("--size '{}': expected WIDTHxHEIGHT, each 1 to 16384", size));
     s.width = w;
     s.height = h;

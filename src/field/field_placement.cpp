@@ -45,9 +45,9 @@ std::vector<shared::PlantPlacement> placeField(const grow::GrowingSpecies& g, ui
         glm::vec3 position = eco ? drawn(eco->position, seed, p, 0) : glm::vec3(0);
         if (!asScene) {
             const glm::vec3 cell = turtle::fieldCell(p, plants);
-            position = glm::vec3(cell.x + 0.6f * (draw(seed, p, 7) - 0.5f), 0.0f,
-                                 cell.z + 0.6f * (draw(seed, p, 8) - 0.5f)) *
-                       spacing;
+            position =
+                glm::vec3(cell.x + 0.6f * (draw(seed, p, 7) - 0.5f), 0.0f, cell.z + 0.6f * (draw(seed, p, 8) - 0.5f)) *
+                spacing;
         }
         placements.push_back(turtle::placementAt(position, direction, yaw));
     }

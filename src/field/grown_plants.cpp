@@ -46,7 +46,8 @@ GrownPlants growOneOfEach(const grow::GrowingSpecies& g, const grow::GrowthTable
     if (tables.drawsGrowth()) grow::growSizesCpu(ts, times, drawn);
     GrownPlants grown;
     grown.bounds.resize(one.plants);
-    for (uint32_t p = 0; p < one.plants; ++p) grown.drawnModules.push_back(drawn.plantStart[p + 1] - drawn.plantStart[p]);
+    for (uint32_t p = 0; p < one.plants; ++p)
+        grown.drawnModules.push_back(drawn.plantStart[p + 1] - drawn.plantStart[p]);
     const turtle::Interpretation organs = turtle::interpretCpu(drawn, commands, turtles, {});
     for (const shared::OrganInstance& o : organs.organs) {
         const turtle::Bounds box = turtle::organBounds(o);

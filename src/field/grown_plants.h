@@ -16,8 +16,8 @@
 namespace simeco::field {
 
 struct GrownPlants {
-    std::vector<turtle::Bounds> bounds;   // per species, in the plant's own frame (its base at the origin)
-    std::vector<uint64_t> drawnModules;   // per species: the modules of its drawn string
+    std::vector<turtle::Bounds> bounds; // per species, in the plant's own frame (its base at the origin)
+    std::vector<uint64_t> drawnModules; // per species: the modules of its drawn string
 };
 
 // The plants derive as `derive` says (its plant count is replaced by one of each species) with the given

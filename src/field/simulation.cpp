@@ -90,7 +90,8 @@ struct Simulation::Impl {
     }
     std::vector<float> baseHeights(const Batch& b) const {
         std::vector<float> bases;
-        for (const shared::PlantPlacement& p : b.field.placements) bases.push_back(turtle::plantOrigin(p).y);
+        for (const shared::PlantPlacement& p : b.field.placements)
+            bases.push_back(turtle::plantOrigin(p).y);
         return bases;
     }
     void makeBatches(uint32_t plantsPerBatch);
@@ -103,9 +104,10 @@ void Simulation::Impl::makeBatches(uint32_t plantsPerBatch) {
     if (plantsPerBatch == 0) {
         // As many plants as the grown plants' drawn modules allow.
         uint64_t perRound = 0;
-        for (uint64_t m : grown.drawnModules) perRound += std::max<uint64_t>(m, 1);
-        plantsPerBatch = uint32_t(std::min<uint64_t>(std::max<uint64_t>(1, kBatchDrawnModules / perRound), 1u << 24)) *
-                         species;
+        for (uint64_t m : grown.drawnModules)
+            perRound += std::max<uint64_t>(m, 1);
+        plantsPerBatch =
+            uint32_t(std::min<uint64_t>(std::max<uint64_t>(1, kBatchDrawnModules / perRound), 1u << 24)) * species;
     }
     // Whole rounds of the species, so that plant p of a batch is of the field's species of p.
     plantsPerBatch = std::max(species, plantsPerBatch / species * species);
@@ -163,7 +165,8 @@ Simulation::Simulation(const SimulationOptions& options, const vk::Context* cont
     m.nextStep = m.deriveTimes;
     const ir::Alphabet& alphabet = m.g.species.front().alphabet;
     m.commands = turtle::turtleCommands(alphabet);
-    for (const ir::Grammar& grammar : m.g.species) m.turtles.push_back(turtle::turtleSettings(grammar, alphabet));
+    for (const ir::Grammar& grammar : m.g.species)
+        m.turtles.push_back(turtle::turtleSettings(grammar, alphabet));
     m.grown = growOneOfEach(m.g, m.tables, m.derive, m.seed, m.deriveTimes,
                             latestGrowth(m.g.species, m.tables, m.deriveTimes, m.derive.steps), m.commands, m.turtles);
     // A field of many: grown neighbours touch but do not overlap (turtle::fieldSpacing).
@@ -240,7 +243,8 @@ const turtle::DeviceOrgans& Simulation::Impl::interpretOnHost() {
         if (tables.drawsGrowth())
             grow::growSizesCpu(settings(b, ticks == 0 ? 0 : ticks - 1), b.deriveTimes, drawnModules);
         field.stride = std::max(field.stride, drawnModules.stride);
-        for (size_t i = 0; i < drawnModules.size(); ++i) field.pushFrom(drawnModules, i);
+        for (size_t i = 0; i < drawnModules.size(); ++i)
+            field.pushFrom(drawnModules, i);
         field.particles.insert(field.particles.end(), drawnModules.particles.begin(), drawnModules.particles.end());
         for (size_t p = 1; p < drawnModules.plantStart.size(); ++p)
             field.plantStart.push_back(field.plantStart[b.first] + drawnModules.plantStart[p]);
@@ -249,7 +253,8 @@ const turtle::DeviceOrgans& Simulation::Impl::interpretOnHost() {
     where.placements = placements;
     const turtle::Interpretation organs = turtle::interpretCpu(field, commands, turtles, where);
     std::vector<float> bases;
-    for (const shared::PlantPlacement& p : placements) bases.push_back(turtle::plantOrigin(p).y);
+    for (const shared::PlantPlacement& p : placements)
+        bases.push_back(turtle::plantOrigin(p).y);
     lastStatistics = plantStatisticsCpu(organs, bases, field.particles);
     uploaded = turtle::uploadOrgans(*context, organs);
     return uploaded;
@@ -258,7 +263,8 @@ const turtle::DeviceOrgans& Simulation::Impl::interpretOnHost() {
 const turtle::DeviceOrgans& Simulation::interpret() {
     Impl& m = *impl_;
     if (!m.context) throw std::logic_error("Simulation::interpret: drawing needs a Vulkan device");
-    const turtle::DeviceOrgans& organs = m.options.backend == Backend::Gpu ? m.interpretOnDevice() : m.interpretOnHost();
+    const turtle::DeviceOrgans& organs =
+        m.options.backend == Backend::Gpu ? m.interpretOnDevice() : m.interpretOnHost();
     m.drawn = true;
     return organs;
 }
@@ -280,7 +286,8 @@ std::vector<uint64_t> Simulation::plantModules() const {
         } else {
             starts.assign(b.reference->current().plantStart.begin(), b.reference->current().plantStart.end());
         }
-        for (size_t p = 0; p + 1 < starts.size(); ++p) modules.push_back(starts[p + 1] - starts[p]);
+        for (size_t p = 0; p + 1 < starts.size(); ++p)
+            modules.push_back(starts[p + 1] - starts[p]);
     }
     return modules;
 }
@@ -309,19 +316,32 @@ draw::Bounds Simulation::grownBounds() const {
     return field;
 }
 
-double Simulation::time() const { return impl_->time; }
-uint32_t Simulation::ticks() const { return impl_->ticks; }
-uint32_t Simulation::plants() const { return impl_->derive.plants; }
-uint32_t Simulation::batches() const { return uint32_t(impl_->batches.size()); }
+double Simulation::time() const {
+    return impl_->time;
+}
+uint32_t Simulation::ticks() const {
+    return impl_->ticks;
+}
+uint32_t Simulation::plants() const {
+    return impl_->derive.plants;
+}
+uint32_t Simulation::batches() const {
+    return uint32_t(impl_->batches.size());
+}
 uint64_t Simulation::modules() const {
     uint64_t modules = 0;
-    for (const Batch& b : impl_->batches) modules += b.modules;
+    for (const Batch& b : impl_->batches)
+        modules += b.modules;
     return modules;
 }
 double Simulation::grownBy() const {
     return latestGrowth(impl_->g.species, impl_->tables, impl_->deriveTimes, impl_->derive.steps);
 }
-const grow::GrowingSpecies& Simulation::species() const { return impl_->g; }
-const std::vector<shared::PlantPlacement>& Simulation::placements() const { return impl_->placements; }
+const grow::GrowingSpecies& Simulation::species() const {
+    return impl_->g;
+}
+const std::vector<shared::PlantPlacement>& Simulation::placements() const {
+    return impl_->placements;
+}
 
 } // namespace simeco::field

@@ -41,10 +41,10 @@ struct SimulationOptions {
 
 // What a tick did.
 struct TickReport {
-    uint32_t tick = 0;     // ticks before this one
-    double time = 0;       // simulated seconds after it
-    uint32_t derived = 0;  // plants that derived a step in it
-    uint64_t modules = 0;  // of the derived string, after it
+    uint32_t tick = 0;    // ticks before this one
+    double time = 0;      // simulated seconds after it
+    uint32_t derived = 0; // plants that derived a step in it
+    uint64_t modules = 0; // of the derived string, after it
 };
 
 class Simulation {

@@ -71,7 +71,12 @@ uint32_t GpuDeriver::advance(const std::vector<uint8_t>& due) {
 stream::DeviceModules GpuDeriver::current() const {
     const Impl& m = *impl_;
     const Stream& s = m.streams[m.steppedState("current").cur];
-    return stream::DeviceModules{&s.sym,   &s.par, &s.plantStart, s.count, m.plants, static_cast<uint32_t>(m.stride),
+    return stream::DeviceModules{&s.sym,
+                                 &s.par,
+                                 &s.plantStart,
+                                 s.count,
+                                 m.plants,
+                                 static_cast<uint32_t>(m.stride),
                                  m.carriesParticles ? &s.particles : nullptr};
 }
 

@@ -29,7 +29,8 @@ GrowingSpecies growingSpecies(ir::EcoScene parsed) {
     for (size_t i = 0; i < scene->plants.size(); ++i)
         species.push_back(lang::compileEcoPlant(*scene, i, lang::EcoDrawing::Grown));
     g.species = ir::unifySpecies(std::move(species));
-    for (const ir::EcoPlant& plant : scene->plants) g.ecoPlants.push_back(&plant);
+    for (const ir::EcoPlant& plant : scene->plants)
+        g.ecoPlants.push_back(&plant);
     g.scene = std::move(scene);
     return g;
 }

@@ -12,8 +12,8 @@
 namespace simeco::grow {
 
 struct GrowingSpecies {
-    std::shared_ptr<const ir::EcoScene> scene; // null for a grammar file
-    std::vector<ir::Grammar> species;          // one alphabet (ir::unifySpecies)
+    std::shared_ptr<const ir::EcoScene> scene;  // null for a grammar file
+    std::vector<ir::Grammar> species;           // one alphabet (ir::unifySpecies)
     std::vector<const ir::EcoPlant*> ecoPlants; // per species: its plant in the scene, or null
 };
 

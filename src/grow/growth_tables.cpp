@@ -17,15 +17,24 @@ using ir::EcoOrganKind;
 // The script's number for a property of a stage, in shared::kGrowRate's order.
 const std::optional<ir::EcoNumber>& scriptProperty(const ir::EcoStage& stage, uint32_t property) {
     switch (property) {
-    case shared::kGrowRate: return stage.growRate;
-    case shared::kGrowTime: return stage.growTime;
-    case shared::kLifeTime: return stage.lifeTime;
-    case shared::kBroadenRate: return stage.broadenRate;
-    case shared::kWeightFactor: return stage.weightFactor;
-    case shared::kConeNoise: return stage.coneNoise;
-    case shared::kNoiseTime: return stage.noiseTime;
-    case shared::kStrength: return stage.strength;
-    default: return stage.geotropism;
+    case shared::kGrowRate:
+        return stage.growRate;
+    case shared::kGrowTime:
+        return stage.growTime;
+    case shared::kLifeTime:
+        return stage.lifeTime;
+    case shared::kBroadenRate:
+        return stage.broadenRate;
+    case shared::kWeightFactor:
+        return stage.weightFactor;
+    case shared::kConeNoise:
+        return stage.coneNoise;
+    case shared::kNoiseTime:
+        return stage.noiseTime;
+    case shared::kStrength:
+        return stage.strength;
+    default:
+        return stage.geotropism;
     }
 }
 
@@ -37,7 +46,8 @@ void appendRow(std::vector<float>& rows, EcoOrganKind kind, const ir::EcoOrgan& 
     rows[at + shared::kStageNumber] = stageNumber;
     for (uint32_t p = 0; p < shared::kStageProperties; ++p) {
         const ir::EcoNumber* number = nullptr;
-        if (stage && scriptProperty(*stage, p)) number = &*scriptProperty(*stage, p);
+        if (stage && scriptProperty(*stage, p))
+            number = &*scriptProperty(*stage, p);
         else if (organ.defaultStage && scriptProperty(*organ.defaultStage, p))
             number = &*scriptProperty(*organ.defaultStage, p);
         const float fallback = defaultProperty(kind, p);
@@ -57,10 +67,14 @@ float defaultProperty(EcoOrganKind kind, uint32_t property) {
         return stem    ? lang::kEcoDefaultStemLength / lang::kEcoDefaultGrowTime
                : bloom ? lang::kEcoDefaultFlowerSize / lang::kEcoDefaultGrowTime
                        : 0.0f;
-    case shared::kGrowTime: return lang::kEcoDefaultGrowTime;
-    case shared::kBroadenRate: return stem ? lang::kEcoDefaultStemWidth / lang::kEcoDefaultGrowTime : 0.0f;
-    case shared::kStrength: return 1.0f;
-    default: return 0.0f; // no life time limit, weight, noise or tropism
+    case shared::kGrowTime:
+        return lang::kEcoDefaultGrowTime;
+    case shared::kBroadenRate:
+        return stem ? lang::kEcoDefaultStemWidth / lang::kEcoDefaultGrowTime : 0.0f;
+    case shared::kStrength:
+        return 1.0f;
+    default:
+        return 0.0f; // no life time limit, weight, noise or tropism
     }
 }
 
@@ -77,7 +91,8 @@ GrowthTables growthTables(const std::vector<ir::Grammar>& species, const std::ve
     t.species.assign(species.size() * shared::kSpeciesGrowthWords, shared::kGrowNoRow);
     for (size_t s = 0; s < species.size(); ++s) {
         uint32_t* classes = t.classes.data() + s * t.symbols;
-        for (uint32_t sym = 0; sym < t.symbols; ++sym) classes[sym] = shared::kGrowPlainClass + sym;
+        for (uint32_t sym = 0; sym < t.symbols; ++sym)
+            classes[sym] = shared::kGrowPlainClass + sym;
         uint32_t* words = t.species.data() + s * shared::kSpeciesGrowthWords;
         words[shared::kSpeciesFlags] = 0;
         const ir::EcoPlant* plant = s < ecoPlants.size() ? ecoPlants[s] : nullptr;
@@ -90,7 +105,8 @@ GrowthTables growthTables(const std::vector<ir::Grammar>& species, const std::ve
             const ir::EcoOrgan& organ = plant->organ(kind);
             words[shared::kSpeciesFirstRow + k] = uint32_t(t.rows.size() / shared::kStageRowFloats);
             words[shared::kSpeciesRowCount + k] = uint32_t(organ.stages.size());
-            for (const auto& [number, stage] : organ.stages) appendRow(t.rows, kind, organ, &stage, float(number));
+            for (const auto& [number, stage] : organ.stages)
+                appendRow(t.rows, kind, organ, &stage, float(number));
             words[shared::kSpeciesDefaultRow + k] = uint32_t(t.rows.size() / shared::kStageRowFloats);
             appendRow(t.rows, kind, organ, nullptr, -1.0f);
         }

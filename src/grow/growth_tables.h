@@ -15,7 +15,7 @@ namespace simeco::grow {
 inline constexpr float kDefaultDeriveTime = 3.0f;
 
 struct GrowthTables {
-    uint32_t symbols = 0;         // the alphabet's size
+    uint32_t symbols = 0;          // the alphabet's size
     std::vector<uint32_t> classes; // per species and symbol: its module class
     std::vector<uint32_t> species; // kSpeciesGrowthWords per species
     std::vector<float> rows;       // kStageRowFloats per stage row

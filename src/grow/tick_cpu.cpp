@@ -16,7 +16,9 @@ namespace {
 
 constexpr float kTwoPi = 6.28318530717958647692f;
 
-uint32_t idOf(const shared::ParticleState& p) { return std::bit_cast<uint32_t>(p.value[shared::kParticleId]); }
+uint32_t idOf(const shared::ParticleState& p) {
+    return std::bit_cast<uint32_t>(p.value[shared::kParticleId]);
+}
 
 // The row of `organ`'s stage in species `species`: the stage's own, else the organ's Default row.
 const float* stageRow(const GrowthTables& t, uint32_t species, uint32_t organ, float stage) {
@@ -93,14 +95,19 @@ void tickCpu(const TickSettings& ts, stream::ModuleString& s) {
 
 float grownValue(uint32_t code, const float* p, float deriveTime) {
     switch (code) {
-    case shared::kGrownLength: return p[shared::kParticleElongation];
-    case shared::kGrownWidth: return p[shared::kParticleBroadening];
+    case shared::kGrownLength:
+        return p[shared::kParticleElongation];
+    case shared::kGrownWidth:
+        return p[shared::kParticleBroadening];
     case shared::kGrownLeafSize: // a leaf unfolds over its first DeriveTime
         return shared::kLeafModelSize * (1.0f + p[shared::kParticleElongation]) *
                std::min(p[shared::kParticleAge] / deriveTime, 1.0f);
-    case shared::kGrownPitch: return p[shared::kParticlePitch];
-    case shared::kGrownRoll: return p[shared::kParticleRoll];
-    default: return -p[shared::kParticleRoll];
+    case shared::kGrownPitch:
+        return p[shared::kParticlePitch];
+    case shared::kGrownRoll:
+        return p[shared::kParticleRoll];
+    default:
+        return -p[shared::kParticleRoll];
     }
 }
 

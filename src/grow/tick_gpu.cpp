@@ -48,8 +48,8 @@ void GpuGrowth::recordSizes(VkCommandBuffer cmd, const stream::DeviceModules& dr
     if (!drawn.particles) throw std::logic_error("GpuGrowth::recordSizes: the string carries no particle state");
     if (drawn.count == 0) return;
     vk::memoryBarrier(cmd, vk::Hazard::AnyToAny);
-    sizesKernel_.dispatch(cmd, {*drawn.symbols, *drawn.params, *drawn.plantStarts, *drawn.particles, species_,
-                                deriveTimes_},
+    sizesKernel_.dispatch(cmd,
+                          {*drawn.symbols, *drawn.params, *drawn.plantStarts, *drawn.particles, species_, deriveTimes_},
                           growPush(drawn, settings, symbols_), sizesKernel_.groupsFor(drawn.count));
     vk::memoryBarrier(cmd, vk::Hazard::ComputeToCompute);
 }

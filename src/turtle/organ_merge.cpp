@@ -28,7 +28,8 @@ void OrganMerge::begin() {
 void OrganMerge::keep(const DeviceOrgans& batch, uint32_t firstPlant, uint64_t firstModule) {
     Kept k;
     k.table = vk::downloadVector<OrganTable>(context_, batch.table, 1)[0];
-    for (uint32_t kind = 0; kind < kOrganKinds; ++kind) k.organs += k.table.count[kind];
+    for (uint32_t kind = 0; kind < kOrganKinds; ++kind)
+        k.organs += k.table.count[kind];
     k.first = heldOrgans_;
     k.firstPlant = firstPlant;
     k.firstModule = firstModule;
@@ -61,8 +62,10 @@ const DeviceOrgans& OrganMerge::merge() {
     // Each kind's organs of every batch, one batch after the other, the kinds one after the other.
     OrganTable table{};
     for (const Kept& k : kept_)
-        for (uint32_t kind = 0; kind < kOrganKinds; ++kind) table.count[kind] += k.table.count[kind];
-    for (uint32_t kind = 1; kind < kOrganKinds; ++kind) table.first[kind] = table.first[kind - 1] + table.count[kind - 1];
+        for (uint32_t kind = 0; kind < kOrganKinds; ++kind)
+            table.count[kind] += k.table.count[kind];
+    for (uint32_t kind = 1; kind < kOrganKinds; ++kind)
+        table.first[kind] = table.first[kind - 1] + table.count[kind - 1];
     draw::Bounds bounds{glm::vec3(1e30f), glm::vec3(-1e30f)};
     for (const Kept& k : kept_) {
         if (k.organs == 0) continue;

@@ -28,12 +28,13 @@ using GrowthTickTest = GpuTest;
 // Empty when the states agree: identities exactly, values within float rounding of the device's arithmetic.
 std::string particleDifference(const std::vector<shared::ParticleState>& want,
                                const std::vector<shared::ParticleState>& got) {
-    if (want.size() != got.size()) return fmt::format("{} states on the device, {} on the CPU", got.size(), want.size());
+    if (want.size() != got.size())
+        return fmt::format("{} states on the device, {} on the CPU", got.size(), want.size());
     for (size_t i = 0; i < want.size(); ++i)
         for (uint32_t k = 0; k < shared::kParticleStateFloats; ++k) {
             const float a = want[i].value[k], b = got[i].value[k];
             const bool same = k == shared::kParticleId ? std::bit_cast<uint32_t>(a) == std::bit_cast<uint32_t>(b)
-                                                        : std::fabs(a - b) <= 1e-5f * std::max(1.0f, std::fabs(a));
+                                                       : std::fabs(a - b) <= 1e-5f * std::max(1.0f, std::fabs(a));
             if (!same) return fmt::format("module {} slot {}: {} on the device, {} on the CPU", i, k, b, a);
         }
     return "";

@@ -36,7 +36,8 @@ stream::DeriveOptions fieldOf(std::uint32_t plants) {
     // Distinct states for the axioms' modules (one per plant).
     for (std::uint32_t plant = 0; plant < plants; ++plant) {
         shared::ParticleState s;
-        for (std::uint32_t k = 0; k < shared::kParticleStateFloats; ++k) s.value[k] = float(plant) + 0.25f * float(k);
+        for (std::uint32_t k = 0; k < shared::kParticleStateFloats; ++k)
+            s.value[k] = float(plant) + 0.25f * float(k);
         options.initialParticles.push_back(s);
     }
     return options;
@@ -55,7 +56,8 @@ TEST_F(SteppedDeriveTest, EveryPlantDueAtEveryStepIsADerivation) {
     ASSERT_TRUE(deriver.recordsSteps());
     deriver.begin(options);
     const std::vector<std::uint8_t> all(options.plants, 1);
-    for (int step = 1; step <= options.steps; ++step) EXPECT_EQ(deriver.advance(all), options.plants) << step;
+    for (int step = 1; step <= options.steps; ++step)
+        EXPECT_EQ(deriver.advance(all), options.plants) << step;
     EXPECT_EQ(deriver.advance(all), 0u); // no steps left
     stream::DeriveResult want = cpu::deriveCpu(g, options);
     EXPECT_EQ(firstDifference(want, readModules(context(), deriver.current(), want.steps), g.alphabet), "");

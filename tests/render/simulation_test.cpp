@@ -43,7 +43,8 @@ TEST_F(SimulationTest, AFieldInBatchesGrowsOnTheDeviceAsOnTheCpu) {
     ASSERT_EQ(got.count, want.count);
     ASSERT_EQ(got.first, want.first);
     float size = 0;
-    for (int axis = 0; axis < 3; ++axis) size = std::max(size, want.bounds.max[axis] - want.bounds.min[axis]);
+    for (int axis = 0; axis < 3; ++axis)
+        size = std::max(size, want.bounds.max[axis] - want.bounds.min[axis]);
     ASSERT_GT(size, 0.0f);
     for (size_t i = 0; i < want.organs.size(); ++i) {
         const shared::OrganInstance &w = want.organs[i], &g = got.organs[i];

@@ -21,8 +21,8 @@ namespace {
 
 // One plant: an apex that becomes a stem with a leaf, and stems that branch.
 std::string scene(const std::string& stem, const std::string& leaf, const std::string& rules) {
-    return "EcoSystem 1.0 \"Test\" {\n Plant \"P\" {\n DeriveTime = 3.0;\n Apex {}\n Stem {\n" + stem +
-           "}\n Leaf {\n" + leaf + "}\n Grow {\n" + rules + "}\n }\n}\n";
+    return "EcoSystem 1.0 \"Test\" {\n Plant \"P\" {\n DeriveTime = 3.0;\n Apex {}\n Stem {\n" + stem + "}\n Leaf {\n" +
+           leaf + "}\n Grow {\n" + rules + "}\n }\n}\n";
 }
 
 struct Grown {
@@ -46,7 +46,9 @@ stream::DeriveOptions options(uint32_t plants) {
     return o;
 }
 
-uint32_t idOf(const shared::ParticleState& p) { return std::bit_cast<uint32_t>(p.value[shared::kParticleId]); }
+uint32_t idOf(const shared::ParticleState& p) {
+    return std::bit_cast<uint32_t>(p.value[shared::kParticleId]);
+}
 
 TEST(Growth, TheFirstModuleOfAnOrganContinuesItsParticleAndTheOthersAreBorn) {
     Grown g = grown(scene("Default { GrowRate = 1.0; GrowTime = 10.0; BroadenRate = 0.1; }", "",
@@ -76,7 +78,8 @@ TEST(Growth, TheFirstModuleOfAnOrganContinuesItsParticleAndTheOthersAreBorn) {
     }
     EXPECT_NE(idOf(s.particles[3]), idOf(s.particles[5]));
     // The brackets and the rotation are born too, as modules of classes of their own.
-    for (size_t i : {1u, 2u, 4u}) EXPECT_NE(idOf(s.particles[i]), idOf(axiom)) << i;
+    for (size_t i : {1u, 2u, 4u})
+        EXPECT_NE(idOf(s.particles[i]), idOf(axiom)) << i;
     EXPECT_NE(idOf(s.particles[2]), idOf(s.particles[1]));
 }
 
@@ -104,8 +107,8 @@ TEST(Growth, AnApexThatBecomesAStemIsBornAgain) {
 }
 
 TEST(Growth, ALeafGrowsOverTheTicksOfOneDeriveTime) {
-    Grown g = grown(scene("Default { GrowRate = 0.5; GrowTime = 3.0; }",
-                          "Default { GrowRate = 0.1; GrowTime = 3.0; }", "w = A(0);\nA(0) -> S(0)L(0);\n"),
+    Grown g = grown(scene("Default { GrowRate = 0.5; GrowTime = 3.0; }", "Default { GrowRate = 0.1; GrowTime = 3.0; }",
+                          "w = A(0);\nA(0) -> S(0)L(0);\n"),
                     1);
     cpu::SteppedDerivation derivation(g.species.species, options(1));
     grow::TickSettings ts{&g.tables, 1, 0.5f, 0, 1};
@@ -117,16 +120,16 @@ TEST(Growth, ALeafGrowsOverTheTicksOfOneDeriveTime) {
         grow::tickCpu(ts, derivation.current());
         sizes.push_back(leafSize(g, derivation, ts));
     }
-    for (size_t k = 1; k < sizes.size(); ++k) EXPECT_GT(sizes[k], sizes[k - 1]) << "tick " << k;
+    for (size_t k = 1; k < sizes.size(); ++k)
+        EXPECT_GT(sizes[k], sizes[k - 1]) << "tick " << k;
     EXPECT_GT(sizes.front(), 0.0f);
     // Unfolded after one DeriveTime, and grown by GrowRate x GrowTime.
     EXPECT_NEAR(sizes.back(), shared::kLeafModelSize * (1.0f + 0.1f * 3.0f), 1e-5f);
 }
 
 TEST(Growth, RandomRangesAreDrawnPerPlantAndPerParticle) {
-    Grown g = grown(scene("Default { GrowRate = rand(0.1, 1.0); GrowTime = 3.0; }", "",
-                          "w = S(0);\nS(0) -> S(0)[S(0)];\n"),
-                    2);
+    Grown g = grown(
+        scene("Default { GrowRate = rand(0.1, 1.0); GrowTime = 3.0; }", "", "w = S(0);\nS(0) -> S(0)[S(0)];\n"), 2);
     cpu::SteppedDerivation derivation(g.species.species, options(2));
     grow::TickSettings ts{&g.tables, 1, 1.0f, 0, 1};
     grow::tickCpu(ts, derivation.current());

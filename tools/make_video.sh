@@ -18,13 +18,8 @@ case "$out" in
   *) echo "$0: $out: the video is written as .mp4 or .gif" >&2; exit 2 ;;
 esac
 
-if ! command -v ffmpeg >/dev/null 2>&1; then
-  sudo_cmd=""
-  [ "$(id -u)" -ne 0 ] && sudo_cmd="sudo"
-  echo "make_video: installing ffmpeg" >&2
-  $sudo_cmd apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive $sudo_cmd apt-get install -y -qq --no-install-recommends ffmpeg
-fi
+source "$(dirname "$0")/require_command.sh"
+require_command ffmpeg ffmpeg
 
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT

@@ -2,7 +2,8 @@
 # Plots a `simeco bench --json` report: modules per second against string size (modules after the last step),
 # one line per backend (joining each grammar's sizes), log-log. A `simeco bench --render --json` report: organ
 # instances per second against the number of plants, for the turtle kernels, the CPU turtle and frames with and
-# without shadow volumes.
+# without shadow volumes. A `simeco bench --sim --json` report: seconds per tick against the number of plants,
+# the whole tick and each of its stages.
 # Usage: tools/plot_bench.sh BENCH.json OUT.png
 # Needs gnuplot (Debian package gnuplot-nox, installed here with apt-get when missing) and python3.
 set -euo pipefail
@@ -14,13 +15,8 @@ report=$1
 out=$2
 [ -r "$report" ] || { echo "$0: cannot read $report" >&2; exit 2; }
 
-if ! command -v gnuplot >/dev/null 2>&1; then
-  sudo_cmd=""
-  [ "$(id -u)" -ne 0 ] && sudo_cmd="sudo"
-  echo "plot_bench: installing gnuplot-nox" >&2
-  $sudo_cmd apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive $sudo_cmd apt-get install -y -qq --no-install-recommends gnuplot-nox
-fi
+source "$(dirname "$0")/require_command.sh"
+require_command gnuplot gnuplot-nox
 
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
@@ -46,11 +42,46 @@ if report.get("tool") == "simeco bench --render":
             for plants, rate in rows:
                 f.write(f"{plants} {rate}\n")
         plots.append(f"'{work}/{key}.dat' using 1:2 with linespoints lw 2 pt 7 lc rgb '{color}' title '{title}'")
-    with open(f"{work}/render.gp", "w") as f:
+    with open(f"{work}/series.gp", "w") as f:
         f.write(", ".join(plots))
+    with open(f"{work}/ylabel.txt", "w") as f:
+        f.write("organ instances per second (median)")
     device = report.get("device", {}).get("name") or "no GPU"
     copy = report.get("copy_bandwidth") or {}
     title = f"simeco bench --render on {device}"
+    if copy:
+        title += f" (copy bandwidth {copy['bytes_per_second'] / 1e9:.2f} GB/s)"
+    with open(f"{work}/title.txt", "w") as f:
+        f.write(title.replace('"', "'"))
+    sys.exit(0)
+
+if report.get("tool") == "simeco bench --sim":
+    series = [(None, "tick: all its stages", "#000000"), ("derive", "derive", "#1f77b4"), ("grow", "grow", "#2ca02c"),
+              ("interpret", "interpret (turtle)", "#d62728"), ("statistics", "statistics", "#9467bd"),
+              ("draw", "draw a frame", "#8c564b")]
+    plots = []
+    for key, title, color in series:
+        rows = []
+        for e in report["entries"]:
+            if e.get("status") != "ok":
+                continue
+            seconds = e["median_tick_seconds"] if key is None else e["stage_median_seconds"][key]
+            if seconds > 0:
+                rows.append((e["plants"], seconds))
+        if not rows:
+            continue
+        name = key or "tick"
+        with open(f"{work}/{name}.dat", "w") as f:
+            for plants, seconds in rows:
+                f.write(f"{plants} {seconds}\n")
+        plots.append(f"'{work}/{name}.dat' using 1:2 with linespoints lw 2 pt 7 lc rgb '{color}' title '{title}'")
+    with open(f"{work}/series.gp", "w") as f:
+        f.write(", ".join(plots))
+    with open(f"{work}/ylabel.txt", "w") as f:
+        f.write("seconds per tick (median)")
+    device = report.get("device", {}).get("name") or "no GPU"
+    copy = report.get("copy_bandwidth") or {}
+    title = f"simeco bench --sim on {device}"
     if copy:
         title += f" (copy bandwidth {copy['bytes_per_second'] / 1e9:.2f} GB/s)"
     with open(f"{work}/title.txt", "w") as f:
@@ -89,8 +120,8 @@ with open(f"{work}/title.txt", "w") as f:
     f.write(title.replace('"', "'"))
 PY
 
-if [ -f "$work/render.gp" ]; then
-  if [ ! -s "$work/render.gp" ]; then
+if [ -f "$work/series.gp" ]; then
+  if [ ! -s "$work/series.gp" ]; then
     echo "$0: $report has no successful runs to plot" >&2
     exit 1
   fi
@@ -100,11 +131,11 @@ set output "$out"
 set title "$(cat "$work/title.txt")"
 set logscale xy
 set xlabel "plants in the field"
-set ylabel "organ instances per second (median)"
+set ylabel "$(cat "$work/ylabel.txt")"
 set format y "10^{%L}"
 set grid
 set key outside right top
-plot $(cat "$work/render.gp")
+plot $(cat "$work/series.gp")
 GP
   echo "plot_bench: wrote $out"
   exit 0

@@ -12,13 +12,8 @@ stats=$1/stats.jsonl
 out=$2
 [ -r "$stats" ] || { echo "$0: cannot read $stats" >&2; exit 2; }
 
-if ! command -v gnuplot >/dev/null 2>&1; then
-  sudo_cmd=""
-  [ "$(id -u)" -ne 0 ] && sudo_cmd="sudo"
-  echo "plot_run: installing gnuplot-nox" >&2
-  $sudo_cmd apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive $sudo_cmd apt-get install -y -qq --no-install-recommends gnuplot-nox
-fi
+source "$(dirname "$0")/require_command.sh"
+require_command gnuplot gnuplot-nox
 
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT

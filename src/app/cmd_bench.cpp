@@ -12,6 +12,8 @@
 #include "bench/render_bench.h"
 #include "bench/report.h"
 #include "bench/runner.h"
+#include "bench/sim_bench.h"
+#include "bench/suite.h"
 
 namespace simeco::app {
 namespace {
@@ -22,8 +24,31 @@ struct BenchArgs {
     bool noCpu = false;
     bool noGpu = false;
     bool render = false;
+    bool sim = false;
     std::string size = "640x480";
 };
+
+// --size as the render and growth benchmarks take it.
+void frameSize(const std::string& size, std::uint32_t& width, std::uint32_t& height) {
+    char x = 0;
+    if (std::sscanf(size.c_str(), "%u%c%u", &width, &x, &height) != 3 || x != 'x' || width == 0 || height == 0 ||
+        width > 16384 || height > 16384)
+        throw CommandLineError(fmt::format("--size '{}': expected WIDTHxHEIGHT, each 1 to 16384", size));
+}
+
+void runSimBench(const BenchArgs& args) {
+    bench::SimBenchOptions o;
+    o.root = args.options.root.empty() ? bench::defaultSuiteRoot() : args.options.root;
+    o.quick = args.options.quick;
+    o.repeat = args.options.repeat;
+    o.warmUp = args.options.warmUp;
+    o.device = args.options.device;
+    frameSize(args.size, o.width, o.height);
+    bench::SimBenchReport report =
+        bench::runSimBenchmark(o, [](const std::string& line) { std::fprintf(stderr, "bench: %s\n", line.c_str()); });
+    if (!args.json.empty()) bench::writeJsonAtomically(args.json, bench::simReportJson(report));
+    std::fputs(bench::formatSimTable(report).c_str(), stdout);
+}
 
 void runRenderBench(const BenchArgs& args) {
     bench::RenderBenchOptions o;
@@ -34,10 +59,7 @@ void runRenderBench(const BenchArgs& args) {
     o.maxModules = args.options.maxModules;
     o.device = args.options.device;
     o.runCpu = !args.noCpu;
-    char x = 0;
-    if (std::sscanf(args.size.c_str(), "%u%c%u", &o.width, &x, &o.height) != 3 || x != 'x' || o.width == 0 ||
-        o.height == 0 || o.width > 16384 || o.height > 16384)
-        throw CommandLineError(fmt::format("--size '{}': expected WIDTHxHEIGHT, each 1 to 16384", args.size));
+    frameSize(args.size, o.width, o.height);
     bench::RenderBenchReport report = bench::runRenderBenchmark(
         o, [](const std::string& line) { std::fprintf(stderr, "bench: %s\n", line.c_str()); });
     if (!args.json.empty()) bench::writeJsonAtomically(args.json, bench::renderReportJson(report));
@@ -45,10 +67,12 @@ void runRenderBench(const BenchArgs& args) {
 }
 
 void runBench(BenchArgs args) {
-    if (args.render) {
-        if (args.noGpu) throw CommandLineError("--render measures the device: it cannot run with --no-gpu");
-        return runRenderBench(args);
-    }
+    if (args.render && args.sim) throw CommandLineError("--render and --sim are benchmarks of their own: pick one");
+    if ((args.render || args.sim) && args.noGpu)
+        throw CommandLineError(fmt::format("{} measures the device: it cannot run with --no-gpu",
+                                           args.render ? "--render" : "--sim"));
+    if (args.render) return runRenderBench(args);
+    if (args.sim) return runSimBench(args);
     if (args.options.root.empty()) {
         args.options.root = bench::defaultSuiteRoot();
     }
@@ -87,7 +111,10 @@ void registerBenchCommand(CLI::App& app, CommandContext& ctx) {
     cmd->add_flag("--render", args->render,
                   "benchmark the turtle (kernels and CPU reference) and frames with and without shadow volumes on "
                   "fields of 1 to 10,000 plants instead of derivation");
-    cmd->add_option("--size", args->size, "--render: frame size WIDTHxHEIGHT (default 640x480)");
+    cmd->add_flag("--sim", args->sim,
+                  "benchmark the growing field (derive, grow, interpret, statistics and a frame per tick) of the "
+                  "garden at 100, 1,000 and 10,000 plants instead of derivation");
+    cmd->add_option("--size", args->size, "--render, --sim: frame size WIDTHxHEIGHT (default 640x480)");
     cmd->callback([args, &ctx] { ctx.exitCode = runReportingErrors([&] { runBench(*args); }); });
 }
 

@@ -1,6 +1,7 @@
 #include "field/simulation.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -28,6 +29,9 @@
 namespace simeco::field {
 
 namespace {
+
+using Clock = std::chrono::steady_clock;
+double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 // The drawn modules a batch of plants may hold, by the grown plants' count: half of what the turtle's largest
 // per-module buffer (TurtleStep) holds in the smallest storage binding Vulkan guarantees (2^27 bytes), the other
@@ -84,6 +88,7 @@ struct Simulation::Impl {
     turtle::DeviceOrgans uploaded; // the CPU backend's organs
     std::vector<shared::PlantStatistics> lastStatistics;
     bool drawn = false;
+    StageSeconds seconds;
 
     grow::TickSettings settings(const Batch& b, uint32_t tick) const {
         return {&tables, uint32_t(g.species.size()), options.dt, tick, b.seed};
@@ -193,16 +198,19 @@ TickReport Simulation::tick() {
     for (Batch& b : m.batches) {
         const std::vector<uint8_t> batchDue = slice(due, b.first, b.count);
         const grow::TickSettings ts = m.settings(b, m.ticks);
+        Clock::time_point start = Clock::now();
+        report.derived += b.deriver ? b.deriver->advance(batchDue) : b.reference->advance(batchDue);
+        m.seconds.derive += secondsSince(start);
+        start = Clock::now();
         if (b.deriver) {
-            report.derived += b.deriver->advance(batchDue);
             const stream::DeviceModules derived = b.deriver->current();
             b.growth->tick(derived, ts);
             b.modules = derived.count;
         } else {
-            report.derived += b.reference->advance(batchDue);
             grow::tickCpu(ts, b.reference->current());
             b.modules = b.reference->current().size();
         }
+        m.seconds.grow += secondsSince(start);
         report.modules += b.modules;
     }
     ++m.ticks;
@@ -221,20 +229,30 @@ const turtle::DeviceOrgans& Simulation::Impl::interpretOnDevice() {
     for (Batch& b : batches) {
         // The sizes of this moment: the last tick's.
         const grow::TickSettings ts = settings(b, ticks == 0 ? 0 : ticks - 1);
+        Clock::time_point start = Clock::now();
         const stream::DeviceModules drawnModules = b.deriver->drawn();
         if (tables.drawsGrowth()) b.growth->growSizes(drawnModules, ts);
         organs = &turtle->interpret(drawnModules, b.field);
+        seconds.interpret += secondsSince(start);
+        start = Clock::now();
         context->submitAndWait(
             [&](VkCommandBuffer cmd) { statistics->record(cmd, *organs, drawnModules.particles, baseHeights(b)); });
         const std::vector<shared::PlantStatistics> s = statistics->read();
         lastStatistics.insert(lastStatistics.end(), s.begin(), s.end());
+        seconds.statistics += secondsSince(start);
+        start = Clock::now();
         if (merge) merge->keep(*organs, b.first, firstModule);
         firstModule += drawnModules.count;
+        seconds.interpret += secondsSince(start);
     }
-    return merge ? merge->merge() : *organs;
+    const Clock::time_point start = Clock::now();
+    const turtle::DeviceOrgans& field = merge ? merge->merge() : *organs;
+    seconds.interpret += secondsSince(start);
+    return field;
 }
 
 const turtle::DeviceOrgans& Simulation::Impl::interpretOnHost() {
+    Clock::time_point start = Clock::now();
     // The batches' drawn strings one after the other: the field's.
     stream::ModuleString field;
     field.plantStart.push_back(0);
@@ -252,10 +270,13 @@ const turtle::DeviceOrgans& Simulation::Impl::interpretOnHost() {
     turtle::FieldOptions where;
     where.placements = placements;
     const turtle::Interpretation organs = turtle::interpretCpu(field, commands, turtles, where);
+    seconds.interpret += secondsSince(start);
+    start = Clock::now();
     std::vector<float> bases;
     for (const shared::PlantPlacement& p : placements)
         bases.push_back(turtle::plantOrigin(p).y);
     lastStatistics = plantStatisticsCpu(organs, bases, field.particles);
+    seconds.statistics += secondsSince(start);
     uploaded = turtle::uploadOrgans(*context, organs);
     return uploaded;
 }
@@ -340,6 +361,7 @@ double Simulation::grownBy() const {
 const grow::GrowingSpecies& Simulation::species() const {
     return impl_->g;
 }
+const StageSeconds& Simulation::stageSeconds() const { return impl_->seconds; }
 const std::vector<shared::PlantPlacement>& Simulation::placements() const {
     return impl_->placements;
 }

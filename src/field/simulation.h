@@ -47,6 +47,15 @@ struct TickReport {
     uint64_t modules = 0; // of the derived string, after it
 };
 
+// Wall-clock seconds each stage took, summed since the field began. Every stage's call waits for the device, so on
+// a CPU device this is the device's time and on a GPU it includes the submissions' overhead.
+struct StageSeconds {
+    double derive = 0;     // the due plants' derivation steps
+    double grow = 0;       // the particles' tick
+    double interpret = 0;  // the homomorphism, the grown sizes, the turtle and the batches' merge
+    double statistics = 0; // each plant's statistics
+};
+
 class Simulation {
 public:
     // Loads the file (lang::EcoDrawing::Grown for a scene), places the plants and starts them from their axioms.
@@ -69,6 +78,7 @@ public:
     // draws may take it a little further): what a camera that stays put while the field grows frames.
     draw::Bounds grownBounds() const;
     const grow::GrowingSpecies& species() const;
+    const StageSeconds& stageSeconds() const;
     // The name of a plant's species: its scene plant's, else the grammar file's.
     std::string speciesName(uint32_t plant) const;
     // Each plant's modules in the derived string (read back from the device's plant table).

@@ -3,17 +3,7 @@
 set -u
 simeco=$1
 source_dir=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-export SIMECO_KERNEL_CACHE="$work/kernels" # generated kernels stay out of the user's cache
-passed=0
-failed=0
-
-# check NAME STATUS. A name with a command substitution sets $? before STATUS is expanded: such a check
-# takes the status into a variable first.
-check() {
-  if [ "$2" -eq 0 ]; then passed=$((passed + 1)); else failed=$((failed + 1)); echo "FAILED: $1"; fi
-}
+. "$(dirname "$0")/checks.sh"
 
 "$simeco" --help >"$work/help.txt" 2>&1
 check "--help exits 0" $?
@@ -198,5 +188,4 @@ for backend in gpu cpu; do
   done
 done
 
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+finish_checks

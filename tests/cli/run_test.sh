@@ -5,17 +5,8 @@
 set -u
 simeco=$1
 source_dir=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-export SIMECO_KERNEL_CACHE="$work/kernels" # generated kernels stay out of the user's cache
+. "$(dirname "$0")/checks.sh"
 garden="$source_dir/scenes/garden.eco"
-passed=0
-failed=0
-
-# check NAME STATUS (see cli_test.sh).
-check() {
-  if [ "$2" -eq 0 ]; then passed=$((passed + 1)); else failed=$((failed + 1)); echo "FAILED: $1"; fi
-}
 
 grow() { # grow OUT [OPTIONS...]: four garden plants for 12 simulated seconds, a tick a second
   local out=$1
@@ -95,5 +86,4 @@ check "a bad scene writes nothing" $?
 [ $? -eq 2 ]
 check "a tick of no time is refused" $?
 
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+finish_checks

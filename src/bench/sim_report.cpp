@@ -1,0 +1,69 @@
+#include <fmt/format.h>
+
+#include "bench/sim_bench.h"
+
+namespace simeco::bench {
+
+nlohmann::json simReportJson(const SimBenchReport& report) {
+    const SimBenchOptions& o = report.options;
+    nlohmann::json j;
+    j["tool"] = "simeco bench --sim";
+    j["settings"] = {{"quick", o.quick},         {"repeat", o.repeat}, {"warm_up", o.warmUp},
+                     {"width", o.width},         {"height", o.height}, {"scene", report.scene},
+                     {"statistic", "median"},    {"timer", "host wall clock around each blocking stage"}};
+    j["device"] = {{"name", report.deviceName}, {"type", report.deviceType}, {"driver", report.driver}};
+    if (report.copy)
+        j["copy_bandwidth"] = {{"bytes_per_second", report.copy->bytesPerSecond},
+                               {"median_ms", report.copy->medianMillis},
+                               {"timer", report.copy->timestamps ? "gpu timestamps" : "host wall clock"}};
+    j["bytes_per_particle"] = report.bytesPerParticle;
+    j["grow_bytes_per_particle"] = report.growBytesPerParticle;
+    nlohmann::json entries = nlohmann::json::array();
+    for (const SimEntry& e : report.entries) {
+        nlohmann::json entry = {{"plants", e.plants}, {"status", e.status}};
+        if (e.status != "ok") {
+            entry["reason"] = e.reason;
+        } else {
+            entry["batches"] = e.batches;
+            entry["simulated_time"] = e.time;
+            entry["particles"] = e.modules;
+            entry["organs"] = e.organs;
+            entry["tick_seconds"] = e.tickSeconds;
+            entry["median_tick_seconds"] = e.medianTickSeconds;
+            entry["ticks_per_second"] = e.ticksPerSecond;
+            entry["particles_per_second"] = e.particlesPerSecond;
+            entry["grow_bytes_per_second"] = e.growBytesPerSecond;
+            entry["grow_copy_bandwidth_fraction"] = e.copyFraction;
+            entry["stage_median_seconds"] = {{"derive", e.stages.derive},
+                                             {"grow", e.stages.grow},
+                                             {"interpret", e.stages.interpret},
+                                             {"statistics", e.stages.statistics},
+                                             {"draw", e.stages.draw}};
+        }
+        entries.push_back(std::move(entry));
+    }
+    j["entries"] = std::move(entries);
+    return j;
+}
+
+std::string formatSimTable(const SimBenchReport& report) {
+    std::string out = fmt::format("simeco bench --sim: {} on {} ({}); {} bytes of state per particle\n", report.scene,
+                                  report.deviceName, report.deviceType, report.bytesPerParticle);
+    if (report.copy) out += fmt::format("copy bandwidth: {:.2f} GB/s\n", report.copy->bytesPerSecond * 1e-9);
+    out += fmt::format("{:>7} {:>7} {:>10} {:>9} {:>12} {:>9} {:>9} {:>10} {:>10} {:>9} {:>8}\n", "plants", "batches",
+                       "particles", "ticks/s", "particles/s", "copy", "derive", "grow", "interpret", "stats", "draw");
+    for (const SimEntry& e : report.entries) {
+        if (e.status != "ok") {
+            out += fmt::format("{:>7} failed: {}\n", e.plants, e.reason);
+            continue;
+        }
+        out += fmt::format("{:>7} {:>7} {:>10} {:>9.3f} {:>12.3g} {:>8.1f}% {:>8.3f}s {:>9.3f}s {:>9.3f}s {:>8.3f}s "
+                           "{:>7.3f}s\n",
+                           e.plants, e.batches, e.modules, e.ticksPerSecond, e.particlesPerSecond,
+                           100.0 * e.copyFraction, e.stages.derive, e.stages.grow, e.stages.interpret,
+                           e.stages.statistics, e.stages.draw);
+    }
+    return out;
+}
+
+} // namespace simeco::bench

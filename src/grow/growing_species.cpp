@@ -23,7 +23,7 @@ GrowingSpecies loadGrowingSpecies(const std::string& path, std::vector<ir::EcoWa
 
 GrowingSpecies growingSpecies(ir::EcoScene parsed) {
     GrowingSpecies g;
-    auto scene = std::make_shared<ir::EcoScene>(std::move(parsed));
+    auto scene = std::make_unique<ir::EcoScene>(std::move(parsed));
     if (scene->plants.empty()) throw ir::InputError(scene->loc, "the scene has no plant");
     std::vector<ir::Grammar> species;
     for (size_t i = 0; i < scene->plants.size(); ++i)

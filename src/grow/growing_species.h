@@ -12,7 +12,7 @@
 namespace simeco::grow {
 
 struct GrowingSpecies {
-    std::shared_ptr<const ir::EcoScene> scene;  // null for a grammar file
+    std::unique_ptr<const ir::EcoScene> scene;  // null for a grammar file; ecoPlants point into it
     std::vector<ir::Grammar> species;           // one alphabet (ir::unifySpecies)
     std::vector<const ir::EcoPlant*> ecoPlants; // per species: its plant in the scene, or null
 };

@@ -63,7 +63,8 @@ if report.get("tool") == "simeco bench --sim":
     for key, title, color in series:
         rows = []
         for e in report["entries"]:
-            if e.get("status") != "ok":
+            # A field not drawn ticks its growth alone: only its derive and grow stages compare with the others'.
+            if e.get("status") != "ok" or ("not_drawn" in e and key not in ("derive", "grow")):
                 continue
             seconds = e["median_tick_seconds"] if key is None else e["stage_median_seconds"][key]
             if seconds > 0:

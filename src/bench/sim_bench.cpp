@@ -10,6 +10,7 @@
 #include "compute/shared/particle_layout.h"
 #include "draw/renderer.h"
 #include "field/simulation.h"
+#include "ir/source_loc.h"
 #include "vk/context.h"
 #include "vk/device_info.h"
 
@@ -43,17 +44,25 @@ SimEntry measure(const SimBenchOptions& o, const std::string& scene, std::uint32
         const field::StageSeconds before = simulation.stageSeconds();
         const Clock::time_point start = Clock::now();
         simulation.tick();
-        const turtle::DeviceOrgans& organs = simulation.interpret();
-        e.organs = 0;
-        for (const shared::PlantStatistics& s : simulation.statistics()) e.organs += s.organs;
-        const Clock::time_point drawn = Clock::now();
-        renderer.render(organs.instances, organs.table, framed, settings);
+        Clock::time_point drawn = Clock::now();
+        if (e.notDrawn.empty()) {
+            try {
+                const turtle::DeviceOrgans& organs = simulation.interpret();
+                e.organs = 0;
+                for (const shared::PlantStatistics& s : simulation.statistics()) e.organs += s.organs;
+                drawn = Clock::now();
+                renderer.render(organs.instances, organs.table, framed, settings);
+            } catch (const ir::LimitError& error) { // a field larger than the device draws: its growth still runs
+                e.notDrawn = error.what();
+                drawn = Clock::now();
+            }
+        }
         const field::StageSeconds& after = simulation.stageSeconds();
         derive.push_back(after.derive - before.derive);
         grow.push_back(after.grow - before.grow);
         interpret.push_back(after.interpret - before.interpret);
         statistics.push_back(after.statistics - before.statistics);
-        draw.push_back(secondsSince(drawn));
+        draw.push_back(e.notDrawn.empty() ? secondsSince(drawn) : 0.0);
         return secondsSince(start);
     };
     e.tickSeconds = repeatRuns(o.warmUp, o.repeat, tick);

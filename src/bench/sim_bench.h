@@ -47,6 +47,7 @@ struct SimEntry {
     double copyFraction = 0;       // growBytesPerSecond over the copy bandwidth
     std::string status = "ok";     // or "failed" with `reason`
     std::string reason;
+    std::string notDrawn; // why the field was not interpreted and drawn (larger than the device binds); its growth was
 };
 
 struct SimBenchReport {

@@ -34,6 +34,7 @@ nlohmann::json simReportJson(const SimBenchReport& report) {
             entry["particles_per_second"] = e.particlesPerSecond;
             entry["grow_bytes_per_second"] = e.growBytesPerSecond;
             entry["grow_copy_bandwidth_fraction"] = e.copyFraction;
+            if (!e.notDrawn.empty()) entry["not_drawn"] = e.notDrawn;
             entry["stage_median_seconds"] = {{"derive", e.stages.derive},
                                              {"grow", e.stages.grow},
                                              {"interpret", e.stages.interpret},
@@ -62,6 +63,7 @@ std::string formatSimTable(const SimBenchReport& report) {
                            e.plants, e.batches, e.modules, e.ticksPerSecond, e.particlesPerSecond,
                            100.0 * e.copyFraction, e.stages.derive, e.stages.grow, e.stages.interpret,
                            e.stages.statistics, e.stages.draw);
+        if (!e.notDrawn.empty()) out += fmt::format("{:>7} not drawn: {}\n", "", e.notDrawn);
     }
     return out;
 }

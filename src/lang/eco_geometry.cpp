@@ -5,6 +5,7 @@
 #include <map>
 #include <set>
 
+#include "compute/shared/growth_layout.h"
 #include "lang/color_map.h"
 
 namespace simeco::lang {

@@ -3,7 +3,6 @@
 // (the growth simulation) or at those its stage reaches at the end of its GrowTime (a derivation alone).
 #pragma once
 
-#include "compute/shared/growth_layout.h"
 #include "ir/eco_scene.h"
 #include "ir/grammar.h"
 

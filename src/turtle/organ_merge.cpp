@@ -6,8 +6,11 @@
 #include <span>
 #include <stdexcept>
 
+#include <fmt/format.h>
+
 #include "compute/shared/turtle_state_layout.h"
 #include "draw/bounds.h"
+#include "ir/source_loc.h"
 #include "vk/barriers.h"
 #include "vk/context.h"
 
@@ -75,6 +78,12 @@ const DeviceOrgans& OrganMerge::merge() {
     }
     draw::encodeBounds(bounds, table);
     const VkDeviceSize bytes = std::max<uint64_t>(heldOrgans_, 1) * sizeof(OrganInstance);
+    // The field's instances are bound whole, here and by the renderer.
+    const uint64_t limit = context_.limits().maxStorageBufferRange;
+    if (bytes > limit)
+        throw ir::LimitError(fmt::format("the device binds at most {} MiB per buffer; the field's {} organ instances "
+                                         "need {} MiB (draw fewer plants)",
+                                         limit >> 20, heldOrgans_, bytes >> 20));
     if (!field_.instances || field_.instances.size() < bytes) {
         field_.instances = vk::Buffer(context_, bytes, vk::MemoryUsage::DeviceLocal);
         field_.capacity = uint32_t(bytes / sizeof(OrganInstance));

@@ -28,7 +28,7 @@ public:
     // starts at the field's module `firstModule` (the batches' strings one after the other).
     void keep(const DeviceOrgans& batch, uint32_t firstPlant, uint64_t firstModule);
     // The field's organs: every kept batch's, merged, the table counting them all and bounding them all; valid
-    // until the next merge().
+    // until the next merge(). Throws ir::LimitError when they need more than the device binds in one buffer.
     const DeviceOrgans& merge();
 
 private:

@@ -21,12 +21,27 @@ require_command gnuplot gnuplot-nox
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
-# The render report: one data file per series (plants, instances/s), the plot command and the axis labels.
+# The render and growth reports: one data file per series against plants, the plot command and the axis labels.
 python3 - "$report" "$work" <<'PY'
 import json, sys
 
 report = json.load(open(sys.argv[1]))
 work = sys.argv[2]
+
+def finish_series(plots, ylabel):
+    """The series of a plot against plants, its y label and a title naming the device and its copy bandwidth."""
+    with open(f"{work}/series.gp", "w") as f:
+        f.write(", ".join(plots))
+    with open(f"{work}/ylabel.txt", "w") as f:
+        f.write(ylabel)
+    device = report.get("device", {}).get("name") or "no GPU"
+    copy = report.get("copy_bandwidth") or {}
+    title = f"{report['tool']} on {device}"
+    if copy:
+        title += f" (copy bandwidth {copy['bytes_per_second'] / 1e9:.2f} GB/s)"
+    with open(f"{work}/title.txt", "w") as f:
+        f.write(title.replace('"', "'"))
+    sys.exit(0)
 if report.get("tool") == "simeco bench --render":
     series = [("gpu_turtle", "turtle kernels", "#d62728"), ("cpu_turtle", "CPU turtle (1 thread)", "#1f77b4"),
               ("frame_shadow_volumes", "frame, shadow volumes", "#2ca02c"), ("frame_no_shadows", "frame, no shadows", "#9467bd"),
@@ -42,18 +57,7 @@ if report.get("tool") == "simeco bench --render":
             for plants, rate in rows:
                 f.write(f"{plants} {rate}\n")
         plots.append(f"'{work}/{key}.dat' using 1:2 with linespoints lw 2 pt 7 lc rgb '{color}' title '{title}'")
-    with open(f"{work}/series.gp", "w") as f:
-        f.write(", ".join(plots))
-    with open(f"{work}/ylabel.txt", "w") as f:
-        f.write("organ instances per second (median)")
-    device = report.get("device", {}).get("name") or "no GPU"
-    copy = report.get("copy_bandwidth") or {}
-    title = f"simeco bench --render on {device}"
-    if copy:
-        title += f" (copy bandwidth {copy['bytes_per_second'] / 1e9:.2f} GB/s)"
-    with open(f"{work}/title.txt", "w") as f:
-        f.write(title.replace('"', "'"))
-    sys.exit(0)
+    finish_series(plots, "organ instances per second (median)")
 
 if report.get("tool") == "simeco bench --sim":
     series = [(None, "tick: all its stages", "#000000"), ("derive", "derive", "#1f77b4"), ("grow", "grow", "#2ca02c"),
@@ -76,18 +80,7 @@ if report.get("tool") == "simeco bench --sim":
             for plants, seconds in rows:
                 f.write(f"{plants} {seconds}\n")
         plots.append(f"'{work}/{name}.dat' using 1:2 with linespoints lw 2 pt 7 lc rgb '{color}' title '{title}'")
-    with open(f"{work}/series.gp", "w") as f:
-        f.write(", ".join(plots))
-    with open(f"{work}/ylabel.txt", "w") as f:
-        f.write("seconds per tick (median)")
-    device = report.get("device", {}).get("name") or "no GPU"
-    copy = report.get("copy_bandwidth") or {}
-    title = f"simeco bench --sim on {device}"
-    if copy:
-        title += f" (copy bandwidth {copy['bytes_per_second'] / 1e9:.2f} GB/s)"
-    with open(f"{work}/title.txt", "w") as f:
-        f.write(title.replace('"', "'"))
-    sys.exit(0)
+    finish_series(plots, "seconds per tick (median)")
 
 # The derivation report: one data file per backend (string size, modules/s, point shape), a block per grammar
 # sorted by size, so that a backend's line joins the sizes of one grammar and breaks between grammars; the

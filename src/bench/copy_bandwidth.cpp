@@ -83,4 +83,10 @@ CopyBandwidth measureCopyBandwidth(const vk::Context& context, int warmUp, int r
     return result;
 }
 
+nlohmann::json copyBandwidthSummary(const CopyBandwidth& c) {
+    return {{"bytes_per_second", c.bytesPerSecond},
+            {"median_ms", c.medianMillis},
+            {"timer", c.timestamps ? "gpu timestamps" : "host wall clock"}};
+}
+
 } // namespace simeco::bench

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 namespace simeco::vk {
 class Context;
 }
@@ -29,5 +31,8 @@ struct CopyBandwidth {
 // Copies min(kCopyBufferBytes, the device's largest storage-buffer binding) bytes `warmUp` + `repeat` times with
 // each kernel.
 CopyBandwidth measureCopyBandwidth(const vk::Context& context, int warmUp, int repeat);
+
+// The figure and how it was taken, as the render and growth reports give it.
+nlohmann::json copyBandwidthSummary(const CopyBandwidth& c);
 
 } // namespace simeco::bench

@@ -27,9 +27,7 @@ nlohmann::json renderReportJson(const RenderBenchReport& report) {
                      {"grammar", report.grammar}, {"statistic", "median"}, {"cpu_threads", 1}};
     j["device"] = {{"name", report.deviceName}, {"type", report.deviceType}, {"driver", report.driver}};
     if (report.copy) {
-        j["copy_bandwidth"] = {{"bytes_per_second", report.copy->bytesPerSecond},
-                               {"median_ms", report.copy->medianMillis},
-                               {"timer", report.copy->timestamps ? "gpu timestamps" : "host wall clock"}};
+        j["copy_bandwidth"] = copyBandwidthSummary(*report.copy);
     }
     nlohmann::json entries = nlohmann::json::array();
     for (const RenderEntry& e : report.entries) {

@@ -13,9 +13,7 @@ nlohmann::json simReportJson(const SimBenchReport& report) {
                      {"statistic", "median"},    {"timer", "host wall clock around each blocking stage"}};
     j["device"] = {{"name", report.deviceName}, {"type", report.deviceType}, {"driver", report.driver}};
     if (report.copy)
-        j["copy_bandwidth"] = {{"bytes_per_second", report.copy->bytesPerSecond},
-                               {"median_ms", report.copy->medianMillis},
-                               {"timer", report.copy->timestamps ? "gpu timestamps" : "host wall clock"}};
+        j["copy_bandwidth"] = copyBandwidthSummary(*report.copy);
     j["bytes_per_particle"] = report.bytesPerParticle;
     j["grow_bytes_per_particle"] = report.growBytesPerParticle;
     nlohmann::json entries = nlohmann::json::array();

@@ -464,15 +464,7 @@ private:
 
 // Appends one plant's string, whose stride may be smaller than the stream's.
 void appendPlant(ModuleString& out, const ModuleString& s) {
-    if (s.stride == out.stride) {
-        out.sym.insert(out.sym.end(), s.sym.begin(), s.sym.end());
-        out.paramCount.insert(out.paramCount.end(), s.paramCount.begin(), s.paramCount.end());
-        out.params.insert(out.params.end(), s.params.begin(), s.params.end());
-    } else {
-        out.reserve(out.size() + s.size());
-        for (size_t i = 0; i < s.size(); ++i) out.pushFrom(s, i);
-    }
-    out.particles.insert(out.particles.end(), s.particles.begin(), s.particles.end());
+    out.append(s, 0, s.size());
     out.plantStart.push_back(out.sym.size());
 }
 
@@ -550,13 +542,9 @@ uint32_t SteppedDerivation::advance(const std::vector<uint8_t>& due) {
     const uint64_t budget = control_.budget();
     for (uint32_t plant = 0; plant < control_.plants(); ++plant) {
         const size_t begin = string_.plantStart[plant], end = string_.plantStart[plant + 1];
-        if (!growing[plant]) {
-            ModuleString copy;
-            copy.stride = string_.stride;
-            for (size_t i = begin; i < end; ++i) copy.pushFrom(string_, i);
-            if (!string_.particles.empty())
-                copy.particles.assign(string_.particles.begin() + begin, string_.particles.begin() + end);
-            appendPlant(next, copy);
+        if (!growing[plant]) { // copied as it is
+            next.append(string_, begin, end);
+            next.plantStart.push_back(next.size());
             continue;
         }
         PlantDeriver deriver(control_, plant, budget - std::min<uint64_t>(budget, next.size()), budget);

@@ -13,7 +13,9 @@
 
 namespace simeco::field {
 
-std::array<float, shared::kLeafShapes> leafShapeAreas() {
+namespace {
+
+std::array<float, shared::kLeafShapes> measureLeafShapes() {
     const draw::OrganMeshData meshes = draw::buildOrganMeshes();
     const draw::MeshRange& leaf = meshes.organs[shared::kOrganLeaf];
     std::array<float, shared::kLeafShapes> areas{};
@@ -28,6 +30,14 @@ std::array<float, shared::kLeafShapes> leafShapeAreas() {
         const glm::vec2 b(v[2]->position.x - v[0]->position.x, v[2]->position.y - v[0]->position.y);
         areas[shape] += 0.5f * std::abs(a.x * b.y - a.y * b.x);
     }
+    return areas;
+}
+
+} // namespace
+
+std::array<float, shared::kLeafShapes> leafShapeAreas() {
+    // The meshes are built once: the CPU reference asks every tick.
+    static const std::array<float, shared::kLeafShapes> areas = measureLeafShapes();
     return areas;
 }
 

@@ -93,9 +93,10 @@ struct Simulation::Impl {
     grow::TickSettings settings(const Batch& b, uint32_t tick) const {
         return {&tables, uint32_t(g.species.size()), options.dt, tick, b.seed};
     }
-    std::vector<float> baseHeights(const Batch& b) const {
+    // The height each plant stands at.
+    static std::vector<float> baseHeights(const std::vector<shared::PlantPlacement>& placements) {
         std::vector<float> bases;
-        for (const shared::PlantPlacement& p : b.field.placements)
+        for (const shared::PlantPlacement& p : placements)
             bases.push_back(turtle::plantOrigin(p).y);
         return bases;
     }
@@ -159,7 +160,6 @@ Simulation::Simulation(const SimulationOptions& options, const vk::Context* cont
     for (const ir::EcoWarning& w : warnings)
         std::fprintf(stderr, "%s:%d:%d: warning: %s\n", w.loc.file.c_str(), w.loc.line, w.loc.col, w.message.c_str());
     m.derive.plants = options.plants ? options.plants : uint32_t(m.g.species.size());
-    m.derive.seed = options.seed;
     m.derive.maxModules = options.maxModules;
     m.derive.maxSeconds = options.maxSeconds;
     m.derive.particles = true;
@@ -235,8 +235,9 @@ const turtle::DeviceOrgans& Simulation::Impl::interpretOnDevice() {
         organs = &turtle->interpret(drawnModules, b.field);
         seconds.interpret += secondsSince(start);
         start = Clock::now();
+        const std::vector<float> bases = baseHeights(b.field.placements);
         context->submitAndWait(
-            [&](VkCommandBuffer cmd) { statistics->record(cmd, *organs, drawnModules.particles, baseHeights(b)); });
+            [&](VkCommandBuffer cmd) { statistics->record(cmd, *organs, drawnModules.particles, bases); });
         const std::vector<shared::PlantStatistics> s = statistics->read();
         lastStatistics.insert(lastStatistics.end(), s.begin(), s.end());
         seconds.statistics += secondsSince(start);
@@ -260,10 +261,8 @@ const turtle::DeviceOrgans& Simulation::Impl::interpretOnHost() {
         stream::ModuleString drawnModules = b.reference->drawn();
         if (tables.drawsGrowth())
             grow::growSizesCpu(settings(b, ticks == 0 ? 0 : ticks - 1), b.deriveTimes, drawnModules);
-        field.stride = std::max(field.stride, drawnModules.stride);
-        for (size_t i = 0; i < drawnModules.size(); ++i)
-            field.pushFrom(drawnModules, i);
-        field.particles.insert(field.particles.end(), drawnModules.particles.begin(), drawnModules.particles.end());
+        if (b.first == 0) field.stride = drawnModules.stride; // the batches' species, and so their strides, alike
+        field.append(drawnModules, 0, drawnModules.size());
         for (size_t p = 1; p < drawnModules.plantStart.size(); ++p)
             field.plantStart.push_back(field.plantStart[b.first] + drawnModules.plantStart[p]);
     }
@@ -272,10 +271,7 @@ const turtle::DeviceOrgans& Simulation::Impl::interpretOnHost() {
     const turtle::Interpretation organs = turtle::interpretCpu(field, commands, turtles, where);
     seconds.interpret += secondsSince(start);
     start = Clock::now();
-    std::vector<float> bases;
-    for (const shared::PlantPlacement& p : placements)
-        bases.push_back(turtle::plantOrigin(p).y);
-    lastStatistics = plantStatisticsCpu(organs, bases, field.particles);
+    lastStatistics = plantStatisticsCpu(organs, baseHeights(placements), field.particles);
     seconds.statistics += secondsSince(start);
     uploaded = turtle::uploadOrgans(*context, organs);
     return uploaded;

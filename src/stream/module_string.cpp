@@ -5,6 +5,20 @@
 
 namespace simeco::stream {
 
+void ModuleString::append(const ModuleString& other, size_t begin, size_t end) {
+    if (other.stride == stride) {
+        sym.insert(sym.end(), other.sym.begin() + begin, other.sym.begin() + end);
+        paramCount.insert(paramCount.end(), other.paramCount.begin() + begin, other.paramCount.begin() + end);
+        const size_t width = size_t(stride);
+        params.insert(params.end(), other.params.begin() + begin * width, other.params.begin() + end * width);
+    } else {
+        reserve(size() + (end - begin));
+        for (size_t i = begin; i < end; ++i) pushFrom(other, i);
+    }
+    if (!other.particles.empty())
+        particles.insert(particles.end(), other.particles.begin() + begin, other.particles.begin() + end);
+}
+
 std::string formatModules(const ModuleString& s, const ir::Alphabet& alphabet, size_t begin, size_t end) {
     std::string out;
     out.reserve((end - begin) * 2);

@@ -47,6 +47,9 @@ struct ModuleString {
         for (size_t k = 0; k < count; ++k) params[base + k] = p[k];
     }
     void pushFrom(const ModuleString& other, size_t i) { push(other.sym[i], other.paramsOf(i), other.paramCount[i]); }
+    // Appends modules [begin, end) of `other`, whose stride may be smaller, with their particle state where `other`
+    // carries it. The plant table is the caller's.
+    void append(const ModuleString& other, size_t begin, size_t end);
 };
 
 // cpfg notation: names, parameters as NAME(p1,p2) printed with %.9g, no separators. One plant's

@@ -7,6 +7,7 @@
 #include "compute/shared/derive_layout.h"
 #include "compute/shared/growth_layout.h"
 #include "compute/shared/particle_layout.h"
+#include "compute/shared/random.h"
 
 layout(local_size_x = kGrowWorkgroupSize) in;
 layout(set = 0, binding = 0, std430) readonly buffer Symbols { uint symbols[]; };
@@ -15,22 +16,46 @@ layout(set = 0, binding = 2, std430) readonly buffer Starts { uint plantStart[];
 layout(set = 0, binding = 3, std430) readonly buffer Particles { float particles[]; };
 layout(set = 0, binding = 4, std430) readonly buffer SpeciesWords { uint speciesWords[]; };
 layout(set = 0, binding = 5, std430) readonly buffer DeriveTimes { float deriveTimes[]; };
+layout(set = 0, binding = 6, std430) readonly buffer Rows { float rows[]; };
 layout(push_constant) uniform Push { GrowPush pc; };
 
 #include "compute/grow/growth.glsl"
 
 float particle(uint i, uint slot) { return particles[kParticleStateFloats * i + slot]; }
 
-float grownValue(uint code, uint i, float deriveTime) {
+float grownValue(uint code, uint i, uint plant) {
+    float age = particle(i, kParticleAge);
+    uint klass = floatBitsToUint(particle(i, kParticleClass));
+    uint species = plant % pc.species;
+    bool rowed = klass < kGrowOrganKinds && hasRows(species, klass);
+    uint row = rowed ? stageRow(species, klass, particle(i, kParticleStage)) : 0u;
+    uint id = floatBitsToUint(particle(i, kParticleId));
+    float living = !rowed || alive(row, plant, id, age) ? 1.0 : 0.0;
+    if (code >= kGrownLeafColor) {
+        float lifeTime = rowed ? property(row, kLifeTime, plant, id) : 0.0;
+        uint shade = age < deriveTimes[plant]                                   ? kLeafYoungShade
+                     : lifeTime > 0.0 && age >= (1.0 - kLeafOldAge) * lifeTime ? kLeafOldShade
+                                                                               : 0u;
+        return float(code - kGrownLeafColor + shade);
+    }
     switch (code) {
-    case kGrownLength: return particle(i, kParticleElongation);
-    case kGrownWidth: return particle(i, kParticleBroadening);
+    case kGrownLength: return living * particle(i, kParticleElongation);
+    case kGrownWidth: return living * particle(i, kParticleBroadening);
     case kGrownLeafSize: // a leaf unfolds over its first DeriveTime
-        return kLeafModelSize * (1.0 + particle(i, kParticleElongation)) *
-               min(particle(i, kParticleAge) / deriveTime, 1.0);
+        return living * kLeafModelSize * (1.0 + particle(i, kParticleElongation)) * min(age / deriveTimes[plant], 1.0);
     case kGrownPitch: return particle(i, kParticlePitch);
     case kGrownRoll: return particle(i, kParticleRoll);
-    default: return -particle(i, kParticleRoll);
+    case kGrownUnroll: return -particle(i, kParticleRoll);
+    case kGrownBend: {
+        if (!rowed) return 0.0;
+        float growTime = property(row, kGrowTime, plant, id);
+        float grown = growTime > 0.0 ? min(age / growTime, 1.0) : 1.0;
+        float strength = max(property(row, kStrength, plant, id), kMinStrength);
+        float bend = property(row, kGeotropism, plant, id) * grown +
+                     property(row, kWeightFactor, plant, id) * particle(i, kParticleElongation) / strength;
+        return clamp(pc.gravity * bend, -kMaxBend, kMaxBend);
+    }
+    default: return living;
     }
 }
 
@@ -42,7 +67,7 @@ void main() {
     uint count = symbols[i] >> kSymbolBits;
     for (uint k = 0u; k < count; ++k) {
         float code = kGrownValue - params[pc.stride * i + k];
-        if (code >= 0.0 && code < float(kGrownCodes) && code == floor(code))
-            params[pc.stride * i + k] = grownValue(uint(code), i, deriveTimes[plant]);
+        bool named = code < float(kGrownCodes) || (code >= float(kGrownLeafColor) && code < float(kGrownLeafColorEnd));
+        if (code >= 0.0 && named && code == floor(code)) params[pc.stride * i + k] = grownValue(uint(code), i, plant);
     }
 }

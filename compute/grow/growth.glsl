@@ -1,9 +1,10 @@
-// What the growth kernels share: each module's plant (a binary search of the plant table) and a particle's
-// floats as one array.
+// What the growth kernels share: each module's plant (a binary search of the plant table), a stage's row and
+// the properties a particle draws from it, and whether the particle lives. Needs the buffers `plantStart`,
+// `speciesWords` and `rows` and the push constants `pc` (GrowPush).
 #ifndef SIMECO_GROWTH_GLSL
 #define SIMECO_GROWTH_GLSL
 
-// The plant whose modules hold module i: the last p with plantStart[p] <= i. Needs a `plantStart` buffer.
+// The plant whose modules hold module i: the last p with plantStart[p] <= i.
 uint plantOf(uint i, uint plants) {
     uint lo = 0u, hi = plants; // plantStart[lo] <= i < plantStart[hi]
     while (hi - lo > 1u) {
@@ -12,6 +13,33 @@ uint plantOf(uint i, uint plants) {
         else hi = mid;
     }
     return lo;
+}
+
+// Whether the species has stage rows for the organ kind.
+bool hasRows(uint species, uint organ) {
+    return speciesWords[species * kSpeciesGrowthWords + kSpeciesFirstRow + organ] != kGrowNoRow;
+}
+
+// The first float of the organ's stage row in species `species`: the stage's own, else the organ's Default row.
+uint stageRow(uint species, uint organ, float stage) {
+    uint words = species * kSpeciesGrowthWords;
+    uint first = speciesWords[words + kSpeciesFirstRow + organ];
+    uint count = speciesWords[words + kSpeciesRowCount + organ];
+    for (uint r = first; r < first + count; ++r)
+        if (rows[r * kStageRowFloats + kStageNumber] == stage) return r * kStageRowFloats;
+    return speciesWords[words + kSpeciesDefaultRow + organ] * kStageRowFloats;
+}
+
+// Property k of the row, as particle `id` of plant `plant` draws it in its range.
+float property(uint row, uint k, uint plant, uint id) {
+    float lo = rows[row + propertyMin(k)], hi = rows[row + propertyMax(k)];
+    return lo + (hi - lo) * randomUnit(pc.seed, plant, kGrowPropertyPass, id, k);
+}
+
+// Whether a particle of this age lives by its row's LifeTime (none: 0).
+bool alive(uint row, uint plant, uint id, float age) {
+    float lifeTime = property(row, kLifeTime, plant, id);
+    return lifeTime <= 0.0 || age < lifeTime;
 }
 
 #endif

@@ -1,8 +1,8 @@
 // One growth tick of every particle of the derived string (compute/shared/growth_layout.h): which modules continue
-// a particle and which are born, aging, each organ's growth by its stage row for its GrowTime, and its cone noise
-// every NoiseTime while it grows. Reads the particles as the last tick left them and writes the next states
-// into particlesOut, since a module's birth depends on the states of the modules before it. The CPU reference is
-// src/grow/tick_cpu.cpp.
+// a particle and which are born, aging, each living organ's growth by its stage row for its GrowTime, and its
+// cone noise every NoiseTime while it grows. Reads the particles as the last tick left them and writes the next
+// states into particlesOut, since a module's birth depends on the states of the modules before it. The CPU
+// reference is src/grow/tick_cpu.cpp.
 #version 450
 #extension GL_GOOGLE_include_directive : require
 #include "compute/shared/config.h"
@@ -28,21 +28,6 @@ const float kTwoPi = 6.28318530717958647692;
 
 uint idOf(uint i) { return floatBitsToUint(particlesIn[kParticleStateFloats * i + kParticleId]); }
 uint classOf(uint species, uint i) { return classes[species * pc.symbols + (symbols[i] & kSymbolMask)]; }
-
-// The first float of the organ's stage row in species `species`: the stage's own, else the organ's Default row.
-uint stageRow(uint species, uint organ, float stage) {
-    uint words = species * kSpeciesGrowthWords;
-    uint first = speciesWords[words + kSpeciesFirstRow + organ];
-    uint count = speciesWords[words + kSpeciesRowCount + organ];
-    for (uint r = first; r < first + count; ++r)
-        if (rows[r * kStageRowFloats + kStageNumber] == stage) return r * kStageRowFloats;
-    return speciesWords[words + kSpeciesDefaultRow + organ] * kStageRowFloats;
-}
-
-float property(uint row, uint k, uint plant, uint id) {
-    float lo = rows[row + propertyMin(k)], hi = rows[row + propertyMax(k)];
-    return lo + (hi - lo) * randomUnit(pc.seed, plant, kGrowPropertyPass, id, k);
-}
 
 void main() {
     uint i = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * gl_WorkGroupSize.x + gl_LocalInvocationID.x;
@@ -71,10 +56,13 @@ void main() {
         p[kParticleStageAge] = 0.0;
     }
 
-    if (organ && speciesWords[species * kSpeciesGrowthWords + kSpeciesFirstRow + klass] != kGrowNoRow) {
+    if (organ && hasRows(species, klass)) {
         uint row = stageRow(species, klass, stage);
         uint self = floatBitsToUint(p[kParticleId]);
-        float growing = clamp(property(row, kGrowTime, plant, self) - p[kParticleStageAge], 0.0, pc.dt);
+        // A dead organ grows no more.
+        float growing = alive(row, plant, self, p[kParticleAge])
+                            ? clamp(property(row, kGrowTime, plant, self) - p[kParticleStageAge], 0.0, pc.dt)
+                            : 0.0;
         p[kParticleElongation] += property(row, kGrowRate, plant, self) * growing;
         p[kParticleBroadening] += property(row, kBroadenRate, plant, self) * growing;
         p[kParticleNoiseClock] += pc.dt;

@@ -65,7 +65,9 @@ SIMECO_CONST kGrowPropertyPass = 0xFFFFFF00u; // a property's draw in its range:
 SIMECO_CONST kGrowNoisePass = 0xFFFFFF01u;    // a cone noise turn: draw = 2 x tick (+1)
 SIMECO_CONST kGrowIdentityPass = 0xFFFFFF02u; // a newborn particle's identity: module index, draw = tick
 
-// Parameter codes of drawn modules: kGrownValue - code, replaced by the particle's value.
+// Parameter codes of drawn modules: kGrownValue - code, replaced by the particle's value. An organ whose
+// LifeTime has passed is dead: its sizes are 0 and a dead stem's `alive` is 0, which scales everything after it
+// in its branch to nothing (the branch is shed).
 SIMECO_CONST_FLOAT kGrownValue = -65536.0f;
 SIMECO_CONST kGrownLength = 0u;   // its elongation
 SIMECO_CONST kGrownWidth = 1u;    // its broadening
@@ -73,7 +75,21 @@ SIMECO_CONST kGrownLeafSize = 2u; // the leaf model's size x (1 + its growth), u
 SIMECO_CONST kGrownPitch = 3u;    // its pitch, in radians
 SIMECO_CONST kGrownRoll = 4u;     // its roll, in radians
 SIMECO_CONST kGrownUnroll = 5u;   // minus its roll: the frame turns back after the tilt
-SIMECO_CONST kGrownCodes = 6u;
+SIMECO_CONST kGrownBend = 6u;     // its tropism elasticity: geotropism and bending under its weight
+SIMECO_CONST kGrownAlive = 7u;    // 1 while it lives, 0 once its LifeTime has passed
+SIMECO_CONST kGrownCodes = 8u;
+// A leaf's colour: code kGrownLeafColor + c names palette colour c while the leaf is mature, c + 1 while it is
+// young (unfolding, its first DeriveTime) and c + 2 once it is old (the last kLeafOldAge of its LifeTime).
+SIMECO_CONST kGrownLeafColor = 16u;
+SIMECO_CONST kGrownLeafColorEnd = kGrownLeafColor + 256u;
+SIMECO_CONST kLeafYoungShade = 1u;
+SIMECO_CONST kLeafOldShade = 2u;
+SIMECO_CONST_FLOAT kLeafOldAge = 0.3f;
+// Bending: a stem's elasticity is gravity (as a multiple of Earth's) x (Geotropism x its growth so far, up to
+// one GrowTime, + WeightFactor x its length / Strength), within +-kMaxBend. Strength below kMinStrength counts
+// as kMinStrength.
+SIMECO_CONST_FLOAT kMaxBend = 1.0f;
+SIMECO_CONST_FLOAT kMinStrength = 0.05f;
 // A leaf model's size before it grows, in the scripts' units: the seed plants' leaves are about as long as an
 // internode grows in its first stages (GrowRate 0.5 for GrowTime 3 s).
 SIMECO_CONST_FLOAT kLeafModelSize = 3.0f;
@@ -88,7 +104,8 @@ struct GrowPush {
     uint species;
     uint symbols; // alphabet size: the class table's row length
     uint count;
-    uint stride; // parameters per module
+    uint stride;   // parameters per module
+    float gravity; // the scene's gravity, as a multiple of Earth's (9.81)
 };
 
 SIMECO_SHARED_END

@@ -52,7 +52,9 @@ SIMECO_CONST kTurtleQueryHeading = 40u;  // ?H
 SIMECO_CONST kTurtleQueryLeft = 41u;     // ?L
 SIMECO_CONST kTurtleQueryUp = 42u;       // ?U
 SIMECO_CONST kTurtleIgnored = 43u;       // a predefined command simeco does not draw (@PS, @Tx, @!, ...)
-SIMECO_CONST kTurtleCommands = 44u;
+SIMECO_CONST kTurtleTropism = 44u;       // tropism(e): SimEco's growth, set the elasticity to e
+SIMECO_CONST kTurtleAlive = 45u;         // alive(a): SimEco's growth, scale what follows by a (0: shed)
+SIMECO_CONST kTurtleCommands = 46u;
 
 // cpfg writes its predefined modules of several characters as separate modules: `@O(d)` is `@` then `O(d)`,
 // `@Gc(n)` is `@`, `G`, `c(n)`, `?P(x,y)` is `?` then `P(x,y)`, `~l(s)` is `~` then `l(s)` (productions can

@@ -106,7 +106,8 @@ TurtleStep commandStep(uint command, uint i, TurtleSpecies sp) {
     case kTurtleScaleSet:
         if (hasParam(i)) t.scaleElasticity.xy = vec2(0.0, paramAt(i, 0u, 0.0));
         break;
-    case kTurtleScaleUp: t.scaleElasticity.x = paramAt(i, 0u, 1.0); break;
+    case kTurtleScaleUp:
+    case kTurtleAlive: t.scaleElasticity.x = paramAt(i, 0u, 1.0); break;
     case kTurtleScaleDown: {
         float d = paramAt(i, 0u, 1.0);
         t.scaleElasticity.x = 1.0 / (d != 0.0 ? d : 1.0);
@@ -117,6 +118,9 @@ TurtleStep commandStep(uint command, uint i, TurtleSpecies sp) {
         break;
     case kTurtleElasticityUp: t.scaleElasticity.w = paramAt(i, 1u, sp.elasticityIncrement); break;
     case kTurtleElasticityDown: t.scaleElasticity.w = -paramAt(i, 1u, sp.elasticityIncrement); break;
+    case kTurtleTropism:
+        if (hasParam(i)) t.scaleElasticity.zw = vec2(0.0, paramAt(i, 0u, 0.0));
+        break;
     default: break;
     }
     return t;

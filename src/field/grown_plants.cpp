@@ -34,7 +34,7 @@ GrownPlants growOneOfEach(const grow::GrowingSpecies& g, const grow::GrowthTable
     times.resize(one.plants, grow::kDefaultDeriveTime);
     std::vector<float> next = times;
     grow::TickSettings ts{&tables, one.plants, std::max(0.25f, *std::min_element(times.begin(), times.end()) / 2), 0,
-                          seed};
+                          seed, g.relativeGravity()};
     for (double t = 0; t < until + ts.dt; t += ts.dt, ++ts.tick) {
         std::vector<uint8_t> due(one.plants, 0);
         for (uint32_t p = 0; p < one.plants; ++p)

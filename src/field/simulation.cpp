@@ -91,7 +91,7 @@ struct Simulation::Impl {
     StageSeconds seconds;
 
     grow::TickSettings settings(const Batch& b, uint32_t tick) const {
-        return {&tables, uint32_t(g.species.size()), options.dt, tick, b.seed};
+        return {&tables, uint32_t(g.species.size()), options.dt, tick, b.seed, g.relativeGravity()};
     }
     // The height each plant stands at.
     static std::vector<float> baseHeights(const std::vector<shared::PlantPlacement>& placements) {

@@ -1,5 +1,6 @@
 #include "grow/growing_species.h"
 
+#include <cmath>
 #include <filesystem>
 
 #include "ir/source_loc.h"
@@ -8,6 +9,13 @@
 #include "lang/load_grammar.h"
 
 namespace simeco::grow {
+
+float GrowingSpecies::relativeGravity() const {
+    if (!scene) return 1.0f;
+    const ir::EcoVector& g = scene->gravity;
+    return std::sqrt(g.x.typical() * g.x.typical() + g.y.typical() * g.y.typical() + g.z.typical() * g.z.typical()) /
+           9.81f;
+}
 
 GrowingSpecies loadGrowingSpecies(const std::string& path, std::vector<ir::EcoWarning>* warnings) {
     GrowingSpecies g;

@@ -15,6 +15,9 @@ struct GrowingSpecies {
     std::unique_ptr<const ir::EcoScene> scene;  // null for a grammar file; ecoPlants point into it
     std::vector<ir::Grammar> species;           // one alphabet (ir::unifySpecies)
     std::vector<const ir::EcoPlant*> ecoPlants; // per species: its plant in the scene, or null
+
+    // The scene's gravity as a multiple of Earth's (9.81 m/s^2); 1 for a grammar file.
+    float relativeGravity() const;
 };
 
 // A parsed scene's plants.

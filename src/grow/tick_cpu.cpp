@@ -31,14 +31,25 @@ const float* stageRow(const GrowthTables& t, uint32_t species, uint32_t organ, f
     return &t.rows[size_t(words[shared::kSpeciesDefaultRow + organ]) * shared::kStageRowFloats];
 }
 
-// An organ's growth over one tick, by its stage's row.
+// Property k of a stage row, as particle `id` of plant `plant` draws it in its range.
+float property(const TickSettings& ts, const float* row, uint32_t plant, uint32_t id, uint32_t k) {
+    const float lo = row[shared::propertyMin(k)], hi = row[shared::propertyMax(k)];
+    return lo + (hi - lo) * shared::randomUnit(ts.seed, plant, shared::kGrowPropertyPass, id, k);
+}
+
+// Whether a particle of this age lives by its row's LifeTime (none: 0).
+bool alive(const TickSettings& ts, const float* row, uint32_t plant, uint32_t id, float age) {
+    const float lifeTime = property(ts, row, plant, id, shared::kLifeTime);
+    return lifeTime <= 0.0f || age < lifeTime;
+}
+
+// An organ's growth over one tick, by its stage's row; a dead organ grows no more.
 void growOrgan(const TickSettings& ts, const float* row, uint32_t plant, float* p) {
     const uint32_t id = std::bit_cast<uint32_t>(p[shared::kParticleId]);
-    auto property = [&](uint32_t k) {
-        const float lo = row[shared::propertyMin(k)], hi = row[shared::propertyMax(k)];
-        return lo + (hi - lo) * shared::randomUnit(ts.seed, plant, shared::kGrowPropertyPass, id, k);
-    };
-    const float growing = std::clamp(property(shared::kGrowTime) - p[shared::kParticleStageAge], 0.0f, ts.dt);
+    auto property = [&](uint32_t k) { return grow::property(ts, row, plant, id, k); };
+    const float growing = alive(ts, row, plant, id, p[shared::kParticleAge])
+                              ? std::clamp(property(shared::kGrowTime) - p[shared::kParticleStageAge], 0.0f, ts.dt)
+                              : 0.0f;
     p[shared::kParticleElongation] += property(shared::kGrowRate) * growing;
     p[shared::kParticleBroadening] += property(shared::kBroadenRate) * growing;
     p[shared::kParticleNoiseClock] += ts.dt;
@@ -49,6 +60,52 @@ void growOrgan(const TickSettings& ts, const float* row, uint32_t plant, float* 
         const float v = shared::randomUnit(ts.seed, plant, shared::kGrowNoisePass, id, 2 * ts.tick + 1);
         p[shared::kParticlePitch] = cone * std::sqrt(u);
         p[shared::kParticleRoll] = kTwoPi * v;
+    }
+}
+
+// The value kGrownValue code `code` names for a module of `plant` whose particle is `p`.
+float grownValue(const TickSettings& ts, uint32_t code, const float* p, uint32_t plant, float deriveTime) {
+    const float age = p[shared::kParticleAge];
+    const uint32_t klass = std::bit_cast<uint32_t>(p[shared::kParticleClass]);
+    const uint32_t id = std::bit_cast<uint32_t>(p[shared::kParticleId]);
+    const float* row = klass < shared::kGrowOrganKinds
+                           ? stageRow(*ts.tables, ir::speciesOfPlant(plant, ts.species), klass, p[shared::kParticleStage])
+                           : nullptr;
+    const float living = !row || alive(ts, row, plant, id, age) ? 1.0f : 0.0f;
+    if (code >= shared::kGrownLeafColor) {
+        const float lifeTime = row ? property(ts, row, plant, id, shared::kLifeTime) : 0.0f;
+        const uint32_t shade = age < deriveTime ? shared::kLeafYoungShade
+                               : lifeTime > 0.0f && age >= (1.0f - shared::kLeafOldAge) * lifeTime
+                                   ? shared::kLeafOldShade
+                                   : 0u;
+        return float(code - shared::kGrownLeafColor + shade);
+    }
+    switch (code) {
+    case shared::kGrownLength:
+        return living * p[shared::kParticleElongation];
+    case shared::kGrownWidth:
+        return living * p[shared::kParticleBroadening];
+    case shared::kGrownLeafSize: // a leaf unfolds over its first DeriveTime
+        return living * shared::kLeafModelSize * (1.0f + p[shared::kParticleElongation]) *
+               std::min(age / deriveTime, 1.0f);
+    case shared::kGrownPitch:
+        return p[shared::kParticlePitch];
+    case shared::kGrownRoll:
+        return p[shared::kParticleRoll];
+    case shared::kGrownUnroll:
+        return -p[shared::kParticleRoll];
+    case shared::kGrownBend: {
+        if (!row) return 0.0f;
+        const float growTime = property(ts, row, plant, id, shared::kGrowTime);
+        const float grown = growTime > 0.0f ? std::min(age / growTime, 1.0f) : 1.0f;
+        const float strength = std::max(property(ts, row, plant, id, shared::kStrength), shared::kMinStrength);
+        const float bend = property(ts, row, plant, id, shared::kGeotropism) * grown +
+                           property(ts, row, plant, id, shared::kWeightFactor) * p[shared::kParticleElongation] /
+                               strength;
+        return std::clamp(ts.gravity * bend, -shared::kMaxBend, shared::kMaxBend);
+    }
+    default:
+        return living;
     }
 }
 
@@ -93,24 +150,6 @@ void tickCpu(const TickSettings& ts, stream::ModuleString& s) {
     }
 }
 
-float grownValue(uint32_t code, const float* p, float deriveTime) {
-    switch (code) {
-    case shared::kGrownLength:
-        return p[shared::kParticleElongation];
-    case shared::kGrownWidth:
-        return p[shared::kParticleBroadening];
-    case shared::kGrownLeafSize: // a leaf unfolds over its first DeriveTime
-        return shared::kLeafModelSize * (1.0f + p[shared::kParticleElongation]) *
-               std::min(p[shared::kParticleAge] / deriveTime, 1.0f);
-    case shared::kGrownPitch:
-        return p[shared::kParticlePitch];
-    case shared::kGrownRoll:
-        return p[shared::kParticleRoll];
-    default:
-        return -p[shared::kParticleRoll];
-    }
-}
-
 void growSizesCpu(const TickSettings& ts, const std::vector<float>& deriveTimes, stream::ModuleString& drawn) {
     const GrowthTables& t = *ts.tables;
     for (uint32_t plant = 0; plant + 1 < drawn.plantStart.size(); ++plant) {
@@ -122,8 +161,10 @@ void growSizesCpu(const TickSettings& ts, const std::vector<float>& deriveTimes,
             float* params = drawn.params.data() + i * size_t(drawn.stride);
             for (uint32_t k = 0; k < drawn.paramCount[i]; ++k) {
                 const float code = shared::kGrownValue - params[k];
-                if (code >= 0.0f && code < float(shared::kGrownCodes) && code == std::floor(code))
-                    params[k] = grownValue(uint32_t(code), drawn.particles[i].value, deriveTimes[plant]);
+                const bool named = code < float(shared::kGrownCodes) ||
+                                   (code >= float(shared::kGrownLeafColor) && code < float(shared::kGrownLeafColorEnd));
+                if (code >= 0.0f && named && code == std::floor(code))
+                    params[k] = grownValue(ts, uint32_t(code), drawn.particles[i].value, plant, deriveTimes[plant]);
             }
         }
     }

@@ -11,24 +11,22 @@
 namespace simeco::grow {
 
 // What a tick needs besides the string: the tables, the species' count (plant p is of species p mod it), the
-// seconds it advances, the ticks before it and the field's seed.
+// seconds it advances, the ticks before it, the field's seed and the scene's gravity as a multiple of Earth's.
 struct TickSettings {
     const GrowthTables* tables = nullptr;
     uint32_t species = 1;
     float dt = 0.0f;
     uint32_t tick = 0;
     uint32_t seed = 0;
+    float gravity = 1.0f;
 };
 
 // One tick of every particle of the derived string `s` (which carries particle state): the modules that continue
-// a particle and those born (compute/shared/growth_layout.h), aging, each organ's growth by its stage's GrowRate
-// and BroadenRate for its GrowTime, and its cone noise every NoiseTime while it grows.
+// a particle and those born (compute/shared/growth_layout.h), aging, each living organ's growth by its stage's
+// GrowRate and BroadenRate for its GrowTime, and its cone noise every NoiseTime while it grows.
 void tickCpu(const TickSettings& settings, stream::ModuleString& s);
 
 // The drawn string's kGrownValue codes replaced with its particles' values; `deriveTimes` per plant.
 void growSizesCpu(const TickSettings& settings, const std::vector<float>& deriveTimes, stream::ModuleString& drawn);
-
-// The value kGrownValue code `code` names for a module of a plant with DeriveTime `deriveTime` whose particle is `p`.
-float grownValue(uint32_t code, const float* p, float deriveTime);
 
 } // namespace simeco::grow

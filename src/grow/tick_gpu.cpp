@@ -13,7 +13,8 @@ namespace simeco::grow {
 namespace {
 
 shared::GrowPush growPush(const stream::DeviceModules& modules, const TickSettings& s, uint32_t symbols) {
-    return shared::GrowPush{s.dt, s.tick, s.seed, modules.plants, s.species, symbols, modules.count, modules.stride};
+    return shared::GrowPush{s.dt,    s.tick,        s.seed,         modules.plants, s.species,
+                            symbols, modules.count, modules.stride, s.gravity};
 }
 
 } // namespace
@@ -49,7 +50,8 @@ void GpuGrowth::recordSizes(VkCommandBuffer cmd, const stream::DeviceModules& dr
     if (drawn.count == 0) return;
     vk::memoryBarrier(cmd, vk::Hazard::AnyToAny);
     sizesKernel_.dispatch(cmd,
-                          {*drawn.symbols, *drawn.params, *drawn.plantStarts, *drawn.particles, species_, deriveTimes_},
+                          {*drawn.symbols, *drawn.params, *drawn.plantStarts, *drawn.particles, species_, deriveTimes_,
+                           rows_},
                           growPush(drawn, settings, symbols_), sizesKernel_.groupsFor(drawn.count));
     vk::memoryBarrier(cmd, vk::Hazard::ComputeToCompute);
 }

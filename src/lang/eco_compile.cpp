@@ -19,6 +19,7 @@
 // - Symbols are interned in a fixed order (brackets, A S L F T R, the rotations, then the drawing modules), so
 //   every SimEco plant of a scene numbers its symbols alike.
 #include <algorithm>
+#include <cmath>
 
 #include <fmt/format.h>
 
@@ -58,6 +59,10 @@ class PlantCompiler {
 public:
     PlantCompiler(const ir::EcoScene& scene, EcoDrawing drawing) : drawing_(drawing) {
         grammar_.sourceFile = scene.file;
+        // Stems bend toward gravity or away from it (the growth's `tropism` modules).
+        const float g[3] = {scene.gravity.x.typical(), scene.gravity.y.typical(), scene.gravity.z.typical()};
+        const float norm = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+        if (norm > 0.0f) grammar_.view.tropismDirection = {g[0] / norm, g[1] / norm, g[2] / norm};
         // The engines keep cpfg's step counters in the first global slots, whatever the language.
         grammar_.globalNames = {"Q", "Z"};
         grammar_.globalInit = {0.0f, 0.0f};

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <map>
+#include <optional>
 #include <set>
 
 #include "compute/shared/growth_layout.h"
@@ -56,6 +57,7 @@ private:
     ir::Grammar& g_;
     EcoDrawing drawing_;
     std::map<std::array<float, 3>, int> colorIndex_;
+    std::map<int, int> leafShades_; // a mature leaf colour's index: the first of its shades
 
     // The stage's Color, tinted by its Material's diffuse factor (MTRL's first three numbers, scaled so that
     // the largest is 1: the tint changes the hue, the Color keeps its brightness).
@@ -88,6 +90,25 @@ private:
         return index;
     }
 
+    // A leaf colour's three palette entries, for code kGrownLeafColor + the first: mature, young (lighter and
+    // yellower, while it unfolds) and old (yellow). Nullopt where the palette has no room.
+    std::optional<int> leafShadesOf(int mature) {
+        auto it = leafShades_.find(mature);
+        if (it != leafShades_.end()) return it->second;
+        if (g_.view.palette.size() + 3 > 256) return std::nullopt;
+        const std::array<float, 3> rgb = g_.view.palette[size_t(mature)];
+        const std::array<float, 3> spring = {srgbToLinear(0.62f), srgbToLinear(0.80f), srgbToLinear(0.25f)};
+        const std::array<float, 3> autumn = {srgbToLinear(0.82f), srgbToLinear(0.66f), srgbToLinear(0.16f)};
+        std::array<float, 3> young;
+        for (size_t k = 0; k < 3; ++k) young[k] = 0.5f * (rgb[k] + spring[k]);
+        const int first = static_cast<int>(g_.view.palette.size());
+        g_.view.palette.push_back(rgb);
+        g_.view.palette.push_back(young);
+        g_.view.palette.push_back(autumn);
+        leafShades_[mature] = first;
+        return first;
+    }
+
     ir::SuccessorModule module(const std::string& name, std::vector<float> args, const ir::SourceLoc& loc) {
         ir::SuccessorModule m;
         m.sym = g_.symbol(name);
@@ -101,11 +122,11 @@ private:
                                              int stageNumber, const ir::SourceLoc& loc) {
         std::vector<ir::SuccessorModule> out;
         if (kind == EcoOrganKind::Apex) return out;
-        out.push_back(module(";", {float(colorOf(organ, stage, kind))}, loc));
         if (drawing_ == EcoDrawing::Grown) {
-            grownDrawing(kind, loc, out);
+            grownDrawing(kind, organ, colorOf(organ, stage, kind), loc, out);
             return out;
         }
+        out.push_back(module(";", {float(colorOf(organ, stage, kind))}, loc));
         float grown = growth(organ, stage);
         switch (kind) {
         case EcoOrganKind::Stem:
@@ -137,13 +158,21 @@ private:
         return out;
     }
 
-    // The drawing at the sizes the particle has grown to: each size a code the growth simulation replaces.
-    void grownDrawing(EcoOrganKind kind, const ir::SourceLoc& loc, std::vector<ir::SuccessorModule>& out) {
+    // The drawing at the sizes the particle has grown to: each size a code the growth simulation replaces. Stems
+    // bend (`tropism`) only where a stage sets Geotropism or WeightFactor, and are shed (`alive`) only where one
+    // sets a LifeTime, so that plants without them draw no more modules.
+    void grownDrawing(EcoOrganKind kind, const ir::EcoOrgan& organ, int color, const ir::SourceLoc& loc,
+                      std::vector<ir::SuccessorModule>& out) {
         auto code = [](uint32_t c) { return shared::kGrownValue - float(c); };
+        std::optional<int> shades = kind == EcoOrganKind::Leaf ? leafShadesOf(color) : std::nullopt;
+        out.push_back(module(";", {shades ? code(shared::kGrownLeafColor + uint32_t(*shades)) : float(color)}, loc));
         switch (kind) {
         case EcoOrganKind::Stem:
         case EcoOrganKind::Root:
             out.push_back(module("!", {code(shared::kGrownWidth)}, loc));
+            if (anySet(organ, &ir::EcoStage::geotropism) || anySet(organ, &ir::EcoStage::weightFactor))
+                out.push_back(module("tropism", {code(shared::kGrownBend)}, loc));
+            if (anySet(organ, &ir::EcoStage::lifeTime)) out.push_back(module("alive", {code(shared::kGrownAlive)}, loc));
             out.push_back(module("rotu", {code(shared::kGrownRoll)}, loc));
             out.push_back(module("rotr", {code(shared::kGrownPitch)}, loc));
             out.push_back(module("rotu", {code(shared::kGrownUnroll)}, loc));
@@ -160,6 +189,16 @@ private:
             break;
         default: break;
         }
+    }
+
+    // Whether any stage of the organ (its Default included) sets the property to other than 0.
+    template <typename Member>
+    static bool anySet(const ir::EcoOrgan& organ, Member member) {
+        auto set = [&](const ir::EcoStage& stage) {
+            return (stage.*member) && ((stage.*member)->min != 0.0f || (stage.*member)->max != 0.0f);
+        };
+        if (organ.defaultStage && set(*organ.defaultStage)) return true;
+        return std::any_of(organ.stages.begin(), organ.stages.end(), [&](const auto& s) { return set(s.second); });
     }
 
     // `X(s) : s == stage --> drawing` for each described stage, then `X(s) --> default drawing`.

@@ -21,8 +21,10 @@ namespace simeco::lang {
 // A stage's unset properties come from the organ's Default stage, then from simeco's defaults below. These are
 // the sizes the stage's growth reaches at the end of its GrowTime (EcoDrawing::Final).
 // Grown: the sizes are kGrownValue codes (compute/shared/growth_layout.h) that the growth simulation replaces
-// with each module's particle's; a stem segment also tilts by its particle's pitch and roll:
-//   stem S, root R:  ;(colour) !(width) rotu(roll) rotr(pitch) rotu(-roll) G(length)
+// with each module's particle's; a stem segment also tilts by its particle's pitch and roll, bends by its
+// geotropism and weight, and is shed with the rest of its branch once its LifeTime has passed; a leaf's colour
+// follows its age (young, mature, old):
+//   stem S, root R:  ;(colour) !(width) [tropism(bend)] [alive(a)] rotu(roll) rotr(pitch) rotu(-roll) G(length)
 enum class EcoDrawing { Final, Grown };
 void addEcoOrganGeometry(const ir::EcoPlant& plant, ir::Grammar& g, EcoDrawing drawing = EcoDrawing::Final);
 

@@ -204,11 +204,13 @@ private:
         case kTurtleColorUp: st.color = hasParam(i) ? param(i, 0, 0) : st.color + t_.colorIncrement; break;
         case kTurtleColorDown: st.color = hasParam(i) ? param(i, 0, 0) : st.color - t_.colorIncrement; break;
         case kTurtleScaleSet: st.scale = param(i, 0, st.scale); break;
-        case kTurtleScaleUp: st.scale *= param(i, 0, 1.0f); break;
+        case kTurtleScaleUp:
+        case kTurtleAlive: st.scale *= param(i, 0, 1.0f); break;
         case kTurtleScaleDown: st.scale /= (param(i, 0, 1.0f) != 0.0f ? param(i, 0, 1.0f) : 1.0f); break;
         case kTurtleElasticitySet: st.elasticity = param(i, 1, st.elasticity); break;
         case kTurtleElasticityUp: st.elasticity += param(i, 1, t_.elasticityIncrement); break;
         case kTurtleElasticityDown: st.elasticity -= param(i, 1, t_.elasticityIncrement); break;
+        case kTurtleTropism: st.elasticity = param(i, 0, st.elasticity); break;
         case kTurtleSetPosition:
             st.position = {param(i, 0, st.position.x), param(i, 1, st.position.y), param(i, 2, st.position.z)};
             st.lastStem = -1;

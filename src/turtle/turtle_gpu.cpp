@@ -35,8 +35,10 @@ VkDeviceSize bytes(std::uint64_t count, std::uint64_t size) { return std::max<Vk
 // gives no elasticity.
 bool hasElasticityCommands(const turtle::TurtleCommands& c) {
     auto elastic = [](std::uint32_t command) {
-        return command == kTurtleElasticitySet || command == kTurtleElasticityUp || command == kTurtleElasticityDown;
+        return command == kTurtleElasticitySet || command == kTurtleElasticityUp || command == kTurtleElasticityDown ||
+               command == kTurtleTropism;
     };
+    if (std::any_of(c.plain.begin(), c.plain.end(), elastic)) return true;
     if (c.at == turtle::kNoSymbol) return false;
     return std::any_of(c.afterAt.begin(), c.afterAt.end(), elastic) ||
            std::any_of(c.pairs.begin(), c.pairs.end(), elastic);

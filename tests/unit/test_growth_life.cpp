@@ -1,0 +1,140 @@
+// The growth simulation's life cycle and bending, on the CPU reference, as the turtle draws them: organs that die
+// at their LifeTime and are shed with their branch, leaves that turn from young to mature to old, shoots that
+// turn against gravity (Geotropism) and bend under their weight (WeightFactor against Strength).
+#include <algorithm>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "compute/shared/organ_layout.h"
+#include "compute/shared/particle_layout.h"
+#include "cpu/derive.h"
+#include "grow/growing_species.h"
+#include "grow/growth_tables.h"
+#include "grow/tick_cpu.h"
+#include "lang/eco_parser.h"
+#include "turtle/turtle_commands.h"
+#include "turtle/turtle_cpu.h"
+#include "turtle/turtle_settings.h"
+
+namespace simeco::test {
+namespace {
+
+// One plant of `stem` and `leaf` organ blocks, its axiom `axiom`, no rules; `gravity` the scene's Gravity line.
+std::string scene(const std::string& stem, const std::string& leaf, const std::string& axiom,
+                  const std::string& gravity = "") {
+    return "EcoSystem 1.0 \"Test\" {\n" + gravity + " Plant \"P\" {\n DeriveTime = 3.0;\n Stem {\n" + stem +
+           "}\n Leaf {\n" + leaf + "}\n Grow {\n w = " + axiom + ";\n }\n }\n}\n";
+}
+
+// The plant grown for `seconds` in ticks of one second, its drawn string interpreted by the CPU turtle.
+class GrownPlant {
+public:
+    explicit GrownPlant(const std::string& text)
+        : g_(grow::growingSpecies(lang::parseEcoText(text, "test.eco"))),
+          tables_(grow::growthTables(g_.species, g_.ecoPlants)),
+          deriveTimes_(grow::plantDeriveTimes(g_.ecoPlants, 1, 1)), derivation_(g_.species, options()) {}
+
+    std::vector<shared::OrganInstance> after(uint32_t seconds) {
+        grow::TickSettings ts{&tables_, 1, 1.0f, 0, 1, g_.relativeGravity()};
+        for (; ticks_ < seconds; ++ticks_) {
+            ts.tick = ticks_;
+            grow::tickCpu(ts, derivation_.current());
+        }
+        stream::ModuleString drawn = derivation_.drawn();
+        grow::growSizesCpu(ts, deriveTimes_, drawn);
+        const ir::Alphabet& alphabet = g_.species[0].alphabet;
+        return turtle::interpretCpu(drawn, turtle::turtleCommands(alphabet),
+                                    {turtle::turtleSettings(g_.species[0], alphabet)}, {})
+            .organs;
+    }
+    const stream::ModuleString& derived() { return derivation_.current(); }
+
+private:
+    static stream::DeriveOptions options() {
+        stream::DeriveOptions o;
+        o.plants = 1;
+        o.seed = 1;
+        o.particles = true;
+        return o;
+    }
+    grow::GrowingSpecies g_;
+    grow::GrowthTables tables_;
+    std::vector<float> deriveTimes_;
+    cpu::SteppedDerivation derivation_;
+    uint32_t ticks_ = 0;
+};
+
+std::vector<shared::OrganInstance> ofKind(const std::vector<shared::OrganInstance>& organs, uint32_t kind) {
+    std::vector<shared::OrganInstance> out;
+    std::copy_if(organs.begin(), organs.end(), std::back_inserter(out),
+                 [&](const shared::OrganInstance& o) { return o.kind == kind; });
+    return out;
+}
+
+float tipHeight(const std::vector<shared::OrganInstance>& organs) {
+    float top = -1e9f;
+    for (const shared::OrganInstance& o : ofKind(organs, shared::kOrganStem))
+        top = std::max(top, o.position.y + o.heading.y * o.position.w);
+    return top;
+}
+
+TEST(GrowthLife, AStemThatDiesIsShedWithItsBranchAndLeavesAgeThenFall) {
+    // S(1) [ S(0) S(1) L(0) ] S(1) L(0): the stage-0 stem lives 5 s, the leaves 8 s.
+    GrownPlant plant(scene("Stage 0 { GrowRate = 1.0; GrowTime = 10.0; LifeTime = 5.0; }\n"
+                           "Default { GrowRate = 1.0; GrowTime = 10.0; }\n",
+                           "Default { GrowRate = 0.1; GrowTime = 10.0; LifeTime = 8.0; }\n",
+                           "S(1) [ rotr(0.5) S(0) S(1) L(0) ] S(1) L(0)"));
+    // Young leaves while they unfold (their first DeriveTime, 3 s), then mature.
+    auto leaves = ofKind(plant.after(2), shared::kOrganLeaf);
+    ASSERT_EQ(leaves.size(), 2u);
+    const shared::vec4 young = leaves[0].color;
+    leaves = ofKind(plant.after(4), shared::kOrganLeaf);
+    const shared::vec4 mature = leaves[0].color;
+    EXPECT_NE(young, mature);
+    EXPECT_LT(mature.x, mature.y); // green
+    for (const shared::OrganInstance& leaf : leaves) EXPECT_GT(leaf.position.w, 0.0f);
+
+    // At 6 s the stage-0 stem is dead: it, the stem after it and the leaf in its branch are drawn at no size; the
+    // main axis and its leaf are not, and the leaves are old (yellow: past 70% of their LifeTime).
+    std::vector<shared::OrganInstance> organs = plant.after(6);
+    auto stems = ofKind(organs, shared::kOrganStem);
+    ASSERT_EQ(stems.size(), 4u); // in module order: S(1), S(0), S(1) in the branch, S(1)
+    EXPECT_FLOAT_EQ(stems[0].position.w, 6.0f);
+    EXPECT_FLOAT_EQ(stems[1].position.w, 0.0f);
+    EXPECT_FLOAT_EQ(stems[2].position.w, 0.0f);
+    EXPECT_FLOAT_EQ(stems[3].position.w, 6.0f);
+    leaves = ofKind(organs, shared::kOrganLeaf);
+    EXPECT_FLOAT_EQ(leaves[0].position.w, 0.0f);
+    EXPECT_GT(leaves[1].position.w, 0.0f);
+    EXPECT_GT(leaves[1].color.x, leaves[1].color.y); // yellow
+    // The dead stem grew no more after 5 s; the living ones did.
+    EXPECT_FLOAT_EQ(plant.derived().particles[3].value[shared::kParticleElongation], 5.0f);
+
+    // At 9 s every leaf has fallen.
+    for (const shared::OrganInstance& leaf : ofKind(plant.after(9), shared::kOrganLeaf))
+        EXPECT_FLOAT_EQ(leaf.position.w, 0.0f);
+}
+
+TEST(GrowthLife, ShootsTurnAgainstGravityAndBendUnderTheirWeight) {
+    // A shoot leaning 1.2 rad from the vertical, four segments long.
+    const std::string axiom = "rotr(1.2) S(0) S(0) S(0) S(0)";
+    const std::string growth = "GrowRate = 1.0; GrowTime = 2.0; ";
+    auto height = [&](const std::string& stem, const std::string& gravity = "") {
+        GrownPlant plant(scene("Default { " + growth + stem + " }\n", "", axiom, gravity));
+        return tipHeight(plant.after(4));
+    };
+    const float free = height("");
+    EXPECT_GT(height("Geotropism = -0.3;"), free + 0.5f);
+    EXPECT_LT(height("WeightFactor = 0.3; Strength = 1.0;"), free - 0.5f);
+    // A stronger stem bends less; without gravity nothing bends.
+    EXPECT_GT(height("WeightFactor = 0.3; Strength = 3.0;"), height("WeightFactor = 0.3; Strength = 1.0;"));
+    EXPECT_FLOAT_EQ(height("Geotropism = -0.3;", " Gravity = vector(0.0, 0.0, 0.0);\n"), free);
+    // Under gravity pointing up (+y), negative geotropism turns the shoot down.
+    EXPECT_LT(height("Geotropism = -0.3;", " Gravity = vector(0.0, 9.81, 0.0);\n"), free - 0.5f);
+}
+
+} // namespace
+} // namespace simeco::test

@@ -9,6 +9,8 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <optional>
+#include <sstream>
 #include <string>
 
 #include <fmt/format.h>
@@ -20,8 +22,10 @@
 #include "app/field_options.h"
 #include "app/render_options.h"
 #include "draw/image_writers.h"
+#include "ir/source_loc.h"
 #include "draw/renderer.h"
 #include "field/field.h"
+#include "field/saved_run.h"
 #include "field/simulation.h"
 #include "turtle/interpretation.h"
 #include "vk/context.h"
@@ -42,6 +46,8 @@ struct RunArgs {
     std::string style = "lit";
     std::string shadows = "volume";
     std::string device;
+    std::string save;   // where the state is written at the end; empty: nowhere
+    std::string resume; // the state the field starts from; empty: the axioms
 };
 
 // One line on a terminal, rewritten as the run goes.
@@ -125,19 +131,57 @@ void writeText(draw::OutputBatch& outputs, const fs::path& path, const std::stri
     });
 }
 
+std::string readFile(const std::string& path) {
+    std::ifstream file(path, std::ios::binary);
+    if (!file) throw ir::InputError({path, 0, 0}, "cannot open the file");
+    std::stringstream bytes;
+    bytes << file.rdbuf();
+    return bytes.str();
+}
+
+// The saved field's options in place of the command line's, but for how it runs (backend, budgets).
+field::SavedRun readSavedRun(RunArgs& args) {
+    field::SavedRun saved = field::decodeSavedRun(readFile(args.resume), args.resume);
+    field::SimulationOptions& s = args.simulation;
+    const field::SimulationOptions& o = saved.options;
+    s.file = o.file;
+    s.sceneText = o.sceneText;
+    s.plants = o.plants;
+    s.seed = o.seed;
+    s.dt = o.dt;
+    s.spacing = o.spacing;
+    s.plantsPerBatch = o.plantsPerBatch;
+    return saved;
+}
+
 void runRun(RunArgs args) {
+    std::optional<field::SavedRun> saved;
+    if (!args.resume.empty()) saved = readSavedRun(args);
     if (args.simulation.file.empty()) { // the built-in garden
         args.simulation.file = kDefaultSceneName;
         args.simulation.sceneText = kDefaultSceneText;
         if (args.simulation.plants == 0) args.simulation.plants = kDefaultScenePlants;
     }
+    // A scene's text goes into a saved state, so that the state stands alone.
+    if (!args.save.empty() && args.simulation.sceneText.empty() && fs::path(args.simulation.file).extension() == ".eco")
+        args.simulation.sceneText = readFile(args.simulation.file);
     draw::RenderSettings settings = renderSettings(args.size, args.camera, args.style, args.shadows);
     vk::ContextOptions contextOptions;
     contextOptions.device = args.device;
     vk::Context context(contextOptions);
     field::Simulation simulation(args.simulation, &context);
+    if (saved) {
+        try {
+            simulation.resume(saved->state);
+        } catch (const std::invalid_argument& e) {
+            throw ir::InputError({args.resume, 0, 0}, e.what());
+        }
+    }
     const double until = args.time > 0 ? args.time : simulation.grownBy();
     const uint64_t ticks = std::max<uint64_t>(1, uint64_t(std::ceil(until / args.simulation.dt - 1e-9)));
+    if (ticks <= simulation.ticks())
+        throw CommandLineError(fmt::format("the saved field is {:g} s old already: ask for a later --time",
+                                           simulation.time()));
     const fs::path out(args.out);
     fs::create_directories(out);
 
@@ -149,13 +193,14 @@ void runRun(RunArgs args) {
     std::vector<shared::PlantStatistics> perPlant;
     Progress progress(until, args.simulation.dt);
     const auto start = std::chrono::steady_clock::now();
-    for (uint64_t k = 0; k < ticks; ++k) {
+    const uint64_t firstTick = simulation.ticks();
+    for (uint64_t k = firstTick; k < ticks; ++k) {
         const field::TickReport report = simulation.tick();
         const turtle::DeviceOrgans& organs = simulation.interpret();
         perPlant = simulation.statistics();
         stats += statsLine(simulation, report, perPlant);
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        progress.show(simulation, double(k + 1) / std::max(seconds, 1e-9));
+        progress.show(simulation, double(k + 1 - firstTick) / std::max(seconds, 1e-9));
         const bool last = k + 1 == ticks;
         if (last || (args.frames > 0 && (k + 1) % args.frames == 0)) {
             // Framed on the grown field, so that the camera stays put while the field grows.
@@ -169,11 +214,14 @@ void runRun(RunArgs args) {
     }
     writeText(outputs, out / "stats.jsonl", stats);
     writeText(outputs, out / "plants.csv", plantsTable(simulation, perPlant));
+    if (!args.save.empty())
+        writeText(outputs, args.save, field::encodeSavedRun({args.simulation, simulation.save()}));
     outputs.commit();
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::printf("%s: %u plants grown for %.1f s in %llu ticks, %llu modules, %.2f s -> %s\n",
                 args.simulation.file.c_str(), simulation.plants(), simulation.time(),
-                static_cast<unsigned long long>(ticks), static_cast<unsigned long long>(simulation.modules()), seconds,
+                static_cast<unsigned long long>(ticks - firstTick), static_cast<unsigned long long>(simulation.modules()),
+                seconds,
                 out.string().c_str());
 }
 
@@ -183,19 +231,19 @@ void registerRunCommand(CLI::App& app, CommandContext& ctx) {
     auto args = std::make_shared<RunArgs>();
     CLI::App* cmd = app.add_subcommand("run", "Grow a field of plants over simulated time and render it");
     field::SimulationOptions& s = args->simulation;
-    cmd->add_option("scene", s.file,
+    CLI::Option* scene = cmd->add_option("scene", s.file,
                     fmt::format("scene (.eco) or grammar (.l, .lsys); none: the built-in garden, {1} plants of {0}",
                                 kDefaultSceneName, kDefaultScenePlants));
     cmd->add_option("--time", args->time, "simulated seconds (default: until every plant has grown)")
         ->check(CLI::Range(0.0, 1e9));
-    cmd->add_option("--dt", s.dt, "simulated seconds per tick (default 1)")->check(CLI::Range(1e-3, 1e6));
+    CLI::Option* dt = cmd->add_option("--dt", s.dt, "simulated seconds per tick (default 1)")->check(CLI::Range(1e-3, 1e6));
     cmd->add_option("--frames", args->frames, "write a PNG frame every N ticks (default: the last frame only)");
     cmd->add_option("--out", args->out, "folder of the outputs (default: run)");
-    cmd->add_option("--seed", s.seed, "seed of the random streams (default: the file's seed, else 0)")
+    CLI::Option* seed = cmd->add_option("--seed", s.seed, "seed of the random streams (default: the file's seed, else 0)")
         ->check(CLI::Range(int64_t(0), int64_t(UINT32_MAX)));
-    cmd->add_option("--plants", s.plants, "plants in the field; a scene's species take turns (default: the scene's)")
+    CLI::Option* plants = cmd->add_option("--plants", s.plants, "plants in the field; a scene's species take turns (default: the scene's)")
         ->check(CLI::Range(1u, 1000000u));
-    cmd->add_option("--spacing", s.spacing, "distance between plants of a field (default: from a grown plant)")
+    CLI::Option* spacing = cmd->add_option("--spacing", s.spacing, "distance between plants of a field (default: from a grown plant)")
         ->check(CLI::Range(0.0f, 1e6f));
     cmd->add_option("--size", args->size, "image size WIDTHxHEIGHT (default 960x720)");
     cmd->add_option("--camera", args->camera, "azimuth,elevation[,distance] in degrees (default: framed on the field)");
@@ -205,6 +253,14 @@ void registerRunCommand(CLI::App& app, CommandContext& ctx) {
     cmd->add_option("--max-modules", s.maxModules, "module budget (default: sized to this machine's memory)");
     addTimeLimitOption(*cmd, s.maxSeconds);
     cmd->add_option("--device", args->device, "Vulkan device: an index or a name part (see `simeco devices`)");
+    cmd->add_option("--save", args->save, "write the field's whole state to FILE at the end");
+    cmd->add_option("--resume", args->resume,
+                    "go on from a state --save wrote (its scene and options; --time counts from the field's start)")
+        ->excludes(scene)
+        ->excludes(plants)
+        ->excludes(seed)
+        ->excludes(dt)
+        ->excludes(spacing);
     cmd->callback([args, &ctx] { ctx.exitCode = runReportingErrors([&] { runRun(*args); }); });
 }
 

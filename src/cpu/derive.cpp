@@ -526,6 +526,21 @@ SteppedDerivation::SteppedDerivation(const std::vector<ir::Grammar>& species, co
         throw ir::LimitError(fmt::format("the axioms alone exceed the module budget of {} modules", control_.budget()));
 }
 
+stream::SteppedState SteppedDerivation::save() const {
+    stream::SteppedState state{string_, fieldStep_, {}};
+    for (uint32_t plant = 0; plant < control_.plants(); ++plant) state.plants.push_back(control_.variables(plant));
+    return state;
+}
+
+void SteppedDerivation::resume(const stream::SteppedState& state) {
+    if (state.plants.size() != control_.plants() || state.string.plantStart.size() != control_.plants() + 1 ||
+        state.string.particles.size() != (options_.particles ? state.string.size() : 0))
+        throw std::invalid_argument("SteppedDerivation::resume: the state is not of this derivation's plants");
+    for (uint32_t plant = 0; plant < control_.plants(); ++plant) control_.restore(plant, state.plants[plant]);
+    string_ = state.string;
+    fieldStep_ = state.fieldStep;
+}
+
 uint32_t SteppedDerivation::advance(const std::vector<uint8_t>& due) {
     if (due.size() != control_.plants()) throw std::invalid_argument("SteppedDerivation::advance: one flag per plant");
     std::vector<uint8_t> growing(control_.plants(), 0);

@@ -42,6 +42,10 @@ public:
     const stream::ModuleString& current() const { return string_; }
     stream::ModuleString drawn() const;
     uint32_t plants() const { return control_.plants(); }
+    // Where the derivation stands, and back to it (a state saved from a derivation of the same species and
+    // options, on either engine).
+    stream::SteppedState save() const;
+    void resume(const stream::SteppedState& state);
 
 private:
     const std::vector<ir::Grammar>& species_;

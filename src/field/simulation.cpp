@@ -7,6 +7,8 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include <fmt/format.h>
+
 #include "compute/shared/random.h"
 #include "compute/shared/turtle_state_layout.h"
 #include "cpu/derive.h"
@@ -61,6 +63,7 @@ struct Batch {
     std::unique_ptr<gpu::GpuDeriver> deriver;
     std::unique_ptr<grow::GpuGrowth> growth;
     std::unique_ptr<cpu::SteppedDerivation> reference;
+    stream::DeriveOptions deriverOptions; // its plants, seed and budget
     uint64_t modules = 0;
 };
 
@@ -129,6 +132,7 @@ void Simulation::Impl::makeBatches(uint32_t plantsPerBatch) {
         batch.seed = b.seed;
         // The field's module budget shared by its batches as their plants.
         if (batch.maxModules > 0) batch.maxModules = std::max<uint64_t>(1, derive.maxModules / derive.plants * b.count);
+        b.deriverOptions = batch;
         if (options.backend == Backend::Gpu) {
             b.deriver = std::make_unique<gpu::GpuDeriver>(*context, g.species, gpu::GpuStrategy::Parallel);
             b.deriver->begin(batch);
@@ -216,6 +220,39 @@ TickReport Simulation::tick() {
     ++m.ticks;
     report.time = m.time;
     return report;
+}
+
+SimulationState Simulation::save() const {
+    const Impl& m = *impl_;
+    SimulationState state{m.ticks, m.nextStep, {}};
+    for (const Batch& b : m.batches) state.batches.push_back(b.deriver ? b.deriver->save() : b.reference->save());
+    return state;
+}
+
+void Simulation::resume(const SimulationState& state) {
+    Impl& m = *impl_;
+    if (state.nextStep.size() != m.derive.plants || state.batches.size() != m.batches.size())
+        throw std::invalid_argument(fmt::format("the saved field has {} plants in {} batches, this one {} in {}",
+                                                state.nextStep.size(), state.batches.size(), m.derive.plants,
+                                                m.batches.size()));
+    for (size_t k = 0; k < m.batches.size(); ++k) {
+        Batch& b = m.batches[k];
+        const stream::SteppedState& saved = state.batches[k];
+        if (saved.plants.size() != b.count)
+            throw std::invalid_argument(fmt::format("the saved field's batch {} has {} plants, this one's {}", k,
+                                                    saved.plants.size(), b.count));
+        if (b.deriver) {
+            b.deriver->resume(b.deriverOptions, saved);
+            b.modules = b.deriver->current().count;
+        } else {
+            b.reference->resume(saved);
+            b.modules = b.reference->current().size();
+        }
+    }
+    m.ticks = state.ticks;
+    m.time = double(state.ticks) * m.options.dt;
+    m.nextStep = state.nextStep;
+    m.drawn = false;
 }
 
 const turtle::DeviceOrgans& Simulation::Impl::interpretOnDevice() {

@@ -16,6 +16,7 @@
 #include "field/backend.h"
 #include "grow/growing_species.h"
 #include "stream/derive_options.h"
+#include "stream/stepped_state.h"
 #include "turtle/turtle_gpu.h"
 
 namespace simeco::vk {
@@ -56,6 +57,15 @@ struct StageSeconds {
     double statistics = 0; // each plant's statistics
 };
 
+// The whole state of a field: the clock, when each plant derives next, and each batch's derivation (its string
+// with its particles, its plants' variables and the random streams' step). The light and occupancy grids will
+// join it.
+struct SimulationState {
+    uint32_t ticks = 0;
+    std::vector<float> nextStep;               // per plant
+    std::vector<stream::SteppedState> batches; // per batch
+};
+
 class Simulation {
 public:
     // Loads the file (lang::EcoDrawing::Grown for a scene), places the plants and starts them from their axioms.
@@ -66,6 +76,11 @@ public:
     Simulation& operator=(const Simulation&) = delete;
 
     TickReport tick();
+
+    // The field's state, and back to it: a state saved from a field made with the same options (on either
+    // backend) goes on exactly as that field would have. Refused where the batches or plants differ.
+    SimulationState save() const;
+    void resume(const SimulationState& state);
 
     double time() const;
     uint32_t ticks() const;

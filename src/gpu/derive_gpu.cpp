@@ -67,11 +67,16 @@ void GpuDeriver::Impl::uploadAxioms(const stream::ModuleString& axioms, const st
     for (size_t i = 0; i < axioms.size(); ++i) words[i] = axioms.sym[i] | (uint32_t(axioms.paramCount[i]) << 24);
     std::vector<uint32_t> table(axioms.plantStart.begin(), axioms.plantStart.end());
     s.count = static_cast<uint32_t>(axioms.size());
+    // The axioms' particles from the options; a string that carries its own (a saved field's) keeps them.
     std::vector<shared::ParticleState> particles;
     if (options.particles) {
-        for (std::vector<shared::ParticleState>& plant :
-             stream::splitAxiomParticles(species, plants, options.initialParticles))
-            particles.insert(particles.end(), plant.begin(), plant.end());
+        if (axioms.particles.empty()) {
+            for (std::vector<shared::ParticleState>& plant :
+                 stream::splitAxiomParticles(species, plants, options.initialParticles))
+                particles.insert(particles.end(), plant.begin(), plant.end());
+        } else {
+            particles = axioms.particles;
+        }
         ensureParticles(s);
     }
     std::span<const std::byte> parts[] = {std::as_bytes(std::span<const uint32_t>(words)),
@@ -139,12 +144,14 @@ void GpuDeriver::Impl::downloadPlantState(stream::PlantControl& control) const {
     }
 }
 
-void GpuDeriver::Impl::startDerivation(stream::PlantControl& control, const stream::DeriveOptions& options) {
+void GpuDeriver::Impl::startDerivation(stream::PlantControl& control, const stream::DeriveOptions& options,
+                                       const stream::ModuleString* from) {
     plants = control.plants();
     carriesParticles = options.particles;
     partnersStream = -1;
     bracketTrees = 0;
     stream::ModuleString axioms = control.startAll();
+    if (from) axioms = *from;
     if (axioms.size() > control.budget())
         throw ir::LimitError(fmt::format("the axioms alone exceed the module budget of {} modules", control.budget()));
     axiomsBalanced = bracketsBalanced(axioms);

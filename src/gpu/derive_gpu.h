@@ -15,6 +15,7 @@
 #include "ir/grammar.h"
 #include "stream/derive_options.h"
 #include "stream/device_modules.h"
+#include "stream/stepped_state.h"
 
 namespace simeco::vk {
 class Context;
@@ -112,6 +113,11 @@ public:
     uint32_t advance(const std::vector<uint8_t>& due);
     stream::DeviceModules current() const;
     stream::DeviceModules drawn();
+    // Where the stepped derivation stands (read back from the device), and begin() from there instead of the
+    // axioms: a state saved from a derivation of the same species and options, on either engine, goes on as it
+    // would have.
+    stream::SteppedState save() const;
+    void resume(const stream::DeriveOptions& options, const stream::SteppedState& state);
     // Whether derive() records its steps one after the other with their sizes on the device, waiting once per batch
     // of steps (the parallel strategy: cuts, predecessors of several modules, decomposition and particle state
     // included), rather than stepping the sequential strategy's kernel from the host. The homomorphism is recorded

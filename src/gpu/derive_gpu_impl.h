@@ -289,9 +289,10 @@ struct GpuDeriver::Impl {
     };
     RecursivePasses decompositionPasses() const;
 
-    // The derivation's start, for derive() and record() alike: the plants and their axioms, staged for the first
-    // submission to copy.
-    void startDerivation(stream::PlantControl& control, const stream::DeriveOptions& options);
+    // The derivation's start, for derive() and record() alike: the plants and their axioms (or the string
+    // `from`, with its particles, where a saved derivation goes on), staged for the first submission to copy.
+    void startDerivation(stream::PlantControl& control, const stream::DeriveOptions& options,
+                         const stream::ModuleString* from = nullptr);
 
     // ---- steps recorded one after the other (derive_gpu_recorded.cpp) ----
 
@@ -440,6 +441,8 @@ struct GpuDeriver::Impl {
     };
     std::unique_ptr<Stepped> stepped;
     Stepped& steppedState(const char* call) const;
+    // begin() and resume(): from the axioms, or from a saved state.
+    void beginStepped(const stream::DeriveOptions& options, const stream::SteppedState* from);
     // Runs `batch` from the stepped string's stream; returns the stream it ends in.
     int runSteppedBatch(std::vector<RecordedStep>& batch, int stepsAfterBatch);
 

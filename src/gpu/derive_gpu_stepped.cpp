@@ -25,24 +25,46 @@ int GpuDeriver::Impl::runSteppedBatch(std::vector<RecordedStep>& batch, int step
     return cur;
 }
 
-void GpuDeriver::begin(const stream::DeriveOptions& asked) {
-    Impl& m = *impl_;
-    if (!m.recordsSteps()) throw std::logic_error("GpuDeriver::begin: stepping needs the parallel strategy");
-    if (!m.recordings.empty())
+void GpuDeriver::Impl::beginStepped(const stream::DeriveOptions& asked, const stream::SteppedState* from) {
+    if (!recordsSteps()) throw std::logic_error("GpuDeriver::begin: stepping needs the parallel strategy");
+    if (!recordings.empty())
         throw std::logic_error("GpuDeriver::begin: a recorded derivation is not read yet (recorded())");
     stream::DeriveOptions options = asked;
-    if (options.maxModules == 0) options.maxModules = m.defaultModuleBudget(options.particles);
-    m.stepped.reset();
-    stream::PlantControl control(m.species, options);
-    m.startDerivation(control, options);
+    if (options.maxModules == 0) options.maxModules = defaultModuleBudget(options.particles);
+    stepped.reset();
+    stream::PlantControl control(species, options);
+    if (from) {
+        if (from->plants.size() != control.plants() || from->string.plantStart.size() != control.plants() + 1 ||
+            from->string.particles.size() != (options.particles ? from->string.size() : 0))
+            throw std::invalid_argument("GpuDeriver::resume: the state is not of this derivation's plants");
+    }
+    startDerivation(control, options, from ? &from->string : nullptr);
+    if (from)
+        for (uint32_t plant = 0; plant < control.plants(); ++plant) control.restore(plant, from->plants[plant]);
     const uint32_t seed = control.seed();
     const uint64_t budget = control.budget();
-    m.stepped = std::make_unique<Impl::Stepped>(Impl::Stepped{std::move(control), options, seed, budget, 0, 0});
-    m.prepareRecorded(false);
-    m.makeRoom(0, m.streams[0].count);
-    Impl::SubmissionEnd submission{m};
-    m.ctx.submitAndWait([&](VkCommandBuffer cmd) { m.recordPendingCopies(cmd); });
-    m.lastStream = 0;
+    stepped = std::make_unique<Stepped>(Stepped{std::move(control), options, seed, budget, from ? from->fieldStep : 0, 0});
+    prepareRecorded(false);
+    makeRoom(0, streams[0].count);
+    SubmissionEnd submission{*this};
+    ctx.submitAndWait([&](VkCommandBuffer cmd) { recordPendingCopies(cmd); });
+    lastStream = 0;
+}
+
+void GpuDeriver::begin(const stream::DeriveOptions& options) {
+    impl_->beginStepped(options, nullptr);
+}
+
+void GpuDeriver::resume(const stream::DeriveOptions& options, const stream::SteppedState& state) {
+    impl_->beginStepped(options, &state);
+}
+
+stream::SteppedState GpuDeriver::save() const {
+    const Impl& m = *impl_;
+    const Impl::Stepped& s = m.steppedState("save");
+    stream::SteppedState state{m.readBack(m.streams[s.cur], m.carriesParticles), s.fieldStep, {}};
+    for (uint32_t plant = 0; plant < m.plants; ++plant) state.plants.push_back(s.control.variables(plant));
+    return state;
 }
 
 uint32_t GpuDeriver::advance(const std::vector<uint8_t>& due) {

@@ -56,6 +56,24 @@ void PlantControl::start(uint32_t plant, ModuleString* axiom) {
     }
 }
 
+PlantVariables PlantControl::variables(uint32_t plant) const {
+    const PlantState& st = states_[plant];
+    return {st.globals, st.arrays, st.stopRequested, derived_[plant]};
+}
+
+void PlantControl::restore(uint32_t plant, const PlantVariables& v) {
+    PlantState& st = states_[plant];
+    if (v.globals.size() != st.globals.size() || v.arrays.size() != st.arrays.size())
+        throw std::invalid_argument("PlantControl::restore: the variables are not the plant's grammar's");
+    for (size_t a = 0; a < v.arrays.size(); ++a)
+        if (v.arrays[a].size() != st.arrays[a].size())
+            throw std::invalid_argument("PlantControl::restore: an array is not the plant's grammar's");
+    st.globals = v.globals;
+    st.arrays = v.arrays;
+    st.stopRequested = v.stopRequested;
+    derived_[plant] = v.stepsDerived;
+}
+
 ModuleString PlantControl::startAll() {
     ModuleString axioms;
     axioms.stride = stride_;

@@ -13,6 +13,7 @@
 #include "stream/evaluator.h"
 #include "stream/module_string.h"
 #include "stream/random_passes.h"
+#include "stream/stepped_state.h"
 
 namespace simeco::stream {
 
@@ -56,6 +57,10 @@ public:
     int mostStepsDerived() const;
     // Steps the plant has derived.
     int stepsDerived(uint32_t plant) const { return derived_[plant]; }
+    // The plant's variables and steps derived, as a saved field keeps them, and back (after startAll(); a file
+    // a plant opened is not kept).
+    PlantVariables variables(uint32_t plant) const;
+    void restore(uint32_t plant, const PlantVariables& v);
 
 private:
     void run(uint32_t plant, const std::vector<ir::Stmt>& block, uint32_t step, ControlBlock which);

@@ -17,13 +17,15 @@ grow() { # grow OUT [OPTIONS...]: four garden plants for 12 simulated seconds, a
 grow "$work/a" --frames 6
 code=$?
 [ $code -eq 0 ]
-check "run exits 0 (got $code: $(head -c 300 "$work/a.txt"))" $?
+ok=$?
+check "run exits 0 (got $code: $(head -c 300 "$work/a.txt"))" $ok
 for f in stats.jsonl plants.csv final.exr final.png frame-00006.png frame-00012.png; do
   [ -s "$work/a/$f" ]
   check "run writes $f" $?
 done
 [ "$(find "$work/a" -type f | wc -l)" -eq 6 ]
-check "run writes nothing else ($(ls "$work/a" | tr '\n' ' '))" $?
+ok=$?
+check "run writes nothing else ($(ls "$work/a" | tr '\n' ' '))" $ok
 
 python3 - "$work/a" <<'PY'
 import csv, json, sys
@@ -72,15 +74,48 @@ check "the device grows the field as the CPU references do" $?
 (cd "$work" && "$simeco" run --plants 3 --time 4 --size 64x48 >"$work/default.txt" 2>&1)
 [ -s "$work/run/final.png" ] && grep -q '^0,"Lantan camara",' "$work/run/plants.csv" &&
   grep -q '^2,"Oxalis corniculata",' "$work/run/plants.csv" && [ "$(wc -l <"$work/run/stats.jsonl")" -eq 4 ]
-check "with no scene, run grows the built-in garden into ./run ($(head -c 200 "$work/default.txt"))" $?
+ok=$?
+check "with no scene, run grows the built-in garden into ./run ($(head -c 200 "$work/default.txt"))" $ok
 
 printf 'EcoSystem 1.0 "Bad" {\n  Plant "P" {\n    Stem { Default { GrowRate = ; } }\n  }\n}\n' >"$work/bad.eco"
 "$simeco" run "$work/bad.eco" --out "$work/bad" >/dev/null 2>"$work/err.txt"
 code=$?
 [ $code -eq 2 ] && grep -q "^$work/bad.eco:3:[0-9]*: error: " "$work/err.txt"
-check "a bad scene exits 2 with file:line:col (code $code: $(head -c 200 "$work/err.txt"))" $?
+ok=$?
+check "a bad scene exits 2 with file:line:col (code $code: $(head -c 200 "$work/err.txt"))" $ok
 [ -z "$(ls -A "$work/bad" 2>/dev/null)" ]
 check "a bad scene writes nothing" $?
+
+# Saved at 6 s and resumed to 18 s, on either backend: the field ends as the uninterrupted one does (12 plants,
+# so that their random draws after the resumption decide something).
+field() { # field OUT TIME [OPTIONS...]
+  local out=$1 time=$2
+  shift 2
+  "$simeco" run "$garden" --plants 12 --dt 1 --time "$time" --size 96x72 --out "$out" "$@" >"$out.txt" 2>&1
+}
+field "$work/whole" 18
+field "$work/first" 6 --save "$work/state.bin"
+[ -s "$work/state.bin" ] && [ -s "$work/whole/plants.csv" ] && [ ! -e "$work/first/state.bin" ]
+check "run --save writes the state where it is asked" $?
+for backend in gpu cpu; do
+  "$simeco" run --resume "$work/state.bin" --time 18 --size 96x72 --backend $backend --out "$work/rest-$backend" \
+    >"$work/rest-$backend.txt" 2>&1
+  [ "$(wc -l <"$work/rest-$backend/stats.jsonl")" -eq 12 ] &&
+    cmp -s <(tail -1 "$work/whole/stats.jsonl") <(tail -1 "$work/rest-$backend/stats.jsonl") &&
+    cmp -s "$work/whole/plants.csv" "$work/rest-$backend/plants.csv"
+  ok=$?
+  check "resumed on the $backend backend, the field ends as before ($(head -c 200 "$work/rest-$backend.txt"))" $ok
+done
+
+head -c 300 "$work/state.bin" >"$work/truncated.bin"
+"$simeco" run --resume "$work/truncated.bin" --out "$work/truncated" >/dev/null 2>"$work/err.txt"
+code=$?
+[ $code -eq 2 ] && grep -q "^$work/truncated.bin: error: .*truncated" "$work/err.txt" && [ ! -e "$work/truncated" ]
+ok=$?
+check "a truncated state is refused and nothing written (code $code: $(head -c 200 "$work/err.txt"))" $ok
+"$simeco" run "$garden" --resume "$work/state.bin" --out "$work/both" >/dev/null 2>&1
+[ $? -eq 2 ]
+check "a scene and a state to resume are refused together" $?
 
 "$simeco" run "$garden" --dt 0 --out "$work/dt" >/dev/null 2>&1
 [ $? -eq 2 ]

@@ -20,6 +20,7 @@ layout(set = 0, binding = 4, std430) writeonly buffer ParticlesOut { float parti
 layout(set = 0, binding = 5, std430) readonly buffer Classes { uint classes[]; };
 layout(set = 0, binding = 6, std430) readonly buffer SpeciesWords { uint speciesWords[]; };
 layout(set = 0, binding = 7, std430) readonly buffer Rows { float rows[]; };
+layout(set = 0, binding = 8, std430) readonly buffer Vigour { float vigour[]; };
 layout(push_constant) uniform Push { GrowPush pc; };
 
 #include "compute/grow/growth.glsl"
@@ -63,8 +64,8 @@ void main() {
         float growing = alive(row, plant, self, p[kParticleAge])
                             ? clamp(property(row, kGrowTime, plant, self) - p[kParticleStageAge], 0.0, pc.dt)
                             : 0.0;
-        p[kParticleElongation] += property(row, kGrowRate, plant, self) * growing;
-        p[kParticleBroadening] += property(row, kBroadenRate, plant, self) * growing;
+        p[kParticleElongation] += property(row, kGrowRate, plant, self) * vigour[plant] * growing;
+        p[kParticleBroadening] += property(row, kBroadenRate, plant, self) * vigour[plant] * growing;
         p[kParticleNoiseClock] += pc.dt;
         float noiseTime = property(row, kNoiseTime, plant, self), cone = property(row, kConeNoise, plant, self);
         if (growing > 0.0 && noiseTime > 0.0 && cone > 0.0 && p[kParticleNoiseClock] >= noiseTime) {

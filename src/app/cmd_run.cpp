@@ -61,7 +61,7 @@ public:
         const double eta = ticksPerSecond > 0 ? (until_ - s.time()) / dt_ / ticksPerSecond : 0;
         std::fprintf(stderr, "\r[%s%s] %.1f/%.1f s  %u plants  %llu modules  %.1f ticks/s  ETA %.0f s ",
                      std::string(size_t(filled), '#').c_str(), std::string(size_t(30 - filled), '.').c_str(), s.time(),
-                     until_, s.plants(), static_cast<unsigned long long>(s.modules()), ticksPerSecond,
+                     until_, s.standingPlants(), static_cast<unsigned long long>(s.modules()), ticksPerSecond,
                      std::max(eta, 0.0));
     }
     ~Progress() {
@@ -90,6 +90,7 @@ std::string statsLine(const field::Simulation& simulation, const field::TickRepo
     Totals field;
     std::vector<std::pair<std::string, Totals>> species;
     for (uint32_t p = 0; p < perPlant.size(); ++p) {
+        if (!simulation.present(p)) continue;
         field.add(perPlant[p]);
         const std::string name = simulation.speciesName(p);
         auto it = std::find_if(species.begin(), species.end(), [&](const auto& s) { return s.first == name; });
@@ -111,14 +112,16 @@ std::string statsLine(const field::Simulation& simulation, const field::TickRepo
 std::string plantsTable(const field::Simulation& simulation, const std::vector<shared::PlantStatistics>& perPlant) {
     std::string csv = "plant,species,x,z,alive,modules,height,leaf_area,light\n";
     const std::vector<uint64_t> modules = simulation.plantModules();
+    uint32_t row = 0;
     for (uint32_t p = 0; p < simulation.plants(); ++p) {
+        if (!simulation.present(p)) continue;
         const glm::vec3 at = turtle::plantOrigin(simulation.placements()[p]);
         std::string species = simulation.speciesName(p);
         std::replace(species.begin(), species.end(), '"', '\'');
         const shared::PlantStatistics& s = perPlant[p];
         // Every plant lives on until competition for light can starve it.
-        csv += fmt::format("{},\"{}\",{:.9g},{:.9g},1,{},{:.9g},{:.9g},{:.9g}\n", p, species, at.x, at.z, modules[p],
-                           s.height, s.leafArea, s.light);
+        csv += fmt::format("{},\"{}\",{:.9g},{:.9g},1,{},{:.9g},{:.9g},{:.9g}\n", row++, species, at.x, at.z,
+                           modules[p], s.height, s.leafArea, s.light);
     }
     return csv;
 }
@@ -170,6 +173,7 @@ void runRun(RunArgs args) {
     contextOptions.device = args.device;
     vk::Context context(contextOptions);
     field::Simulation simulation(args.simulation, &context);
+    if (simulation.species().scene) applySceneLight(simulation.species().scene->light, settings);
     if (saved) {
         try {
             simulation.resume(saved->state);
@@ -219,7 +223,7 @@ void runRun(RunArgs args) {
     outputs.commit();
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::printf("%s: %u plants grown for %.1f s in %llu ticks, %llu modules, %.2f s -> %s\n",
-                args.simulation.file.c_str(), simulation.plants(), simulation.time(),
+                args.simulation.file.c_str(), simulation.standingPlants(), simulation.time(),
                 static_cast<unsigned long long>(ticks - firstTick), static_cast<unsigned long long>(simulation.modules()),
                 seconds,
                 out.string().c_str());

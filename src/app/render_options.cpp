@@ -30,4 +30,12 @@ draw::RenderSettings renderSettings(const std::string& size, const std::string& 
     return s;
 }
 
+void applySceneLight(const ir::EcoLight& light, draw::RenderSettings& settings) {
+    if (light.sunDirection)
+        settings.sunDirection = {(*light.sunDirection)[0], (*light.sunDirection)[1], (*light.sunDirection)[2]};
+    if (light.sunIntensity) settings.sunColor *= *light.sunIntensity;
+    if (light.skyLight) settings.skyColor *= *light.skyLight;
+    if (light.groundSize) settings.groundSize = *light.groundSize;
+}
+
 } // namespace simeco::app

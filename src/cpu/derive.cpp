@@ -481,7 +481,7 @@ DeriveResult deriveSpeciesCpu(const std::vector<ir::Grammar>& species, const Der
     result.string.plantStart.push_back(0);
     uint64_t used = 0;
     std::vector<std::vector<shared::ParticleState>> axiomParticles =
-        options.particles ? stream::splitAxiomParticles(species, control.plants(), options.initialParticles)
+        options.particles ? stream::splitAxiomParticles(species, control.plants(), options)
                           : std::vector<std::vector<shared::ParticleState>>{};
     for (uint32_t plant = 0; plant < control.plants(); ++plant) {
         PlantDeriver deriver(control, plant, control.budget() - used, control.budget());
@@ -519,7 +519,7 @@ SteppedDerivation::SteppedDerivation(const std::vector<ir::Grammar>& species, co
     string_ = control_.startAll();
     if (options.particles) {
         for (std::vector<shared::ParticleState>& plant :
-             stream::splitAxiomParticles(species, control_.plants(), options.initialParticles))
+             stream::splitAxiomParticles(species, control_.plants(), options))
             string_.particles.insert(string_.particles.end(), plant.begin(), plant.end());
     }
     if (string_.size() > control_.budget())

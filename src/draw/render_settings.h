@@ -42,6 +42,7 @@ struct RenderSettings {
     glm::vec3 background{0.62f, 0.74f, 0.88f};    // linear colour where nothing is drawn
     bool ground = true;
     glm::vec3 groundColor{0.36f, 0.31f, 0.23f};
+    float groundSize = 0.0f; // the side of the ground square, centred under the scene; 0: 5 times its radius
     std::uint32_t toonBands = 3;
     glm::vec3 outlineColor{0.02f, 0.02f, 0.02f};
     // Shadow volume vertices take 16 bytes each; a scene needing more than this draws the volumes that fit.

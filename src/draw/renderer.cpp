@@ -208,7 +208,8 @@ FrameSetup Renderer::prepareView(const Bounds& bounds, const RenderSettings& set
     frame.groundBounce = vec4Of(settings.groundBounce);
     frame.groundColor = vec4Of(settings.groundColor);
     glm::vec3 centre = box.centre();
-    frame.groundPlane = {centre.x, box.min.y, centre.z, 2.5f * radius};
+    frame.groundPlane = {centre.x, box.min.y, centre.z,
+                         settings.groundSize > 0.0f ? 0.5f * settings.groundSize : 2.5f * radius};
     frame.options = {settings.style == Style::Toon ? shared::kStyleToon : shared::kStyleLit, settings.toonBands, 0, 0};
     ++r.framesPrepared;
     while (!r.retired.empty() && r.retired.front().first + kFramesInFlight < r.framesPrepared) r.retired.pop_front();

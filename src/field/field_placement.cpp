@@ -1,7 +1,12 @@
 #include "field/field_placement.h"
 
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
 #include <glm/vec3.hpp>
 
+#include "field/ground_samples.h"
 #include "compute/shared/growth_layout.h"
 #include "compute/shared/random.h"
 #include "ir/species.h"
@@ -52,6 +57,73 @@ std::vector<shared::PlantPlacement> placeField(const grow::GrowingSpecies& g, ui
         placements.push_back(turtle::placementAt(position, direction, yaw));
     }
     return placements;
+}
+
+bool hasPopulations(const grow::GrowingSpecies& g) {
+    return g.scene && !g.scene->populations.empty();
+}
+
+FieldLayout layoutPopulations(const grow::GrowingSpecies& g, uint32_t seed, std::vector<ir::EcoWarning>& warnings) {
+    struct Stand {
+        glm::vec2 at;
+        float vigour = 1.0f;
+        uint32_t draw = 0; // the key of its own draws
+    };
+    const ir::EcoScene& scene = *g.scene;
+    const size_t species = scene.plants.size();
+    std::vector<std::vector<Stand>> stands(species);
+    auto speciesNamed = [&](const std::string& name) {
+        for (size_t s = 0; s < species; ++s)
+            if (scene.plants[s].name == name) return s;
+        return species;
+    };
+    uint32_t key = 0;
+    for (size_t s = 0; s < species; ++s) {
+        const bool inPopulation = std::any_of(scene.populations.begin(), scene.populations.end(),
+                                              [&](const ir::EcoPopulation& p) { return p.plant == scene.plants[s].name; });
+        if (!inPopulation) stands[s].push_back({glm::vec2(NAN), 1.0f, key++});
+    }
+    for (size_t k = 0; k < scene.populations.size(); ++k) {
+        const ir::EcoPopulation& pop = scene.populations[k];
+        const GroundRect rect{{pop.centerX, pop.centerZ}, {pop.width, pop.depth}};
+        const uint32_t count = pop.count ? *pop.count
+                                         : uint32_t(std::max(1.0, std::round(double(*pop.density) * rect.size.x *
+                                                                             rect.size.y)));
+        const uint32_t stream = shared::randomBits(seed, pop.seed, shared::kGrowPropertyPass, 3, uint32_t(k));
+        const std::vector<glm::vec2> points = pop.placement == ir::EcoPlacement::Poisson
+                                                  ? poissonDiskPoints(rect, count, pop.spacing.value_or(0.0f), seed,
+                                                                      stream)
+                                                  : jitteredPoints(rect, count, seed, stream);
+        if (points.size() < count)
+            warnings.push_back({pop.loc, fmt::format("Population \"{}\" has room for {} of its {} plants {} apart",
+                                                     pop.name, points.size(), count, pop.spacing.value_or(0.0f))});
+        std::vector<Stand>& list = stands[speciesNamed(pop.plant)];
+        for (size_t i = 0; i < points.size(); ++i) {
+            const float u = shared::randomUnit(seed, stream, shared::kGrowPropertyPass, 4, uint32_t(i));
+            list.push_back({points[i], 1.0f + pop.variation * (2.0f * u - 1.0f), key++});
+        }
+    }
+    size_t rounds = 0;
+    for (const std::vector<Stand>& list : stands) rounds = std::max(rounds, list.size());
+    FieldLayout layout;
+    const size_t slots = rounds * species;
+    layout.placements.assign(slots, turtle::placementAt(glm::vec3(0), glm::vec3(0, 1, 0), 0.0f));
+    layout.absent.assign(slots, 1);
+    layout.vigour.assign(slots, 1.0f);
+    for (size_t s = 0; s < species; ++s) {
+        const ir::EcoPlant& plant = scene.plants[s];
+        for (size_t j = 0; j < stands[s].size(); ++j) {
+            const Stand& stand = stands[s][j];
+            const size_t slot = s + j * species;
+            const glm::vec3 direction = drawn(plant.direction, seed, stand.draw, 3);
+            const glm::vec3 position = std::isnan(stand.at.x) ? drawn(plant.position, seed, stand.draw, 0)
+                                                              : glm::vec3(stand.at.x, 0.0f, stand.at.y);
+            layout.placements[slot] = turtle::placementAt(position, direction, kTwoPi * draw(seed, stand.draw, 6));
+            layout.absent[slot] = 0;
+            layout.vigour[slot] = stand.vigour;
+        }
+    }
+    return layout;
 }
 
 } // namespace simeco::field

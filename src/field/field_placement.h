@@ -20,4 +20,17 @@ std::vector<shared::PlantPlacement> placeField(const grow::GrowingSpecies& g, ui
 // Whether placeField puts the plants where the scene says: a scene with one plant of each species.
 bool placedAsScene(const grow::GrowingSpecies& g, uint32_t plants);
 
+// A field whose scene has populations (docs/SCENES.md): plant p is of species p mod the species' count, so the
+// field has as many rounds of its species as its most numerous species has plants, and the slots of the others'
+// rounds beyond their plants stand empty.
+struct FieldLayout {
+    std::vector<shared::PlantPlacement> placements; // per slot
+    std::vector<uint8_t> absent;                    // per slot: 1 where no plant stands
+    std::vector<float> vigour;                      // per slot: the factor on its growth rates (Variation)
+};
+bool hasPopulations(const grow::GrowingSpecies& g);
+// Each population's plants over its region, and each Plant block that no population names at its Position. A
+// population that has no room for its Count is placed as far as it goes, with a warning.
+FieldLayout layoutPopulations(const grow::GrowingSpecies& g, uint32_t seed, std::vector<ir::EcoWarning>& warnings);
+
 } // namespace simeco::field

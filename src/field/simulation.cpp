@@ -14,11 +14,13 @@
 #include "cpu/derive.h"
 #include "field/field_placement.h"
 #include "field/grown_plants.h"
+#include "field/obstacles.h"
 #include "field/plant_statistics.h"
 #include "gpu/derive_gpu.h"
 #include "grow/growth_tables.h"
 #include "grow/tick_cpu.h"
 #include "grow/tick_gpu.h"
+#include "ir/source_loc.h"
 #include "ir/species.h"
 #include "lang/eco_parser.h"
 #include "turtle/organ_merge.h"
@@ -64,6 +66,7 @@ struct Batch {
     std::unique_ptr<grow::GpuGrowth> growth;
     std::unique_ptr<cpu::SteppedDerivation> reference;
     stream::DeriveOptions deriverOptions; // its plants, seed and budget
+    std::vector<float> vigour;            // per plant (empty: 1)
     uint64_t modules = 0;
 };
 
@@ -77,6 +80,8 @@ struct Simulation::Impl {
     std::vector<float> deriveTimes;
     std::vector<float> nextStep;
     std::vector<shared::PlantPlacement> placements;
+    std::vector<uint8_t> absent; // per plant: an empty slot of a field of populations
+    std::vector<float> vigour;   // per plant: the factor on its growth rates (empty: 1)
     GrownPlants grown;
     double time = 0;
     uint32_t ticks = 0;
@@ -88,13 +93,18 @@ struct Simulation::Impl {
     std::unique_ptr<turtle::GpuTurtle> turtle;
     std::unique_ptr<turtle::OrganMerge> merge;
     std::unique_ptr<GpuPlantStatistics> statistics;
-    turtle::DeviceOrgans uploaded; // the CPU backend's organs
+    turtle::DeviceOrgans uploaded;  // the CPU backend's organs
+    turtle::DeviceOrgans obstacles; // the scene's, uploaded once where it has any
+    bool hasObstacles() const { return g.scene && !g.scene->obstacles.empty(); }
+    // The obstacles' organs, uploaded at the first call.
+    const turtle::DeviceOrgans& obstacleOrganBuffers();
     std::vector<shared::PlantStatistics> lastStatistics;
     bool drawn = false;
     StageSeconds seconds;
 
     grow::TickSettings settings(const Batch& b, uint32_t tick) const {
-        return {&tables, uint32_t(g.species.size()), options.dt, tick, b.seed, g.relativeGravity()};
+        return {&tables, uint32_t(g.species.size()), options.dt, tick, b.seed, g.relativeGravity(),
+                b.vigour.empty() ? nullptr : &b.vigour};
     }
     // The height each plant stands at.
     static std::vector<float> baseHeights(const std::vector<shared::PlantPlacement>& placements) {
@@ -127,16 +137,18 @@ void Simulation::Impl::makeBatches(uint32_t plantsPerBatch) {
         b.seed = batchSeed(seed, uint32_t(batches.size()));
         b.deriveTimes = slice(deriveTimes, first, b.count);
         b.field.placements = slice(placements, first, b.count);
+        if (!vigour.empty()) b.vigour = slice(vigour, first, b.count);
         stream::DeriveOptions batch = derive;
         batch.plants = b.count;
         batch.seed = b.seed;
+        if (!absent.empty()) batch.absent = slice(absent, first, b.count);
         // The field's module budget shared by its batches as their plants.
         if (batch.maxModules > 0) batch.maxModules = std::max<uint64_t>(1, derive.maxModules / derive.plants * b.count);
         b.deriverOptions = batch;
         if (options.backend == Backend::Gpu) {
             b.deriver = std::make_unique<gpu::GpuDeriver>(*context, g.species, gpu::GpuStrategy::Parallel);
             b.deriver->begin(batch);
-            b.growth = std::make_unique<grow::GpuGrowth>(*context, tables, b.deriveTimes);
+            b.growth = std::make_unique<grow::GpuGrowth>(*context, tables, b.deriveTimes, b.vigour);
             b.modules = b.deriver->current().count;
         } else {
             b.reference = std::make_unique<cpu::SteppedDerivation>(g.species, batch);
@@ -159,11 +171,22 @@ Simulation::Simulation(const SimulationOptions& options, const vk::Context* cont
     } else {
         ir::EcoScene scene = lang::parseEcoText(options.sceneText, options.file);
         warnings = scene.warnings;
-        m.g = grow::growingSpecies(std::move(scene));
+        m.g = grow::growingSpecies(std::move(scene), &warnings);
     }
-    for (const ir::EcoWarning& w : warnings)
-        std::fprintf(stderr, "%s:%d:%d: warning: %s\n", w.loc.file.c_str(), w.loc.line, w.loc.col, w.message.c_str());
-    m.derive.plants = options.plants ? options.plants : uint32_t(m.g.species.size());
+    FieldLayout layout;
+    if (hasPopulations(m.g)) {
+        if (options.plants)
+            throw ir::InputError({options.file, 0, 0},
+                                 "the scene places its plants in populations: it takes no count of plants");
+        layout = layoutPopulations(m.g, options.seed >= 0 ? uint32_t(options.seed) : m.g.species.front().seed,
+                                   warnings);
+        m.absent = layout.absent;
+        m.vigour = layout.vigour;
+        m.derive.absent = layout.absent;
+    }
+    m.derive.plants = hasPopulations(m.g) ? uint32_t(layout.placements.size())
+                      : options.plants    ? options.plants
+                                          : uint32_t(m.g.species.size());
     m.derive.maxModules = options.maxModules;
     m.derive.maxSeconds = options.maxSeconds;
     m.derive.particles = true;
@@ -181,7 +204,9 @@ Simulation::Simulation(const SimulationOptions& options, const vk::Context* cont
     // A field of many: grown neighbours touch but do not overlap (turtle::fieldSpacing).
     const float spacing =
         placedAsScene(m.g, m.derive.plants) ? 0.0f : turtle::fieldSpacing({options.spacing, {}}, m.grown.bounds);
-    m.placements = placeField(m.g, m.derive.plants, m.seed, spacing);
+    m.placements = hasPopulations(m.g) ? layout.placements : placeField(m.g, m.derive.plants, m.seed, spacing);
+    for (const ir::EcoWarning& w : warnings)
+        std::fprintf(stderr, "%s:%d:%d: warning: %s\n", w.loc.file.c_str(), w.loc.line, w.loc.col, w.message.c_str());
     m.makeBatches(options.plantsPerBatch);
 }
 
@@ -258,7 +283,7 @@ void Simulation::resume(const SimulationState& state) {
 const turtle::DeviceOrgans& Simulation::Impl::interpretOnDevice() {
     if (!turtle) turtle = std::make_unique<turtle::GpuTurtle>(*context, commands, turtles);
     if (!statistics) statistics = std::make_unique<GpuPlantStatistics>(*context);
-    if (batches.size() > 1 && !merge) merge = std::make_unique<turtle::OrganMerge>(*context);
+    if ((batches.size() > 1 || hasObstacles()) && !merge) merge = std::make_unique<turtle::OrganMerge>(*context);
     if (merge) merge->begin();
     lastStatistics.clear();
     uint64_t firstModule = 0;
@@ -284,9 +309,15 @@ const turtle::DeviceOrgans& Simulation::Impl::interpretOnDevice() {
         seconds.interpret += secondsSince(start);
     }
     const Clock::time_point start = Clock::now();
+    if (hasObstacles()) merge->keep(obstacleOrganBuffers(), derive.plants, firstModule);
     const turtle::DeviceOrgans& field = merge ? merge->merge() : *organs;
     seconds.interpret += secondsSince(start);
     return field;
+}
+
+const turtle::DeviceOrgans& Simulation::Impl::obstacleOrganBuffers() {
+    if (!obstacles.instances) obstacles = turtle::uploadOrgans(*context, obstacleOrgans(g.scene->obstacles));
+    return obstacles;
 }
 
 const turtle::DeviceOrgans& Simulation::Impl::interpretOnHost() {
@@ -311,7 +342,12 @@ const turtle::DeviceOrgans& Simulation::Impl::interpretOnHost() {
     lastStatistics = plantStatisticsCpu(organs, baseHeights(placements), field.particles);
     seconds.statistics += secondsSince(start);
     uploaded = turtle::uploadOrgans(*context, organs);
-    return uploaded;
+    if (!hasObstacles()) return uploaded;
+    if (!merge) merge = std::make_unique<turtle::OrganMerge>(*context);
+    merge->begin();
+    merge->keep(uploaded, 0, 0);
+    merge->keep(obstacleOrganBuffers(), derive.plants, field.size());
+    return merge->merge();
 }
 
 const turtle::DeviceOrgans& Simulation::interpret() {
@@ -358,7 +394,7 @@ draw::Bounds Simulation::grownBounds() const {
     draw::Bounds field{glm::vec3(1e30f), glm::vec3(-1e30f)};
     for (uint32_t p = 0; p < m.derive.plants; ++p) {
         const turtle::Bounds& b = m.grown.bounds[ir::speciesOfPlant(p, m.g.species.size())];
-        if (b.empty()) continue;
+        if (b.empty() || !present(p)) continue;
         for (int corner = 0; corner < 8; ++corner) {
             const glm::vec3 c((corner & 1) ? b.max.x : b.min.x, (corner & 2) ? b.max.y : b.min.y,
                               (corner & 4) ? b.max.z : b.min.z);
@@ -367,9 +403,22 @@ draw::Bounds Simulation::grownBounds() const {
             field.max = glm::max(field.max, q);
         }
     }
+    if (m.hasObstacles())
+        for (const ir::EcoObstacle& o : m.g.scene->obstacles)
+            for (const glm::vec3& corner : obstacleCorners(o)) {
+                field.min = glm::min(field.min, corner);
+                field.max = glm::max(field.max, corner);
+            }
     return field;
 }
 
+uint32_t Simulation::standingPlants() const {
+    return uint32_t(std::count(impl_->absent.begin(), impl_->absent.end(), 0)) +
+           (impl_->absent.empty() ? impl_->derive.plants : 0);
+}
+bool Simulation::present(uint32_t plant) const {
+    return plant >= impl_->absent.size() || !impl_->absent[plant];
+}
 double Simulation::time() const {
     return impl_->time;
 }

@@ -28,7 +28,7 @@ namespace simeco::field {
 struct SimulationOptions {
     std::string file;      // a scene or grammar file, or the name `sceneText` goes by in messages
     std::string sceneText; // a scene's text, read instead of `file` when not empty
-    uint32_t plants = 0;   // 0: one plant of each species, where the scene puts it
+    uint32_t plants = 0;   // 0: one plant of each species where the scene puts it, or its populations
     int64_t seed = -1;     // -1: the grammar's `seed:` (or 0)
     float dt = 1.0f;       // simulated seconds per tick
     float spacing = 0.0f;  // between neighbouring plants of a field of many; 0: from the plants' grown size
@@ -85,6 +85,9 @@ public:
     double time() const;
     uint32_t ticks() const;
     uint32_t plants() const;
+    // Whether a plant stands in the field: a field of populations has empty slots (field_placement.h).
+    bool present(uint32_t plant) const;
+    uint32_t standingPlants() const;
     uint32_t batches() const;
     uint64_t modules() const;
     // When every plant has derived its steps and every organ's growth has ended, at the latest.

@@ -72,7 +72,7 @@ void GpuDeriver::Impl::uploadAxioms(const stream::ModuleString& axioms, const st
     if (options.particles) {
         if (axioms.particles.empty()) {
             for (std::vector<shared::ParticleState>& plant :
-                 stream::splitAxiomParticles(species, plants, options.initialParticles))
+                 stream::splitAxiomParticles(species, plants, options))
                 particles.insert(particles.end(), plant.begin(), plant.end());
         } else {
             particles = axioms.particles;

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <filesystem>
 
+#include <fmt/format.h>
+
 #include "ir/source_loc.h"
 #include "ir/species.h"
 #include "lang/eco_parser.h"
@@ -26,16 +28,31 @@ GrowingSpecies loadGrowingSpecies(const std::string& path, std::vector<ir::EcoWa
     }
     ir::EcoScene scene = lang::parseEcoFile(path);
     if (warnings) warnings->insert(warnings->end(), scene.warnings.begin(), scene.warnings.end());
-    return growingSpecies(std::move(scene));
+    return growingSpecies(std::move(scene), warnings);
 }
 
-GrowingSpecies growingSpecies(ir::EcoScene parsed) {
+GrowingSpecies growingSpecies(ir::EcoScene parsed, std::vector<ir::EcoWarning>* warnings) {
     GrowingSpecies g;
     auto scene = std::make_unique<ir::EcoScene>(std::move(parsed));
     if (scene->plants.empty()) throw ir::InputError(scene->loc, "the scene has no plant");
     std::vector<ir::Grammar> species;
-    for (size_t i = 0; i < scene->plants.size(); ++i)
-        species.push_back(lang::compileEcoPlant(*scene, i, lang::EcoDrawing::Grown));
+    for (size_t i = 0; i < scene->plants.size(); ++i) {
+        const ir::EcoPlant& plant = scene->plants[i];
+        if (plant.grammar.empty()) {
+            species.push_back(lang::compileEcoPlant(*scene, i, lang::EcoDrawing::Grown));
+            continue;
+        }
+        // A grammar file beside the scene.
+        const std::filesystem::path path = std::filesystem::path(scene->file).parent_path() / plant.grammar;
+        if (!std::filesystem::is_regular_file(path))
+            throw ir::InputError(plant.grammarLoc, fmt::format("cannot open the grammar file {}", path.string()));
+        const std::string extension = path.extension().string();
+        if (extension != ".l" && extension != ".lsys")
+            throw ir::InputError(plant.grammarLoc, fmt::format("a plant's Grammar is a cpfg .l or quick .lsys file, "
+                                                               "not {}",
+                                                               path.string()));
+        species.push_back(lang::loadSpecies(path.string(), warnings).front());
+    }
     g.species = ir::unifySpecies(std::move(species));
     for (const ir::EcoPlant& plant : scene->plants)
         g.ecoPlants.push_back(&plant);

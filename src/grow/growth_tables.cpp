@@ -96,7 +96,7 @@ GrowthTables growthTables(const std::vector<ir::Grammar>& species, const std::ve
         uint32_t* words = t.species.data() + s * shared::kSpeciesGrowthWords;
         words[shared::kSpeciesFlags] = 0;
         const ir::EcoPlant* plant = s < ecoPlants.size() ? ecoPlants[s] : nullptr;
-        if (!plant) continue;
+        if (!plant || !plant->grammar.empty()) continue; // a grammar file's modules only age
         words[shared::kSpeciesFlags] = shared::kSpeciesDrawsGrowth;
         for (uint32_t k = 0; k < shared::kGrowOrganKinds; ++k) {
             const auto kind = static_cast<EcoOrganKind>(k);

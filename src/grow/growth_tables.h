@@ -23,8 +23,8 @@ struct GrowthTables {
     bool drawsGrowth() const;
 };
 
-// `ecoPlants[s]`: the scene's plant species s was compiled from with EcoDrawing::Grown, or null for a cpfg or
-// quick grammar (whose modules only age). The species share one alphabet.
+// `ecoPlants[s]`: the scene's plant species s was compiled from with EcoDrawing::Grown, or null (or a plant
+// that names a Grammar file) for a cpfg or quick grammar, whose modules only age. The species share one alphabet.
 GrowthTables growthTables(const std::vector<ir::Grammar>& species, const std::vector<const ir::EcoPlant*>& ecoPlants);
 
 // Each of `plants` plants' DeriveTime (plant p is of species p mod the species' count), drawn from its range

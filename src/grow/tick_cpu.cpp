@@ -50,8 +50,9 @@ void growOrgan(const TickSettings& ts, const float* row, uint32_t plant, float* 
     const float growing = alive(ts, row, plant, id, p[shared::kParticleAge])
                               ? std::clamp(property(shared::kGrowTime) - p[shared::kParticleStageAge], 0.0f, ts.dt)
                               : 0.0f;
-    p[shared::kParticleElongation] += property(shared::kGrowRate) * growing;
-    p[shared::kParticleBroadening] += property(shared::kBroadenRate) * growing;
+    const float vigour = ts.vigour ? (*ts.vigour)[plant] : 1.0f;
+    p[shared::kParticleElongation] += property(shared::kGrowRate) * vigour * growing;
+    p[shared::kParticleBroadening] += property(shared::kBroadenRate) * vigour * growing;
     p[shared::kParticleNoiseClock] += ts.dt;
     const float noiseTime = property(shared::kNoiseTime), cone = property(shared::kConeNoise);
     if (growing > 0.0f && noiseTime > 0.0f && cone > 0.0f && p[shared::kParticleNoiseClock] >= noiseTime) {

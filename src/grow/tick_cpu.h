@@ -11,7 +11,8 @@
 namespace simeco::grow {
 
 // What a tick needs besides the string: the tables, the species' count (plant p is of species p mod it), the
-// seconds it advances, the ticks before it, the field's seed and the scene's gravity as a multiple of Earth's.
+// seconds it advances, the ticks before it, the field's seed, the scene's gravity as a multiple of Earth's and
+// each plant's vigour. The device's GpuGrowth holds the vigour of its plants instead.
 struct TickSettings {
     const GrowthTables* tables = nullptr;
     uint32_t species = 1;
@@ -19,6 +20,7 @@ struct TickSettings {
     uint32_t tick = 0;
     uint32_t seed = 0;
     float gravity = 1.0f;
+    const std::vector<float>* vigour = nullptr; // per plant: a factor on its GrowRate and BroadenRate (none: 1)
 };
 
 // One tick of every particle of the derived string `s` (which carries particle state): the modules that continue

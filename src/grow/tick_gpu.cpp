@@ -17,15 +17,21 @@ shared::GrowPush growPush(const stream::DeviceModules& modules, const TickSettin
                             symbols, modules.count, modules.stride, s.gravity};
 }
 
+std::vector<float> orOnes(const std::vector<float>& values, size_t count) {
+    return values.empty() ? std::vector<float>(count, 1.0f) : values;
+}
+
 } // namespace
 
-GpuGrowth::GpuGrowth(const vk::Context& context, const GrowthTables& tables, const std::vector<float>& deriveTimes)
+GpuGrowth::GpuGrowth(const vk::Context& context, const GrowthTables& tables, const std::vector<float>& deriveTimes,
+                     const std::vector<float>& vigour)
     : context_(context), symbols_(tables.symbols), tickKernel_(vk::ComputePipeline::embedded(context, "grow/tick")),
       sizesKernel_(vk::ComputePipeline::embedded(context, "grow/grown_sizes")),
       classes_(vk::deviceBufferWith(context, std::span<const uint32_t>(tables.classes))),
       species_(vk::deviceBufferWith(context, std::span<const uint32_t>(tables.species))),
       rows_(vk::deviceBufferWith(context, std::span<const float>(tables.rows))),
-      deriveTimes_(vk::deviceBufferWith(context, std::span<const float>(deriveTimes))) {}
+      deriveTimes_(vk::deviceBufferWith(context, std::span<const float>(deriveTimes))),
+      vigour_(vk::deviceBufferWith(context, std::span<const float>(orOnes(vigour, deriveTimes.size())))) {}
 
 void GpuGrowth::recordTick(VkCommandBuffer cmd, const stream::DeviceModules& derived, const TickSettings& settings) {
     if (!derived.particles) throw std::logic_error("GpuGrowth::recordTick: the string carries no particle state");
@@ -37,7 +43,7 @@ void GpuGrowth::recordTick(VkCommandBuffer cmd, const stream::DeviceModules& der
     vk::memoryBarrier(cmd, vk::Hazard::AnyToAny);
     tickKernel_.dispatch(cmd,
                          {*derived.symbols, *derived.params, *derived.plantStarts, *derived.particles, nextStates_,
-                          classes_, species_, rows_},
+                          classes_, species_, rows_, vigour_},
                          growPush(derived, settings, symbols_), tickKernel_.groupsFor(derived.count));
     vk::memoryBarrier(cmd, vk::Hazard::ComputeToTransfer);
     VkBufferCopy copy{0, 0, bytes};

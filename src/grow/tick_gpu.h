@@ -22,8 +22,10 @@ namespace simeco::grow {
 
 class GpuGrowth {
 public:
-    // The tables and each plant's DeriveTime go to the device once.
-    GpuGrowth(const vk::Context& context, const GrowthTables& tables, const std::vector<float>& deriveTimes);
+    // The tables, each plant's DeriveTime and each plant's vigour (a factor on its growth rates; empty: 1) go to
+    // the device once.
+    GpuGrowth(const vk::Context& context, const GrowthTables& tables, const std::vector<float>& deriveTimes,
+              const std::vector<float>& vigour = {});
 
     // One tick of `derived`'s particles (which it must carry), in place: the next states are written beside them
     // and copied back. `settings.tables` is not read (the device's copy is).
@@ -38,7 +40,7 @@ private:
     const vk::Context& context_;
     uint32_t symbols_;
     vk::ComputePipeline tickKernel_, sizesKernel_;
-    vk::Buffer classes_, species_, rows_, deriveTimes_;
+    vk::Buffer classes_, species_, rows_, deriveTimes_, vigour_;
     vk::Buffer nextStates_; // the tick's output, copied back into the string's particles
 };
 

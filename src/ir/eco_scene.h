@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "ir/eco_field.h"
 #include "ir/expr.h"
 #include "ir/source_loc.h"
 
@@ -147,6 +148,10 @@ struct EcoGrow {
 
 struct EcoPlant {
     std::string name;
+    // `Grammar = "file.l";` (a simeco extension): the plant's grammar is a cpfg `.l` or quick `.lsys` file,
+    // relative to the scene's folder, instead of organ blocks and a Grow block.
+    std::string grammar;
+    SourceLoc grammarLoc;
     EcoVector position{EcoNumber::constant(0), EcoNumber::constant(0), EcoNumber::constant(0)};
     EcoVector direction{EcoNumber::constant(0), EcoNumber::constant(1), EcoNumber::constant(0)};
     // Seconds between derivation steps; particles grow continuously in between. 3 s is what every seed
@@ -177,6 +182,9 @@ struct EcoScene {
     EcoNumber dayLight = EcoNumber::constant(12.0f); // hours
     EcoVector gravity{EcoNumber::constant(0), EcoNumber::constant(-9.8f), EcoNumber::constant(0)};
     std::vector<EcoPlant> plants;
+    std::vector<EcoPopulation> populations;
+    std::vector<EcoObstacle> obstacles;
+    EcoLight light;
     std::vector<EcoWarning> warnings;
     SourceLoc loc;
 };

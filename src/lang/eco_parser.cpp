@@ -7,6 +7,10 @@
 // block just before it. Everything else about braces is strict.
 #include "lang/eco_parser.h"
 
+#include <algorithm>
+#include <array>
+#include <cmath>
+
 #include <fmt/format.h>
 
 #include "lang/eco_grow_parser.h"
@@ -31,6 +35,14 @@ public:
         scene_.name = name("after the version");
         cur_.expectPunct("{", "to open the EcoSystem block");
         ecosystemItems();
+        for (const ir::EcoPopulation& pop : scene_.populations) {
+            const bool known = std::any_of(scene_.plants.begin(), scene_.plants.end(),
+                                           [&](const ir::EcoPlant& plant) { return plant.name == pop.plant; });
+            if (!known)
+                throw ir::InputError(pop.plantLoc, fmt::format("Population \"{}\" names Plant \"{}\", which the "
+                                                               "scene does not define",
+                                                               pop.name, pop.plant));
+        }
         if (!cur_.atEnd())
             cur_.failAt(cur_.peek(), fmt::format("unexpected {} after the end of the EcoSystem block",
                                                  EcoTokenCursor::describe(cur_.peek())));
@@ -153,8 +165,213 @@ private:
                 cur_.expectPunct(";", "after the value of Gravity");
                 continue;
             }
-            unknown(t, "the EcoSystem block", "SoilPH, RainRate, DayLight, Gravity or Plant");
+            if (fieldItem(seen)) continue;
+            unknown(t, "the EcoSystem block",
+                    "SoilPH, RainRate, DayLight, Gravity, SunDirection, SunIntensity, SkyLight, GroundSize, Plant, "
+                    "Population, Box or Wall");
         }
+    }
+
+    // ---- simeco's field extensions (ir/eco_field.h) ----
+
+    // A constant: `rand` has no meaning where the scene, not a plant, is described.
+    float constant(const std::string& property) {
+        const ir::EcoNumber n = number(fmt::format("for {}", property));
+        if (n.random) throw ir::InputError(n.loc, fmt::format("{} takes a number, not a range", property));
+        return n.min;
+    }
+    float positive(const std::string& property) {
+        const ir::SourceLoc loc = cur_.loc(cur_.peek());
+        const float v = constant(property);
+        if (!(v > 0.0f)) throw ir::InputError(loc, fmt::format("{} must be above 0", property));
+        return v;
+    }
+    std::array<float, 3> constantVector(const std::string& property) {
+        const ir::EcoVector v = vector(property);
+        for (const ir::EcoNumber* n : {&v.x, &v.y, &v.z})
+            if (n->random) throw ir::InputError(n->loc, fmt::format("{} takes numbers, not ranges", property));
+        return {v.x.min, v.y.min, v.z.min};
+    }
+    // `Property = value;` for a value `read` parses.
+    template <typename Read>
+    void property(std::vector<std::pair<std::string, ir::SourceLoc>>& seen, const char* name, const char* where,
+                  Read read) {
+        propertyStart(seen, name, where);
+        read();
+        cur_.expectPunct(";", fmt::format("after the value of {}", name));
+    }
+
+    // An item of the EcoSystem block that simeco adds; false when the next token starts none.
+    bool fieldItem(std::vector<std::pair<std::string, ir::SourceLoc>>& seen) {
+        ir::EcoLight& light = scene_.light;
+        const char* where = "the EcoSystem block";
+        if (cur_.atKeyword("SunDirection")) {
+            const ir::SourceLoc loc = cur_.loc(cur_.peek());
+            property(seen, "SunDirection", where, [&] { light.sunDirection = constantVector("SunDirection"); });
+            const auto& d = *light.sunDirection;
+            if (d[0] == 0.0f && d[1] == 0.0f && d[2] == 0.0f)
+                throw ir::InputError(loc, "SunDirection must not be vector(0, 0, 0)");
+        } else if (cur_.atKeyword("SunIntensity")) {
+            property(seen, "SunIntensity", where, [&] { light.sunIntensity = constant("SunIntensity"); });
+            if (*light.sunIntensity < 0.0f) throw ir::InputError(cur_.loc(cur_.peek()), "SunIntensity is below 0");
+        } else if (cur_.atKeyword("SkyLight")) {
+            property(seen, "SkyLight", where, [&] { light.skyLight = constant("SkyLight"); });
+            if (*light.skyLight < 0.0f) throw ir::InputError(cur_.loc(cur_.peek()), "SkyLight is below 0");
+        } else if (cur_.atKeyword("GroundSize")) {
+            property(seen, "GroundSize", where, [&] { light.groundSize = positive("GroundSize"); });
+        } else if (cur_.atKeyword("Population")) {
+            population();
+        } else if (cur_.atKeyword("Box") || cur_.atKeyword("Wall")) {
+            obstacle();
+        } else {
+            return false;
+        }
+        return true;
+    }
+
+    // `{ items }` of a named block: `item(seen)` parses each; `close` names the block in messages.
+    template <typename Item>
+    void block(const std::string& what, const ir::SourceLoc& opened, Item item) {
+        cur_.expectPunct("{", fmt::format("to open {}", what));
+        std::vector<std::pair<std::string, ir::SourceLoc>> seen;
+        for (;;) {
+            const EcoToken& t = cur_.peek();
+            if (cur_.acceptPunct("}")) return;
+            if (t.kind == EcoTokenKind::End)
+                cur_.failAt(t, fmt::format("missing '}}' closing {} opened at line {}", what, opened.line));
+            item(seen, t);
+        }
+    }
+
+    void population() {
+        const EcoToken& keyword = cur_.next();
+        ir::EcoPopulation pop;
+        pop.loc = cur_.loc(keyword);
+        pop.name = name("after Population");
+        const std::string what = fmt::format("Population \"{}\"", pop.name);
+        block(what, pop.loc, [&](auto& seen, const EcoToken& t) {
+            if (cur_.atKeyword("Plant")) {
+                property(seen, "Plant", what.c_str(), [&] {
+                    pop.plantLoc = cur_.loc(cur_.peek());
+                    pop.plant = name("as the Plant block of the population");
+                });
+            } else if (cur_.atKeyword("Count")) {
+                property(seen, "Count", what.c_str(), [&] {
+                    const EcoToken& n = cur_.next();
+                    if (n.kind != EcoTokenKind::Number || n.text.find_first_not_of("0123456789") != std::string::npos ||
+                        n.number < 1 || n.number > 1e7)
+                        cur_.failAt(n, fmt::format("Count is a whole number of plants from 1 to 10000000, found {}",
+                                                   EcoTokenCursor::describe(n)));
+                    pop.count = static_cast<uint32_t>(n.number);
+                });
+            } else if (cur_.atKeyword("Density")) {
+                property(seen, "Density", what.c_str(), [&] { pop.density = positive("Density"); });
+            } else if (cur_.atKeyword("Center")) {
+                property(seen, "Center", what.c_str(), [&] {
+                    const std::array<float, 3> c = constantVector("Center");
+                    pop.centerX = c[0];
+                    pop.centerZ = c[2];
+                });
+            } else if (cur_.atKeyword("Size")) {
+                property(seen, "Size", what.c_str(), [&] {
+                    const ir::SourceLoc loc = cur_.loc(cur_.peek());
+                    const std::array<float, 3> size = constantVector("Size");
+                    if (!(size[0] > 0.0f && size[2] > 0.0f))
+                        throw ir::InputError(loc, "Size is vector(width, 0, depth) with width and depth above 0");
+                    pop.width = size[0];
+                    pop.depth = size[2];
+                });
+            } else if (cur_.atKeyword("Placement")) {
+                property(seen, "Placement", what.c_str(), [&] {
+                    const EcoToken& kind = cur_.next();
+                    if (kind.kind == EcoTokenKind::Identifier && equalsIgnoreCase(kind.text, "poisson"))
+                        pop.placement = ir::EcoPlacement::Poisson;
+                    else if (kind.kind == EcoTokenKind::Identifier && equalsIgnoreCase(kind.text, "jittered"))
+                        pop.placement = ir::EcoPlacement::Jittered;
+                    else
+                        cur_.failAt(kind, fmt::format("Placement is poisson or jittered, found {}",
+                                                      EcoTokenCursor::describe(kind)));
+                });
+            } else if (cur_.atKeyword("Spacing")) {
+                property(seen, "Spacing", what.c_str(), [&] { pop.spacing = positive("Spacing"); });
+            } else if (cur_.atKeyword("Seed")) {
+                property(seen, "Seed", what.c_str(), [&] {
+                    const ir::SourceLoc loc = cur_.loc(cur_.peek());
+                    const float seed = constant("Seed");
+                    if (seed < 0.0f || seed > 4294967295.0f || seed != float(int64_t(seed)))
+                        throw ir::InputError(loc, "Seed is a whole number from 0 to 4294967295");
+                    pop.seed = static_cast<uint32_t>(seed);
+                });
+            } else if (cur_.atKeyword("Variation")) {
+                property(seen, "Variation", what.c_str(), [&] {
+                    const ir::SourceLoc loc = cur_.loc(cur_.peek());
+                    pop.variation = constant("Variation");
+                    if (pop.variation < 0.0f || pop.variation >= 1.0f)
+                        throw ir::InputError(loc, "Variation is a fraction from 0 to below 1");
+                });
+            } else {
+                unknown(t, what.c_str(), "Plant, Count, Density, Center, Size, Placement, Spacing, Seed or Variation");
+            }
+        });
+        if (pop.plant.empty()) cur_.failAt(keyword, fmt::format("{} names no Plant (`Plant = \"...\";`)", what));
+        if (pop.count.has_value() == pop.density.has_value())
+            cur_.failAt(keyword, fmt::format("{} needs either a Count or a Density", what));
+        scene_.populations.push_back(std::move(pop));
+    }
+
+    void obstacle() {
+        const EcoToken& keyword = cur_.next();
+        const bool wall = equalsIgnoreCase(keyword.text, "Wall");
+        ir::EcoObstacle o;
+        o.loc = cur_.loc(keyword);
+        o.name = name(fmt::format("after {}", keyword.text));
+        const std::string what = fmt::format("{} \"{}\"", keyword.text, o.name);
+        std::optional<std::array<float, 3>> a, b;
+        float height = 1.0f, thickness = 0.2f;
+        block(what, o.loc, [&](auto& seen, const EcoToken& t) {
+            const char* first = wall ? "From" : "Min";
+            const char* second = wall ? "To" : "Max";
+            if (cur_.atKeyword(first)) {
+                property(seen, first, what.c_str(), [&] { a = constantVector(first); });
+            } else if (cur_.atKeyword(second)) {
+                property(seen, second, what.c_str(), [&] { b = constantVector(second); });
+            } else if (wall && cur_.atKeyword("Height")) {
+                property(seen, "Height", what.c_str(), [&] { height = positive("Height"); });
+            } else if (wall && cur_.atKeyword("Thickness")) {
+                property(seen, "Thickness", what.c_str(), [&] { thickness = positive("Thickness"); });
+            } else if (cur_.atKeyword("Color")) {
+                property(seen, "Color", what.c_str(), [&] {
+                    const ir::EcoColor c = color("Color");
+                    o.color[0] = c.r.typical();
+                    o.color[1] = c.g.typical();
+                    o.color[2] = c.b.typical();
+                });
+            } else {
+                unknown(t, what.c_str(), wall ? "From, To, Height, Thickness or Color" : "Min, Max or Color");
+            }
+        });
+        if (!a || !b)
+            cur_.failAt(keyword, fmt::format("{} needs {} and {}", what, wall ? "From" : "Min", wall ? "To" : "Max"));
+        if (wall) {
+            const float dx = (*b)[0] - (*a)[0], dz = (*b)[2] - (*a)[2];
+            const float length = std::sqrt(dx * dx + dz * dz);
+            if (!(length > 0.0f)) cur_.failAt(keyword, fmt::format("{} runs from a point to the same point", what));
+            o.center[0] = 0.5f * ((*a)[0] + (*b)[0]);
+            o.center[1] = (*a)[1] + 0.5f * height;
+            o.center[2] = 0.5f * ((*a)[2] + (*b)[2]);
+            o.halfSize[0] = 0.5f * length;
+            o.halfSize[1] = 0.5f * height;
+            o.halfSize[2] = 0.5f * thickness;
+            o.yaw = std::atan2(-dz, dx);
+        } else {
+            for (int k = 0; k < 3; ++k) {
+                if (!((*b)[k] > (*a)[k]))
+                    cur_.failAt(keyword, fmt::format("{}: Max must be above Min along every axis", what));
+                o.center[k] = 0.5f * ((*a)[k] + (*b)[k]);
+                o.halfSize[k] = 0.5f * ((*b)[k] - (*a)[k]);
+            }
+        }
+        scene_.obstacles.push_back(std::move(o));
     }
 
     [[noreturn]] void unknown(const EcoToken& t, const char* where, const char* expected) {
@@ -185,6 +402,14 @@ private:
             const EcoToken& t = cur_.peek();
             if (!stageAt()) continuingOrgan = false;
             if (cur_.atPunct("}")) {
+                if (!p.grammar.empty()) {
+                    if (hasGrow || lastOrgan)
+                        cur_.failAt(t, fmt::format("Plant \"{}\" takes its grammar from \"{}\": it has no organ or "
+                                                   "Grow blocks of its own",
+                                                   p.name, p.grammar));
+                    cur_.next();
+                    break;
+                }
                 if (hasGrow) {
                     cur_.next();
                     break;
@@ -210,6 +435,11 @@ private:
                 if (p.deriveTime.min <= 0.0f)
                     throw ir::InputError(p.deriveTime.loc, "DeriveTime must be above 0 seconds");
                 cur_.expectPunct(";", "after the value of DeriveTime");
+            } else if (cur_.atKeyword("Grammar")) {
+                p.grammarLoc = cur_.loc(propertyStart(seen, "Grammar", "the Plant block"));
+                p.grammar = name("as the grammar file of Grammar");
+                if (p.grammar.empty()) throw ir::InputError(p.grammarLoc, "Grammar names no file");
+                cur_.expectPunct(";", "after the value of Grammar");
             } else if (cur_.atKeyword("DerivationLength")) {
                 propertyStart(seen, "DerivationLength", "the Plant block");
                 const EcoToken& n = cur_.next();
@@ -239,7 +469,8 @@ private:
                 hasGrow = true;
             } else {
                 unknown(t, "the Plant block",
-                        "Position, Direction, DeriveTime, an organ (Apex, Stem, Leaf, Flower, Fruit, Root) or Grow");
+                        "Position, Direction, DeriveTime, Grammar, an organ (Apex, Stem, Leaf, Flower, Fruit, Root) "
+                        "or Grow");
             }
         }
         scene_.plants.push_back(std::move(p));

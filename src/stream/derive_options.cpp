@@ -44,11 +44,12 @@ ir::LimitError moduleBudgetExceeded(uint64_t budget, int step) {
 }
 
 std::vector<std::vector<shared::ParticleState>> splitAxiomParticles(const std::vector<ir::Grammar>& species,
-                                                                    uint32_t plants,
-                                                                    const std::vector<shared::ParticleState>& initial) {
+                                                                    uint32_t plants, const DeriveOptions& options) {
+    const std::vector<shared::ParticleState>& initial = options.initialParticles;
     std::vector<std::vector<shared::ParticleState>> perPlant(plants);
     size_t total = 0;
     for (uint32_t plant = 0; plant < plants; ++plant) {
+        if (options.isAbsent(plant)) continue;
         perPlant[plant].resize(species[ir::speciesOfPlant(plant, species.size())].axiom.size());
         total += perPlant[plant].size();
     }

@@ -49,6 +49,11 @@ struct DeriveOptions {
     // at zero when it is empty.
     bool particles = false;
     std::vector<shared::ParticleState> initialParticles;
+    // Per plant (or empty: none): the plants that stand out of the field. They have no axiom and derive no steps,
+    // so cost next to nothing: a field whose species' plants are unequal in number leaves such slots in the
+    // rounds of its species (plant p is of species p mod their count).
+    std::vector<uint8_t> absent;
+    bool isAbsent(uint32_t plant) const { return plant < absent.size() && absent[plant]; }
 };
 
 struct DeriveResult {
@@ -56,10 +61,9 @@ struct DeriveResult {
     int steps = 0;       // steps performed by the plant that went furthest (fewer when a model called stop())
 };
 
-// DeriveOptions::initialParticles cut into each plant's axiom (zeros when it is empty). Throws
-// std::invalid_argument unless it has one state for each module of the plants' axioms.
+// DeriveOptions::initialParticles cut into each plant's axiom (zeros when it is empty; none for an absent plant).
+// Throws std::invalid_argument unless it has one state for each module of the plants' axioms.
 std::vector<std::vector<shared::ParticleState>> splitAxiomParticles(const std::vector<ir::Grammar>& species,
-                                                                    uint32_t plants,
-                                                                    const std::vector<shared::ParticleState>& initial);
+                                                                    uint32_t plants, const DeriveOptions& options);
 
 } // namespace simeco::stream

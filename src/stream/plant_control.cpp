@@ -23,6 +23,8 @@ PlantControl::PlantControl(const std::vector<ir::Grammar>& species, const Derive
         steps_ = std::max(steps_, stepsOf(plant));
     states_.resize(plants_);
     derived_.assign(plants_, 0);
+    absent_.assign(plants_, 0);
+    for (uint32_t plant = 0; plant < plants_; ++plant) absent_[plant] = options.isAbsent(plant);
 }
 
 const ir::Grammar& PlantControl::speciesOf(uint32_t plant) const {
@@ -45,7 +47,7 @@ void PlantControl::start(uint32_t plant, ModuleString* axiom) {
     Evaluator evaluator(g, states_[plant]);
     evaluator.key = controlBlockKey(seed_, plant, 0, ControlBlock::Start);
     evaluator.exec(g.startBlock, nullptr);
-    if (!axiom) return;
+    if (!axiom || absent_[plant]) return;
     // The axiom's parameters may use globals of the Start block, and draw on from its stream.
     std::vector<float> values;
     for (const ir::SuccessorModule& m : g.axiom) {
@@ -86,7 +88,7 @@ ModuleString PlantControl::startAll() {
 }
 
 bool PlantControl::beginStep(uint32_t plant, int step) {
-    if (step > stepsOf(plant) || states_[plant].stopRequested) return false;
+    if (step > stepsOf(plant) || states_[plant].stopRequested || absent_[plant]) return false;
     if (maxSeconds_ > 0 &&
         std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count() > maxSeconds_)
         throw ir::LimitError(fmt::format("the derivation ran past its time limit of {} s in step {} of {} "

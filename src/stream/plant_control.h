@@ -76,6 +76,7 @@ private:
     int steps_ = 0;
     std::vector<PlantState> states_;
     std::vector<int> derived_;
+    std::vector<uint8_t> absent_; // DeriveOptions::absent, one per plant
 };
 
 } // namespace simeco::stream

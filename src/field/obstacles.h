@@ -1,0 +1,23 @@
+// A scene's obstacles (ir::EcoObstacle: boxes and walls) as the renderer draws them: each an oriented box of
+// twelve triangles, in the field's organs after its plants'.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "ir/eco_field.h"
+#include "turtle/interpretation.h"
+
+namespace simeco::field {
+
+// The eight corners of an obstacle, in the world.
+std::array<glm::vec3, 8> obstacleCorners(const ir::EcoObstacle& obstacle);
+
+// The obstacles' triangles, as one interpretation whose organs are of plant 0 and of module k for obstacle k:
+// kept by a turtle::OrganMerge after the field's batches, they take the plant index past the field's plants.
+turtle::Interpretation obstacleOrgans(const std::vector<ir::EcoObstacle>& obstacles);
+
+} // namespace simeco::field

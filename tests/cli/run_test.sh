@@ -117,6 +117,27 @@ check "a truncated state is refused and nothing written (code $code: $(head -c 2
 [ $? -eq 2 ]
 check "a scene and a state to resume are refused together" $?
 
+# The meadow: its populations where the scene puts them, the bushes of a cpfg grammar among them.
+"$simeco" run "$source_dir/scenes/meadow.eco" --time 4 --size 96x72 --out "$work/meadow" >"$work/meadow.txt" 2>&1
+python3 - "$work/meadow" <<'PY'
+import csv, sys
+rows = list(csv.DictReader(open(f"{sys.argv[1]}/plants.csv")))
+herbs = [r for r in rows if r["species"] == "Meadow herb"]
+bushes = [r for r in rows if r["species"] == "Bush"]
+assert len(herbs) == round(0.25 * 50 * 30) and len(bushes) == 10, (len(herbs), len(bushes))
+assert [r["plant"] for r in rows] == [str(k) for k in range(len(rows))], "plants numbered in order"
+assert all(abs(float(r["x"])) <= 25 and abs(float(r["z"]) + 4) <= 15 for r in herbs)
+assert all(abs(float(r["x"])) <= 25 and abs(float(r["z"]) - 14) <= 1.5 for r in bushes)
+assert all(int(r["modules"]) > 0 for r in rows)
+PY
+ok=$?
+check "the meadow's populations stand in their regions ($(head -c 200 "$work/meadow.txt"))" $ok
+"$simeco" run "$source_dir/scenes/meadow.eco" --plants 5 --out "$work/meadow5" >/dev/null 2>"$work/err.txt"
+code=$?
+[ $code -eq 2 ] && grep -q "populations" "$work/err.txt" && [ ! -e "$work/meadow5" ]
+ok=$?
+check "a count of plants for a scene of populations is refused (code $code: $(head -c 200 "$work/err.txt"))" $ok
+
 "$simeco" run "$garden" --dt 0 --out "$work/dt" >/dev/null 2>&1
 [ $? -eq 2 ]
 check "a tick of no time is refused" $?

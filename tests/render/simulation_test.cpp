@@ -1,16 +1,19 @@
 // The growing field (field::Simulation) on the device against the CPU references: a garden in batches of plants,
 // derived, grown, interpreted, merged and counted batch by batch, gives the organs and statistics the CPU gives;
 // batches have random streams of their own.
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
 
+#include <glm/vec2.hpp>
 #include <gtest/gtest.h>
 
 #include "compute/shared/organ_layout.h"
 #include "field/simulation.h"
 #include "gpu_fixture.h"
+#include "turtle/interpretation.h"
 #include "turtle/turtle_gpu.h"
 
 namespace simeco::test {
@@ -68,6 +71,74 @@ TEST_F(SimulationTest, AFieldInBatchesGrowsOnTheDeviceAsOnTheCpu) {
     // Plants 0 and 3 are of one species, in two batches with random streams of their own.
     EXPECT_NE(gpu.plantModules()[0], gpu.plantModules()[3]);
     EXPECT_EQ(gpu.plantModules(), cpu.plantModules());
+}
+
+// Herbs of one SimEco plant and bushes of a cpfg grammar (scenes/shrub.l) in two populations, and a box.
+field::SimulationOptions populated(field::Backend backend) {
+    field::SimulationOptions o;
+    o.file = std::string(SIMECO_SOURCE_DIR) + "/scenes/populated-test.eco"; // beside shrub.l
+    o.sceneText = R"(EcoSystem 1.0 "Populated" {
+        Plant "Herb" {
+            Stem { Default { GrowRate = 0.5; GrowTime = 2.0; BroadenRate = 0.05; } }
+            Leaf { Default { GrowRate = 0.2; GrowTime = 2.0; } }
+            Grow { w = A(0); A(0) -> S(0)[rotr(0.8)L(0)]A(0); }
+        }
+        Plant "Bush" { Grammar = "shrub.l"; }
+        Population "Herbs" { Plant = "Herb"; Count = 7; Center = vector(10.0, 0.0, 0.0); Size = vector(8.0, 0.0, 6.0);
+                             Placement = jittered; Variation = 0.4; }
+        Population "Bushes" { Plant = "Bush"; Count = 2; Center = vector(-10.0, 0.0, 0.0);
+                              Size = vector(4.0, 0.0, 4.0); }
+        Box "Shed" { Min = vector(0.0, 0.0, 5.0); Max = vector(2.0, 3.0, 7.0); }
+    })";
+    o.plantsPerBatch = 4; // four batches of the seven rounds of two species
+    o.seed = 5;
+    o.backend = backend;
+    return o;
+}
+
+TEST_F(SimulationTest, PopulationsStandInTheirRegionsWithEmptySlotsAndObstacles) {
+    field::Simulation gpu(populated(field::Backend::Gpu), &context());
+    field::Simulation cpu(populated(field::Backend::Cpu), &context());
+    // Seven rounds of the two species: the herbs in every round, the bushes in the first two.
+    ASSERT_EQ(gpu.plants(), 14u);
+    EXPECT_EQ(gpu.standingPlants(), 9u);
+    EXPECT_GT(gpu.batches(), 1u);
+    for (uint32_t p = 0; p < 14; ++p) {
+        const bool herb = p % 2 == 0;
+        EXPECT_EQ(gpu.present(p), herb || p < 4) << p;
+        if (!gpu.present(p)) continue;
+        const glm::vec3 at = turtle::plantOrigin(gpu.placements()[p]);
+        const glm::vec2 center = herb ? glm::vec2(10, 0) : glm::vec2(-10, 0);
+        const glm::vec2 half = herb ? glm::vec2(4, 3) : glm::vec2(2, 2);
+        EXPECT_LE(std::fabs(at.x - center.x), half.x) << p;
+        EXPECT_LE(std::fabs(at.z - center.y), half.y) << p;
+    }
+    for (int tick = 0; tick < 9; ++tick) {
+        const field::TickReport a = gpu.tick(), b = cpu.tick();
+        ASSERT_EQ(a.modules, b.modules) << tick;
+    }
+    const std::vector<uint64_t> modules = gpu.plantModules();
+    EXPECT_EQ(modules, cpu.plantModules());
+    for (uint32_t p = 0; p < 14; ++p) EXPECT_EQ(modules[p] > 0, gpu.present(p)) << p;
+
+    // The shed is drawn after the plants, as twelve triangles of the plant past the field's.
+    for (field::Simulation* s : {&gpu, &cpu}) {
+        const turtle::Interpretation drawn = turtle::readBack(context(), s->interpret(), s->plants());
+        uint32_t shed = 0;
+        for (const shared::OrganInstance& o : drawn.organs) shed += o.plant == s->plants();
+        EXPECT_EQ(shed, 12u);
+        EXPECT_GE(drawn.bounds.max.y, 3.0f);
+    }
+    // The herbs grow each at its own vigour: their heights differ, within the variation's range.
+    const std::vector<shared::PlantStatistics> stats = gpu.statistics();
+    float lowest = 1e9f, highest = 0;
+    for (uint32_t p = 0; p < 14; p += 2) {
+        lowest = std::min(lowest, stats[p].height);
+        highest = std::max(highest, stats[p].height);
+        EXPECT_NEAR(stats[p].height, cpu.statistics()[p].height, 1e-4f * highest + 1e-5f) << p;
+    }
+    EXPECT_GT(highest, 1.05f * lowest);
+    EXPECT_LT(highest, 1.4f / 0.6f * lowest + 1e-3f);
 }
 
 } // namespace

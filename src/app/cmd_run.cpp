@@ -200,7 +200,7 @@ void runRun(RunArgs args) {
     const uint64_t firstTick = simulation.ticks();
     for (uint64_t k = firstTick; k < ticks; ++k) {
         const field::TickReport report = simulation.tick();
-        const turtle::DeviceOrgans& organs = simulation.interpret();
+        const std::vector<const turtle::DeviceOrgans*> organs = simulation.interpretParts();
         perPlant = simulation.statistics();
         stats += statsLine(simulation, report, perPlant);
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -208,7 +208,7 @@ void runRun(RunArgs args) {
         const bool last = k + 1 == ticks;
         if (last || (args.frames > 0 && (k + 1) % args.frames == 0)) {
             // Framed on the grown field, so that the camera stays put while the field grows.
-            draw::Frame frame = renderer.render(organs.instances, organs.table, framed, settings);
+            draw::Frame frame = renderer.render(field::organParts(organs), framed, settings);
             if (args.frames > 0) draw::writePng(outputs, out / fmt::format("frame-{:05}.png", k + 1), frame);
             if (last) {
                 draw::writeExr(outputs, out / "final.exr", frame);

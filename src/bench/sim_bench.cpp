@@ -47,11 +47,11 @@ SimEntry measure(const SimBenchOptions& o, const std::string& scene, std::uint32
         Clock::time_point drawn = Clock::now();
         if (e.notDrawn.empty()) {
             try {
-                const turtle::DeviceOrgans& organs = simulation.interpret();
+                const std::vector<const turtle::DeviceOrgans*> parts = simulation.interpretParts();
                 e.organs = 0;
                 for (const shared::PlantStatistics& s : simulation.statistics()) e.organs += s.organs;
                 drawn = Clock::now();
-                renderer.render(organs.instances, organs.table, framed, settings);
+                renderer.render(field::organParts(parts), framed, settings);
             } catch (const ir::LimitError& error) { // a field larger than the device draws: its growth still runs
                 e.notDrawn = error.what();
                 drawn = Clock::now();

@@ -74,8 +74,6 @@ struct Renderer::Resources {
           toonOutline(kernel(context, "styles/toon_outline")),
           frameConstants(context, sizeof(shared::DrawFrame), vk::MemoryUsage::DeviceLocal,
                          VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT),
-          drawCommands(context, kOrganKinds * kDrawCommandSize, vk::MemoryUsage::DeviceLocal,
-                       VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT),
           volumeDraw(context, sizeof(shared::VolumeDraw), vk::MemoryUsage::DeviceLocal,
                      VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT) {}
 
@@ -87,7 +85,7 @@ struct Renderer::Resources {
     vk::ComputePipeline toonOutline;
     // Written by each frame's own commands (vkCmdUpdateBuffer), so frames in flight each draw with theirs.
     vk::Buffer frameConstants;
-    vk::Buffer drawCommands;
+    std::vector<vk::Buffer> drawCommands; // one per part of the organs, added as frames need them
     vk::Buffer volumeDraw;
     vk::Buffer volumeVertices;
     std::uint32_t volumeCapacity = 0; // vertices
@@ -100,9 +98,8 @@ struct Renderer::Resources {
     // A frame's commands: the shadow volumes and the indirect draws from the instances and their table; the
     // render pass (ground and organs, with shadow volumes in the stencil between an ambient and a sun pass);
     // the toon style's outlines over the copied target.
-    void recordDrawInputs(VkCommandBuffer cmd, const vk::Buffer& instances, const vk::Buffer& table,
-                          const FrameSetup& setup);
-    void recordScene(VkCommandBuffer cmd, const RenderTarget& target, const vk::Buffer& instances,
+    void recordDrawInputs(VkCommandBuffer cmd, const std::vector<OrganPart>& parts, const FrameSetup& setup);
+    void recordScene(VkCommandBuffer cmd, const RenderTarget& target, const std::vector<OrganPart>& parts,
                      const FrameSetup& setup);
     void recordOutlines(VkCommandBuffer cmd, const RenderTarget& target, const FrameSetup& setup);
 
@@ -152,11 +149,20 @@ RenderTarget& Renderer::offscreenTarget(std::uint32_t width, std::uint32_t heigh
 }
 
 FrameSetup Renderer::prepare(const vk::Buffer& table, const Bounds& bounds, const RenderSettings& settings) {
+    return prepare({OrganPart{nullptr, &table}}, bounds, settings);
+}
+
+FrameSetup Renderer::prepare(const std::vector<OrganPart>& parts, const Bounds& bounds,
+                             const RenderSettings& settings) {
     FrameSetup setup = prepareView(bounds, settings);
-    // The host reads the table's counts (not the instances) to size the shadow volumes.
+    // The host reads the tables' counts (not the instances) to size the shadow volumes.
     if (settings.shadows == Shadows::Volume) {
         Resources& r = *resources_;
-        setup.counts = vk::downloadVector<shared::OrganTable>(context_, table, 1)[0];
+        for (const OrganPart& part : parts) {
+            setup.partCounts.push_back(vk::downloadVector<shared::OrganTable>(context_, *part.table, 1)[0]);
+            for (std::uint32_t kind = 0; kind < kOrganKinds; ++kind)
+                setup.counts.count[kind] += setup.partCounts.back().count[kind];
+        }
         std::uint64_t triangles = 0;
         for (std::uint32_t kind = 0; kind < kOrganKinds; ++kind)
             triangles += std::uint64_t{setup.counts.count[kind]} * r.meshes.data().castingTriangles[kind];
@@ -216,11 +222,10 @@ FrameSetup Renderer::prepareView(const Bounds& bounds, const RenderSettings& set
     return setup;
 }
 
-void Renderer::Resources::recordDrawInputs(VkCommandBuffer cmd, const vk::Buffer& instances, const vk::Buffer& table,
+void Renderer::Resources::recordDrawInputs(VkCommandBuffer cmd, const std::vector<OrganPart>& parts,
                                            const FrameSetup& setup) {
     Resources& r = *this;
     const OrganMeshData& mesh = r.meshes.data();
-    const shared::OrganTable& counts = setup.counts;
     const shared::DrawFrame& frame = setup.constants;
     const glm::vec3 towardsSun = setup.towardsSun;
     bool shadows = setup.settings.shadows == Shadows::Volume;
@@ -244,36 +249,41 @@ void Renderer::Resources::recordDrawInputs(VkCommandBuffer cmd, const vk::Buffer
                          VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
                      VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_UNIFORM_READ_BIT);
     if (shadows) {
-        for (std::uint32_t kind = 0; kind < kOrganKinds; ++kind) {
-            if (counts.count[kind] == 0) {
-                continue;
+        for (size_t p = 0; p < parts.size(); ++p) {
+            for (std::uint32_t kind = 0; kind < kOrganKinds; ++kind) {
+                const shared::OrganTable& counts = setup.partCounts.empty() ? setup.counts : setup.partCounts[p];
+                if (counts.count[kind] == 0) {
+                    continue;
+                }
+                const MeshRange& hull = mesh.hulls[kind];
+                shared::ShadowVolumePush push{};
+                push.awayFromSun = vec4Of(-towardsSun, kOpenSurfaceShift);
+                push.cameraRight = frame.cameraRight;
+                push.cameraUp = frame.cameraUp;
+                push.kind = kind;
+                push.firstIndex = hull.firstIndex;
+                push.triangleCount = hull.triangleCount();
+                push.vertexOffset = hull.vertexOffset;
+                push.capacity = r.volumeCapacity;
+                push.closedHull = mesh.closedHull[kind] ? 1u : 0u;
+                r.shadowVolumes.dispatch(cmd,
+                                         {*parts[p].instances, *parts[p].table, r.meshes.vertices(), r.meshes.indices(),
+                                          r.volumeDraw, r.volumeVertices},
+                                         push, r.shadowVolumes.groupsFor(counts.count[kind]));
             }
-            const MeshRange& hull = mesh.hulls[kind];
-            shared::ShadowVolumePush push{};
-            push.awayFromSun = vec4Of(-towardsSun, kOpenSurfaceShift);
-            push.cameraRight = frame.cameraRight;
-            push.cameraUp = frame.cameraUp;
-            push.kind = kind;
-            push.firstIndex = hull.firstIndex;
-            push.triangleCount = hull.triangleCount();
-            push.vertexOffset = hull.vertexOffset;
-            push.capacity = r.volumeCapacity;
-            push.closedHull = mesh.closedHull[kind] ? 1u : 0u;
-            r.shadowVolumes.dispatch(
-                cmd, {instances, table, r.meshes.vertices(), r.meshes.indices(), r.volumeDraw, r.volumeVertices}, push,
-                r.shadowVolumes.groupsFor(counts.count[kind]));
         }
         memoryDependency(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
                          VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
     }
-    r.drawArgs.dispatch(cmd, {table, r.drawCommands, r.volumeDraw}, args, 1);
+    for (size_t p = 0; p < parts.size(); ++p)
+        r.drawArgs.dispatch(cmd, {*parts[p].table, r.drawCommands[p], r.volumeDraw}, args, 1);
     memoryDependency(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
                      VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_VERTEX_INPUT_BIT,
                      VK_ACCESS_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_VERTEX_ATTRIBUTE_READ_BIT);
 }
 
-void Renderer::Resources::recordScene(VkCommandBuffer cmd, const RenderTarget& into, const vk::Buffer& instances,
-                                      const FrameSetup& setup) {
+void Renderer::Resources::recordScene(VkCommandBuffer cmd, const RenderTarget& into,
+                                      const std::vector<OrganPart>& parts, const FrameSetup& setup) {
     Resources& r = *this;
     const OrganMeshData& mesh = r.meshes.data();
     const RenderSettings& settings = setup.settings;
@@ -295,8 +305,6 @@ void Renderer::Resources::recordScene(VkCommandBuffer cmd, const RenderTarget& i
     VkRect2D scissor{{0, 0}, {into.width(), into.height()}};
     vkCmdSetViewport(cmd, 0, 1, &viewport);
     vkCmdSetScissor(cmd, 0, 1, &scissor);
-    r.pipelines.pushDescriptors(cmd, instances, r.frameConstants);
-
     auto drawScene = [&](std::uint32_t pass) {
         bool sunPass = pass == shared::kPassSun;
         VkDeviceSize zero = 0;
@@ -308,17 +316,20 @@ void Renderer::Resources::recordScene(VkCommandBuffer cmd, const RenderTarget& i
             vkCmdPushConstants(cmd, r.pipelines.layout(), VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
                                sizeof(constants), &constants);
         };
-        auto drawKind = [&](std::uint32_t kind) {
+        auto drawKind = [&](std::uint32_t kind, size_t part) {
             push(kind);
-            vkCmdDrawIndexedIndirect(cmd, r.drawCommands.handle(), kind * kDrawCommandSize, 1,
+            vkCmdDrawIndexedIndirect(cmd, r.drawCommands[part].handle(), kind * kDrawCommandSize, 1,
                                      static_cast<std::uint32_t>(kDrawCommandSize));
         };
         for (Culling culling : {Culling::Back, Culling::None}) {
             vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
                               sunPass ? r.pipelines.sun(culling) : r.pipelines.base(culling));
-            for (std::uint32_t kind = 0; kind < kOrganKinds; ++kind) {
-                if (mesh.closedHull[kind] == (culling == Culling::Back)) {
-                    drawKind(kind);
+            for (size_t part = 0; part < parts.size(); ++part) {
+                r.pipelines.pushDescriptors(cmd, *parts[part].instances, r.frameConstants);
+                for (std::uint32_t kind = 0; kind < kOrganKinds; ++kind) {
+                    if (mesh.closedHull[kind] == (culling == Culling::Back)) {
+                        drawKind(kind, part);
+                    }
                 }
             }
         }
@@ -364,9 +375,17 @@ void Renderer::Resources::recordOutlines(VkCommandBuffer cmd, const RenderTarget
 
 void Renderer::record(VkCommandBuffer cmd, const RenderTarget& target, const vk::Buffer& instances,
                       const vk::Buffer& table, const FrameSetup& setup) {
+    record(cmd, target, {OrganPart{&instances, &table}}, setup);
+}
+
+void Renderer::record(VkCommandBuffer cmd, const RenderTarget& target, const std::vector<OrganPart>& parts,
+                      const FrameSetup& setup) {
     Resources& r = *resources_;
-    r.recordDrawInputs(cmd, instances, table, setup);
-    r.recordScene(cmd, target, instances, setup);
+    while (r.drawCommands.size() < parts.size())
+        r.drawCommands.emplace_back(context_, kOrganKinds * kDrawCommandSize, vk::MemoryUsage::DeviceLocal,
+                                    VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT);
+    r.recordDrawInputs(cmd, parts, setup);
+    r.recordScene(cmd, target, parts, setup);
     target.cmdCopyToBuffers(cmd);
     memoryDependency(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
                      VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_HOST_BIT,
@@ -400,9 +419,13 @@ Frame Renderer::readBack(const RenderTarget& target, const FrameSetup& setup) co
 
 Frame Renderer::render(const vk::Buffer& instances, const vk::Buffer& table, const Bounds& bounds,
                        const RenderSettings& settings) {
-    FrameSetup setup = prepare(table, bounds, settings);
+    return render({OrganPart{&instances, &table}}, bounds, settings);
+}
+
+Frame Renderer::render(const std::vector<OrganPart>& parts, const Bounds& bounds, const RenderSettings& settings) {
+    FrameSetup setup = prepare(parts, bounds, settings);
     const RenderTarget& target = offscreenTarget(settings.width, settings.height);
-    context_.submitAndWait([&](VkCommandBuffer cmd) { record(cmd, target, instances, table, setup); });
+    context_.submitAndWait([&](VkCommandBuffer cmd) { record(cmd, target, parts, setup); });
     return readBack(target, setup);
 }
 

@@ -11,6 +11,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <vector>
 
 #include <glm/vec3.hpp>
 #include <vulkan/vulkan.h>
@@ -29,13 +30,23 @@ class Context;
 
 namespace simeco::draw {
 
+// The organs a frame draws come in parts, each an instance buffer and its OrganTable: a field whose organs need
+// more than one storage binding holds (maxStorageBufferRange) is drawn from several.
+struct OrganPart {
+    const vk::Buffer* instances = nullptr;
+    const vk::Buffer* table = nullptr;
+};
+
 // What the host prepared for a frame and the device's recording reads.
 struct FrameSetup {
     RenderSettings settings;
     CameraView camera;
     glm::vec3 towardsSun{0, 1, 0};
     shared::DrawFrame constants{};
-    shared::OrganTable counts{}; // the table's counts, read back only for shadow volumes
+    // The tables' counts, read back only for shadow volumes: every part's together, and each part's (empty when
+    // prepareWithin gave room for any count: then each part dispatches for `counts`).
+    shared::OrganTable counts{};
+    std::vector<shared::OrganTable> partCounts;
 };
 
 // The camera a frame is rendered with: settings.camera, or the default angles framed on `bounds`.
@@ -61,10 +72,13 @@ public:
     // Throws std::invalid_argument for a zero or too large size.
     Frame render(const vk::Buffer& instances, const vk::Buffer& table, const Bounds& bounds,
                  const RenderSettings& settings);
+    // The same for organs in parts, drawn together.
+    Frame render(const std::vector<OrganPart>& parts, const Bounds& bounds, const RenderSettings& settings);
 
     // The host's part of a frame: the camera and per-frame constants; with shadow volumes the table's counts are
     // read back to size the volume buffer. Throws std::invalid_argument for a zero or too large size.
     FrameSetup prepare(const vk::Buffer& table, const Bounds& bounds, const RenderSettings& settings);
+    FrameSetup prepare(const std::vector<OrganPart>& parts, const Bounds& bounds, const RenderSettings& settings);
     // The same for organs only the device counts yet (a tick whose derivation and turtle are recorded before the
     // frame in its submission): nothing is read back, the shadow volumes get room for `organs` organs of any
     // kind (at most settings.maxShadowVolumeBytes).
@@ -74,6 +88,8 @@ public:
     // copies are ready for the host). The caller submits; the frame's constants travel in `cmd`, so up to
     // kFramesInFlight frames may be in flight, each into its own target (makeTarget).
     void record(VkCommandBuffer cmd, const RenderTarget& target, const vk::Buffer& instances, const vk::Buffer& table,
+                const FrameSetup& setup);
+    void record(VkCommandBuffer cmd, const RenderTarget& target, const std::vector<OrganPart>& parts,
                 const FrameSetup& setup);
     // The frame `record` drew into `target`, once its submission has completed.
     Frame readBack(const RenderTarget& target, const FrameSetup& setup) const;

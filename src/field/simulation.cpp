@@ -114,8 +114,12 @@ struct Simulation::Impl {
         return bases;
     }
     void makeBatches(uint32_t plantsPerBatch);
-    const turtle::DeviceOrgans& interpretOnDevice();
-    const turtle::DeviceOrgans& interpretOnHost();
+    std::vector<const turtle::DeviceOrgans*> interpretOnDevice();
+    std::vector<const turtle::DeviceOrgans*> interpretOnHost();
+    turtle::OrganMerge& organMerge() {
+        if (!merge) merge = std::make_unique<turtle::OrganMerge>(*context, options.maxPartBytes);
+        return *merge;
+    }
 };
 
 void Simulation::Impl::makeBatches(uint32_t plantsPerBatch) {
@@ -280,11 +284,11 @@ void Simulation::resume(const SimulationState& state) {
     m.drawn = false;
 }
 
-const turtle::DeviceOrgans& Simulation::Impl::interpretOnDevice() {
+std::vector<const turtle::DeviceOrgans*> Simulation::Impl::interpretOnDevice() {
     if (!turtle) turtle = std::make_unique<turtle::GpuTurtle>(*context, commands, turtles);
     if (!statistics) statistics = std::make_unique<GpuPlantStatistics>(*context);
-    if ((batches.size() > 1 || hasObstacles()) && !merge) merge = std::make_unique<turtle::OrganMerge>(*context);
-    if (merge) merge->begin();
+    const bool merged = batches.size() > 1 || hasObstacles();
+    if (merged) organMerge().begin();
     lastStatistics.clear();
     uint64_t firstModule = 0;
     const turtle::DeviceOrgans* organs = nullptr;
@@ -304,15 +308,16 @@ const turtle::DeviceOrgans& Simulation::Impl::interpretOnDevice() {
         lastStatistics.insert(lastStatistics.end(), s.begin(), s.end());
         seconds.statistics += secondsSince(start);
         start = Clock::now();
-        if (merge) merge->keep(*organs, b.first, firstModule);
+        if (merged) merge->keep(*organs, b.first, firstModule);
         firstModule += drawnModules.count;
         seconds.interpret += secondsSince(start);
     }
+    if (!merged) return {organs};
     const Clock::time_point start = Clock::now();
     if (hasObstacles()) merge->keep(obstacleOrganBuffers(), derive.plants, firstModule);
-    const turtle::DeviceOrgans& field = merge ? merge->merge() : *organs;
+    std::vector<const turtle::DeviceOrgans*> parts = merge->mergeParts();
     seconds.interpret += secondsSince(start);
-    return field;
+    return parts;
 }
 
 const turtle::DeviceOrgans& Simulation::Impl::obstacleOrganBuffers() {
@@ -320,7 +325,7 @@ const turtle::DeviceOrgans& Simulation::Impl::obstacleOrganBuffers() {
     return obstacles;
 }
 
-const turtle::DeviceOrgans& Simulation::Impl::interpretOnHost() {
+std::vector<const turtle::DeviceOrgans*> Simulation::Impl::interpretOnHost() {
     Clock::time_point start = Clock::now();
     // The batches' drawn strings one after the other: the field's.
     stream::ModuleString field;
@@ -342,21 +347,28 @@ const turtle::DeviceOrgans& Simulation::Impl::interpretOnHost() {
     lastStatistics = plantStatisticsCpu(organs, baseHeights(placements), field.particles);
     seconds.statistics += secondsSince(start);
     uploaded = turtle::uploadOrgans(*context, organs);
-    if (!hasObstacles()) return uploaded;
-    if (!merge) merge = std::make_unique<turtle::OrganMerge>(*context);
-    merge->begin();
+    if (!hasObstacles()) return {&uploaded};
+    organMerge().begin();
     merge->keep(uploaded, 0, 0);
     merge->keep(obstacleOrganBuffers(), derive.plants, field.size());
-    return merge->merge();
+    return merge->mergeParts();
+}
+
+std::vector<const turtle::DeviceOrgans*> Simulation::interpretParts() {
+    Impl& m = *impl_;
+    if (!m.context) throw std::logic_error("Simulation::interpret: drawing needs a Vulkan device");
+    std::vector<const turtle::DeviceOrgans*> parts =
+        m.options.backend == Backend::Gpu ? m.interpretOnDevice() : m.interpretOnHost();
+    m.drawn = true;
+    return parts;
 }
 
 const turtle::DeviceOrgans& Simulation::interpret() {
-    Impl& m = *impl_;
-    if (!m.context) throw std::logic_error("Simulation::interpret: drawing needs a Vulkan device");
-    const turtle::DeviceOrgans& organs =
-        m.options.backend == Backend::Gpu ? m.interpretOnDevice() : m.interpretOnHost();
-    m.drawn = true;
-    return organs;
+    const std::vector<const turtle::DeviceOrgans*> parts = interpretParts();
+    if (parts.size() > 1)
+        throw ir::LimitError(fmt::format("the field's organs come in {} parts, more than one buffer binding holds",
+                                         parts.size()));
+    return *parts.front();
 }
 
 std::vector<shared::PlantStatistics> Simulation::statistics() const {
@@ -446,6 +458,12 @@ const grow::GrowingSpecies& Simulation::species() const {
 const StageSeconds& Simulation::stageSeconds() const { return impl_->seconds; }
 const std::vector<shared::PlantPlacement>& Simulation::placements() const {
     return impl_->placements;
+}
+
+std::vector<draw::OrganPart> organParts(const std::vector<const turtle::DeviceOrgans*>& parts) {
+    std::vector<draw::OrganPart> drawn;
+    for (const turtle::DeviceOrgans* part : parts) drawn.push_back({&part->instances, &part->table});
+    return drawn;
 }
 
 } // namespace simeco::field

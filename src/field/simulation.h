@@ -13,6 +13,7 @@
 #include "compute/shared/organ_layout.h"
 #include "compute/shared/plant_statistics_layout.h"
 #include "draw/bounds.h"
+#include "draw/renderer.h"
 #include "field/backend.h"
 #include "grow/growing_species.h"
 #include "stream/derive_options.h"
@@ -37,6 +38,7 @@ struct SimulationOptions {
     uint32_t plantsPerBatch = 0;
     uint64_t maxModules = 0;
     double maxSeconds = stream::kDefaultMaxSeconds;
+    uint64_t maxPartBytes = 0; // of the organs' parts (turtle::OrganMerge); 0: one buffer binding's
     Backend backend = Backend::Gpu;
 };
 
@@ -104,7 +106,10 @@ public:
     const std::vector<shared::PlantPlacement>& placements() const;
 
     // The field's organs as they are now, on the device: the turtle kernels' (or with the CPU backend the
-    // reference turtle's, uploaded), valid until the next interpret().
+    // reference turtle's, uploaded), in parts where they need more than one buffer binding (turtle::OrganMerge),
+    // valid until the next interpretation.
+    std::vector<const turtle::DeviceOrgans*> interpretParts();
+    // The same for a field of one part; throws ir::LimitError where it needs more.
     const turtle::DeviceOrgans& interpret();
     // Each plant's statistics, in plant order, counted with the organs interpret() drew after the last tick (the
     // host reads back a few words per plant).
@@ -114,5 +119,8 @@ private:
     struct Impl;
     std::unique_ptr<Impl> impl_;
 };
+
+// The parts of a field's organs as the renderer draws them.
+std::vector<draw::OrganPart> organParts(const std::vector<const turtle::DeviceOrgans*>& parts);
 
 } // namespace simeco::field

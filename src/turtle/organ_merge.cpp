@@ -20,12 +20,17 @@ using shared::kOrganKinds;
 using shared::OrganInstance;
 using shared::OrganTable;
 
-OrganMerge::OrganMerge(const vk::Context& context)
-    : context_(context), kernel_(vk::ComputePipeline::embedded(context, "turtle/organ_merge")) {}
+OrganMerge::OrganMerge(const vk::Context& context, uint64_t maxPartBytes)
+    : context_(context),
+      maxPartBytes_(maxPartBytes > 0 ? maxPartBytes : context.limits().maxStorageBufferRange),
+      kernel_(vk::ComputePipeline::embedded(context, "turtle/organ_merge")) {}
 
 void OrganMerge::begin() {
-    kept_.clear();
-    heldOrgans_ = 0;
+    for (Part& part : parts_) {
+        part.kept.clear();
+        part.heldOrgans = 0;
+    }
+    used_ = 0;
 }
 
 void OrganMerge::keep(const DeviceOrgans& batch, uint32_t firstPlant, uint64_t firstModule) {
@@ -33,69 +38,99 @@ void OrganMerge::keep(const DeviceOrgans& batch, uint32_t firstPlant, uint64_t f
     k.table = vk::downloadVector<OrganTable>(context_, batch.table, 1)[0];
     for (uint32_t kind = 0; kind < kOrganKinds; ++kind)
         k.organs += k.table.count[kind];
-    k.first = heldOrgans_;
     k.firstPlant = firstPlant;
     k.firstModule = firstModule;
-    const VkDeviceSize needed = (heldOrgans_ + k.organs) * sizeof(OrganInstance);
+    const uint64_t bytes = uint64_t(k.organs) * sizeof(OrganInstance);
+    if (bytes > maxPartBytes_)
+        throw ir::LimitError(fmt::format("a batch's {} organ instances need {} MiB, past the {} MiB a buffer binding "
+                                         "holds (draw fewer plants per batch)",
+                                         k.organs, bytes >> 20, maxPartBytes_ >> 20));
+    if (used_ == 0 || (parts_[used_ - 1].heldOrgans + k.organs) * sizeof(OrganInstance) > maxPartBytes_) {
+        if (used_ == parts_.size()) parts_.emplace_back();
+        ++used_;
+    }
+    Part& part = parts_[used_ - 1];
+    k.first = part.heldOrgans;
+    const VkDeviceSize needed = (part.heldOrgans + k.organs) * sizeof(OrganInstance);
     context_.submitAndWait([&](VkCommandBuffer cmd) {
-        if (!held_ || held_.size() < needed) { // a larger buffer, with what was kept before
-            vk::Buffer larger(context_, std::max<VkDeviceSize>(needed + needed / 2, sizeof(OrganInstance)),
+        if (!part.held || part.held.size() < needed) { // a larger buffer, with what was kept before
+            const VkDeviceSize size = std::min<VkDeviceSize>(needed + needed / 2, maxPartBytes_);
+            vk::Buffer larger(context_, std::max<VkDeviceSize>(size, sizeof(OrganInstance)),
                               vk::MemoryUsage::DeviceLocal);
-            if (heldOrgans_ > 0) {
-                VkBufferCopy old{0, 0, heldOrgans_ * sizeof(OrganInstance)};
-                vkCmdCopyBuffer(cmd, held_.handle(), larger.handle(), 1, &old);
+            if (part.heldOrgans > 0) {
+                VkBufferCopy old{0, 0, part.heldOrgans * sizeof(OrganInstance)};
+                vkCmdCopyBuffer(cmd, part.held.handle(), larger.handle(), 1, &old);
             }
             // The old buffer is released once the copy has run: keep it until the wait returns.
-            std::swap(held_, larger);
+            std::swap(part.held, larger);
             retired_ = std::move(larger);
         }
         if (k.organs > 0) {
             VkBufferCopy copy{VkDeviceSize(k.table.first[0]) * sizeof(OrganInstance),
-                              heldOrgans_ * sizeof(OrganInstance), VkDeviceSize(k.organs) * sizeof(OrganInstance)};
+                              part.heldOrgans * sizeof(OrganInstance), VkDeviceSize(k.organs) * sizeof(OrganInstance)};
             vk::memoryBarrier(cmd, vk::Hazard::AnyToTransfer);
-            vkCmdCopyBuffer(cmd, batch.instances.handle(), held_.handle(), 1, &copy);
+            vkCmdCopyBuffer(cmd, batch.instances.handle(), part.held.handle(), 1, &copy);
         }
     });
     retired_ = vk::Buffer();
-    heldOrgans_ += k.organs;
-    kept_.push_back(k);
+    part.heldOrgans += k.organs;
+    part.kept.push_back(k);
+}
+
+std::vector<const DeviceOrgans*> OrganMerge::mergeParts() {
+    if (used_ == 0) { // an empty field: one empty part
+        parts_.resize(std::max<size_t>(parts_.size(), 1));
+        used_ = 1;
+    }
+    std::vector<const DeviceOrgans*> merged;
+    for (size_t p = 0; p < used_; ++p) {
+        mergePart(parts_[p]);
+        merged.push_back(&parts_[p].field);
+    }
+    return merged;
 }
 
 const DeviceOrgans& OrganMerge::merge() {
+    uint64_t organs = 0;
+    for (size_t p = 0; p < used_; ++p) organs += parts_[p].heldOrgans;
+    if (used_ > 1)
+        throw ir::LimitError(fmt::format("the device binds at most {} MiB per buffer; the field's {} organ instances "
+                                         "need {} MiB (draw fewer plants)",
+                                         maxPartBytes_ >> 20, organs, (organs * sizeof(OrganInstance)) >> 20));
+    return *mergeParts().front();
+}
+
+void OrganMerge::mergePart(Part& part) {
     // Each kind's organs of every batch, one batch after the other, the kinds one after the other.
     OrganTable table{};
-    for (const Kept& k : kept_)
+    for (const Kept& k : part.kept)
         for (uint32_t kind = 0; kind < kOrganKinds; ++kind)
             table.count[kind] += k.table.count[kind];
     for (uint32_t kind = 1; kind < kOrganKinds; ++kind)
         table.first[kind] = table.first[kind - 1] + table.count[kind - 1];
     draw::Bounds bounds{glm::vec3(1e30f), glm::vec3(-1e30f)};
-    for (const Kept& k : kept_) {
+    for (const Kept& k : part.kept) {
         if (k.organs == 0) continue;
         const draw::Bounds b = draw::decodeBounds(k.table);
         bounds.min = glm::min(bounds.min, b.min);
         bounds.max = glm::max(bounds.max, b.max);
     }
     draw::encodeBounds(bounds, table);
-    const VkDeviceSize bytes = std::max<uint64_t>(heldOrgans_, 1) * sizeof(OrganInstance);
-    // The field's instances are bound whole, here and by the renderer.
-    const uint64_t limit = context_.limits().maxStorageBufferRange;
-    if (bytes > limit)
-        throw ir::LimitError(fmt::format("the device binds at most {} MiB per buffer; the field's {} organ instances "
-                                         "need {} MiB (draw fewer plants)",
-                                         limit >> 20, heldOrgans_, bytes >> 20));
-    if (!field_.instances || field_.instances.size() < bytes) {
-        field_.instances = vk::Buffer(context_, bytes, vk::MemoryUsage::DeviceLocal);
-        field_.capacity = uint32_t(bytes / sizeof(OrganInstance));
+    const VkDeviceSize bytes = std::max<uint64_t>(part.heldOrgans, 1) * sizeof(OrganInstance);
+    DeviceOrgans& field = part.field;
+    if (!field.instances || field.instances.size() < bytes) {
+        field.instances = vk::Buffer(context_, bytes, vk::MemoryUsage::DeviceLocal);
+        field.capacity = uint32_t(bytes / sizeof(OrganInstance));
     }
-    field_.table = vk::deviceBufferWith(context_, std::span<const OrganTable>(&table, 1));
+    field.table = vk::deviceBufferWith(context_, std::span<const OrganTable>(&table, 1));
     const float spacing = 1.0f;
-    field_.field = vk::deviceBufferWith(context_, std::span<const float>(&spacing, 1));
+    field.field = vk::deviceBufferWith(context_, std::span<const float>(&spacing, 1));
+    if (!part.held) part.held = vk::Buffer(context_, sizeof(OrganInstance), vk::MemoryUsage::DeviceLocal);
     std::array<uint32_t, kOrganKinds> next;
     std::copy(std::begin(table.first), std::end(table.first), next.begin());
     context_.submitAndWait([&](VkCommandBuffer cmd) {
         vk::memoryBarrier(cmd, vk::Hazard::AnyToAny);
-        for (const Kept& k : kept_) {
+        for (const Kept& k : part.kept) {
             if (k.organs == 0) continue;
             shared::OrganMergePush push{};
             for (uint32_t kind = 0; kind < kOrganKinds; ++kind) {
@@ -107,11 +142,10 @@ const DeviceOrgans& OrganMerge::merge() {
             push.organs = k.organs;
             push.firstPlant = k.firstPlant;
             push.firstModule = uint32_t(k.firstModule);
-            kernel_.dispatch(cmd, {held_, field_.instances}, push, kernel_.groupsFor(k.organs));
+            kernel_.dispatch(cmd, {part.held, field.instances}, push, kernel_.groupsFor(k.organs));
         }
         vk::memoryBarrier(cmd, vk::Hazard::ComputeToCompute);
     });
-    return field_;
 }
 
 } // namespace simeco::turtle

@@ -11,7 +11,9 @@
 #include <gtest/gtest.h>
 
 #include "compute/shared/organ_layout.h"
+#include "draw/renderer.h"
 #include "field/simulation.h"
+#include "ir/source_loc.h"
 #include "gpu_fixture.h"
 #include "turtle/interpretation.h"
 #include "turtle/turtle_gpu.h"
@@ -71,6 +73,42 @@ TEST_F(SimulationTest, AFieldInBatchesGrowsOnTheDeviceAsOnTheCpu) {
     // Plants 0 and 3 are of one species, in two batches with random streams of their own.
     EXPECT_NE(gpu.plantModules()[0], gpu.plantModules()[3]);
     EXPECT_EQ(gpu.plantModules(), cpu.plantModules());
+}
+
+TEST_F(SimulationTest, AFieldInPartsDrawsAsInOnePart) {
+    field::Simulation whole(garden(field::Backend::Gpu), &context());
+    for (int tick = 0; tick < 30; ++tick) whole.tick();
+    uint64_t organs = 0;
+    const std::vector<const turtle::DeviceOrgans*> one = whole.interpretParts();
+    for (const shared::PlantStatistics& s : whole.statistics()) organs += s.organs;
+    ASSERT_EQ(one.size(), 1u);
+    // Parts of about half the field's organs: its four batches in two or three parts.
+    field::SimulationOptions options = garden(field::Backend::Gpu);
+    options.maxPartBytes = organs * sizeof(shared::OrganInstance) / 2 + 1;
+    field::Simulation split(options, &context());
+    for (int tick = 0; tick < 30; ++tick) split.tick();
+    const std::vector<const turtle::DeviceOrgans*> parts = split.interpretParts();
+    ASSERT_GE(parts.size(), 2u);
+    EXPECT_THROW(split.interpret(), ir::LimitError);
+    uint64_t inParts = 0;
+    for (const turtle::DeviceOrgans* part : parts) inParts += turtle::readBack(context(), *part, 12).organs.size();
+    EXPECT_EQ(inParts, organs);
+
+    draw::Renderer renderer(context());
+    draw::RenderSettings settings;
+    settings.width = 240;
+    settings.height = 180;
+    const turtle::Bounds drawn = turtle::readBack(context(), *one.front(), 12).bounds;
+    const draw::Bounds framed{drawn.min, drawn.max};
+    const draw::Frame a = renderer.render(field::organParts(one), framed, settings);
+    const draw::Frame b = renderer.render(field::organParts(parts), framed, settings);
+    size_t plantPixels = 0, differ = 0;
+    for (size_t i = 0; i < a.plant.size(); ++i) {
+        plantPixels += a.plant[i] != draw::Frame::kNoId;
+        differ += a.plant[i] != b.plant[i] || std::fabs(a.rgba[4 * i] - b.rgba[4 * i]) > 1e-3f;
+    }
+    EXPECT_GT(plantPixels, 500u);
+    EXPECT_LE(differ, plantPixels / 200); // the same field, drawn in another order of its draws
 }
 
 // Herbs of one SimEco plant and bushes of a cpfg grammar (scenes/shrub.l) in two populations, and a box.

@@ -13,6 +13,8 @@
 #include "app/render_options.h"
 #include "draw/image_writers.h"
 #include "draw/renderer.h"
+#include "field/field_parts.h"
+#include "field/simulation.h"
 #include "turtle/turtle_gpu.h"
 #include "vk/context.h"
 
@@ -49,12 +51,12 @@ void runRender(const RenderArgs& args) {
     vk::Context context(contextOptions);
     auto start = std::chrono::steady_clock::now();
     field::Field field = field::deriveField(source, &context);
-    const turtle::DeviceOrgans& organs = field::interpretOnDevice(source, field, context);
+    const std::vector<const turtle::DeviceOrgans*> organs = field::interpretInParts(source, field, context);
     field::OrganExtent extent = field::organExtent(context, organs);
     if (extent.organs == 0) throw std::runtime_error(fmt::format("{}: the plants draw nothing", source.file));
 
     draw::Renderer renderer(context);
-    draw::Frame frame = renderer.render(organs.instances, organs.table, extent.bounds, settings);
+    draw::Frame frame = renderer.render(field::organParts(organs), extent.bounds, settings);
     // Both files appear, or neither.
     draw::OutputBatch outputs;
     if (exr) draw::writeExr(outputs, args.output, frame);

@@ -10,6 +10,7 @@
 #include "ir/species.h"
 #include "lang/load_grammar.h"
 #include "turtle/finite_organs.h"
+#include "turtle/organ_merge.h"
 #include "turtle/turtle_cpu.h"
 #include "vk/buffer.h"
 #include "vk/context.h"

@@ -17,9 +17,13 @@
 #include "turtle/turtle_commands.h"
 #include "turtle/turtle_gpu.h"
 #include "turtle/turtle_settings.h"
+#include "vk/buffer.h"
 
 namespace simeco::vk {
 class Context;
+}
+namespace simeco::turtle {
+class OrganMerge;
 }
 
 namespace simeco::field {
@@ -41,6 +45,11 @@ struct FieldSource {
 // The species of any input file, sharing one alphabet (ir::unifySpecies); a scene's warnings go to stderr.
 std::vector<ir::Grammar> loadSpecies(const std::string& path);
 
+// A batch of a field's plants copied out of its derived string (field_parts.h).
+struct FieldBatchBuffers {
+    vk::Buffer symbols, params, plantStarts;
+};
+
 // A field derived and ready for the turtle.
 struct Field {
     std::vector<ir::Grammar> species; // one alphabet (ir::unifySpecies)
@@ -57,6 +66,9 @@ struct Field {
     // organs the last interpretation left on the device (the turtle's, or the CPU turtle's uploaded).
     std::unique_ptr<turtle::GpuTurtle> turtle;
     turtle::DeviceOrgans uploaded;
+    // A field interpreted in batches (field_parts.h): the batch interpreted last, and the organs merged.
+    FieldBatchBuffers batch;
+    std::unique_ptr<turtle::OrganMerge> merge;
 
     Field();
     ~Field();

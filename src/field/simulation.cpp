@@ -12,6 +12,7 @@
 #include "compute/shared/random.h"
 #include "compute/shared/turtle_state_layout.h"
 #include "cpu/derive.h"
+#include "field/field_parts.h"
 #include "field/field_placement.h"
 #include "field/grown_plants.h"
 #include "field/obstacles.h"
@@ -37,11 +38,9 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
-// The drawn modules a batch of plants may hold, by the grown plants' count: half of what the turtle's largest
-// per-module buffer (TurtleStep) holds in the smallest storage binding Vulkan guarantees (2^27 bytes), the other
-// half left to plants that grow larger than the one grown before the field. Fixed, so that a seed grows the same
-// field on every device.
-constexpr uint64_t kBatchDrawnModules = (uint64_t(1) << 27) / sizeof(shared::TurtleStep) / 2;
+// The drawn modules a batch of plants may hold, by the grown plants' count: one interpretation's (kBatchModules),
+// half of it left to plants that grow larger than the one grown before the field.
+constexpr uint64_t kBatchDrawnModules = kBatchModules / 2;
 
 // The random streams of batch b: the field's seed for the first, another for each other, so that plants at the
 // same place in two batches differ.

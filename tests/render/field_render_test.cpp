@@ -8,6 +8,7 @@
 
 #include "cpu/derive.h"
 #include "draw/renderer.h"
+#include "field/field_parts.h"
 #include "gpu_fixture.h"
 #include "lang/load_grammar.h"
 #include "test_scene.h"
@@ -68,6 +69,37 @@ TEST_F(FieldRender, PlantsShowWithTheirIdsWhereTheTurtlePutThem) {
     EXPECT_NEAR(box.maxX, maxX, margin);
     EXPECT_NEAR(box.minY, minY, margin);
     EXPECT_NEAR(box.maxY, maxY, margin);
+}
+
+// A field too large for one interpretation is interpreted in batches of plants copied out of its derived string,
+// standing where one interpretation puts them: the organs of the batches, merged, are the organs of one.
+TEST_F(FieldRender, AFieldInBatchesIsInterpretedAsInOne) {
+    field::FieldSource source;
+    source.file = std::string(SIMECO_SOURCE_DIR) + "/grammars/abop/fig2.8-ternary.l";
+    source.plants = 7;
+    source.steps = 3;
+    field::Field whole = field::deriveField(source, &context());
+    const turtle::Interpretation want =
+        turtle::readBack(context(), *field::interpretInParts(source, whole, context()).front(), 7);
+    field::Field cut = field::deriveField(source, &context());
+    // About two plants' modules per batch: four batches.
+    const std::vector<const turtle::DeviceOrgans*> parts =
+        field::interpretInParts(source, cut, context(), cut.modules / 7 * 2 + 1);
+    ASSERT_EQ(parts.size(), 1u); // the batches' organs fit one binding
+    const turtle::Interpretation got = turtle::readBack(context(), *parts.front(), 7);
+    ASSERT_GT(want.organs.size(), 100u);
+    ASSERT_EQ(got.count, want.count);
+    float size = 0;
+    for (int axis = 0; axis < 3; ++axis) size = std::max(size, want.bounds.max[axis] - want.bounds.min[axis]);
+    for (size_t i = 0; i < want.organs.size(); ++i) {
+        const shared::OrganInstance &w = want.organs[i], &g = got.organs[i];
+        ASSERT_EQ(g.plant, w.plant) << i;
+        ASSERT_EQ(g.module, w.module) << i;
+        ASSERT_NEAR(g.position.x, w.position.x, 1e-4f * size) << i;
+        ASSERT_NEAR(g.position.y, w.position.y, 1e-4f * size) << i;
+        ASSERT_NEAR(g.position.z, w.position.z, 1e-4f * size) << i;
+        ASSERT_NEAR(g.heading.w, w.heading.w, 1e-4f * size) << i;
+    }
 }
 
 } // namespace

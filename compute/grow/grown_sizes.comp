@@ -1,6 +1,7 @@
 // The drawn string's sizes from its particles: each kGrownValue code a SimEco homomorphism wrote as a parameter
-// is replaced, in place, with the value it names (compute/shared/growth_layout.h). The CPU reference is
-// growSizesCpu in src/grow/tick_cpu.cpp.
+// is replaced, in place, with the value it names (compute/shared/growth_layout.h); a grammar's segments are
+// shortened to the part of their first DeriveTime their particle has lived. The CPU reference is growSizesCpu in
+// src/grow/tick_cpu.cpp.
 #version 450
 #extension GL_GOOGLE_include_directive : require
 #include "compute/shared/config.h"
@@ -10,13 +11,14 @@
 #include "compute/shared/random.h"
 
 layout(local_size_x = kGrowWorkgroupSize) in;
-layout(set = 0, binding = 0, std430) readonly buffer Symbols { uint symbols[]; };
+layout(set = 0, binding = 0, std430) buffer Symbols { uint symbols[]; };
 layout(set = 0, binding = 1, std430) buffer Params { float params[]; };
 layout(set = 0, binding = 2, std430) readonly buffer Starts { uint plantStart[]; };
 layout(set = 0, binding = 3, std430) readonly buffer Particles { float particles[]; };
 layout(set = 0, binding = 4, std430) readonly buffer SpeciesWords { uint speciesWords[]; };
 layout(set = 0, binding = 5, std430) readonly buffer DeriveTimes { float deriveTimes[]; };
 layout(set = 0, binding = 6, std430) readonly buffer Rows { float rows[]; };
+layout(set = 0, binding = 7, std430) readonly buffer Classes { uint classes[]; };
 layout(push_constant) uniform Push { GrowPush pc; };
 
 #include "compute/grow/growth.glsl"
@@ -59,11 +61,30 @@ float grownValue(uint code, uint i, uint plant) {
     }
 }
 
+// A grammar's segment (not the letter of an `@` command) as long as the part of its first DeriveTime it has
+// lived; a segment without a length gets the turtle's step.
+void growSegment(uint i, uint plant, uint species) {
+    uint sym = symbols[i] & kSymbolMask;
+    if ((classes[species * pc.symbols + sym] & kGrowSegment) == 0u) return;
+    if (i > plantStart[plant] && (symbols[i - 1u] & kSymbolMask) == pc.atSymbol) return;
+    float grown = min(particle(i, kParticleAge) / deriveTimes[plant], 1.0);
+    if (grown >= 1.0) return;
+    if ((symbols[i] >> kSymbolBits) > 0u) {
+        params[pc.stride * i] *= grown;
+    } else {
+        params[pc.stride * i] = uintBitsToFloat(speciesWords[species * kSpeciesGrowthWords + kSpeciesSegmentStep]) * grown;
+        symbols[i] = sym | (1u << kSymbolBits);
+    }
+}
+
 void main() {
     uint i = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * gl_WorkGroupSize.x + gl_LocalInvocationID.x;
     if (i >= pc.count) return;
     uint plant = plantOf(i, pc.plants);
-    if ((speciesWords[(plant % pc.species) * kSpeciesGrowthWords + kSpeciesFlags] & kSpeciesDrawsGrowth) == 0u) return;
+    uint species = plant % pc.species;
+    uint flags = speciesWords[species * kSpeciesGrowthWords + kSpeciesFlags];
+    if ((flags & kSpeciesGrowsSegments) != 0u) growSegment(i, plant, species);
+    if ((flags & kSpeciesDrawsGrowth) == 0u) return;
     uint count = symbols[i] >> kSymbolBits;
     for (uint k = 0u; k < count; ++k) {
         float code = kGrownValue - params[pc.stride * i + k];

@@ -25,7 +25,7 @@ SIMECO_SHARED_BEGIN
 SIMECO_CONST kGrowWorkgroupSize = 128u;
 
 // Module classes (per species and symbol): the six SimEco organ kinds (ir::EcoOrganKind's order), then every
-// other module as kGrowPlainClass + its symbol.
+// other module as kGrowPlainClass + its symbol (with kGrowSegment where a grammar's segment grows).
 SIMECO_CONST kGrowOrganKinds = 6u;
 SIMECO_CONST kGrowPlainClass = 8u;
 
@@ -36,9 +36,14 @@ SIMECO_CONST kSpeciesFirstRow = 0u;
 SIMECO_CONST kSpeciesRowCount = 6u;
 SIMECO_CONST kSpeciesDefaultRow = 12u;
 SIMECO_CONST kSpeciesFlags = 18u;
+SIMECO_CONST kSpeciesSegmentStep = 19u; // a float's bits: the turtle's step, the length of a segment `F`
 SIMECO_CONST kGrowNoRow = 0xFFFFFFFFu;
 // The species' drawn modules carry kGrownValue codes (SimEco's homomorphism).
 SIMECO_CONST kSpeciesDrawsGrowth = 1u;
+// A cpfg or quick grammar's species: each drawn segment (F f G g, its class marked kGrowSegment) grows to its
+// length over the first DeriveTime of its particle.
+SIMECO_CONST kSpeciesGrowsSegments = 2u;
+SIMECO_CONST kGrowSegment = 0x80000000u;
 
 // A stage row: the stage number, then each property's min and max; rows of an organ sorted by stage.
 SIMECO_CONST kStageRowFloats = 20u;
@@ -106,6 +111,7 @@ struct GrowPush {
     uint count;
     uint stride;   // parameters per module
     float gravity; // the scene's gravity, as a multiple of Earth's (9.81)
+    uint atSymbol; // the alphabet's `@` (a segment letter after it is a command's prefix), else 0xFFFFFFFF
 };
 
 SIMECO_SHARED_END

@@ -43,7 +43,7 @@ GrownPlants growOneOfEach(const grow::GrowingSpecies& g, const grow::GrowthTable
         grow::tickCpu(ts, plants.current());
     }
     stream::ModuleString drawn = plants.drawn();
-    if (tables.drawsGrowth()) grow::growSizesCpu(ts, times, drawn);
+    if (tables.drawsGrowth() || tables.growsSegments()) grow::growSizesCpu(ts, times, drawn);
     GrownPlants grown;
     grown.bounds.resize(one.plants);
     for (uint32_t p = 0; p < one.plants; ++p)

@@ -295,8 +295,11 @@ std::vector<const turtle::DeviceOrgans*> Simulation::Impl::interpretOnDevice() {
         // The sizes of this moment: the last tick's.
         const grow::TickSettings ts = settings(b, ticks == 0 ? 0 : ticks - 1);
         Clock::time_point start = Clock::now();
-        const stream::DeviceModules drawnModules = b.deriver->drawn();
-        if (tables.drawsGrowth()) b.growth->growSizes(drawnModules, ts);
+        stream::DeviceModules drawnModules = b.deriver->drawn();
+        // A grammar without a homomorphism draws its derived string: its segments shorten a copy.
+        if (tables.growsSegments() && drawnModules.symbols == b.deriver->current().symbols)
+            drawnModules = b.growth->copyForDrawing(drawnModules);
+        if (tables.drawsGrowth() || tables.growsSegments()) b.growth->growSizes(drawnModules, ts);
         organs = &turtle->interpret(drawnModules, b.field);
         seconds.interpret += secondsSince(start);
         start = Clock::now();
@@ -331,7 +334,7 @@ std::vector<const turtle::DeviceOrgans*> Simulation::Impl::interpretOnHost() {
     field.plantStart.push_back(0);
     for (Batch& b : batches) {
         stream::ModuleString drawnModules = b.reference->drawn();
-        if (tables.drawsGrowth())
+        if (tables.drawsGrowth() || tables.growsSegments())
             grow::growSizesCpu(settings(b, ticks == 0 ? 0 : ticks - 1), b.deriveTimes, drawnModules);
         if (b.first == 0) field.stride = drawnModules.stride; // the batches' species, and so their strides, alike
         field.append(drawnModules, 0, drawnModules.size());

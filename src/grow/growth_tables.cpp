@@ -1,12 +1,16 @@
 #include "grow/growth_tables.h"
 
 #include <algorithm>
+#include <bit>
 #include <optional>
 
 #include "compute/shared/growth_layout.h"
 #include "compute/shared/random.h"
 #include "ir/species.h"
+#include "compute/shared/turtle_layout.h"
 #include "lang/eco_geometry.h"
+#include "turtle/turtle_commands.h"
+#include "turtle/turtle_settings.h"
 
 namespace simeco::grow {
 
@@ -84,10 +88,19 @@ bool GrowthTables::drawsGrowth() const {
     return false;
 }
 
+bool GrowthTables::growsSegments() const {
+    for (size_t s = 0; s < species.size(); s += shared::kSpeciesGrowthWords)
+        if (species[s + shared::kSpeciesFlags] & shared::kSpeciesGrowsSegments) return true;
+    return false;
+}
+
 GrowthTables growthTables(const std::vector<ir::Grammar>& species, const std::vector<const ir::EcoPlant*>& ecoPlants) {
     GrowthTables t;
     t.symbols = species.empty() ? 0u : uint32_t(species.front().alphabet.size());
     t.classes.assign(species.size() * t.symbols, 0);
+    const turtle::TurtleCommands commands =
+        species.empty() ? turtle::TurtleCommands{} : turtle::turtleCommands(species.front().alphabet);
+    t.atSymbol = commands.at;
     t.species.assign(species.size() * shared::kSpeciesGrowthWords, shared::kGrowNoRow);
     for (size_t s = 0; s < species.size(); ++s) {
         uint32_t* classes = t.classes.data() + s * t.symbols;
@@ -96,7 +109,15 @@ GrowthTables growthTables(const std::vector<ir::Grammar>& species, const std::ve
         uint32_t* words = t.species.data() + s * shared::kSpeciesGrowthWords;
         words[shared::kSpeciesFlags] = 0;
         const ir::EcoPlant* plant = s < ecoPlants.size() ? ecoPlants[s] : nullptr;
-        if (!plant || !plant->grammar.empty()) continue; // a grammar file's modules only age
+        if (!plant || !plant->grammar.empty()) { // a grammar file's modules age, its segments grow
+            words[shared::kSpeciesFlags] = shared::kSpeciesGrowsSegments;
+            words[shared::kSpeciesSegmentStep] =
+                std::bit_cast<uint32_t>(turtle::turtleSettings(species[s], species[s].alphabet).step);
+            for (uint32_t sym = 0; sym < t.symbols; ++sym)
+                if (commands.plain[sym] == shared::kTurtleDraw || commands.plain[sym] == shared::kTurtleMove)
+                    classes[sym] |= shared::kGrowSegment;
+            continue;
+        }
         words[shared::kSpeciesFlags] = shared::kSpeciesDrawsGrowth;
         for (uint32_t k = 0; k < shared::kGrowOrganKinds; ++k) {
             const auto kind = static_cast<EcoOrganKind>(k);

@@ -19,12 +19,15 @@ struct GrowthTables {
     std::vector<uint32_t> classes; // per species and symbol: its module class
     std::vector<uint32_t> species; // kSpeciesGrowthWords per species
     std::vector<float> rows;       // kStageRowFloats per stage row
-    // Whether any species' drawn modules carry kGrownValue codes.
+    uint32_t atSymbol = 0xFFFFFFFFu; // the alphabet's `@`, if it has one
+    // Whether any species' drawn modules carry kGrownValue codes, or grow their segments.
     bool drawsGrowth() const;
+    bool growsSegments() const;
 };
 
 // `ecoPlants[s]`: the scene's plant species s was compiled from with EcoDrawing::Grown, or null (or a plant
-// that names a Grammar file) for a cpfg or quick grammar, whose modules only age. The species share one alphabet.
+// that names a Grammar file) for a cpfg or quick grammar, whose modules age and whose segments grow to their
+// length over their first DeriveTime. The species share one alphabet.
 GrowthTables growthTables(const std::vector<ir::Grammar>& species, const std::vector<const ir::EcoPlant*>& ecoPlants);
 
 // Each of `plants` plants' DeriveTime (plant p is of species p mod the species' count), drawn from its range

@@ -155,9 +155,24 @@ void growSizesCpu(const TickSettings& ts, const std::vector<float>& deriveTimes,
     const GrowthTables& t = *ts.tables;
     for (uint32_t plant = 0; plant + 1 < drawn.plantStart.size(); ++plant) {
         const uint32_t species = ir::speciesOfPlant(plant, ts.species);
-        if (!(t.species[size_t(species) * shared::kSpeciesGrowthWords + shared::kSpeciesFlags] &
-              shared::kSpeciesDrawsGrowth))
-            continue;
+        const uint32_t* words = t.species.data() + size_t(species) * shared::kSpeciesGrowthWords;
+        if (words[shared::kSpeciesFlags] & shared::kSpeciesGrowsSegments)
+            for (size_t i = drawn.plantStart[plant]; i < drawn.plantStart[plant + 1]; ++i) {
+                // A segment (not the letter of an `@` command) as long as the part of its first DeriveTime it
+                // has lived; one without a length gets the turtle's step.
+                if (!(t.classes[size_t(species) * t.symbols + drawn.sym[i]] & shared::kGrowSegment)) continue;
+                if (i > drawn.plantStart[plant] && drawn.sym[i - 1] == t.atSymbol) continue;
+                const float grown = std::min(drawn.particles[i].value[shared::kParticleAge] / deriveTimes[plant], 1.0f);
+                if (grown >= 1.0f) continue;
+                float& length = drawn.params[i * size_t(drawn.stride)];
+                if (drawn.paramCount[i] > 0) {
+                    length *= grown;
+                } else {
+                    length = std::bit_cast<float>(words[shared::kSpeciesSegmentStep]) * grown;
+                    drawn.paramCount[i] = 1;
+                }
+            }
+        if (!(words[shared::kSpeciesFlags] & shared::kSpeciesDrawsGrowth)) continue;
         for (size_t i = drawn.plantStart[plant]; i < drawn.plantStart[plant + 1]; ++i) {
             float* params = drawn.params.data() + i * size_t(drawn.stride);
             for (uint32_t k = 0; k < drawn.paramCount[i]; ++k) {

@@ -1,6 +1,8 @@
 #include "grow/tick_gpu.h"
 
+#include <algorithm>
 #include <span>
+#include <utility>
 #include <stdexcept>
 
 #include "compute/shared/growth_layout.h"
@@ -12,9 +14,10 @@ namespace simeco::grow {
 
 namespace {
 
-shared::GrowPush growPush(const stream::DeviceModules& modules, const TickSettings& s, uint32_t symbols) {
+shared::GrowPush growPush(const stream::DeviceModules& modules, const TickSettings& s, uint32_t symbols,
+                          uint32_t atSymbol) {
     return shared::GrowPush{s.dt,    s.tick,        s.seed,         modules.plants, s.species,
-                            symbols, modules.count, modules.stride, s.gravity};
+                            symbols, modules.count, modules.stride, s.gravity,      atSymbol};
 }
 
 std::vector<float> orOnes(const std::vector<float>& values, size_t count) {
@@ -25,7 +28,7 @@ std::vector<float> orOnes(const std::vector<float>& values, size_t count) {
 
 GpuGrowth::GpuGrowth(const vk::Context& context, const GrowthTables& tables, const std::vector<float>& deriveTimes,
                      const std::vector<float>& vigour)
-    : context_(context), symbols_(tables.symbols), tickKernel_(vk::ComputePipeline::embedded(context, "grow/tick")),
+    : context_(context), symbols_(tables.symbols), atSymbol_(tables.atSymbol), tickKernel_(vk::ComputePipeline::embedded(context, "grow/tick")),
       sizesKernel_(vk::ComputePipeline::embedded(context, "grow/grown_sizes")),
       classes_(vk::deviceBufferWith(context, std::span<const uint32_t>(tables.classes))),
       species_(vk::deviceBufferWith(context, std::span<const uint32_t>(tables.species))),
@@ -44,7 +47,7 @@ void GpuGrowth::recordTick(VkCommandBuffer cmd, const stream::DeviceModules& der
     tickKernel_.dispatch(cmd,
                          {*derived.symbols, *derived.params, *derived.plantStarts, *derived.particles, nextStates_,
                           classes_, species_, rows_, vigour_},
-                         growPush(derived, settings, symbols_), tickKernel_.groupsFor(derived.count));
+                         growPush(derived, settings, symbols_, atSymbol_), tickKernel_.groupsFor(derived.count));
     vk::memoryBarrier(cmd, vk::Hazard::ComputeToTransfer);
     VkBufferCopy copy{0, 0, bytes};
     vkCmdCopyBuffer(cmd, nextStates_.handle(), derived.particles->handle(), 1, &copy);
@@ -57,9 +60,42 @@ void GpuGrowth::recordSizes(VkCommandBuffer cmd, const stream::DeviceModules& dr
     vk::memoryBarrier(cmd, vk::Hazard::AnyToAny);
     sizesKernel_.dispatch(cmd,
                           {*drawn.symbols, *drawn.params, *drawn.plantStarts, *drawn.particles, species_, deriveTimes_,
-                           rows_},
-                          growPush(drawn, settings, symbols_), sizesKernel_.groupsFor(drawn.count));
+                           rows_, classes_},
+                          growPush(drawn, settings, symbols_, atSymbol_), sizesKernel_.groupsFor(drawn.count));
     vk::memoryBarrier(cmd, vk::Hazard::ComputeToCompute);
+}
+
+stream::DeviceModules GpuGrowth::copyForDrawing(const stream::DeviceModules& modules) {
+    const VkDeviceSize count = std::max<VkDeviceSize>(modules.count, 1);
+    const std::pair<vk::Buffer*, VkDeviceSize> sized[] = {
+        {&drawnSymbols_, count * 4},
+        {&drawnParams_, count * modules.stride * 4},
+        {&drawnStarts_, VkDeviceSize(modules.plants + 1) * 4},
+        {&drawnParticles_, count * sizeof(shared::ParticleState)}};
+    for (const auto& [buffer, bytes] : sized)
+        if (!*buffer || buffer->size() < bytes) *buffer = vk::Buffer(context_, bytes, vk::MemoryUsage::DeviceLocal);
+    context_.submitAndWait([&](VkCommandBuffer cmd) {
+        vk::memoryBarrier(cmd, vk::Hazard::AnyToTransfer);
+        const std::pair<const vk::Buffer*, vk::Buffer*> copies[] = {{modules.symbols, &drawnSymbols_},
+                                                                   {modules.params, &drawnParams_},
+                                                                   {modules.plantStarts, &drawnStarts_},
+                                                                   {modules.particles, &drawnParticles_}};
+        const VkDeviceSize bytes[] = {VkDeviceSize(modules.count) * 4, VkDeviceSize(modules.count) * modules.stride * 4,
+                                      VkDeviceSize(modules.plants + 1) * 4,
+                                      VkDeviceSize(modules.count) * sizeof(shared::ParticleState)};
+        for (size_t k = 0; k < 4; ++k) {
+            if (!copies[k].first || bytes[k] == 0) continue;
+            const VkBufferCopy region{0, 0, bytes[k]};
+            vkCmdCopyBuffer(cmd, copies[k].first->handle(), copies[k].second->handle(), 1, &region);
+        }
+        vk::memoryBarrier(cmd, vk::Hazard::TransferToAny);
+    });
+    stream::DeviceModules copy = modules;
+    copy.symbols = &drawnSymbols_;
+    copy.params = &drawnParams_;
+    copy.plantStarts = &drawnStarts_;
+    copy.particles = modules.particles ? &drawnParticles_ : nullptr;
+    return copy;
 }
 
 void GpuGrowth::tick(const stream::DeviceModules& derived, const TickSettings& settings) {

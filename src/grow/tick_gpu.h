@@ -33,15 +33,20 @@ public:
     // The drawn string's kGrownValue codes replaced with its particles' values, in place.
     void recordSizes(VkCommandBuffer cmd, const stream::DeviceModules& drawn, const TickSettings& settings);
 
+    // A copy of `modules` in this growth's own buffers (valid until the next copy): what a grammar without a
+    // homomorphism draws, so that its segments are shortened without touching its derived string.
+    stream::DeviceModules copyForDrawing(const stream::DeviceModules& modules);
+
     void tick(const stream::DeviceModules& derived, const TickSettings& settings);
     void growSizes(const stream::DeviceModules& drawn, const TickSettings& settings);
 
 private:
     const vk::Context& context_;
-    uint32_t symbols_;
+    uint32_t symbols_, atSymbol_;
     vk::ComputePipeline tickKernel_, sizesKernel_;
     vk::Buffer classes_, species_, rows_, deriveTimes_, vigour_;
     vk::Buffer nextStates_; // the tick's output, copied back into the string's particles
+    vk::Buffer drawnSymbols_, drawnParams_, drawnStarts_, drawnParticles_; // copyForDrawing's
 };
 
 } // namespace simeco::grow

@@ -23,7 +23,10 @@ SIMECO_CONST kOrganKinds = 5u;
 SIMECO_CONST kLeafLanceolate = 0u;
 SIMECO_CONST kLeafOvate = 1u;
 SIMECO_CONST kLeafCordate = 2u;
-SIMECO_CONST kLeafCompound = 3u;
+SIMECO_CONST kLeafCompound = 3u;   // pinnate: leaflets in pairs along a rachis (Rosa)
+SIMECO_CONST kLeafTrifoliate = 4u; // three obcordate leaflets at the end of a long petiole (Oxalis, clover)
+SIMECO_CONST kLeafSerrate = 5u;    // ovate with a toothed margin (Lantana)
+SIMECO_CONST kLeafLastShape = kLeafSerrate;
 // OrganInstance.shape for kOrganDisc: faces the viewer (@o) rather than lying in the heading-left plane (@c).
 SIMECO_CONST kDiscFacesViewer = 1u;
 

@@ -4,12 +4,13 @@
 #ifndef SIMECO_SHARED_PLANT_STATISTICS_LAYOUT_H
 #define SIMECO_SHARED_PLANT_STATISTICS_LAYOUT_H
 
+#include "compute/shared/organ_layout.h"
 #include "compute/shared/preamble.h"
 
 SIMECO_SHARED_BEGIN
 
 SIMECO_CONST kPlantStatisticsWorkgroupSize = 64u;
-SIMECO_CONST kLeafShapes = 4u; // kLeafLanceolate .. kLeafCompound
+SIMECO_CONST kLeafShapes = kLeafLastShape + 1u; // kLeafLanceolate .. kLeafLastShape
 
 struct PlantStatistics {
     uint organs;    // organ instances drawn

@@ -67,7 +67,7 @@ OrganVertex organVertex(OrganInstance o, uint kind, vec4 local, vec4 localNormal
     } else if (kind == kOrganLeaf) {
         // The leaf mesh holds every shape; a vertex of another shape collapses onto the base, so its triangles
         // have no area and draw nothing.
-        uint shape = min(o.shape, kLeafCompound);
+        uint shape = min(o.shape, kLeafLastShape);
         v.present = uint(localNormal.w + 0.5) == shape;
         v.position = o.position.xyz;
         if (v.present) {

@@ -236,6 +236,43 @@ void addCompound(MeshBuilder& b, float shape) {
     }
 }
 
+// Oxalis' leaf: a long petiole and, at its end, three obcordate leaflets (notched at their tips) spread like
+// a clover's.
+void addTrifoliate(MeshBuilder& b, float shape) {
+    const glm::vec3 normal(0, 0, 1);
+    const float petioleEnd = 0.58f;
+    const float petioleHalfWidth = 0.018f;
+    std::uint32_t p0 = b.vertex({0, -petioleHalfWidth, 0}, normal, 0, shape);
+    std::uint32_t p1 = b.vertex({petioleEnd, -petioleHalfWidth, 0}, normal, 0, shape);
+    std::uint32_t p2 = b.vertex({petioleEnd, petioleHalfWidth, 0}, normal, 0, shape);
+    std::uint32_t p3 = b.vertex({0, petioleHalfWidth, 0}, normal, 0, shape);
+    b.triangle(p0, p1, p2);
+    b.triangle(p0, p2, p3);
+    // The cordate outline reversed along its midrib: narrow at the petiole, notched at the tip.
+    std::vector<glm::vec2> obcordate = cordateOutline(24);
+    float reach = 0.0f; // the lobes reach past the notch: the leaflet spans [0, reach] before it is scaled
+    for (glm::vec2& p : obcordate) reach = std::max(reach, p.x = 1.0f - p.x);
+    for (glm::vec2& p : obcordate) p /= reach;
+    std::reverse(obcordate.begin(), obcordate.end()); // counter-clockwise again
+    const glm::vec2 base(petioleEnd, 0.0f);
+    const float length = 0.42f, width = 0.5f;
+    for (float angle : {0.0f, 2.1f, -2.1f}) {
+        glm::vec2 along(std::cos(angle), std::sin(angle));
+        glm::vec2 across(-along.y, along.x);
+        std::vector<glm::vec2> outline;
+        for (glm::vec2 p : obcordate) outline.push_back(base + p.x * length * along + p.y * width * length * across);
+        b.fan(base + 0.5f * length * along, outline, shape);
+    }
+}
+
+// Lantana's leaf: ovate, its margin toothed (every other point of the outline set in).
+std::vector<glm::vec2> serrateOutline(std::uint32_t pointsPerSide) {
+    std::vector<glm::vec2> outline = bladeOutline(ovateHalfWidth, pointsPerSide);
+    for (size_t i = 1; i < outline.size(); ++i)
+        if (i % 2 == 0 && outline[i].x > 0.08f && outline[i].x < 0.95f) outline[i].y *= 0.86f;
+    return outline;
+}
+
 } // namespace
 
 OrganMeshData buildOrganMeshes() {
@@ -252,7 +289,7 @@ OrganMeshData buildOrganMeshes() {
     data.hulls[kOrganDisc] = data.organs[kOrganDisc];
 
     b.begin();
-    std::array<std::uint32_t, 4> leafTriangles{};
+    std::array<std::uint32_t, kLeafLastShape + 1> leafTriangles{};
     auto count = [&](std::uint32_t shape, std::uint32_t before) {
         leafTriangles[shape] = static_cast<std::uint32_t>(data.indices.size()) / 3 - before;
     };
@@ -268,6 +305,12 @@ OrganMeshData buildOrganMeshes() {
     before = static_cast<std::uint32_t>(data.indices.size()) / 3;
     addCompound(b, static_cast<float>(kLeafCompound));
     count(kLeafCompound, before);
+    before = static_cast<std::uint32_t>(data.indices.size()) / 3;
+    addTrifoliate(b, static_cast<float>(kLeafTrifoliate));
+    count(kLeafTrifoliate, before);
+    before = static_cast<std::uint32_t>(data.indices.size()) / 3;
+    addBlade(b, serrateOutline(24), {0.45f, 0}, static_cast<float>(kLeafSerrate));
+    count(kLeafSerrate, before);
     data.organs[kOrganLeaf] = b.end();
     data.hulls[kOrganLeaf] = data.organs[kOrganLeaf];
 

@@ -129,7 +129,7 @@ PlacedVertex placeVertex(const OrganInstance& o, std::uint32_t kind, const MeshV
 }
 
 std::uint32_t leafShape(const OrganInstance& o) {
-    return std::min(o.shape, kLeafCompound);
+    return std::min(o.shape, kLeafLastShape);
 }
 
 const char* organKindName(std::uint32_t kind) {
@@ -157,6 +157,10 @@ const char* leafShapeName(std::uint32_t shape) {
         return "ovate";
     case kLeafCordate:
         return "cordate";
+    case kLeafTrifoliate:
+        return "trifoliate";
+    case kLeafSerrate:
+        return "serrate";
     default:
         return "compound";
     }
@@ -178,7 +182,7 @@ const OrganMesh& OrganMeshSet::mesh(std::uint32_t kind, std::uint32_t shape) con
     if (kind >= kOrganKinds) {
         throw std::out_of_range("organ kind " + std::to_string(kind) + " has no mesh");
     }
-    return kind == kOrganLeaf ? leaves_[std::min(shape, kLeafCompound)] : kinds_[kind];
+    return kind == kOrganLeaf ? leaves_[std::min(shape, kLeafLastShape)] : kinds_[kind];
 }
 
 const OrganMesh& OrganMeshSet::forInstance(const OrganInstance& o) const {

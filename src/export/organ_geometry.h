@@ -33,7 +33,7 @@ std::uint32_t leafShape(const shared::OrganInstance& o);
 const char* organKindName(std::uint32_t kind);
 const char* leafShapeName(std::uint32_t shape);
 
-inline constexpr std::uint32_t kLeafShapes = shared::kLeafCompound + 1;
+inline constexpr std::uint32_t kLeafShapes = shared::kLeafLastShape + 1;
 
 // The triangles one instance draws and only the vertices they use, in organ-local coordinates.
 struct OrganMesh {

@@ -56,9 +56,11 @@ std::vector<glm::vec4> defaultPalette() {
 
 uint32_t leafShapeOf(const std::string& name) {
     std::string n = lower(name);
-    if (mentions(n, {"cord", "heart", "oxalis", "clover"})) return shared::kLeafCordate;
+    if (mentions(n, {"oxalis", "clover", "trifol", "shamrock"})) return shared::kLeafTrifoliate;
+    if (mentions(n, {"cord", "heart"})) return shared::kLeafCordate;
     if (mentions(n, {"lanc", "grass", "narrow", "needle", "blade"})) return shared::kLeafLanceolate;
-    if (mentions(n, {"comp", "pinna", "fern", "rosa"})) return shared::kLeafCompound;
+    if (mentions(n, {"comp", "pinna", "fern", "rosa", "rose"})) return shared::kLeafCompound;
+    if (mentions(n, {"lantan", "serr", "tooth", "nettle"})) return shared::kLeafSerrate;
     return shared::kLeafOvate;
 }
 

@@ -129,8 +129,8 @@ TEST(OrganMeshesTest, LeafBladesLieInTheHeadingLeftPlaneFacingUp) {
         EXPECT_GT(glm::cross(p[1] - p[0], p[2] - p[0]).z, 0.0f) << "triangle " << t << " faces down";
         ++trianglesPerShape[shape];
     }
-    ASSERT_EQ(trianglesPerShape.size(), 4u);
-    for (std::uint32_t shape = 0; shape < 4; ++shape) {
+    ASSERT_EQ(trianglesPerShape.size(), shared::kLeafLastShape + 1);
+    for (std::uint32_t shape = 0; shape <= shared::kLeafLastShape; ++shape) {
         EXPECT_GT(trianglesPerShape[static_cast<int>(shape)], 8u) << "shape " << shape;
         EXPECT_LE(trianglesPerShape[static_cast<int>(shape)], d.castingTriangles[shared::kOrganLeaf]);
     }

@@ -7,6 +7,7 @@
 #include "grammar_text.h"
 #include "turtle/turtle_commands.h"
 #include "turtle/turtle_cpu.h"
+#include "turtle/turtle_settings.h"
 
 namespace {
 
@@ -29,6 +30,16 @@ void expectNear(glm::vec3 got, glm::vec3 want) {
     EXPECT_NEAR(got.x, want.x, 1e-5f);
     EXPECT_NEAR(got.y, want.y, 1e-5f);
     EXPECT_NEAR(got.z, want.z, 1e-5f);
+}
+
+TEST(TurtleCpu, LeafShapesComeFromTheSurfacesName) {
+    // The seed species by the names their scenes give them.
+    EXPECT_EQ(turtle::leafShapeOf("Oxalis corniculata"), shared::kLeafTrifoliate);
+    EXPECT_EQ(turtle::leafShapeOf("Rose Rugosa"), shared::kLeafCompound);
+    EXPECT_EQ(turtle::leafShapeOf("Lantan camara"), shared::kLeafSerrate);
+    EXPECT_EQ(turtle::leafShapeOf("heart"), shared::kLeafCordate);
+    EXPECT_EQ(turtle::leafShapeOf("grass blade"), shared::kLeafLanceolate);
+    EXPECT_EQ(turtle::leafShapeOf("leaf"), shared::kLeafOvate);
 }
 
 TEST(TurtleCpu, TurnsLeftTowardMinusXAndJoinsSegments) {

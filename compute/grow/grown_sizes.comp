@@ -72,7 +72,8 @@ void growSegment(uint i, uint plant, uint species) {
     if ((symbols[i] >> kSymbolBits) > 0u) {
         params[pc.stride * i] *= grown;
     } else {
-        params[pc.stride * i] = uintBitsToFloat(speciesWords[species * kSpeciesGrowthWords + kSpeciesSegmentStep]) * grown;
+        float step = uintBitsToFloat(speciesWords[species * kSpeciesGrowthWords + kSpeciesSegmentStep]);
+        params[pc.stride * i] = step * grown;
         symbols[i] = sym | (1u << kSymbolBits);
     }
 }

@@ -224,9 +224,8 @@ void runRun(RunArgs args) {
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::printf("%s: %u plants grown for %.1f s in %llu ticks, %llu modules, %.2f s -> %s\n",
                 args.simulation.file.c_str(), simulation.standingPlants(), simulation.time(),
-                static_cast<unsigned long long>(ticks - firstTick), static_cast<unsigned long long>(simulation.modules()),
-                seconds,
-                out.string().c_str());
+                static_cast<unsigned long long>(ticks - firstTick),
+                static_cast<unsigned long long>(simulation.modules()), seconds, out.string().c_str());
 }
 
 } // namespace
@@ -240,15 +239,20 @@ void registerRunCommand(CLI::App& app, CommandContext& ctx) {
                                 kDefaultSceneName, kDefaultScenePlants));
     cmd->add_option("--time", args->time, "simulated seconds (default: until every plant has grown)")
         ->check(CLI::Range(0.0, 1e9));
-    CLI::Option* dt = cmd->add_option("--dt", s.dt, "simulated seconds per tick (default 1)")->check(CLI::Range(1e-3, 1e6));
+    CLI::Option* dt =
+        cmd->add_option("--dt", s.dt, "simulated seconds per tick (default 1)")->check(CLI::Range(1e-3, 1e6));
     cmd->add_option("--frames", args->frames, "write a PNG frame every N ticks (default: the last frame only)");
     cmd->add_option("--out", args->out, "folder of the outputs (default: run)");
-    CLI::Option* seed = cmd->add_option("--seed", s.seed, "seed of the random streams (default: the file's seed, else 0)")
-        ->check(CLI::Range(int64_t(0), int64_t(UINT32_MAX)));
-    CLI::Option* plants = cmd->add_option("--plants", s.plants, "plants in the field; a scene's species take turns (default: the scene's)")
-        ->check(CLI::Range(1u, 1000000u));
-    CLI::Option* spacing = cmd->add_option("--spacing", s.spacing, "distance between plants of a field (default: from a grown plant)")
-        ->check(CLI::Range(0.0f, 1e6f));
+    CLI::Option* seed =
+        cmd->add_option("--seed", s.seed, "seed of the random streams (default: the file's seed, else 0)")
+            ->check(CLI::Range(int64_t(0), int64_t(UINT32_MAX)));
+    CLI::Option* plants =
+        cmd->add_option("--plants", s.plants,
+                        "plants in the field; a scene's species take turns (default: the scene's)")
+            ->check(CLI::Range(1u, 1000000u));
+    CLI::Option* spacing =
+        cmd->add_option("--spacing", s.spacing, "distance between plants of a field (default: from a grown plant)")
+            ->check(CLI::Range(0.0f, 1e6f));
     cmd->add_option("--size", args->size, "image size WIDTHxHEIGHT (default 960x720)");
     cmd->add_option("--camera", args->camera, "azimuth,elevation[,distance] in degrees (default: framed on the field)");
     cmd->add_option("--style", args->style, "lit or toon")->check(CLI::IsMember({"lit", "toon"}));

@@ -52,7 +52,8 @@ std::vector<const turtle::DeviceOrgans*> interpretInParts(const FieldSource& sou
     if (!field.deriver || field.modules <= batchModules) return {&interpretOnDevice(source, field, context)};
     if (!field.turtle) field.turtle = std::make_unique<turtle::GpuTurtle>(context, field.commands, field.turtles);
     const stream::DeviceModules modules = field.deriver->lastString();
-    const std::vector<uint32_t> starts = vk::downloadVector<uint32_t>(context, *modules.plantStarts, modules.plants + 1);
+    const std::vector<uint32_t> starts =
+        vk::downloadVector<uint32_t>(context, *modules.plantStarts, modules.plants + 1);
     // Batches of consecutive plants, each of at most batchModules modules.
     std::vector<std::pair<uint32_t, uint32_t>> batches; // first plant, plants
     for (uint32_t first = 0; first < modules.plants;) {

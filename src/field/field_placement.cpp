@@ -79,8 +79,9 @@ FieldLayout layoutPopulations(const grow::GrowingSpecies& g, uint32_t seed, std:
     };
     uint32_t key = 0;
     for (size_t s = 0; s < species; ++s) {
+        const std::string& name = scene.plants[s].name;
         const bool inPopulation = std::any_of(scene.populations.begin(), scene.populations.end(),
-                                              [&](const ir::EcoPopulation& p) { return p.plant == scene.plants[s].name; });
+                                              [&](const ir::EcoPopulation& p) { return p.plant == name; });
         if (!inPopulation) stands[s].push_back({glm::vec2(NAN), 1.0f, key++});
     }
     for (size_t k = 0; k < scene.populations.size(); ++k) {

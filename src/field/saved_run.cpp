@@ -142,7 +142,8 @@ SavedRun decodeSavedRun(const std::string& bytes, const std::string& name) {
     if (bytes.compare(0, sizeof(kMagic) - 1, kMagic) != 0) r.fail("it does not start as one");
     for (size_t k = 0; k + 1 < sizeof(kMagic); ++k) r.get<char>();
     const uint32_t version = r.get<uint32_t>();
-    if (version != kVersion) r.fail(fmt::format("it is of version {}, this simeco reads version {}", version, kVersion));
+    if (version != kVersion)
+        r.fail(fmt::format("it is of version {}, this simeco reads version {}", version, kVersion));
     SavedRun run;
     SimulationOptions& o = run.options;
     o.file = r.getString();

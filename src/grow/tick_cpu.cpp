@@ -69,9 +69,9 @@ float grownValue(const TickSettings& ts, uint32_t code, const float* p, uint32_t
     const float age = p[shared::kParticleAge];
     const uint32_t klass = std::bit_cast<uint32_t>(p[shared::kParticleClass]);
     const uint32_t id = std::bit_cast<uint32_t>(p[shared::kParticleId]);
-    const float* row = klass < shared::kGrowOrganKinds
-                           ? stageRow(*ts.tables, ir::speciesOfPlant(plant, ts.species), klass, p[shared::kParticleStage])
-                           : nullptr;
+    const uint32_t species = ir::speciesOfPlant(plant, ts.species);
+    const float* row =
+        klass < shared::kGrowOrganKinds ? stageRow(*ts.tables, species, klass, p[shared::kParticleStage]) : nullptr;
     const float living = !row || alive(ts, row, plant, id, age) ? 1.0f : 0.0f;
     if (code >= shared::kGrownLeafColor) {
         const float lifeTime = row ? property(ts, row, plant, id, shared::kLifeTime) : 0.0f;

@@ -28,7 +28,8 @@ std::vector<float> orOnes(const std::vector<float>& values, size_t count) {
 
 GpuGrowth::GpuGrowth(const vk::Context& context, const GrowthTables& tables, const std::vector<float>& deriveTimes,
                      const std::vector<float>& vigour)
-    : context_(context), symbols_(tables.symbols), atSymbol_(tables.atSymbol), tickKernel_(vk::ComputePipeline::embedded(context, "grow/tick")),
+    : context_(context), symbols_(tables.symbols), atSymbol_(tables.atSymbol),
+      tickKernel_(vk::ComputePipeline::embedded(context, "grow/tick")),
       sizesKernel_(vk::ComputePipeline::embedded(context, "grow/grown_sizes")),
       classes_(vk::deviceBufferWith(context, std::span<const uint32_t>(tables.classes))),
       species_(vk::deviceBufferWith(context, std::span<const uint32_t>(tables.species))),

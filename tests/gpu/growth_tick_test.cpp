@@ -136,8 +136,8 @@ TEST_F(GrowthTickTest, TheDeviceShedsAndBendsAsTheReference) {
     // The garden with leaves that live 4 to 9 s and stems that live 9 to 14 s and bend under their weight.
     std::string text = appendAfterEach(gardenText(), "Texture = \"seafloor.bmp\";",
                                        " LifeTime = rand(9.0, 14.0); WeightFactor = 0.1;");
-    for (const char* leaf : {"Texture = \"馬櫻丹.bmp\";", "Texture = \"酢醬草.bmp\";", "Texture = \"玫瑰.bmp\";"})
-        text = appendAfterEach(text, leaf, " LifeTime = rand(4.0, 9.0);");
+    for (const char* species : {"馬櫻丹", "酢醬草", "玫瑰"})
+        text = appendAfterEach(text, fmt::format("Texture = \"{}.bmp\";", species), " LifeTime = rand(4.0, 9.0);");
     const stream::ModuleString drawn = growOnBoth(text);
     // Some stems were shed, some leaves old, some fallen, some bent, as the drawn string says.
     const auto alive = alphabet_.find("alive"), tropism = alphabet_.find("tropism");

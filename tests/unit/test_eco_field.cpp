@@ -136,7 +136,9 @@ TEST(EcoField, PoissonDiskPointsKeepTheirDistanceAndCoverTheRegion) {
     EXPECT_GE(closest, 0.75f * std::sqrt(800.0f / 300.0f) - 1e-4f);
     // Spread over the whole region, not grown from one spot: every quarter holds some.
     for (int q = 0; q < 4; ++q) {
-        const auto inQuarter = [&](glm::vec2 p) { return ((p.x > 5.0f) == bool(q & 1)) && ((p.y > -3.0f) == bool(q & 2)); };
+        const auto inQuarter = [&](glm::vec2 p) {
+            return ((p.x > 5.0f) == bool(q & 1)) && ((p.y > -3.0f) == bool(q & 2));
+        };
         EXPECT_GT(std::count_if(points.begin(), points.end(), inQuarter), 50) << q;
     }
     // The same seed and key give the same points; another key others.

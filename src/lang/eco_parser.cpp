@@ -186,6 +186,12 @@ private:
         if (!(v > 0.0f)) throw ir::InputError(loc, fmt::format("{} must be above 0", property));
         return v;
     }
+    float nonNegative(const std::string& property) {
+        const ir::SourceLoc loc = cur_.loc(cur_.peek());
+        const float v = constant(property);
+        if (!(v >= 0.0f)) throw ir::InputError(loc, fmt::format("{} must not be below 0", property));
+        return v;
+    }
     std::array<float, 3> constantVector(const std::string& property) {
         const ir::EcoVector v = vector(property);
         for (const ir::EcoNumber* n : {&v.x, &v.y, &v.z})
@@ -212,11 +218,9 @@ private:
             if (d[0] == 0.0f && d[1] == 0.0f && d[2] == 0.0f)
                 throw ir::InputError(loc, "SunDirection must not be vector(0, 0, 0)");
         } else if (cur_.atKeyword("SunIntensity")) {
-            property(seen, "SunIntensity", where, [&] { light.sunIntensity = constant("SunIntensity"); });
-            if (*light.sunIntensity < 0.0f) throw ir::InputError(cur_.loc(cur_.peek()), "SunIntensity is below 0");
+            property(seen, "SunIntensity", where, [&] { light.sunIntensity = nonNegative("SunIntensity"); });
         } else if (cur_.atKeyword("SkyLight")) {
-            property(seen, "SkyLight", where, [&] { light.skyLight = constant("SkyLight"); });
-            if (*light.skyLight < 0.0f) throw ir::InputError(cur_.loc(cur_.peek()), "SkyLight is below 0");
+            property(seen, "SkyLight", where, [&] { light.skyLight = nonNegative("SkyLight"); });
         } else if (cur_.atKeyword("GroundSize")) {
             property(seen, "GroundSize", where, [&] { light.groundSize = positive("GroundSize"); });
         } else if (cur_.atKeyword("Population")) {

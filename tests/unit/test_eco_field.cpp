@@ -104,6 +104,7 @@ TEST(EcoField, MalformedFieldItemsReportLineAndColumn) {
         {"box without Max", "  Box \"B\" { Min = vector(1.0, 0.0, 1.0); }\n", 3, 3, "needs Min and Max"},
         {"sun from nowhere", "  SunDirection = vector(0.0, 0.0, 0.0);\n", 3, 3, "must not be vector(0, 0, 0)"},
         {"ground of no size", "  GroundSize = 0.0;\n", 3, 16, "must be above 0"},
+        {"a dark sun", "  SunIntensity = -1.0;\n", 3, 18, "must not be below 0"},
         {"grammar and organs", "  Plant \"B\" { Grammar = \"b.l\"; Stem { } }\n", 3, 41, "no organ or Grow blocks"},
     };
     for (const Malformed& m : cases) {

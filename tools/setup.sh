@@ -9,7 +9,7 @@ packages=(
   build-essential cmake pkg-config git python3
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools spirv-tools
   glslang-tools glslang-dev
-  libglm-dev libglfw3-dev libopenexr-dev libpng-dev
+  libglm-dev libglfw3-dev libopenexr-dev libpng-dev libtinyobjloader-dev
   libgtest-dev libcli11-dev nlohmann-json3-dev libfmt-dev
   gnuplot-nox
   clang libclang-rt-dev

@@ -30,7 +30,8 @@ uint lowerBound(uint k, uint plant) {
 }
 
 float leafArea(OrganInstance o) {
-    if (o.kind == kOrganLeaf) return o.position.w * o.heading.w * shapeArea[min(o.shape, kLeafShapes - 1u)];
+    if (o.kind == kOrganLeaf)
+        return o.shape < uint(shapeArea.length()) ? o.position.w * o.heading.w * shapeArea[o.shape] : 0.0;
     if (o.kind == kOrganTriangle) return 0.5 * length(cross(o.heading.xyz - o.position.xyz, o.up.xyz - o.position.xyz));
     return 0.0;
 }

@@ -65,15 +65,15 @@ OrganVertex organVertex(OrganInstance o, uint kind, vec4 local, vec4 localNormal
         v.position = o.position.xyz + o.heading.w * (local.x * axisA + local.y * axisB);
         v.normal = cross(axisA, axisB);
     } else if (kind == kOrganLeaf) {
-        // The leaf mesh holds every shape; a vertex of another shape collapses onto the base, so its triangles
-        // have no area and draw nothing.
-        uint shape = min(o.shape, kLeafLastShape);
-        v.present = uint(localNormal.w + 0.5) == shape;
+        // The leaf mesh holds every shape (the built-in blades, flat, then any leaf models); a vertex of another
+        // shape collapses onto the base, so its triangles have no area and draw nothing. Length along H, width
+        // across and out of the blade.
+        v.present = uint(localNormal.w + 0.5) == o.shape;
         v.position = o.position.xyz;
         if (v.present) {
-            v.position += local.x * o.position.w * H + local.y * o.heading.w * L;
+            v.position += local.x * o.position.w * H + o.heading.w * (local.y * L + local.z * U);
         }
-        v.normal = U;
+        v.normal = localNormal.x * H + localNormal.y * L + localNormal.z * U;
     } else {
         // kOrganTriangle: the mesh is three vertices numbered by local.x.
         vec3 a = o.position.xyz;

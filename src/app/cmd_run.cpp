@@ -189,7 +189,7 @@ void runRun(RunArgs args) {
     const fs::path out(args.out);
     fs::create_directories(out);
 
-    draw::Renderer renderer(context);
+    draw::Renderer renderer(context, simulation.species().leafModels);
     draw::Bounds framed = simulation.grownBounds();
     if (framed.empty()) framed = draw::Bounds{};
     draw::OutputBatch outputs;

@@ -275,7 +275,7 @@ std::vector<glm::vec2> serrateOutline(std::uint32_t pointsPerSide) {
 
 } // namespace
 
-OrganMeshData buildOrganMeshes() {
+OrganMeshData buildOrganMeshes(const std::vector<ir::LeafModel>& leafModels) {
     using namespace shared;
     OrganMeshData data;
     MeshBuilder b(data);
@@ -311,6 +311,21 @@ OrganMeshData buildOrganMeshes() {
     before = static_cast<std::uint32_t>(data.indices.size()) / 3;
     addBlade(b, serrateOutline(24), {0.45f, 0}, static_cast<float>(kLeafSerrate));
     count(kLeafSerrate, before);
+    std::uint32_t mostModelTriangles = 0;
+    for (std::size_t k = 0; k < leafModels.size(); ++k) {
+        const ir::LeafModel& model = leafModels[k];
+        const float shape = static_cast<float>(kLeafLastShape + 1 + k);
+        for (std::size_t t = 0; t < model.normals.size(); ++t) {
+            const auto& n = model.normals[t];
+            std::uint32_t corner[3];
+            for (std::size_t c = 0; c < 3; ++c) {
+                const auto& p = model.corners[3 * t + c];
+                corner[c] = b.vertex({p[0], p[1], p[2]}, {n[0], n[1], n[2]}, 0, shape);
+            }
+            b.triangle(corner[0], corner[1], corner[2]);
+        }
+        mostModelTriangles = std::max(mostModelTriangles, static_cast<std::uint32_t>(model.normals.size()));
+    }
     data.organs[kOrganLeaf] = b.end();
     data.hulls[kOrganLeaf] = data.organs[kOrganLeaf];
 
@@ -336,12 +351,13 @@ OrganMeshData buildOrganMeshes() {
         data.closedHull[kind] = kind == kOrganStem || kind == kOrganSphere;
         data.castingTriangles[kind] = data.hulls[kind].triangleCount();
     }
-    data.castingTriangles[kOrganLeaf] = *std::max_element(leafTriangles.begin(), leafTriangles.end());
+    data.castingTriangles[kOrganLeaf] =
+        std::max(*std::max_element(leafTriangles.begin(), leafTriangles.end()), mostModelTriangles);
     return data;
 }
 
-OrganMeshes::OrganMeshes(const vk::Context& context)
-    : data_(buildOrganMeshes()), vertices_(context, data_.vertices.size() * sizeof(shared::MeshVertex),
+OrganMeshes::OrganMeshes(const vk::Context& context, const std::vector<ir::LeafModel>& leafModels)
+    : data_(buildOrganMeshes(leafModels)), vertices_(context, data_.vertices.size() * sizeof(shared::MeshVertex),
                                            vk::MemoryUsage::DeviceLocal, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT),
       indices_(context, data_.indices.size() * sizeof(std::uint32_t), vk::MemoryUsage::DeviceLocal,
                VK_BUFFER_USAGE_INDEX_BUFFER_BIT) {

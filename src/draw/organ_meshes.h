@@ -3,6 +3,10 @@
 // that cast their shadows and the ground plane, all in one vertex buffer and one index buffer on the device.
 #pragma once
 
+#include <vector>
+
+#include "ir/leaf_model.h"
+
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -42,14 +46,15 @@ struct OrganMeshData {
 inline constexpr std::uint32_t kStemSides = 12;
 inline constexpr std::uint32_t kStemHullSides = 6;
 
-// The meshes, built on the CPU. Leaf vertices carry their shape (kLeaf*) in normal.w; the four leaf shapes
-// share the leaf kind's range and each instance keeps only the triangles of its own shape.
-OrganMeshData buildOrganMeshes();
+// The meshes, built on the CPU. Leaf vertices carry their shape (kLeaf*) in normal.w; the leaf shapes share the
+// leaf kind's range and each instance keeps only the triangles of its own shape. `leafModels` add shapes after
+// the built-in ones: model k is shape kLeafLastShape + 1 + k.
+OrganMeshData buildOrganMeshes(const std::vector<ir::LeafModel>& leafModels = {});
 
 // The meshes on the device, usable as vertex, index and storage buffers.
 class OrganMeshes {
 public:
-    explicit OrganMeshes(const vk::Context& context);
+    explicit OrganMeshes(const vk::Context& context, const std::vector<ir::LeafModel>& leafModels = {});
 
     const OrganMeshData& data() const { return data_; }
     const vk::Buffer& vertices() const { return vertices_; }

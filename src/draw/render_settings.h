@@ -45,7 +45,8 @@ struct RenderSettings {
     float groundSize = 0.0f; // the side of the ground square, centred under the scene; 0: 5 times its radius
     std::uint32_t toonBands = 3;
     glm::vec3 outlineColor{0.02f, 0.02f, 0.02f};
-    // Shadow volume vertices take 16 bytes each; a scene needing more than this draws the volumes that fit.
+    // Shadow volume vertices take 16 bytes each; a scene needing more than this (or than the device binds in one
+    // storage buffer) draws the volumes that fit.
     std::uint64_t maxShadowVolumeBytes = 256ull << 20;
 };
 

@@ -68,8 +68,8 @@ void requireFeatures(const vk::Context& context) {
 } // namespace
 
 struct Renderer::Resources {
-    explicit Resources(const vk::Context& context)
-        : meshes(context), renderPass(createRenderPass(context)), pipelines(context, renderPass.get()),
+    Resources(const vk::Context& context, const std::vector<ir::LeafModel>& leafModels)
+        : meshes(context, leafModels), renderPass(createRenderPass(context)), pipelines(context, renderPass.get()),
           drawArgs(kernel(context, "organs/draw_args")), shadowVolumes(kernel(context, "shadows/shadow_volumes")),
           toonOutline(kernel(context, "styles/toon_outline")),
           frameConstants(context, sizeof(shared::DrawFrame), vk::MemoryUsage::DeviceLocal,
@@ -112,9 +112,9 @@ CameraView frameCamera(const Bounds& bounds, const RenderSettings& settings) {
     return cameraView(settings.camera.value_or(Camera{}), bounds, aspect);
 }
 
-Renderer::Renderer(const vk::Context& context) : context_(context) {
+Renderer::Renderer(const vk::Context& context, const std::vector<ir::LeafModel>& leafModels) : context_(context) {
     requireFeatures(context);
-    resources_ = std::make_unique<Resources>(context);
+    resources_ = std::make_unique<Resources>(context, leafModels);
 }
 
 Renderer::~Renderer() = default;
@@ -122,7 +122,9 @@ Renderer::~Renderer() = default;
 std::uint32_t Renderer::Resources::volumeVerticesFor(const vk::Context& context, std::uint64_t triangles,
                                                      std::uint64_t maxBytes) {
     std::uint64_t needed = triangles * shared::kVolumeVerticesPerTriangle;
-    std::uint64_t affordable = maxBytes / sizeof(shared::vec4);
+    // The shadow kernel binds the whole buffer: no more than one storage binding holds.
+    std::uint64_t affordable =
+        std::min<std::uint64_t>(maxBytes, context.limits().maxStorageBufferRange) / sizeof(shared::vec4);
     std::uint64_t limit = std::min<std::uint64_t>(affordable, std::numeric_limits<std::uint32_t>::max());
     needed = std::clamp<std::uint64_t>(needed, shared::kVolumeVerticesPerTriangle, limit);
     needed -= needed % shared::kVolumeVerticesPerTriangle;

@@ -21,6 +21,7 @@
 #include "draw/frame.h"
 #include "draw/render_settings.h"
 #include "draw/render_target.h"
+#include "ir/leaf_model.h"
 #include "render/shared/draw_layout.h"
 
 namespace simeco::vk {
@@ -60,7 +61,8 @@ class Renderer {
 public:
     // Builds the meshes, pipelines and kernels once. Throws VulkanError when the device lacks what rendering
     // needs (the attachment formats, drawIndirectFirstInstance, independentBlend, depthClamp).
-    explicit Renderer(const vk::Context& context);
+    // `leafModels`: leaf shapes after the built-in ones (draw::buildOrganMeshes), for leaves drawn from models.
+    explicit Renderer(const vk::Context& context, const std::vector<ir::LeafModel>& leafModels = {});
     ~Renderer();
 
     Renderer(const Renderer&) = delete;

@@ -113,9 +113,10 @@ PlacedVertex placeVertex(const OrganInstance& o, std::uint32_t kind, const MeshV
         v.present = static_cast<std::uint32_t>(local.normal.w + 0.5f) == leafShape(o);
         v.position = xyz(o.position);
         if (v.present) {
-            v.position += local.position.x * o.position.w * H + local.position.y * o.heading.w * L;
+            v.position += local.position.x * o.position.w * H +
+                          o.heading.w * (local.position.y * L + local.position.z * U);
         }
-        v.normal = unitOr(U, glm::vec3(0, 1, 0));
+        v.normal = unitOr(local.normal.x * H + local.normal.y * L + local.normal.z * U, glm::vec3(0, 1, 0));
     } else {
         // kOrganTriangle: the mesh is three vertices numbered by local.x.
         glm::vec3 a = xyz(o.position);

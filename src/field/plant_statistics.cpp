@@ -35,16 +35,18 @@ std::array<float, shared::kLeafShapes> measureLeafShapes() {
 
 } // namespace
 
-std::array<float, shared::kLeafShapes> leafShapeAreas() {
-    // The meshes are built once: the CPU reference asks every tick.
-    static const std::array<float, shared::kLeafShapes> areas = measureLeafShapes();
+std::vector<float> leafShapeAreas(const std::vector<ir::LeafModel>& leafModels) {
+    // The built-in meshes are measured once.
+    static const std::array<float, shared::kLeafShapes> builtIn = measureLeafShapes();
+    std::vector<float> areas(builtIn.begin(), builtIn.end());
+    for (const ir::LeafModel& model : leafModels) areas.push_back(model.area);
     return areas;
 }
 
 std::vector<shared::PlantStatistics> plantStatisticsCpu(const turtle::Interpretation& organs,
                                                         const std::vector<float>& baseHeights,
-                                                        const std::vector<shared::ParticleState>& drawnParticles) {
-    const std::array<float, shared::kLeafShapes> shapeAreas = leafShapeAreas();
+                                                        const std::vector<shared::ParticleState>& drawnParticles,
+                                                        const std::vector<float>& shapeAreas) {
     std::vector<shared::PlantStatistics> stats(baseHeights.size(), shared::PlantStatistics{0, 0.0f, 0.0f, 0.0f});
     std::vector<float> top(baseHeights.size(), -1e30f);
     // A kind's instances follow the plants: each plant's are summed in order, as the kernel sums them.
@@ -56,7 +58,7 @@ std::vector<shared::PlantStatistics> plantStatisticsCpu(const turtle::Interpreta
             top[o.plant] = std::max(top[o.plant], turtle::organBounds(o).max.y);
             float area = 0.0f;
             if (o.kind == shared::kOrganLeaf)
-                area = o.position.w * o.heading.w * shapeAreas[std::min(o.shape, shared::kLeafShapes - 1)];
+                area = o.shape < shapeAreas.size() ? o.position.w * o.heading.w * shapeAreas[o.shape] : 0.0f;
             if (o.kind == shared::kOrganTriangle) {
                 const glm::vec3 p(o.position.x, o.position.y, o.position.z);
                 area = 0.5f * glm::length(glm::cross(glm::vec3(o.heading.x, o.heading.y, o.heading.z) - p,
@@ -70,10 +72,9 @@ std::vector<shared::PlantStatistics> plantStatisticsCpu(const turtle::Interpreta
     return stats;
 }
 
-GpuPlantStatistics::GpuPlantStatistics(const vk::Context& context)
+GpuPlantStatistics::GpuPlantStatistics(const vk::Context& context, const std::vector<float>& shapeAreas)
     : context_(context), kernel_(vk::ComputePipeline::embedded(context, "grow/plant_statistics")) {
-    const std::array<float, shared::kLeafShapes> areas = leafShapeAreas();
-    shapeAreas_ = vk::deviceBufferWith(context, std::span<const float>(areas));
+    shapeAreas_ = vk::deviceBufferWith(context, std::span<const float>(shapeAreas));
     const float none = 0.0f;
     noParticles_ = vk::deviceBufferWith(context, std::span<const float>(&none, 1));
 }

@@ -11,6 +11,7 @@
 
 #include "compute/shared/particle_layout.h"
 #include "compute/shared/plant_statistics_layout.h"
+#include "ir/leaf_model.h"
 #include "turtle/interpretation.h"
 #include "turtle/turtle_gpu.h"
 #include "vk/buffer.h"
@@ -18,18 +19,20 @@
 
 namespace simeco::field {
 
-// The area of a leaf blade of each shape at unit length and width: the leaf mesh's (draw/organ_meshes.h).
-std::array<float, shared::kLeafShapes> leafShapeAreas();
+// The area of a leaf blade of each shape at unit length and width: the leaf mesh's (draw/organ_meshes.h), and
+// after the built-in shapes each leaf model's.
+std::vector<float> leafShapeAreas(const std::vector<ir::LeafModel>& leafModels = {});
 
 // `baseHeights`: the height each plant stands at; `drawnParticles`: the drawn string's particle state, one per
-// module (the light), or empty.
+// module (the light), or empty; `shapeAreas`: leafShapeAreas() (a leaf of a shape past them has no area).
 std::vector<shared::PlantStatistics> plantStatisticsCpu(const turtle::Interpretation& organs,
                                                         const std::vector<float>& baseHeights,
-                                                        const std::vector<shared::ParticleState>& drawnParticles);
+                                                        const std::vector<shared::ParticleState>& drawnParticles,
+                                                        const std::vector<float>& shapeAreas);
 
 class GpuPlantStatistics {
 public:
-    explicit GpuPlantStatistics(const vk::Context& context);
+    GpuPlantStatistics(const vk::Context& context, const std::vector<float>& shapeAreas);
     // Records the statistics of the plants `organs` hold, and their copy for the host, into `cmd`.
     // `drawnParticles`: the drawn string's particle state, or null.
     void record(VkCommandBuffer cmd, const turtle::DeviceOrgans& organs, const vk::Buffer* drawnParticles,

@@ -8,6 +8,7 @@
 
 #include "ir/eco_scene.h"
 #include "ir/grammar.h"
+#include "ir/leaf_model.h"
 
 namespace simeco::grow {
 
@@ -15,6 +16,8 @@ struct GrowingSpecies {
     std::unique_ptr<const ir::EcoScene> scene;  // null for a grammar file; ecoPlants point into it
     std::vector<ir::Grammar> species;           // one alphabet (ir::unifySpecies)
     std::vector<const ir::EcoPlant*> ecoPlants; // per species: its plant in the scene, or null
+    // The leaf models its stages name and simeco reads (`.obj`); model k is leaf shape kLeafLastShape + 1 + k.
+    std::vector<ir::LeafModel> leafModels;
     // Whether species s is a SimEco plant whose organs grow as particles (not a grammar file's).
     bool growsOrgans(size_t s) const { return ecoPlants[s] && ecoPlants[s]->grammar.empty(); }
 

@@ -120,6 +120,7 @@ struct ViewSettings {
     struct Surface {
         std::string name, file;
         float scale = 1.0f;
+        std::optional<uint32_t> shape; // the leaf shape that draws it, where a model names it (else its name's)
     };
     std::vector<Surface> surfaces;
     bool present = false;

@@ -32,8 +32,8 @@ float growth(const ir::EcoOrgan& organ, const ir::EcoStage* stage) {
 
 class GeometryBuilder {
 public:
-    GeometryBuilder(const ir::EcoPlant& plant, ir::Grammar& g, EcoDrawing drawing)
-        : plant_(plant), g_(g), drawing_(drawing) {
+    GeometryBuilder(const ir::EcoPlant& plant, ir::Grammar& g, EcoDrawing drawing, const EcoModelShapes* models)
+        : plant_(plant), g_(g), drawing_(drawing), models_(models) {
         // Index 0 stays black and 1 bark-brown, as in simeco's default palette; stage colours follow.
         g_.view.palette = {{0.0f, 0.0f, 0.0f}, {0.20f, 0.11f, 0.05f}, {0.09f, 0.30f, 0.05f}};
     }
@@ -49,13 +49,14 @@ public:
         g_.homomorphism.maxDepth = 1;
         // The leaf surface takes its shape from the plant's name (a rose's leaves are compound, an oxalis's
         // cordate: turtle::leafShapeOf).
-        g_.view.surfaces.push_back({"leaf", plant_.name, 1.0f});
+        g_.view.surfaces.push_back({"leaf", plant_.name, 1.0f, std::nullopt});
     }
 
 private:
     const ir::EcoPlant& plant_;
     ir::Grammar& g_;
     EcoDrawing drawing_;
+    const EcoModelShapes* models_;
     std::map<std::array<float, 3>, int> colorIndex_;
     std::map<int, int> leafShades_; // a mature leaf colour's index: the first of its shades
 
@@ -109,6 +110,22 @@ private:
         return first;
     }
 
+    // The surface a leaf of the stage is drawn with: its Model's where the renderer holds it, else `leaf` (the
+    // built-in blade of the plant's name).
+    std::string leafSurface(const ir::EcoOrgan& organ, const ir::EcoStage* stage) {
+        const std::optional<std::string>* model = nullptr;
+        if (stage && stage->model) model = &stage->model;
+        else if (organ.defaultStage && organ.defaultStage->model) model = &organ.defaultStage->model;
+        if (!models_ || !model) return "leaf";
+        auto it = models_->find(**model);
+        if (it == models_->end()) return "leaf";
+        const std::string name = "leafModel" + std::to_string(it->second);
+        const bool known = std::any_of(g_.view.surfaces.begin(), g_.view.surfaces.end(),
+                                       [&](const ir::ViewSettings::Surface& s) { return s.name == name; });
+        if (!known) g_.view.surfaces.push_back({name, **model, 1.0f, it->second});
+        return name;
+    }
+
     ir::SuccessorModule module(const std::string& name, std::vector<float> args, const ir::SourceLoc& loc) {
         ir::SuccessorModule m;
         m.sym = g_.symbol(name);
@@ -123,7 +140,7 @@ private:
         std::vector<ir::SuccessorModule> out;
         if (kind == EcoOrganKind::Apex) return out;
         if (drawing_ == EcoDrawing::Grown) {
-            grownDrawing(kind, organ, colorOf(organ, stage, kind), loc, out);
+            grownDrawing(kind, organ, colorOf(organ, stage, kind), leafSurface(organ, stage), loc, out);
             return out;
         }
         out.push_back(module(";", {float(colorOf(organ, stage, kind))}, loc));
@@ -161,8 +178,8 @@ private:
     // The drawing at the sizes the particle has grown to: each size a code the growth simulation replaces. Stems
     // bend (`tropism`) only where a stage sets Geotropism or WeightFactor, and are shed (`alive`) only where one
     // sets a LifeTime, so that plants without them draw no more modules.
-    void grownDrawing(EcoOrganKind kind, const ir::EcoOrgan& organ, int color, const ir::SourceLoc& loc,
-                      std::vector<ir::SuccessorModule>& out) {
+    void grownDrawing(EcoOrganKind kind, const ir::EcoOrgan& organ, int color, const std::string& surface,
+                      const ir::SourceLoc& loc, std::vector<ir::SuccessorModule>& out) {
         auto code = [](uint32_t c) { return shared::kGrownValue - float(c); };
         std::optional<int> shades = kind == EcoOrganKind::Leaf ? leafShadesOf(color) : std::nullopt;
         out.push_back(module(";", {shades ? code(shared::kGrownLeafColor + uint32_t(*shades)) : float(color)}, loc));
@@ -172,7 +189,8 @@ private:
             out.push_back(module("!", {code(shared::kGrownWidth)}, loc));
             if (anySet(organ, &ir::EcoStage::geotropism) || anySet(organ, &ir::EcoStage::weightFactor))
                 out.push_back(module("tropism", {code(shared::kGrownBend)}, loc));
-            if (anySet(organ, &ir::EcoStage::lifeTime)) out.push_back(module("alive", {code(shared::kGrownAlive)}, loc));
+            if (anySet(organ, &ir::EcoStage::lifeTime))
+                out.push_back(module("alive", {code(shared::kGrownAlive)}, loc));
             out.push_back(module("rotu", {code(shared::kGrownRoll)}, loc));
             out.push_back(module("rotr", {code(shared::kGrownPitch)}, loc));
             out.push_back(module("rotu", {code(shared::kGrownUnroll)}, loc));
@@ -180,7 +198,7 @@ private:
             break;
         case EcoOrganKind::Leaf:
             out.push_back(module("~", {}, loc));
-            out.push_back(module("leaf", {code(shared::kGrownLeafSize)}, loc));
+            out.push_back(module(surface, {code(shared::kGrownLeafSize)}, loc));
             break;
         case EcoOrganKind::Flower:
         case EcoOrganKind::Fruit:
@@ -240,8 +258,9 @@ private:
 
 } // namespace
 
-void addEcoOrganGeometry(const ir::EcoPlant& plant, ir::Grammar& g, EcoDrawing drawing) {
-    GeometryBuilder(plant, g, drawing).build();
+void addEcoOrganGeometry(const ir::EcoPlant& plant, ir::Grammar& g, EcoDrawing drawing,
+                         const EcoModelShapes* models) {
+    GeometryBuilder(plant, g, drawing, models).build();
 }
 
 } // namespace simeco::lang

@@ -3,6 +3,10 @@
 // (the growth simulation) or at those its stage reaches at the end of its GrowTime (a derivation alone).
 #pragma once
 
+#include <cstdint>
+#include <map>
+#include <string>
+
 #include "ir/eco_scene.h"
 #include "ir/grammar.h"
 
@@ -25,8 +29,12 @@ namespace simeco::lang {
 // geotropism and weight, and is shed with the rest of its branch once its LifeTime has passed; a leaf's colour
 // follows its age (young, mature, old):
 //   stem S, root R:  ;(colour) !(width) [tropism(bend)] [alive(a)] rotu(roll) rotr(pitch) rotu(-roll) G(length)
+// `models`: a stage's Model, as the script writes it, and the leaf shape that draws the model (a leaf model the
+// renderer holds, lang/obj_leaf_model.h): a leaf of such a stage is drawn with it; others with the built-in blade.
 enum class EcoDrawing { Final, Grown };
-void addEcoOrganGeometry(const ir::EcoPlant& plant, ir::Grammar& g, EcoDrawing drawing = EcoDrawing::Final);
+using EcoModelShapes = std::map<std::string, uint32_t>;
+void addEcoOrganGeometry(const ir::EcoPlant& plant, ir::Grammar& g, EcoDrawing drawing = EcoDrawing::Final,
+                         const EcoModelShapes* models = nullptr);
 
 inline constexpr float kEcoDefaultGrowTime = 1.0f;
 inline constexpr float kEcoDefaultStemLength = 1.0f;

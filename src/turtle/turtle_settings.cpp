@@ -93,7 +93,7 @@ TurtleSettings turtleSettings(const ir::Grammar& grammar, const ir::Alphabet& al
         for (const ir::ViewSettings::Surface& surface : v.surfaces) {
             if (surface.name != id) continue;
             t.surfaceScale[s] = surface.scale;
-            t.surfaceShape[s] = leafShapeOf(surface.file + " " + id);
+            t.surfaceShape[s] = surface.shape ? *surface.shape : leafShapeOf(surface.file + " " + id);
         }
     }
     return t;

@@ -71,6 +71,22 @@ TEST_F(ShadowTest, TallStemShadowsTheGroundOnTheFarSideOnly) {
     }
 }
 
+// A frame made ready for more shadow volumes than one storage binding holds gets no more room than that binding:
+// the shadow kernel binds the whole buffer (any validation message fails the test), and the shadow still falls.
+TEST_F(ShadowTest, ShadowVolumesNeverOutgrowABinding) {
+    TestScene scene = uploadScene(context(), {makeStem({0, 0, 0}, {0, 1, 0}, {0, 0, 1}, 2.0f, 0.1f, 0, 1)});
+    draw::RenderSettings s = sideLitSettings(draw::Shadows::Volume);
+    s.maxShadowVolumeBytes = uint64_t(context().limits().maxStorageBufferRange) * 4;
+    draw::Renderer& r = renderer();
+    const draw::FrameSetup setup = r.prepareWithin(400'000, scene.bounds, s);
+    const draw::RenderTarget& target = r.offscreenTarget(s.width, s.height);
+    context().submitAndWait([&](VkCommandBuffer cmd) { r.record(cmd, target, scene.instances, scene.table, setup); });
+    const Frame frame = r.readBack(target, setup);
+    const draw::CameraView view = draw::frameCamera(scene.bounds, s);
+    const float g = scene.bounds.min.y;
+    EXPECT_LT(luminanceAt(frame, view, {1.5f, g, 0}), 0.6f * luminanceAt(frame, view, {1.5f, g, -0.6f}));
+}
+
 TEST_F(ShadowTest, StemShadowsAnOrganInItsWayAndTheSunSideOfItselfIsLit) {
     // A horizontal disc of another plant at half height on the shadow's side, and the stem itself.
     std::vector<OrganInstance> organs{makeStem({0, 0, 0}, {0, 1, 0}, {0, 0, 1}, 2.0f, 0.1f, 0, 1),

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -177,6 +179,47 @@ TEST_F(SimulationTest, PopulationsStandInTheirRegionsWithEmptySlotsAndObstacles)
     }
     EXPECT_GT(highest, 1.05f * lowest);
     EXPECT_LT(highest, 1.4f / 0.6f * lowest + 1e-3f);
+}
+
+TEST_F(SimulationTest, LeavesOfAModelAreDrawnAndMeasuredWithIt) {
+    // A diamond leaf model two units long and one wide (a quarter of its square of length), beside the scene.
+    const std::filesystem::path folder = std::filesystem::temp_directory_path() / "simeco-model-leaf-test";
+    std::filesystem::create_directories(folder);
+    std::ofstream(folder / "diamond.obj") << "v 0 0 0\nv 1 -0.5 0\nv 2 0 0\nv 1 0.5 0\nf 1 2 3\nf 1 3 4\n";
+    field::SimulationOptions options;
+    options.file = (folder / "model.eco").string();
+    options.sceneText = R"(EcoSystem 1.0 "Model" {
+        Plant "Herb" {
+            Stem { Default { GrowRate = 1.0; GrowTime = 1.0; BroadenRate = 0.1; } }
+            Leaf { Default { Model = "diamond.obj"; } }
+            Grow { w = S(0)[rotr(1.2)L(0)]; }
+        }
+    })";
+    options.seed = 1;
+    field::Simulation gpu(options, &context());
+    options.backend = field::Backend::Cpu;
+    field::Simulation cpu(options, &context());
+    ASSERT_EQ(gpu.species().leafModels.size(), 1u);
+    for (int tick = 0; tick < 4; ++tick) gpu.tick(), cpu.tick(); // past the leaf's first DeriveTime: unfolded
+    const std::vector<const turtle::DeviceOrgans*> parts = gpu.interpretParts();
+    cpu.interpret();
+    // The leaf model's size is 3 units long: a quarter of 3 x 3.
+    EXPECT_NEAR(gpu.statistics()[0].leafArea, 0.25f * 9.0f, 1e-4f);
+    EXPECT_NEAR(cpu.statistics()[0].leafArea, 0.25f * 9.0f, 1e-4f);
+    // Drawn with the model's triangles: the leaf shows.
+    draw::Renderer renderer(context(), gpu.species().leafModels);
+    draw::RenderSettings settings;
+    settings.width = 160;
+    settings.height = 120;
+    settings.shadows = draw::Shadows::None;
+    const turtle::Interpretation drawn = turtle::readBack(context(), *parts.front(), 1);
+    ASSERT_EQ(drawn.count[shared::kOrganLeaf], 1u);
+    const uint32_t leaf = drawn.organs[drawn.first[shared::kOrganLeaf]].module;
+    EXPECT_EQ(drawn.organs[drawn.first[shared::kOrganLeaf]].shape, shared::kLeafLastShape + 1);
+    const draw::Frame frame =
+        renderer.render(field::organParts(parts), draw::Bounds{drawn.bounds.min, drawn.bounds.max}, settings);
+    EXPECT_GT(std::count(frame.organ.begin(), frame.organ.end(), leaf), 100);
+    std::filesystem::remove_all(folder);
 }
 
 } // namespace

@@ -29,6 +29,7 @@ GrownPlants growOneOfEach(const grow::GrowingSpecies& g, const grow::GrowthTable
                           const std::vector<turtle::TurtleSettings>& turtles) {
     stream::DeriveOptions one = derive;
     one.plants = uint32_t(g.species.size());
+    one.absent.clear(); // one plant of each species, whatever slots the field leaves empty
     cpu::SteppedDerivation plants(g.species, one);
     std::vector<float> times(deriveTimes.begin(), deriveTimes.begin() + std::min(deriveTimes.size(), g.species.size()));
     times.resize(one.plants, grow::kDefaultDeriveTime);

@@ -176,13 +176,13 @@ Simulation::Simulation(const SimulationOptions& options, const vk::Context* cont
         warnings = scene.warnings;
         m.g = grow::growingSpecies(std::move(scene), &warnings);
     }
+    m.seed = options.seed >= 0 ? uint32_t(options.seed) : m.g.species.front().seed;
     FieldLayout layout;
     if (hasPopulations(m.g)) {
         if (options.plants)
             throw ir::InputError({options.file, 0, 0},
                                  "the scene places its plants in populations: it takes no count of plants");
-        layout = layoutPopulations(m.g, options.seed >= 0 ? uint32_t(options.seed) : m.g.species.front().seed,
-                                   warnings);
+        layout = layoutPopulations(m.g, m.seed, warnings);
         m.absent = layout.absent;
         m.vigour = layout.vigour;
         m.derive.absent = layout.absent;
@@ -193,7 +193,6 @@ Simulation::Simulation(const SimulationOptions& options, const vk::Context* cont
     m.derive.maxModules = options.maxModules;
     m.derive.maxSeconds = options.maxSeconds;
     m.derive.particles = true;
-    m.seed = options.seed >= 0 ? uint32_t(options.seed) : m.g.species.front().seed;
     m.derive.seed = m.seed;
     m.tables = grow::growthTables(m.g.species, m.g.ecoPlants);
     m.deriveTimes = grow::plantDeriveTimes(m.g.ecoPlants, m.derive.plants, m.seed);

@@ -7,9 +7,9 @@
 
 #include <fmt/format.h>
 
+#include "compute/shared/organ_layout.h"
 #include "ir/source_loc.h"
 #include "ir/species.h"
-#include "compute/shared/organ_layout.h"
 #include "lang/eco_parser.h"
 #include "lang/obj_leaf_model.h"
 #include "lang/load_grammar.h"
@@ -91,16 +91,7 @@ GrowingSpecies growingSpecies(ir::EcoScene parsed, std::vector<ir::EcoWarning>* 
             species.push_back(lang::compileEcoPlant(*scene, i, lang::EcoDrawing::Grown, &models));
             continue;
         }
-        // A grammar file beside the scene.
-        const std::filesystem::path path = std::filesystem::path(scene->file).parent_path() / plant.grammar;
-        if (!std::filesystem::is_regular_file(path))
-            throw ir::InputError(plant.grammarLoc, fmt::format("cannot open the grammar file {}", path.string()));
-        const std::string extension = path.extension().string();
-        if (extension != ".l" && extension != ".lsys")
-            throw ir::InputError(plant.grammarLoc, fmt::format("a plant's Grammar is a cpfg .l or quick .lsys file, "
-                                                               "not {}",
-                                                               path.string()));
-        species.push_back(lang::loadSpecies(path.string(), warnings).front());
+        species.push_back(lang::loadScenePlantGrammar(*scene, plant, warnings));
     }
     g.species = ir::unifySpecies(std::move(species));
     for (const ir::EcoPlant& plant : scene->plants)

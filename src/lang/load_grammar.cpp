@@ -53,6 +53,18 @@ ir::Grammar loadCpfgModel(const std::string& path) {
 
 } // namespace
 
+ir::Grammar loadScenePlantGrammar(const ir::EcoScene& scene, const ir::EcoPlant& plant,
+                                  std::vector<ir::EcoWarning>* warnings) {
+    const fs::path path = fs::path(scene.file).parent_path() / plant.grammar;
+    const std::string extension = path.extension().string();
+    if (extension != ".l" && extension != ".lsys")
+        throw ir::InputError(plant.grammarLoc,
+                             fmt::format("a plant's Grammar is a cpfg .l or quick .lsys file, not {}", path.string()));
+    if (!fs::is_regular_file(path))
+        throw ir::InputError(plant.grammarLoc, fmt::format("cannot open the grammar file {}", path.string()));
+    return loadSpecies(path.string(), warnings).front();
+}
+
 std::vector<ir::Grammar> loadSpecies(const std::string& path, std::vector<ir::EcoWarning>* warnings) {
     std::string ext = fs::path(path).extension().string();
     std::vector<ir::Grammar> species;
@@ -60,7 +72,9 @@ std::vector<ir::Grammar> loadSpecies(const std::string& path, std::vector<ir::Ec
         ir::EcoScene scene = parseEcoFile(path);
         if (warnings) warnings->insert(warnings->end(), scene.warnings.begin(), scene.warnings.end());
         if (scene.plants.empty()) throw ir::InputError(scene.loc, "the scene has no plant");
-        for (size_t i = 0; i < scene.plants.size(); ++i) species.push_back(compileEcoPlant(scene, i));
+        for (size_t i = 0; i < scene.plants.size(); ++i)
+            species.push_back(scene.plants[i].grammar.empty() ? compileEcoPlant(scene, i)
+                                                               : loadScenePlantGrammar(scene, scene.plants[i], warnings));
     } else if (ext == ".lsys") {
         species.push_back(parseQuickGrammar(readSourceFile(path), path));
     } else if (ext == ".l") {

@@ -14,6 +14,10 @@ namespace simeco::lang {
 // SimEco scene, one grammar per plant (species) of the scene, its warnings added to `warnings` when given.
 std::vector<ir::Grammar> loadSpecies(const std::string& path, std::vector<ir::EcoWarning>* warnings = nullptr);
 
+// The grammar of a scene's plant that names a Grammar file (relative to the scene's folder).
+ir::Grammar loadScenePlantGrammar(const ir::EcoScene& scene, const ir::EcoPlant& plant,
+                                  std::vector<ir::EcoWarning>* warnings = nullptr);
+
 // The first of loadSpecies(path): the grammar of an `.l` or `.lsys` file, or an `.eco` scene's first plant.
 ir::Grammar loadGrammarFile(const std::string& path);
 

@@ -3,6 +3,8 @@
 // population's plants stand on.
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -11,7 +13,9 @@
 #include <gtest/gtest.h>
 
 #include "field/ground_samples.h"
+#include "grow/growing_species.h"
 #include "lang/eco_parser.h"
+#include "lang/load_grammar.h"
 
 namespace simeco {
 namespace {
@@ -118,6 +122,31 @@ TEST(EcoField, MalformedFieldItemsReportLineAndColumn) {
             EXPECT_NE(std::string(e.what()).find(m.message), std::string::npos) << e.formatted();
         }
     }
+}
+
+TEST(EcoField, AGrammarPlantIsItsFilesGrammarWhereverTheSceneIsRead) {
+    const std::filesystem::path folder = std::filesystem::temp_directory_path() / "simeco-grammar-plant-test";
+    std::filesystem::create_directories(folder);
+    std::ofstream(folder / "bush.l") << "Lsystem: 1\nderivation length: 2\nAxiom: F(1)A\nA --> F(1)[+A]A\nendlsystem\n";
+    std::ofstream(folder / "scene.eco") << withItems("  Plant \"Bush\" { Grammar = \"bush.l\"; }\n");
+    std::ofstream(folder / "broken.eco") << withItems("  Plant \"Bush\" { Grammar = \"gone.l\"; }\n");
+    // As `simeco derive` and `render` read it, and as `simeco run` grows it.
+    const std::vector<ir::Grammar> species = lang::loadSpecies((folder / "scene.eco").string());
+    const grow::GrowingSpecies growing = grow::loadGrowingSpecies((folder / "scene.eco").string());
+    for (const ir::Grammar* bush : {&species.at(1), &growing.species.at(1)}) {
+        EXPECT_EQ(bush->axiom.size(), 2u);
+        EXPECT_EQ(bush->derivationLength, 2);
+        EXPECT_TRUE(bush->productions.present);
+    }
+    EXPECT_FALSE(growing.growsOrgans(1));
+    try {
+        lang::loadSpecies((folder / "broken.eco").string());
+        ADD_FAILURE() << "a missing grammar file was read";
+    } catch (const ir::InputError& e) {
+        EXPECT_EQ(e.loc().line, 3) << e.formatted();
+        EXPECT_NE(std::string(e.what()).find("cannot open the grammar file"), std::string::npos) << e.formatted();
+    }
+    std::filesystem::remove_all(folder);
 }
 
 bool inside(const field::GroundRect& r, glm::vec2 p) {

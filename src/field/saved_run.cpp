@@ -52,7 +52,8 @@ public:
         const uint64_t count = get<uint64_t>();
         if (count > (bytes_.size() - at_) / sizeof(T)) fail("it is truncated");
         std::vector<T> values(count);
-        std::memcpy(values.data(), take(count * sizeof(T)), count * sizeof(T));
+        const char* bytes = take(count * sizeof(T));
+        if (count > 0) std::memcpy(values.data(), bytes, count * sizeof(T));
         return values;
     }
     std::string getString() {

@@ -199,17 +199,21 @@ void addBlade(MeshBuilder& b, const std::vector<glm::vec2>& outline, glm::vec2 c
     b.fan(centre, outline, shape);
 }
 
+// A leaf's stalk (a rachis, a petiole): a strip along the midrib from the base to `end`.
+void addStalk(MeshBuilder& b, float end, float halfWidth, float shape) {
+    const glm::vec3 normal(0, 0, 1);
+    std::uint32_t s0 = b.vertex({0, -halfWidth, 0}, normal, 0, shape);
+    std::uint32_t s1 = b.vertex({end, -halfWidth, 0}, normal, 0, shape);
+    std::uint32_t s2 = b.vertex({end, halfWidth, 0}, normal, 0, shape);
+    std::uint32_t s3 = b.vertex({0, halfWidth, 0}, normal, 0, shape);
+    b.triangle(s0, s1, s2);
+    b.triangle(s0, s2, s3);
+}
+
 // A pinnate compound leaf: a rachis with two pairs of leaflets and a terminal one.
 void addCompound(MeshBuilder& b, float shape) {
-    const glm::vec3 normal(0, 0, 1);
     const float rachisEnd = 0.62f;
-    const float rachisHalfWidth = 0.03f;
-    std::uint32_t r0 = b.vertex({0, -rachisHalfWidth, 0}, normal, 0, shape);
-    std::uint32_t r1 = b.vertex({rachisEnd, -rachisHalfWidth, 0}, normal, 0, shape);
-    std::uint32_t r2 = b.vertex({rachisEnd, rachisHalfWidth, 0}, normal, 0, shape);
-    std::uint32_t r3 = b.vertex({0, rachisHalfWidth, 0}, normal, 0, shape);
-    b.triangle(r0, r1, r2);
-    b.triangle(r0, r2, r3);
+    addStalk(b, rachisEnd, 0.03f, shape);
 
     struct Leaflet {
         glm::vec2 base;
@@ -239,15 +243,8 @@ void addCompound(MeshBuilder& b, float shape) {
 // Oxalis' leaf: a long petiole and, at its end, three obcordate leaflets (notched at their tips) spread like
 // a clover's.
 void addTrifoliate(MeshBuilder& b, float shape) {
-    const glm::vec3 normal(0, 0, 1);
     const float petioleEnd = 0.58f;
-    const float petioleHalfWidth = 0.018f;
-    std::uint32_t p0 = b.vertex({0, -petioleHalfWidth, 0}, normal, 0, shape);
-    std::uint32_t p1 = b.vertex({petioleEnd, -petioleHalfWidth, 0}, normal, 0, shape);
-    std::uint32_t p2 = b.vertex({petioleEnd, petioleHalfWidth, 0}, normal, 0, shape);
-    std::uint32_t p3 = b.vertex({0, petioleHalfWidth, 0}, normal, 0, shape);
-    b.triangle(p0, p1, p2);
-    b.triangle(p0, p2, p3);
+    addStalk(b, petioleEnd, 0.018f, shape);
     // The cordate outline reversed along its midrib: narrow at the petiole, notched at the tip.
     std::vector<glm::vec2> obcordate = cordateOutline(24);
     float reach = 0.0f; // the lobes reach past the notch: the leaflet spans [0, reach] before it is scaled

@@ -13,8 +13,8 @@
 namespace simeco::field {
 
 // The modules one interpretation by the turtle kernels takes: half of what the turtle's largest per-module
-// buffer (TurtleStep) holds in the smallest storage binding Vulkan guarantees (2^27 bytes). Fixed, so that a
-// field is cut alike on every device.
+// buffer (TurtleStep) holds in the smallest storage binding Vulkan guarantees (2^27 bytes), so that a batch
+// planned by its plants' sizes may still grow. Fixed, so that a field is cut alike on every device.
 inline constexpr uint64_t kBatchModules = (uint64_t(1) << 27) / sizeof(shared::TurtleStep) / 2;
 
 // The field's organs on the device, in parts: as interpretOnDevice() writes them where the field takes one

@@ -38,9 +38,10 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
-// The drawn modules a batch of plants may hold, by the grown plants' count: one interpretation's (kBatchModules),
-// half of it left to plants that grow larger than the one grown before the field.
-constexpr uint64_t kBatchDrawnModules = kBatchModules / 2;
+// The drawn modules a batch of plants may hold, by the grown plants' count: one interpretation's (kBatchModules,
+// half a binding), the other half of the binding left to plants that grow larger than the one grown before the
+// field.
+constexpr uint64_t kBatchDrawnModules = kBatchModules;
 
 // The random streams of batch b: the field's seed for the first, another for each other, so that plants at the
 // same place in two batches differ.

@@ -23,6 +23,7 @@
 #include "app/render_options.h"
 #include "draw/image_writers.h"
 #include "ir/source_loc.h"
+#include "lang/source_text.h"
 #include "draw/renderer.h"
 #include "field/field.h"
 #include "field/saved_run.h"
@@ -134,6 +135,7 @@ void writeText(draw::OutputBatch& outputs, const fs::path& path, const std::stri
     });
 }
 
+// A saved run's bytes.
 std::string readFile(const std::string& path) {
     std::ifstream file(path, std::ios::binary);
     if (!file) throw ir::InputError({path, 0, 0}, "cannot open the file");
@@ -167,7 +169,7 @@ void runRun(RunArgs args) {
     }
     // A scene's text goes into a saved state, so that the state stands alone.
     if (!args.save.empty() && args.simulation.sceneText.empty() && fs::path(args.simulation.file).extension() == ".eco")
-        args.simulation.sceneText = readFile(args.simulation.file);
+        args.simulation.sceneText = lang::readSourceFile(args.simulation.file);
     draw::RenderSettings settings = renderSettings(args.size, args.camera, args.style, args.shadows);
     vk::ContextOptions contextOptions;
     contextOptions.device = args.device;

@@ -39,14 +39,16 @@ float leafArea(OrganInstance o) {
 void main() {
     uint p = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * gl_WorkGroupSize.x + gl_LocalInvocationID.x;
     if (p >= pc.plants) return;
-    PlantStatistics s = PlantStatistics(0u, 0.0, 0.0, 0.0);
+    PlantStatistics s = PlantStatistics(0u, 0u, 0.0, 0.0, 0.0);
     float top = -1e30;
     for (uint k = 0u; k < kOrganKinds; ++k) {
         uint end = lowerBound(k, p + 1u);
         for (uint i = lowerBound(k, p); i < end; ++i) {
             OrganInstance o = instances[i];
             s.organs += 1u;
-            top = max(top, organBox(o).hi.y);
+            Box box = organBox(o);
+            if (any(greaterThan(box.hi, box.lo))) s.living += 1u;
+            top = max(top, box.hi.y);
             float area = leafArea(o);
             s.leafArea += area;
             if (pc.particles != 0u) s.light += area * particles[kParticleStateFloats * o.module + kParticleLight];

@@ -14,6 +14,7 @@ SIMECO_CONST kLeafShapes = kLeafLastShape + 1u; // kLeafLanceolate .. kLeafLastS
 
 struct PlantStatistics {
     uint organs;    // organ instances drawn
+    uint living;    // of them, those not shed: an organ shed at the end of its life is drawn at size 0
     float leafArea; // of its leaf blades (their shape's area at their length and width) and polygon triangles
     float light;    // the light its leaves caught: each leaf's area times its particle's light
     float height;   // the top of its highest organ above its base
@@ -25,6 +26,11 @@ struct PlantStatisticsPush {
     uint pad0;
     uint pad1;
 };
+
+// A plant lives until every organ it drew has been shed (a seed that has drawn nothing yet lives).
+SIMECO_FN bool plantAlive(PlantStatistics s) {
+    return s.organs == 0u || s.living > 0u;
+}
 
 SIMECO_SHARED_END
 

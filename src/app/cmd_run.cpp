@@ -78,11 +78,11 @@ private:
 std::string statsLine(const field::Simulation& simulation, const field::TickReport& report,
                       const std::vector<shared::PlantStatistics>& perPlant) {
     struct Totals {
-        uint32_t plants = 0;
+        uint32_t plants = 0; // alive
         uint64_t organs = 0;
         double leafArea = 0, light = 0;
         void add(const shared::PlantStatistics& s) {
-            ++plants;
+            plants += shared::plantAlive(s) ? 1 : 0;
             organs += s.organs;
             leafArea += s.leafArea;
             light += s.light;
@@ -120,9 +120,8 @@ std::string plantsTable(const field::Simulation& simulation, const std::vector<s
         std::string species = simulation.speciesName(p);
         std::replace(species.begin(), species.end(), '"', '\'');
         const shared::PlantStatistics& s = perPlant[p];
-        // Every plant lives on until competition for light can starve it.
-        csv += fmt::format("{},\"{}\",{:.9g},{:.9g},1,{},{:.9g},{:.9g},{:.9g}\n", row++, species, at.x, at.z,
-                           modules[p], s.height, s.leafArea, s.light);
+        csv += fmt::format("{},\"{}\",{:.9g},{:.9g},{},{},{:.9g},{:.9g},{:.9g}\n", row++, species, at.x, at.z,
+                           shared::plantAlive(s) ? 1 : 0, modules[p], s.height, s.leafArea, s.light);
     }
     return csv;
 }

@@ -47,7 +47,7 @@ std::vector<shared::PlantStatistics> plantStatisticsCpu(const turtle::Interpreta
                                                         const std::vector<float>& baseHeights,
                                                         const std::vector<shared::ParticleState>& drawnParticles,
                                                         const std::vector<float>& shapeAreas) {
-    std::vector<shared::PlantStatistics> stats(baseHeights.size(), shared::PlantStatistics{0, 0.0f, 0.0f, 0.0f});
+    std::vector<shared::PlantStatistics> stats(baseHeights.size(), shared::PlantStatistics{0, 0, 0.0f, 0.0f, 0.0f});
     std::vector<float> top(baseHeights.size(), -1e30f);
     // A kind's instances follow the plants: each plant's are summed in order, as the kernel sums them.
     for (uint32_t k = 0; k < shared::kOrganKinds; ++k)
@@ -55,7 +55,9 @@ std::vector<shared::PlantStatistics> plantStatisticsCpu(const turtle::Interpreta
             const shared::OrganInstance& o = organs.organs[i];
             shared::PlantStatistics& s = stats[o.plant];
             ++s.organs;
-            top[o.plant] = std::max(top[o.plant], turtle::organBounds(o).max.y);
+            const turtle::Bounds box = turtle::organBounds(o);
+            if (glm::any(glm::greaterThan(box.max, box.min))) ++s.living;
+            top[o.plant] = std::max(top[o.plant], box.max.y);
             float area = 0.0f;
             if (o.kind == shared::kOrganLeaf)
                 area = o.shape < shapeAreas.size() ? o.position.w * o.heading.w * shapeAreas[o.shape] : 0.0f;

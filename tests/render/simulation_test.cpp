@@ -56,6 +56,7 @@ TEST_F(SimulationTest, AFieldInBatchesGrowsOnTheDeviceAsOnTheCpu) {
     ASSERT_EQ(a.size(), 12u);
     for (uint32_t p = 0; p < 12; ++p) {
         EXPECT_EQ(a[p].organs, b[p].organs) << p;
+        EXPECT_EQ(a[p].living, b[p].living) << p;
         EXPECT_GT(a[p].organs, 0u) << p;
         EXPECT_NEAR(a[p].leafArea, b[p].leafArea, 1e-4f * std::max(1.0f, b[p].leafArea)) << p;
         EXPECT_NEAR(a[p].height, b[p].height, 1e-4f * size) << p;

@@ -13,6 +13,7 @@
 #include "compute/shared/organ_layout.h"
 #include "compute/shared/particle_layout.h"
 #include "cpu/derive.h"
+#include "field/plant_statistics.h"
 #include "grow/growing_species.h"
 #include "grow/growth_tables.h"
 #include "grow/tick_cpu.h"
@@ -39,7 +40,8 @@ public:
           tables_(grow::growthTables(g_.species, g_.ecoPlants)),
           deriveTimes_(grow::plantDeriveTimes(g_.ecoPlants, 1, 1)), derivation_(g_.species, options()) {}
 
-    std::vector<shared::OrganInstance> after(uint32_t seconds) {
+    std::vector<shared::OrganInstance> after(uint32_t seconds) { return drawnAfter(seconds).organs; }
+    turtle::Interpretation drawnAfter(uint32_t seconds) {
         grow::TickSettings ts{&tables_, 1, 1.0f, 0, 1, g_.relativeGravity()};
         for (; ticks_ < seconds; ++ticks_) {
             ts.tick = ticks_;
@@ -49,8 +51,7 @@ public:
         grow::growSizesCpu(ts, deriveTimes_, drawn);
         const ir::Alphabet& alphabet = g_.species[0].alphabet;
         return turtle::interpretCpu(drawn, turtle::turtleCommands(alphabet),
-                                    {turtle::turtleSettings(g_.species[0], alphabet)}, {})
-            .organs;
+                                    {turtle::turtleSettings(g_.species[0], alphabet)}, {});
     }
     const stream::ModuleString& derived() { return derivation_.current(); }
 
@@ -118,6 +119,29 @@ TEST(GrowthLife, AStemThatDiesIsShedWithItsBranchAndLeavesAgeThenFall) {
     // At 9 s every leaf has fallen.
     for (const shared::OrganInstance& leaf : ofKind(plant.after(9), shared::kOrganLeaf))
         EXPECT_FLOAT_EQ(leaf.position.w, 0.0f);
+}
+
+TEST(GrowthLife, APlantLivesUntilEveryOrganItDrewIsShed) {
+    // The stems live 5 s, the leaf at their base 7 s: the plant is alive until all are shed.
+    GrownPlant plant(scene("Default { GrowRate = 1.0; GrowTime = 10.0; LifeTime = 5.0; }\n",
+                           "Default { GrowRate = 0.1; GrowTime = 10.0; LifeTime = 7.0; }\n", "[ L(0) ] S(0) S(0)"));
+    auto statistics = [&](uint32_t seconds) {
+        return field::plantStatisticsCpu(plant.drawnAfter(seconds), {0.0f}, {}, field::leafShapeAreas()).at(0);
+    };
+    const shared::PlantStatistics young = statistics(3);
+    EXPECT_EQ(young.organs, 3u);
+    EXPECT_EQ(young.living, 3u);
+    EXPECT_TRUE(shared::plantAlive(young));
+    // At 6 s both stems are shed, the leaf not yet; at 8 s nothing is left.
+    const shared::PlantStatistics shedding = statistics(6);
+    EXPECT_EQ(shedding.organs, 3u);
+    EXPECT_EQ(shedding.living, 1u);
+    EXPECT_TRUE(shared::plantAlive(shedding));
+    const shared::PlantStatistics dead = statistics(8);
+    EXPECT_EQ(dead.living, 0u);
+    EXPECT_FALSE(shared::plantAlive(dead));
+    // A seed that has drawn nothing yet lives.
+    EXPECT_TRUE(shared::plantAlive(shared::PlantStatistics{0, 0, 0.0f, 0.0f, 0.0f}));
 }
 
 TEST(GrowthLife, ShootsTurnAgainstGravityAndBendUnderTheirWeight) {

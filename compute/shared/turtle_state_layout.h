@@ -19,6 +19,11 @@ SIMECO_CONST kTurtleWorkgroupSize = 64u;
 // Modules one invocation composes in order before the pointer jumping, which then runs only over the modules
 // that other chunks point at (see chunk_steps.comp).
 SIMECO_CONST kTurtleChunk = 32u;
+// Where the plants stand (TurtlePush::placed): on the grid, each at its PlantPlacement, or scattered about the grid
+// (shared/field_scatter.h).
+SIMECO_CONST kFieldOnGrid = 0u;
+SIMECO_CONST kFieldPlaced = 1u;
+SIMECO_CONST kFieldScattered = 2u;
 SIMECO_CONST kPaletteEntries = 256u;
 
 // The turtle after a module: its frame (heading, left, up), position and scalars.
@@ -113,7 +118,7 @@ struct TurtlePush {
     float spacing;    // field: distance between plants (0: from the widest plant)
     uint organCapacity; // instances the buffer holds: no organ is written past them
     uint maxGroupsX;    // workgroups a dispatch holds along x (level_layout.comp splits larger ones over y)
-    uint placed;        // place: each plant stands at its PlantPlacement (1), else on the grid (0)
+    uint placed;        // place: where the plants stand (kFieldOnGrid, kFieldPlaced, kFieldScattered)
 };
 
 // turtle/organ_merge.comp: one batch's organs into the field's instances.

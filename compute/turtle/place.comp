@@ -1,8 +1,9 @@
-// Turtle, last pass: moves each instance to its plant's place in the field (its PlantPlacement, else its cell of
-// the grid) and grows the table's bounds.
+// Turtle, last pass: moves each instance to its plant's place in the field (its PlantPlacement, its cell of the
+// grid, or its scattered place about that cell) and grows the table's bounds.
 #version 450
 #extension GL_GOOGLE_include_directive : require
 #include "compute/shared/derive_layout.h"
+#include "compute/shared/field_scatter.h"
 #include "compute/shared/turtle_state_layout.h"
 layout(local_size_x = kTurtleWorkgroupSize) in;
 layout(set = 0, binding = 0, std430) readonly buffer Total { uint total; };
@@ -14,13 +15,24 @@ layout(push_constant) uniform Push { TurtlePush pc; };
 #include "compute/turtle/turtle_math.glsl"
 #include "compute/turtle/organ_bounds.glsl"
 
+// turtle/interpretation.cpp's scatteredPlacement.
+PlantPlacement scatteredPlacement(uint plant, uint plants, float spacing) {
+    vec3 cell = fieldCell(plant, plants);
+    float x = (cell.x + fieldScatterOffset(plant, 0u)) * spacing;
+    float z = (cell.z + fieldScatterOffset(plant, 1u)) * spacing;
+    float c = cos(fieldScatterYaw(plant)), s = sin(fieldScatterYaw(plant));
+    return PlantPlacement(vec4(c, 0.0, s, x), vec4(0.0, 1.0, 0.0, 0.0), vec4(-s, 0.0, c, z));
+}
+
 void main() {
     uint s = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * gl_WorkGroupSize.x + gl_LocalInvocationID.x;
     if (s >= min(total, pc.organCapacity)) return;
     OrganInstance o = instances[s];
-    if (pc.placed != 0u) {
+    if (pc.placed != kFieldOnGrid) {
         // A triangle's three vectors are its corners; every other organ's are a point and directions.
-        PlantPlacement m = placements[o.plant];
+        // (Assigned apart: a buffer's struct and a function's are of different SPIR-V types to a `?:`.)
+        PlantPlacement m = scatteredPlacement(o.plant, pc.plants, spacing);
+        if (pc.placed == kFieldPlaced) m = placements[o.plant];
         o.position.xyz = placePoint(m, o.position.xyz);
         if (o.kind == kOrganTriangle) {
             o.heading.xyz = placePoint(m, o.heading.xyz);

@@ -76,6 +76,7 @@ Field deriveField(const FieldSource& source, const vk::Context* context) {
     field.commands = turtle::turtleCommands(alphabet);
     for (const ir::Grammar& g : field.species) field.turtles.push_back(turtle::turtleSettings(g, alphabet));
     field.options.spacing = source.spacing;
+    field.options.scattered = field.plants > 1;
     return field;
 }
 

@@ -66,7 +66,7 @@ std::vector<const turtle::DeviceOrgans*> interpretInParts(const FieldSource& sou
         batches.emplace_back(first, count);
         first += count;
     }
-    // The grid one interpretation would lay: spaced by the first batch's widest plant, unless the source says.
+    // The field one interpretation would lay: spaced by the first batch's widest plant, unless the source says.
     float spacing = field.options.spacing;
     if (spacing <= 0.0f) {
         const auto [first, count] = batches.front();
@@ -81,7 +81,9 @@ std::vector<const turtle::DeviceOrgans*> interpretInParts(const FieldSource& sou
         where.spacing = spacing;
         for (uint32_t p = first; p < first + count; ++p)
             where.placements.push_back(
-                turtle::placementAt(turtle::fieldCell(p, modules.plants) * spacing, {0.0f, 1.0f, 0.0f}, 0.0f));
+                field.options.scattered
+                    ? turtle::scatteredPlacement(p, modules.plants, spacing)
+                    : turtle::placementAt(turtle::fieldCell(p, modules.plants) * spacing, {0.0f, 1.0f, 0.0f}, 0.0f));
         const turtle::DeviceOrgans& organs =
             field.turtle->interpret(slicePlants(context, modules, starts, first, count, field.batch), where);
         field.merge->keep(organs, first, starts[first]);

@@ -7,6 +7,8 @@
 #include <glm/gtc/quaternion.hpp>
 #include <glm/mat3x3.hpp>
 
+#include "compute/shared/field_scatter.h"
+
 namespace simeco::turtle {
 
 glm::vec3 fieldCell(uint32_t plant, uint32_t plants) {
@@ -15,6 +17,15 @@ glm::vec3 fieldCell(uint32_t plant, uint32_t plants) {
     float x = float(plant % columns) - 0.5f * float(columns - 1);
     float z = float(plant / columns) - 0.5f * float(rows - 1);
     return {x, 0.0f, z};
+}
+
+shared::PlantPlacement scatteredPlacement(uint32_t plant, uint32_t plants, float spacing) {
+    // As compute/turtle/place.comp builds it, a turn about y and a move.
+    const glm::vec3 cell = fieldCell(plant, plants);
+    const float x = (cell.x + shared::fieldScatterOffset(plant, 0)) * spacing;
+    const float z = (cell.z + shared::fieldScatterOffset(plant, 1)) * spacing;
+    const float c = std::cos(shared::fieldScatterYaw(plant)), s = std::sin(shared::fieldScatterYaw(plant));
+    return {{c, 0.0f, s, x}, {0.0f, 1.0f, 0.0f, 0.0f}, {-s, 0.0f, c, z}};
 }
 
 float fieldSpacing(const FieldOptions& options, const std::vector<Bounds>& plantBounds) {

@@ -36,14 +36,17 @@ struct Interpretation {
     Bounds bounds;                                     // of everything drawn, in the field
     std::vector<glm::vec3> plantOrigins;               // where each plant stands
     float spacing = 1.0f;                              // between neighbouring plants of the field's grid
+    bool scattered = false;                            // its plants stand scattered about the grid
 };
 
 // How plants stand: each at its placement where there is one per plant; else in rows and columns on the ground
 // (y = 0), `spacing` apart; 0 spaces them by the widest plant's horizontal extent (times 1.2), so that neighbours
-// do not overlap.
+// do not overlap. Without placements, `scattered` loosens the grid: each plant moved within its cell and turned
+// about its own axis (compute/shared/field_scatter.h).
 struct FieldOptions {
     float spacing = 0.0f;
     std::vector<shared::PlantPlacement> placements;
+    bool scattered = false;
 };
 
 // Where a placement puts the plant's base, a direction of the plant's frame, and a point of it.
@@ -62,6 +65,9 @@ shared::PlantPlacement placementAt(glm::vec3 position, glm::vec3 direction, floa
 
 // The grid position of plant p of `plants` in units of spacing: centred on the origin, x across, z along.
 glm::vec3 fieldCell(uint32_t plant, uint32_t plants);
+
+// Where plant p of `plants` stands in a scattered field `spacing` apart (FieldOptions::scattered).
+shared::PlantPlacement scatteredPlacement(uint32_t plant, uint32_t plants, float spacing);
 
 // The spacing FieldOptions asks for, given each plant's own bounds (drawn at the origin).
 float fieldSpacing(const FieldOptions& options, const std::vector<Bounds>& plantBounds);

@@ -347,11 +347,15 @@ Interpretation interpretCpu(const stream::ModuleString& string, const TurtleComm
     const bool placed = !field.placements.empty();
     if (placed && field.placements.size() != plants)
         throw std::invalid_argument("interpretCpu: one placement per plant");
+    result.scattered = !placed && field.scattered;
     for (uint32_t p = 0; p < plants; ++p) {
-        const glm::vec3 origin = placed ? plantOrigin(field.placements[p]) : fieldCell(p, plants) * spacing;
+        const bool turned = placed || result.scattered;
+        const shared::PlantPlacement placement =
+            placed ? field.placements[p] : result.scattered ? scatteredPlacement(p, plants, spacing) : PlantPlacement{};
+        const glm::vec3 origin = turned ? plantOrigin(placement) : fieldCell(p, plants) * spacing;
         result.plantOrigins.push_back(origin);
         for (OrganInstance& o : perPlant[p]) {
-            if (placed) place(o, field.placements[p]);
+            if (turned) place(o, placement);
             else translate(o, origin);
             result.bounds.add(organBounds(o));
             ++result.count[o.kind];

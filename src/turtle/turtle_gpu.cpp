@@ -358,7 +358,7 @@ GpuTurtle::Impl::Run GpuTurtle::Impl::begin(const stream::DeviceModules& m, cons
     run.push.plants = m.plants;
     run.push.stride = m.stride;
     run.push.spacing = options.spacing;
-    run.push.placed = options.placements.empty() ? 0u : 1u;
+    run.push.placed = !options.placements.empty() ? kFieldPlaced : options.scattered ? kFieldScattered : kFieldOnGrid;
     run.groups = setup.groupsFor(m.count);
     run.chunkGroups = setup.groupsFor((std::uint64_t(m.count) + kTurtleChunk - 1) / kTurtleChunk);
     // Chains of targets are at most n long; odd, so that the jumps end in the second buffer of each pair.
@@ -604,6 +604,7 @@ void GpuTurtle::Impl::recordOrgans(VkCommandBuffer cmd, const Run& run, std::uin
 void GpuTurtle::Impl::setPlacements(const turtle::FieldOptions& options, std::uint32_t plants) {
     if (!options.placements.empty() && options.placements.size() != plants)
         throw std::invalid_argument("GpuTurtle: one placement per plant");
+    organs.scattered = options.placements.empty() && options.scattered;
     if (placements && options.placements == organs.placements) return;
     if (!pending.empty()) throw std::logic_error("GpuTurtle: the placements changed while recordings are in flight");
     static const PlantPlacement none{};
@@ -702,6 +703,7 @@ DeviceOrgans uploadOrgans(const vk::Context& context, const turtle::Interpretati
     organs.instances = vk::deviceBufferWith(context, std::span<const OrganInstance>(interpretation.organs));
     organs.table = vk::deviceBufferWith(context, std::span<const OrganTable>(&table, 1));
     organs.field = vk::deviceBufferWith(context, std::span<const float>(&spacing, 1));
+    organs.scattered = interpretation.scattered;
     return organs;
 }
 
@@ -723,8 +725,11 @@ turtle::Interpretation readBack(const vk::Context& context, const DeviceOrgans& 
     }
     result.spacing = spacing;
     for (std::uint32_t p = 0; p < plants; ++p)
-        result.plantOrigins.push_back(p < organs.placements.size() ? turtle::plantOrigin(organs.placements[p])
-                                                                   : turtle::fieldCell(p, plants) * spacing);
+        result.plantOrigins.push_back(
+            p < organs.placements.size() ? turtle::plantOrigin(organs.placements[p])
+            : organs.scattered           ? turtle::plantOrigin(turtle::scatteredPlacement(p, plants, spacing))
+                                         : turtle::fieldCell(p, plants) * spacing);
+    result.scattered = organs.scattered;
     return result;
 }
 

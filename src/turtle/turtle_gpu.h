@@ -44,6 +44,7 @@ struct DeviceOrgans {
     vk::Buffer field; // one float: the spacing of the plants' grid
     std::uint32_t capacity = 0; // instances the buffer holds
     std::vector<shared::PlantPlacement> placements; // where the plants stand, when not on the grid
+    bool scattered = false;                         // without placements: scattered about the grid
 };
 
 // The room a recording that reads nothing back interprets a string in: levels of non-linear modules

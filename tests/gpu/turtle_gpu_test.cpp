@@ -252,6 +252,29 @@ TEST_F(TurtleGpuTest, PlacedPlantsStandWhereTheirPlacementsPutThem) {
     }
 }
 
+// A field without placements, scattered about its grid (turtle::FieldOptions::scattered), on the device as on the CPU.
+TEST_F(TurtleGpuTest, AScatteredFieldStandsAsOnTheCpu) {
+    ir::Grammar g = lang::loadGrammarFile((kGrammars / "abop" / "fig1.24d.l").string());
+    stream::DeriveOptions options;
+    options.plants = 5;
+    options.steps = 3;
+    stream::ModuleString string = cpu::deriveCpu(g, options).string;
+    turtle::TurtleCommands commands = turtle::turtleCommands(g.alphabet);
+    std::vector<turtle::TurtleSettings> species{turtle::turtleSettings(g, g.alphabet)};
+    turtle::FieldOptions field;
+    field.scattered = true;
+    turtle::Interpretation want = turtle::interpretCpu(string, commands, species, field);
+    turtle::GpuTurtle turtle(context(), commands, species);
+    turtle::UploadedModules modules(context(), string);
+    turtle::Interpretation got = turtle::readBack(context(), turtle.interpret(modules.view(), field), 5);
+    EXPECT_EQ(firstDifference(want, got), "");
+    ASSERT_EQ(got.plantOrigins.size(), 5u);
+    for (uint32_t p = 0; p < 5; ++p) {
+        EXPECT_LT(glm::length(got.plantOrigins[p] - want.plantOrigins[p]), 1e-5f) << p;
+        EXPECT_GT(glm::length(want.plantOrigins[p] - turtle::fieldCell(p, 5) * want.spacing), 1e-3f) << p;
+    }
+}
+
 // Derivation and turtle without the host in between: the turtle kernels read the string the derivation
 // kernels left on the device (what `simeco render` does when there is no homomorphism to apply).
 TEST_F(TurtleGpuTest, TheDerivedStringOnTheDeviceMatchesTheCpuTurtle) {

@@ -1,7 +1,10 @@
 // The reference turtle, case by case, with geometry worked out by hand.
 #include <gtest/gtest.h>
+#include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "compute/shared/organ_layout.h"
 #include "grammar_text.h"
@@ -15,13 +18,14 @@ using namespace simeco;
 using simeco::testing::grammarFromText;
 using simeco::testing::lsystem;
 
-turtle::Interpretation interpret(const std::string& text, uint32_t plants = 1) {
+turtle::Interpretation interpret(const std::string& text, uint32_t plants = 1, const turtle::FieldOptions& field = {}) {
     ir::Grammar g = grammarFromText(text);
     stream::DeriveOptions options;
     options.plants = plants;
     options.homomorphism = true;
     stream::DeriveResult r = cpu::deriveCpu(g, options);
-    return turtle::interpretCpu(r.string, turtle::turtleCommands(g.alphabet), {turtle::turtleSettings(g, g.alphabet)});
+    return turtle::interpretCpu(r.string, turtle::turtleCommands(g.alphabet), {turtle::turtleSettings(g, g.alphabet)},
+                                field);
 }
 
 glm::vec3 xyz(const shared::vec4& v) { return {v.x, v.y, v.z}; }
@@ -103,6 +107,36 @@ TEST(TurtleCpu, PlantsStandInAGridSpacedByTheWidestPlant) {
     expectNear(r.plantOrigins[0], {-3, 0, -3});
     expectNear(r.plantOrigins[3], {3, 0, 3});
     EXPECT_EQ(r.organs[3].plant, 3u);
+}
+
+TEST(TurtleCpu, AScatteredFieldMovesEachPlantInItsCellAndTurnsIt) {
+    turtle::FieldOptions field;
+    field.scattered = true;
+    const uint32_t plants = 9;
+    turtle::Interpretation r = interpret(lsystem("+(90)F(4)", "", 0), plants, field);
+    ASSERT_EQ(r.plantOrigins.size(), plants);
+    EXPECT_TRUE(r.scattered);
+    const float spacing = r.spacing;
+    EXPECT_FLOAT_EQ(spacing, 6.0f); // as on the grid: from the widest plant
+    std::vector<float> turns;
+    for (uint32_t p = 0; p < plants; ++p) {
+        // Within 0.3 of the spacing of its cell's centre along x and z, and on the ground.
+        const glm::vec3 cell = turtle::fieldCell(p, plants) * spacing;
+        const glm::vec3 offset = r.plantOrigins[p] - cell;
+        EXPECT_LE(std::abs(offset.x), 0.3f * spacing) << p;
+        EXPECT_LE(std::abs(offset.z), 0.3f * spacing) << p;
+        EXPECT_GT(glm::length(offset), 1e-3f) << p;
+        EXPECT_FLOAT_EQ(offset.y, 0.0f) << p;
+        // Its one segment starts where it stands, still horizontal, turned about the vertical by an angle of its own.
+        const shared::OrganInstance& stem = r.organs[r.first[shared::kOrganStem] + p];
+        ASSERT_EQ(stem.plant, p);
+        expectNear(xyz(stem.position), r.plantOrigins[p]);
+        EXPECT_NEAR(stem.heading.y, 0.0f, 1e-6f) << p;
+        turns.push_back(std::atan2(stem.heading.z, stem.heading.x));
+    }
+    std::sort(turns.begin(), turns.end());
+    EXPECT_EQ(std::adjacent_find(turns.begin(), turns.end(), [](float a, float b) { return b - a < 1e-3f; }),
+              turns.end());
 }
 
 // A generalized cylinder bends along the Hermite curve of the headings at its control points: from the

@@ -19,7 +19,8 @@ SIMECO_CONST kOrganLeaf = 3u;     // ~name: a leaf blade along heading, in the h
 SIMECO_CONST kOrganTriangle = 4u; // one triangle of a filled polygon `{ ... }`; vertices in the three vectors
 SIMECO_CONST kOrganKinds = 5u;
 
-// Leaf blade shapes (OrganInstance.shape for kOrganLeaf), chosen from a surface's name.
+// Surface shapes (OrganInstance.shape for kOrganLeaf, the kind `~` draws), chosen from a surface's name: leaf
+// blades, then blossoms (in the heading's direction, a flower's face turned along it), then any models.
 SIMECO_CONST kLeafLanceolate = 0u;
 SIMECO_CONST kLeafOvate = 1u;
 SIMECO_CONST kLeafCordate = 2u;
@@ -27,6 +28,10 @@ SIMECO_CONST kLeafCompound = 3u;   // pinnate: leaflets in pairs along a rachis 
 SIMECO_CONST kLeafTrifoliate = 4u; // three obcordate leaflets at the end of a long petiole (Oxalis, clover)
 SIMECO_CONST kLeafSerrate = 5u;    // ovate with a toothed margin (Lantana)
 SIMECO_CONST kLeafLastShape = kLeafSerrate;
+SIMECO_CONST kBlossomStar = 6u; // five spreading obovate petals around a yellow eye (Oxalis)
+SIMECO_CONST kBlossomHead = 7u; // a dome of small four-lobed florets, yellow at its centre (Lantana)
+SIMECO_CONST kBlossomRose = 8u; // a cup of rounded petals in three rings (Rosa)
+SIMECO_CONST kSurfaceLastShape = kBlossomRose; // models are shapes kSurfaceLastShape + 1 + k
 // OrganInstance.shape for kOrganDisc: faces the viewer (@o) rather than lying in the heading-left plane (@c).
 SIMECO_CONST kDiscFacesViewer = 1u;
 

@@ -10,7 +10,7 @@
 SIMECO_SHARED_BEGIN
 
 SIMECO_CONST kPlantStatisticsWorkgroupSize = 64u;
-SIMECO_CONST kLeafShapes = kLeafLastShape + 1u; // kLeafLanceolate .. kLeafLastShape
+SIMECO_CONST kSurfaceShapes = kSurfaceLastShape + 1u; // the built-in surfaces: leaf blades and blossoms
 
 struct PlantStatistics {
     uint organs;    // organ instances drawn

@@ -44,6 +44,8 @@ void main() {
         world = v.position;
         outNormal = v.normal;
         outAlbedo = o.color.rgb;
+        if (push.kind == kOrganLeaf)
+            outAlbedo = mix(outAlbedo, vec3(kBlossomEyeRed, kBlossomEyeGreen, kBlossomEyeBlue), inPosition.w);
         outPlant = o.plant;
         outOrgan = o.module;
     }

@@ -19,6 +19,11 @@ struct uvec4 {
 };
 #endif
 
+// The colour of a blossom's eye (linear RGB): the yellow of Oxalis' throat and Lantana's young florets.
+SIMECO_CONST_FLOAT kBlossomEyeRed = 0.92f;
+SIMECO_CONST_FLOAT kBlossomEyeGreen = 0.62f;
+SIMECO_CONST_FLOAT kBlossomEyeBlue = 0.04f;
+
 // DrawPush.kind beyond the organ kinds: the ground plane, which reads no instance.
 SIMECO_CONST kDrawGround = kOrganKinds;
 
@@ -42,7 +47,9 @@ SIMECO_CONST kVolumeVerticesPerTriangle = 12u;
 
 // A vertex of the organ meshes, in organ-local coordinates: x along the heading, y along left, z along up.
 // Stem vertices carry in position.w which ring they belong to (0 bottom, 1 top) and in normal.w 1 for the end
-// caps, so the vertex shader can taper the stem and cut its ends on the joint planes.
+// caps, so the vertex shader can taper the stem and cut its ends on the joint planes. Surface vertices carry
+// their shape in normal.w and in position.w how far their colour turns from the organ's to a blossom's eye
+// (kBlossomEye): 1 for a blossom's yellow centre, else 0.
 struct MeshVertex {
     vec4 position;
     vec4 normal;

@@ -48,6 +48,23 @@ public:
         triangle(middle, previous, first);
     }
 
+    // The same in the plane through `origin` spanned by `a` and `b` (outline point (u, v) at origin + u a + v b),
+    // facing a x b; `tint` goes to every vertex's position.w (MeshVertex).
+    void fanIn(glm::vec3 origin, glm::vec3 a, glm::vec3 b, glm::vec2 centre, std::span<const glm::vec2> outline,
+               float normalW, float tint) {
+        const glm::vec3 normal = glm::normalize(glm::cross(a, b));
+        auto at = [&](glm::vec2 p) { return vertex(origin + p.x * a + p.y * b, normal, tint, normalW); };
+        std::uint32_t middle = at(centre);
+        std::uint32_t first = at(outline[0]);
+        std::uint32_t previous = first;
+        for (std::size_t i = 1; i < outline.size(); ++i) {
+            std::uint32_t next = at(outline[i]);
+            triangle(middle, previous, next);
+            previous = next;
+        }
+        triangle(middle, previous, first);
+    }
+
     MeshRange end() const {
         return {firstIndex_, static_cast<std::uint32_t>(data_.indices.size()) - firstIndex_,
                 static_cast<std::int32_t>(base_)};
@@ -270,6 +287,81 @@ std::vector<glm::vec2> serrateOutline(std::uint32_t pointsPerSide) {
     return outline;
 }
 
+// Blossoms face along +x (the heading: away from the stalk), their unit diameter across y and z. A petal or
+// floret at angle `around` the x axis lies along `radial`, turned `rise` radians up from the y-z plane.
+glm::vec3 radialAt(float around) {
+    return {0.0f, std::cos(around), std::sin(around)};
+}
+glm::vec3 tangentAt(float around) {
+    return {0.0f, -std::sin(around), std::cos(around)};
+}
+
+// A petal from `base` along the radial direction at `around`, risen by `rise` toward +x; outline as bladeOutline's.
+void addPetal(MeshBuilder& b, glm::vec3 base, float around, float rise, float length, float width,
+              const std::vector<glm::vec2>& unit, float shape, float tint) {
+    const glm::vec3 along = std::cos(rise) * radialAt(around) + std::sin(rise) * glm::vec3(1, 0, 0);
+    std::vector<glm::vec2> outline;
+    for (glm::vec2 p : unit) outline.emplace_back(p.x * length, p.y * width);
+    b.fanIn(base, along, tangentAt(around), {0.5f * length, 0.0f}, outline, shape, tint);
+}
+
+// Widest near the tip, rounded: a petal of Oxalis or a rose.
+float obovateHalfWidth(float x) {
+    return 0.5f * std::sin(kPi * std::pow(x, 1.6f));
+}
+float roundHalfWidth(float x) {
+    return 0.5f * std::sin(kPi * std::pow(x, 0.9f));
+}
+
+// Oxalis' flower: five obovate petals spreading from a shallow funnel around a yellow eye.
+void addStarBlossom(MeshBuilder& b, float shape) {
+    const std::vector<glm::vec2> petal = bladeOutline(obovateHalfWidth, 3);
+    for (int k = 0; k < 5; ++k)
+        addPetal(b, glm::vec3(0), 2.0f * kPi * float(k) / 5.0f, 0.35f, 0.5f, 0.36f, petal, shape, 0.0f);
+    std::vector<glm::vec2> eye;
+    for (int k = 0; k < 6; ++k) eye.push_back(0.1f * glm::vec2(std::cos(kPi * k / 3.0f), std::sin(kPi * k / 3.0f)));
+    b.fanIn({0.03f, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0, 0}, eye, shape, 1.0f);
+}
+
+// Lantana's flower head: florets on a dome, the inner ones yellow, the outer ones of the organ's colour, each a
+// small cross of four rounded lobes.
+void addHeadBlossom(MeshBuilder& b, float shape) {
+    std::vector<glm::vec2> floret;
+    for (int k = 0; k < 8; ++k) {
+        const float angle = kPi * float(k) / 4.0f, radius = k % 2 == 0 ? 0.2f : 0.13f;
+        floret.push_back(radius * glm::vec2(std::cos(angle), std::sin(angle)));
+    }
+    struct Ring {
+        int florets;
+        float polar; // from the dome's top, radians
+        float tint;
+    };
+    for (const Ring ring : {Ring{1, 0.0f, 1.0f}, Ring{3, 0.45f, 1.0f}, Ring{5, 0.95f, 0.0f}}) {
+        for (int k = 0; k < ring.florets; ++k) {
+            const float around = 2.0f * kPi * (float(k) + 0.5f * float(ring.florets % 2)) / float(ring.florets);
+            const glm::vec3 outward = std::cos(ring.polar) * glm::vec3(1, 0, 0) + std::sin(ring.polar) * radialAt(around);
+            const glm::vec3 centre = glm::vec3(0.12f, 0, 0) + glm::vec3(0.3f, 0.42f, 0.42f) * outward;
+            // Two axes across the floret: its face looks out of the dome.
+            const glm::vec3 a = glm::normalize(glm::cross(tangentAt(around), outward));
+            const glm::vec3 c = glm::cross(outward, a);
+            b.fanIn(centre, a, c, {0, 0}, floret, shape, ring.tint);
+        }
+    }
+}
+
+// A rose: three rings of rounded petals, each ring smaller and more upright than the one outside it.
+void addRoseBlossom(MeshBuilder& b, float shape) {
+    const std::vector<glm::vec2> petal = bladeOutline(roundHalfWidth, 3), small = bladeOutline(roundHalfWidth, 2);
+    for (int k = 0; k < 5; ++k) {
+        const float around = 2.0f * kPi * float(k) / 5.0f;
+        addPetal(b, glm::vec3(0), around, 0.45f, 0.5f, 0.42f, petal, shape, 0.0f);
+        addPetal(b, glm::vec3(0.02f, 0, 0), around + kPi / 5.0f, 1.0f, 0.36f, 0.34f, petal, shape, 0.0f);
+    }
+    for (int k = 0; k < 3; ++k)
+        addPetal(b, glm::vec3(0.04f, 0, 0), 2.0f * kPi * float(k) / 3.0f + 0.3f, 1.3f, 0.26f, 0.26f, small, shape,
+                 0.0f);
+}
+
 } // namespace
 
 OrganMeshData buildOrganMeshes(const std::vector<ir::LeafModel>& leafModels) {
@@ -286,7 +378,7 @@ OrganMeshData buildOrganMeshes(const std::vector<ir::LeafModel>& leafModels) {
     data.hulls[kOrganDisc] = data.organs[kOrganDisc];
 
     b.begin();
-    std::array<std::uint32_t, kLeafLastShape + 1> leafTriangles{};
+    std::array<std::uint32_t, kSurfaceLastShape + 1> leafTriangles{};
     auto count = [&](std::uint32_t shape, std::uint32_t before) {
         leafTriangles[shape] = static_cast<std::uint32_t>(data.indices.size()) / 3 - before;
     };
@@ -308,10 +400,19 @@ OrganMeshData buildOrganMeshes(const std::vector<ir::LeafModel>& leafModels) {
     before = static_cast<std::uint32_t>(data.indices.size()) / 3;
     addBlade(b, serrateOutline(24), {0.45f, 0}, static_cast<float>(kLeafSerrate));
     count(kLeafSerrate, before);
+    before = static_cast<std::uint32_t>(data.indices.size()) / 3;
+    addStarBlossom(b, static_cast<float>(kBlossomStar));
+    count(kBlossomStar, before);
+    before = static_cast<std::uint32_t>(data.indices.size()) / 3;
+    addHeadBlossom(b, static_cast<float>(kBlossomHead));
+    count(kBlossomHead, before);
+    before = static_cast<std::uint32_t>(data.indices.size()) / 3;
+    addRoseBlossom(b, static_cast<float>(kBlossomRose));
+    count(kBlossomRose, before);
     std::uint32_t mostModelTriangles = 0;
     for (std::size_t k = 0; k < leafModels.size(); ++k) {
         const ir::LeafModel& model = leafModels[k];
-        const float shape = static_cast<float>(kLeafLastShape + 1 + k);
+        const float shape = static_cast<float>(kSurfaceLastShape + 1 + k);
         for (std::size_t t = 0; t < model.normals.size(); ++t) {
             const auto& n = model.normals[t];
             std::uint32_t corner[3];

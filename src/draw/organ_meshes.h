@@ -48,7 +48,7 @@ inline constexpr std::uint32_t kStemHullSides = 6;
 
 // The meshes, built on the CPU. Leaf vertices carry their shape (kLeaf*) in normal.w; the leaf shapes share the
 // leaf kind's range and each instance keeps only the triangles of its own shape. `leafModels` add shapes after
-// the built-in ones: model k is shape kLeafLastShape + 1 + k.
+// the built-in ones: model k is shape kSurfaceLastShape + 1 + k.
 OrganMeshData buildOrganMeshes(const std::vector<ir::LeafModel>& leafModels = {});
 
 // The meshes on the device, usable as vertex, index and storage buffers.

@@ -226,7 +226,7 @@ std::string gltfText(std::span<const OrganInstance> organs, const OrganMeshSet& 
         std::vector<std::optional<std::uint32_t>> shapes{std::nullopt};
         if (kind == shared::kOrganLeaf) {
             shapes.clear();
-            for (std::uint32_t s = 0; s < kLeafShapes; ++s)
+            for (std::uint32_t s = 0; s < kSurfaceShapes; ++s)
                 shapes.push_back(s);
         }
         for (std::optional<std::uint32_t> shape : shapes) {

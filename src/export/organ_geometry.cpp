@@ -130,7 +130,7 @@ PlacedVertex placeVertex(const OrganInstance& o, std::uint32_t kind, const MeshV
 }
 
 std::uint32_t leafShape(const OrganInstance& o) {
-    return std::min(o.shape, kLeafLastShape);
+    return o.shape <= kSurfaceLastShape ? o.shape : kLeafOvate;
 }
 
 const char* organKindName(std::uint32_t kind) {
@@ -162,6 +162,12 @@ const char* leafShapeName(std::uint32_t shape) {
         return "trifoliate";
     case kLeafSerrate:
         return "serrate";
+    case kBlossomStar:
+        return "star_blossom";
+    case kBlossomHead:
+        return "flower_head";
+    case kBlossomRose:
+        return "rose_blossom";
     default:
         return "compound";
     }
@@ -172,7 +178,7 @@ OrganMeshSet::OrganMeshSet(const draw::OrganMeshData& data) {
     for (std::uint32_t kind = 0; kind < kOrganKinds; ++kind) {
         kinds_[kind] = extractMesh(data, data.organs[kind], all);
     }
-    for (std::uint32_t shape = 0; shape < kLeafShapes; ++shape) {
+    for (std::uint32_t shape = 0; shape < kSurfaceShapes; ++shape) {
         leaves_[shape] = extractMesh(data, data.organs[kOrganLeaf], [shape](const MeshVertex& v) {
             return static_cast<std::uint32_t>(v.normal.w + 0.5f) == shape;
         });
@@ -183,7 +189,7 @@ const OrganMesh& OrganMeshSet::mesh(std::uint32_t kind, std::uint32_t shape) con
     if (kind >= kOrganKinds) {
         throw std::out_of_range("organ kind " + std::to_string(kind) + " has no mesh");
     }
-    return kind == kOrganLeaf ? leaves_[std::min(shape, kLeafLastShape)] : kinds_[kind];
+    return kind == kOrganLeaf ? leaves_[shape <= kSurfaceLastShape ? shape : kLeafOvate] : kinds_[kind];
 }
 
 const OrganMesh& OrganMeshSet::forInstance(const OrganInstance& o) const {

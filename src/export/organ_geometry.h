@@ -26,14 +26,15 @@ struct PlacedVertex {
 // lies in the heading-left plane like an @c disc, because a mesh file has no viewer to face.
 PlacedVertex placeVertex(const shared::OrganInstance& o, std::uint32_t kind, const shared::MeshVertex& local);
 
-// The leaf shape an instance draws (the shaders clamp unknown shapes to the last one).
+// The surface shape a file draws an instance with: its own, or for a leaf model (which files do not carry yet)
+// the ovate blade.
 std::uint32_t leafShape(const shared::OrganInstance& o);
 
-// Names of the organ kinds and leaf shapes, for groups and meshes in the files.
+// Names of the organ kinds and surface shapes, for groups and meshes in the files.
 const char* organKindName(std::uint32_t kind);
 const char* leafShapeName(std::uint32_t shape);
 
-inline constexpr std::uint32_t kLeafShapes = shared::kLeafLastShape + 1;
+inline constexpr std::uint32_t kSurfaceShapes = shared::kSurfaceLastShape + 1;
 
 // The triangles one instance draws and only the vertices they use, in organ-local coordinates.
 struct OrganMesh {
@@ -53,7 +54,7 @@ public:
 
 private:
     std::array<OrganMesh, shared::kOrganKinds> kinds_;
-    std::array<OrganMesh, kLeafShapes> leaves_;
+    std::array<OrganMesh, kSurfaceShapes> leaves_;
 };
 
 // Triangles in the world with per-vertex normals and colours, in runs of one plant each.

@@ -15,16 +15,16 @@ namespace simeco::field {
 
 namespace {
 
-std::array<float, shared::kLeafShapes> measureLeafShapes() {
+std::array<float, shared::kSurfaceShapes> measureLeafShapes() {
     const draw::OrganMeshData meshes = draw::buildOrganMeshes();
     const draw::MeshRange& leaf = meshes.organs[shared::kOrganLeaf];
-    std::array<float, shared::kLeafShapes> areas{};
+    std::array<float, shared::kSurfaceShapes> areas{};
     for (uint32_t t = 0; t < leaf.triangleCount(); ++t) {
         const shared::MeshVertex* v[3];
         for (uint32_t c = 0; c < 3; ++c)
             v[c] = &meshes.vertices[size_t(leaf.vertexOffset) + meshes.indices[leaf.firstIndex + 3 * t + c]];
         const uint32_t shape = uint32_t(v[0]->normal.w + 0.5f);
-        if (shape >= shared::kLeafShapes) continue;
+        if (shape > shared::kLeafLastShape) continue; // a blossom is no leaf: its area stays 0
         // The blade is drawn flat: x along the heading (times the length), y along left (times the width).
         const glm::vec2 a(v[1]->position.x - v[0]->position.x, v[1]->position.y - v[0]->position.y);
         const glm::vec2 b(v[2]->position.x - v[0]->position.x, v[2]->position.y - v[0]->position.y);
@@ -37,9 +37,9 @@ std::array<float, shared::kLeafShapes> measureLeafShapes() {
 
 std::vector<float> leafShapeAreas(const std::vector<ir::LeafModel>& leafModels) {
     // The built-in meshes are measured once.
-    static const std::array<float, shared::kLeafShapes> builtIn = measureLeafShapes();
+    static const std::array<float, shared::kSurfaceShapes> builtIn = measureLeafShapes();
     std::vector<float> areas(builtIn.begin(), builtIn.end());
-    for (const ir::LeafModel& model : leafModels) areas.push_back(model.area);
+    for (const ir::LeafModel& model : leafModels) areas.push_back(model.leaf ? model.area : 0.0f);
     return areas;
 }
 

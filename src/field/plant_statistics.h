@@ -19,8 +19,8 @@
 
 namespace simeco::field {
 
-// The area of a leaf blade of each shape at unit length and width: the leaf mesh's (draw/organ_meshes.h), and
-// after the built-in shapes each leaf model's.
+// The area of a leaf blade of each surface shape at unit length and width: the leaf mesh's (draw/organ_meshes.h),
+// 0 for the blossoms, and after the built-in shapes each model's that a leaf stage names.
 std::vector<float> leafShapeAreas(const std::vector<ir::LeafModel>& leafModels = {});
 
 // `baseHeights`: the height each plant stands at; `drawnParticles`: the drawn string's particle state, one per

@@ -18,18 +18,21 @@ namespace simeco::grow {
 
 namespace {
 
-// The leaf models the scene's leaf stages name, each read once from beside the scene: those read go to `models`
-// and get their leaf shapes; one warning names those that cannot be read (the thesis' own `.i` models).
+// The models the scene's leaf, flower and fruit stages name, each read once from beside the scene: those read go to
+// `models` and get their surface shapes; one warning names those that cannot be read (the thesis' own `.i` models).
 lang::EcoModelShapes loadLeafModels(const ir::EcoScene& scene, std::vector<ir::LeafModel>& models,
                                     std::vector<ir::EcoWarning>* warnings) {
     lang::EcoModelShapes shapes;
     std::vector<std::string> unread;
     std::optional<ir::SourceLoc> firstUnread;
     std::string firstWhy;
-    auto consider = [&](const ir::EcoStage& stage) {
-        if (!stage.model || shapes.count(*stage.model) ||
-            std::find(unread.begin(), unread.end(), *stage.model) != unread.end())
+    auto consider = [&](const ir::EcoStage& stage, bool leafStage) {
+        if (!stage.model) return;
+        if (auto known = shapes.find(*stage.model); known != shapes.end()) {
+            models[known->second - shared::kSurfaceLastShape - 1].leaf |= leafStage;
             return;
+        }
+        if (std::find(unread.begin(), unread.end(), *stage.model) != unread.end()) return;
         const std::filesystem::path path = std::filesystem::path(scene.file).parent_path() / *stage.model;
         std::string why = "it is not a Wavefront .obj file";
         std::optional<ir::LeafModel> model;
@@ -39,20 +42,24 @@ lang::EcoModelShapes loadLeafModels(const ir::EcoScene& scene, std::vector<ir::L
             if (!firstUnread) firstUnread = stage.loc, firstWhy = why;
             return;
         }
-        shapes[*stage.model] = shared::kLeafLastShape + 1 + uint32_t(models.size());
+        shapes[*stage.model] = shared::kSurfaceLastShape + 1 + uint32_t(models.size());
+        model->leaf = leafStage;
         models.push_back(std::move(*model));
     };
     for (const ir::EcoPlant& plant : scene.plants) {
-        const ir::EcoOrgan& leaf = plant.organ(ir::EcoOrganKind::Leaf);
         if (!plant.grammar.empty()) continue;
-        for (const auto& [number, stage] : leaf.stages) consider(stage);
-        if (leaf.defaultStage) consider(*leaf.defaultStage);
+        for (ir::EcoOrganKind kind : {ir::EcoOrganKind::Leaf, ir::EcoOrganKind::Flower, ir::EcoOrganKind::Fruit}) {
+            const ir::EcoOrgan& organ = plant.organ(kind);
+            const bool leafStage = kind == ir::EcoOrganKind::Leaf;
+            for (const auto& [number, stage] : organ.stages) consider(stage, leafStage);
+            if (organ.defaultStage) consider(*organ.defaultStage, leafStage);
+        }
     }
     if (!unread.empty() && warnings) {
         std::string names;
         for (const std::string& name : unread) names += (names.empty() ? "\"" : ", \"") + name + "\"";
         warnings->push_back(
-            {*firstUnread, fmt::format("leaf Model{} {} not read, drawn with the built-in leaves (the first: {})",
+            {*firstUnread, fmt::format("Model{} {} not read, drawn with the built-in organs (the first: {})",
                                        unread.size() > 1 ? "s" : "", names, firstWhy)});
     }
     return shapes;

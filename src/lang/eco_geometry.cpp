@@ -48,8 +48,10 @@ public:
         g_.homomorphism.present = true;
         g_.homomorphism.maxDepth = 1;
         // The leaf surface takes its shape from the plant's name (a rose's leaves are compound, an oxalis's
-        // cordate: turtle::leafShapeOf).
+        // cordate: turtle::surfaceShapeOf).
         g_.view.surfaces.push_back({"leaf", plant_.name, 1.0f, std::nullopt});
+        // So does its flowers' blossom (turtle::surfaceShapeOf: Lantana's flower head, a rose's).
+        g_.view.surfaces.push_back({"blossom", plant_.name, 1.0f, std::nullopt});
     }
 
 private:
@@ -110,15 +112,15 @@ private:
         return first;
     }
 
-    // The surface a leaf of the stage is drawn with: its Model's where the renderer holds it, else `leaf` (the
-    // built-in blade of the plant's name).
-    std::string leafSurface(const ir::EcoOrgan& organ, const ir::EcoStage* stage) {
+    // The surface an organ of the stage is drawn with: its Model's where the renderer holds it, else `builtIn`
+    // (`leaf`, `blossom`: the built-in shapes of the plant's name; empty: none, a fruit's sphere).
+    std::string surfaceOf(const ir::EcoOrgan& organ, const ir::EcoStage* stage, const std::string& builtIn) {
         const std::optional<std::string>* model = nullptr;
         if (stage && stage->model) model = &stage->model;
         else if (organ.defaultStage && organ.defaultStage->model) model = &organ.defaultStage->model;
-        if (!models_ || !model) return "leaf";
+        if (!models_ || !model) return builtIn;
         auto it = models_->find(**model);
-        if (it == models_->end()) return "leaf";
+        if (it == models_->end()) return builtIn;
         const std::string name = "leafModel" + std::to_string(it->second);
         const bool known = std::any_of(g_.view.surfaces.begin(), g_.view.surfaces.end(),
                                        [&](const ir::ViewSettings::Surface& s) { return s.name == name; });
@@ -140,7 +142,8 @@ private:
         std::vector<ir::SuccessorModule> out;
         if (kind == EcoOrganKind::Apex) return out;
         if (drawing_ == EcoDrawing::Grown) {
-            grownDrawing(kind, organ, colorOf(organ, stage, kind), leafSurface(organ, stage), loc, out);
+            grownDrawing(kind, organ, colorOf(organ, stage, kind), surfaceOf(organ, stage, builtInSurface(kind)), loc,
+                         out);
             return out;
         }
         out.push_back(module(";", {float(colorOf(organ, stage, kind))}, loc));
@@ -166,13 +169,28 @@ private:
         }
         case EcoOrganKind::Flower:
         case EcoOrganKind::Fruit:
-            out.push_back(module("@", {}, loc));
-            out.push_back(module(kind == EcoOrganKind::Flower ? "c" : "O", {grown > 0 ? grown : kEcoDefaultFlowerSize},
-                                 loc));
+            bloomDrawing(surfaceOf(organ, stage, builtInSurface(kind)), grown > 0 ? grown : kEcoDefaultFlowerSize,
+                         loc, out);
             break;
         default: break;
         }
         return out;
+    }
+
+    static std::string builtInSurface(EcoOrganKind kind) {
+        return kind == EcoOrganKind::Leaf ? "leaf" : kind == EcoOrganKind::Flower ? "blossom" : "";
+    }
+
+    // A flower or fruit of diameter `size`: a surface (a blossom, a model), else a sphere.
+    void bloomDrawing(const std::string& surface, float size, const ir::SourceLoc& loc,
+                      std::vector<ir::SuccessorModule>& out) {
+        if (surface.empty()) {
+            out.push_back(module("@", {}, loc));
+            out.push_back(module("O", {size}, loc));
+            return;
+        }
+        out.push_back(module("~", {}, loc));
+        out.push_back(module(surface, {size}, loc));
     }
 
     // The drawing at the sizes the particle has grown to: each size a code the growth simulation replaces. Stems
@@ -202,8 +220,7 @@ private:
             break;
         case EcoOrganKind::Flower:
         case EcoOrganKind::Fruit:
-            out.push_back(module("@", {}, loc));
-            out.push_back(module(kind == EcoOrganKind::Flower ? "c" : "O", {code(shared::kGrownLength)}, loc));
+            bloomDrawing(surface, code(shared::kGrownLength), loc, out);
             break;
         default: break;
         }

@@ -54,8 +54,13 @@ std::vector<glm::vec4> defaultPalette() {
     return p;
 }
 
-uint32_t leafShapeOf(const std::string& name) {
+uint32_t surfaceShapeOf(const std::string& name) {
     std::string n = lower(name);
+    if (mentions(n, {"blossom", "flower"}) && !mentions(n, {"leaf"})) { // a sunflower's leaf is a leaf
+        if (mentions(n, {"lantan", "verben", "head", "umbel"})) return shared::kBlossomHead;
+        if (mentions(n, {"rosa", "rose"})) return shared::kBlossomRose;
+        return shared::kBlossomStar;
+    }
     if (mentions(n, {"oxalis", "clover", "trifol", "shamrock"})) return shared::kLeafTrifoliate;
     if (mentions(n, {"cord", "heart"})) return shared::kLeafCordate;
     if (mentions(n, {"lanc", "grass", "narrow", "needle", "blade"})) return shared::kLeafLanceolate;
@@ -89,11 +94,11 @@ TurtleSettings turtleSettings(const ir::Grammar& grammar, const ir::Alphabet& al
     t.surfaceShape.assign(alphabet.size(), shared::kLeafOvate);
     for (size_t s = 0; s < alphabet.size(); ++s) {
         const std::string& id = alphabet.name(ir::SymbolId(s));
-        t.surfaceShape[s] = leafShapeOf(id);
+        t.surfaceShape[s] = surfaceShapeOf(id);
         for (const ir::ViewSettings::Surface& surface : v.surfaces) {
             if (surface.name != id) continue;
             t.surfaceScale[s] = surface.scale;
-            t.surfaceShape[s] = surface.shape ? *surface.shape : leafShapeOf(surface.file + " " + id);
+            t.surfaceShape[s] = surface.shape ? *surface.shape : surfaceShapeOf(surface.file + " " + id);
         }
     }
     return t;

@@ -40,7 +40,9 @@ TurtleSettings turtleSettings(const ir::Grammar& grammar, const ir::Alphabet& al
 // then a ramp of hues.
 std::vector<glm::vec4> defaultPalette();
 
-// A leaf shape from a surface's name or file name: cordate, lanceolate, compound, else ovate.
-uint32_t leafShapeOf(const std::string& name);
+// A surface's shape from its name or file name: a blossom where it says `blossom` or `flower` and not `leaf` (a
+// flower head for Lantana, a rose's for Rosa, else five petals), else a leaf blade: trifoliate, cordate,
+// lanceolate, compound, serrate, else ovate.
+uint32_t surfaceShapeOf(const std::string& name);
 
 } // namespace simeco::turtle

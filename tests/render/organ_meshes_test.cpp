@@ -112,6 +112,9 @@ TEST(OrganMeshesTest, LeafBladesLieInTheHeadingLeftPlaneFacingUp) {
     for (std::uint32_t t = 0; t < leaf.triangleCount(); ++t) {
         glm::vec3 p[3];
         int shape = -1;
+        const shared::MeshVertex& first =
+            d.vertices[static_cast<std::size_t>(leaf.vertexOffset) + d.indices[leaf.firstIndex + 3 * t]];
+        if (first.normal.w > static_cast<float>(shared::kLeafLastShape)) continue; // a blossom: not flat
         for (int k = 0; k < 3; ++k) {
             const shared::MeshVertex& v =
                 d.vertices[static_cast<std::size_t>(leaf.vertexOffset) + d.indices[leaf.firstIndex + 3 * t + k]];
@@ -134,6 +137,54 @@ TEST(OrganMeshesTest, LeafBladesLieInTheHeadingLeftPlaneFacingUp) {
         EXPECT_GT(trianglesPerShape[static_cast<int>(shape)], 8u) << "shape " << shape;
         EXPECT_LE(trianglesPerShape[static_cast<int>(shape)], d.castingTriangles[shared::kOrganLeaf]);
     }
+}
+
+// Blossoms: each of its own shape within a unit diameter about the heading, turned to face along it, no more
+// triangles than a leaf instance casts; the star's and the head's centres are tinted to the eye's yellow, the
+// rose's petals keep the organ's colour.
+TEST(OrganMeshesTest, BlossomsFaceAlongTheHeadingWithinAUnitDiameter) {
+    OrganMeshData d = draw::buildOrganMeshes();
+    const MeshRange& leaf = d.organs[shared::kOrganLeaf];
+    struct Blossom {
+        std::uint32_t triangles = 0, tinted = 0;
+        float facing = 0.0f; // the sum of the triangles' areas along +x
+    };
+    std::map<std::uint32_t, Blossom> blossoms;
+    for (std::uint32_t t = 0; t < leaf.triangleCount(); ++t) {
+        const shared::MeshVertex* v[3];
+        for (int k = 0; k < 3; ++k)
+            v[k] = &d.vertices[static_cast<std::size_t>(leaf.vertexOffset) + d.indices[leaf.firstIndex + 3 * t + k]];
+        const auto shape = static_cast<std::uint32_t>(std::lround(v[0]->normal.w));
+        if (shape <= shared::kLeafLastShape) continue;
+        glm::vec3 p[3];
+        for (int k = 0; k < 3; ++k) {
+            ASSERT_EQ(std::lround(v[k]->normal.w), shape) << "a triangle mixes shapes";
+            ASSERT_EQ(v[k]->position.w, v[0]->position.w) << "a triangle's tint varies";
+            p[k] = {v[k]->position.x, v[k]->position.y, v[k]->position.z};
+            EXPECT_LE(std::hypot(p[k].y, p[k].z), 0.5f + 1e-5f) << "shape " << shape;
+            EXPECT_GE(p[k].x, 0.0f);
+            EXPECT_LE(p[k].x, 0.6f);
+        }
+        const glm::vec3 n = glm::cross(p[1] - p[0], p[2] - p[0]);
+        // The face's stored normal is its winding's.
+        EXPECT_GT(glm::dot(n, glm::vec3(v[0]->normal.x, v[0]->normal.y, v[0]->normal.z)), 0.0f);
+        Blossom& b = blossoms[shape];
+        ++b.triangles;
+        b.tinted += v[0]->position.w == 1.0f ? 1 : 0;
+        EXPECT_TRUE(v[0]->position.w == 0.0f || v[0]->position.w == 1.0f);
+        b.facing += 0.5f * n.x;
+    }
+    ASSERT_EQ(blossoms.size(), std::size_t(shared::kSurfaceLastShape - shared::kLeafLastShape));
+    for (const auto& [shape, b] : blossoms) {
+        EXPECT_GT(b.triangles, 30u) << shape;
+        EXPECT_LE(b.triangles, d.castingTriangles[shared::kOrganLeaf]) << shape;
+        EXPECT_GT(b.facing, 0.1f) << shape;
+    }
+    EXPECT_GT(blossoms[shared::kBlossomStar].tinted, 0u);
+    EXPECT_LT(blossoms[shared::kBlossomStar].tinted, blossoms[shared::kBlossomStar].triangles);
+    EXPECT_GT(blossoms[shared::kBlossomHead].tinted, 0u);
+    EXPECT_LT(blossoms[shared::kBlossomHead].tinted, blossoms[shared::kBlossomHead].triangles);
+    EXPECT_EQ(blossoms[shared::kBlossomRose].tinted, 0u);
 }
 
 TEST(OrganMeshesTest, TriangleAndGround) {

@@ -204,7 +204,7 @@ TEST_F(SimulationTest, LeavesOfAModelAreDrawnAndMeasuredWithIt) {
     const turtle::Interpretation drawn = turtle::readBack(context(), *parts.front(), 1);
     ASSERT_EQ(drawn.count[shared::kOrganLeaf], 1u);
     const uint32_t leaf = drawn.organs[drawn.first[shared::kOrganLeaf]].module;
-    EXPECT_EQ(drawn.organs[drawn.first[shared::kOrganLeaf]].shape, shared::kLeafLastShape + 1);
+    EXPECT_EQ(drawn.organs[drawn.first[shared::kOrganLeaf]].shape, shared::kSurfaceLastShape + 1);
     const draw::Frame frame =
         renderer.render(field::organParts(parts), draw::Bounds{drawn.bounds.min, drawn.bounds.max}, settings);
     EXPECT_GT(std::count(frame.organ.begin(), frame.organ.end(), leaf), 100);

@@ -84,7 +84,7 @@ std::size_t drawnVertexCount(const draw::OrganMeshData& d, const OrganInstance& 
     std::set<std::uint32_t> used;
     for (std::uint32_t i = 0; i < r.indexCount; ++i) {
         std::uint32_t v = static_cast<std::uint32_t>(r.vertexOffset) + d.indices[r.firstIndex + i];
-        bool ownShape = std::lround(d.vertices[v].normal.w) == std::min<long>(o.shape, shared::kLeafLastShape);
+        bool ownShape = std::lround(d.vertices[v].normal.w) == long(exporter::leafShape(o));
         if (o.kind != shared::kOrganLeaf || ownShape) used.insert(v);
     }
     return used.size();

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "compute/shared/organ_layout.h"
+#include "field/plant_statistics.h"
 #include "grow/growing_species.h"
 #include "lang/eco_parser.h"
 #include "lang/obj_leaf_model.h"
@@ -94,11 +95,37 @@ TEST_F(ObjLeafModel, LeafStagesNamingAModelAreDrawnWithIt) {
     const ir::Grammar& herb = g.species[0];
     const turtle::TurtleSettings t = turtle::turtleSettings(herb, herb.alphabet);
     const std::optional<ir::SymbolId> model =
-        herb.alphabet.find("leafModel" + std::to_string(shared::kLeafLastShape + 1));
+        herb.alphabet.find("leafModel" + std::to_string(shared::kSurfaceLastShape + 1));
     const std::optional<ir::SymbolId> blade = herb.alphabet.find("leaf");
     ASSERT_TRUE(model && blade);
-    EXPECT_EQ(t.surfaceShape[*model], shared::kLeafLastShape + 1);
+    EXPECT_EQ(t.surfaceShape[*model], shared::kSurfaceLastShape + 1);
     EXPECT_EQ(t.surfaceShape[*blade], shared::kLeafOvate);
+}
+
+TEST_F(ObjLeafModel, FlowersAreBlossomsOfThePlantsNameOrTheirModelAndNoLeafArea) {
+    write("diamond.obj", kDiamond);
+    const std::string scene = write("flowers.eco", R"(EcoSystem 1.0 "Flowers" {
+        Plant "Lantana camara" {
+            Flower { Stage 1 { Model = "diamond.obj"; } }
+            Grow { w = S(0)[F(0)][F(1)]; }
+        }
+    })");
+    const grow::GrowingSpecies g = grow::growingSpecies(lang::parseEcoFile(scene));
+    ASSERT_EQ(g.leafModels.size(), 1u);
+    EXPECT_FALSE(g.leafModels[0].leaf);
+    const ir::Grammar& lantana = g.species[0];
+    const turtle::TurtleSettings t = turtle::turtleSettings(lantana, lantana.alphabet);
+    const std::optional<ir::SymbolId> model =
+        lantana.alphabet.find("leafModel" + std::to_string(shared::kSurfaceLastShape + 1));
+    const std::optional<ir::SymbolId> blossom = lantana.alphabet.find("blossom");
+    ASSERT_TRUE(model && blossom);
+    EXPECT_EQ(t.surfaceShape[*model], shared::kSurfaceLastShape + 1);
+    EXPECT_EQ(t.surfaceShape[*blossom], shared::kBlossomHead);
+    // Neither a blossom nor a flower's model counts as leaf area; the blades do.
+    const std::vector<float> areas = field::leafShapeAreas(g.leafModels);
+    ASSERT_EQ(areas.size(), shared::kSurfaceLastShape + 2u);
+    EXPECT_GT(areas[shared::kLeafSerrate], 0.1f);
+    for (uint32_t shape = shared::kLeafLastShape + 1; shape < areas.size(); ++shape) EXPECT_EQ(areas[shape], 0.0f);
 }
 
 } // namespace

@@ -38,12 +38,17 @@ void expectNear(glm::vec3 got, glm::vec3 want) {
 
 TEST(TurtleCpu, LeafShapesComeFromTheSurfacesName) {
     // The seed species by the names their scenes give them.
-    EXPECT_EQ(turtle::leafShapeOf("Oxalis corniculata"), shared::kLeafTrifoliate);
-    EXPECT_EQ(turtle::leafShapeOf("Rose Rugosa"), shared::kLeafCompound);
-    EXPECT_EQ(turtle::leafShapeOf("Lantan camara"), shared::kLeafSerrate);
-    EXPECT_EQ(turtle::leafShapeOf("heart"), shared::kLeafCordate);
-    EXPECT_EQ(turtle::leafShapeOf("grass blade"), shared::kLeafLanceolate);
-    EXPECT_EQ(turtle::leafShapeOf("leaf"), shared::kLeafOvate);
+    EXPECT_EQ(turtle::surfaceShapeOf("Oxalis corniculata"), shared::kLeafTrifoliate);
+    EXPECT_EQ(turtle::surfaceShapeOf("Rose Rugosa"), shared::kLeafCompound);
+    EXPECT_EQ(turtle::surfaceShapeOf("Lantan camara"), shared::kLeafSerrate);
+    EXPECT_EQ(turtle::surfaceShapeOf("heart"), shared::kLeafCordate);
+    EXPECT_EQ(turtle::surfaceShapeOf("grass blade"), shared::kLeafLanceolate);
+    EXPECT_EQ(turtle::surfaceShapeOf("Lantana camara blossom"), shared::kBlossomHead);
+    EXPECT_EQ(turtle::surfaceShapeOf("Rosa rugosa blossom"), shared::kBlossomRose);
+    EXPECT_EQ(turtle::surfaceShapeOf("Oxalis corniculata blossom"), shared::kBlossomStar);
+    EXPECT_EQ(turtle::surfaceShapeOf("flower"), shared::kBlossomStar);
+    EXPECT_EQ(turtle::surfaceShapeOf("Sunflower leaf"), shared::kLeafOvate);
+    EXPECT_EQ(turtle::surfaceShapeOf("leaf"), shared::kLeafOvate);
 }
 
 TEST(TurtleCpu, TurnsLeftTowardMinusXAndJoinsSegments) {

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "app/commands.h"
 #include "app/error_report.h"
@@ -26,6 +27,7 @@ struct BenchArgs {
     bool render = false;
     bool sim = false;
     std::string size = "640x480";
+    std::vector<std::uint32_t> fields; // --sim: the fields' plants
 };
 
 // --size as the render and growth benchmarks take it.
@@ -43,6 +45,7 @@ void runSimBench(const BenchArgs& args) {
     o.repeat = args.options.repeat;
     o.warmUp = args.options.warmUp;
     o.device = args.options.device;
+    if (!args.fields.empty()) o.fields = args.fields;
     frameSize(args.size, o.width, o.height);
     bench::SimBenchReport report =
         bench::runSimBenchmark(o, [](const std::string& line) { std::fprintf(stderr, "bench: %s\n", line.c_str()); });
@@ -71,6 +74,7 @@ void runBench(BenchArgs args) {
     if ((args.render || args.sim) && args.noGpu)
         throw CommandLineError(fmt::format("{} measures the device: it cannot run with --no-gpu",
                                            args.render ? "--render" : "--sim"));
+    if (!args.fields.empty() && !args.sim) throw CommandLineError("--fields sizes the fields of --sim only");
     if (args.render) return runRenderBench(args);
     if (args.sim) return runSimBench(args);
     if (args.options.root.empty()) {
@@ -115,6 +119,11 @@ void registerBenchCommand(CLI::App& app, CommandContext& ctx) {
                   "benchmark the growing field (derive, grow, interpret, statistics and a frame per tick) of the "
                   "garden at 100, 1,000 and 10,000 plants instead of derivation");
     cmd->add_option("--size", args->size, "--render, --sim: frame size WIDTHxHEIGHT (default 640x480)");
+    cmd->add_option("--fields", args->fields,
+                    "--sim: the fields' plants, comma-separated (default 100,1000,10000; --quick 10,100), e.g. "
+                    "10000,1000000 on a large GPU")
+        ->delimiter(',')
+        ->check(CLI::Range(1u, 1000000u));
     cmd->callback([args, &ctx] { ctx.exitCode = runReportingErrors([&] { runBench(*args); }); });
 }
 

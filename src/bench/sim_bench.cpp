@@ -97,8 +97,9 @@ SimBenchReport runSimBenchmark(const SimBenchOptions& options, const std::functi
     report.copy = measureCopyBandwidth(context, options.warmUp, options.repeat);
     draw::Renderer renderer(context);
     const std::string scene = (std::filesystem::path(options.root) / kSimScene).string();
-    const std::vector<std::uint32_t> fields =
-        options.quick ? std::vector<std::uint32_t>{10, 100} : std::vector<std::uint32_t>{100, 1000, 10000};
+    const std::vector<std::uint32_t> fields = !options.fields.empty() ? options.fields
+                                              : options.quick         ? std::vector<std::uint32_t>{10, 100}
+                                                                      : std::vector<std::uint32_t>{100, 1000, 10000};
     for (std::uint32_t plants : fields) {
         progress(fmt::format("{} plants", plants));
         try {

@@ -20,6 +20,7 @@ namespace simeco::bench {
 struct SimBenchOptions {
     std::string root;   // where scenes/ is (defaultSuiteRoot())
     bool quick = false; // 10 and 100 plants
+    std::vector<std::uint32_t> fields; // the fields' plants; empty: 100, 1,000 and 10,000 (quick: 10 and 100)
     int repeat = 5;
     int warmUp = 1;
     std::uint32_t width = 640;

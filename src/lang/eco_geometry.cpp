@@ -164,7 +164,7 @@ private:
             float grownSince = 0;
             for (int k = 0; k <= std::max(stageNumber, 0); ++k) grownSince += growth(organ, organ.stageFor(k));
             out.push_back(module("~", {}, loc));
-            out.push_back(module("leaf", {kEcoLeafModelSize * (1.0f + grownSince)}, loc));
+            out.push_back(module(surfaceOf(organ, stage, "leaf"), {kEcoLeafModelSize * (1.0f + grownSince)}, loc));
             break;
         }
         case EcoOrganKind::Flower:

@@ -13,6 +13,7 @@
 #include "field/plant_statistics.h"
 #include "grow/growing_species.h"
 #include "lang/eco_parser.h"
+#include "lang/load_grammar.h"
 #include "lang/obj_leaf_model.h"
 #include "turtle/turtle_settings.h"
 
@@ -100,6 +101,28 @@ TEST_F(ObjLeafModel, LeafStagesNamingAModelAreDrawnWithIt) {
     ASSERT_TRUE(model && blade);
     EXPECT_EQ(t.surfaceShape[*model], shared::kSurfaceLastShape + 1);
     EXPECT_EQ(t.surfaceShape[*blade], shared::kLeafOvate);
+}
+
+// `simeco render` draws a scene's stages at their final sizes (lang::loadSpecies), with the same models.
+TEST_F(ObjLeafModel, AScenesRenderedStagesAreDrawnWithItsModelsToo) {
+    write("diamond.obj", kDiamond);
+    const std::string scene = write("rendered.eco", R"(EcoSystem 1.0 "Rendered" {
+        Plant "Herb" {
+            Leaf { Stage 1 { Model = "diamond.obj"; } }
+            Grow { w = S(0)[L(0)][L(1)]; }
+        }
+    })");
+    std::vector<ir::LeafModel> models;
+    const std::vector<ir::Grammar> species = lang::loadSpecies(scene, nullptr, &models);
+    ASSERT_EQ(models.size(), 1u);
+    const ir::Grammar& herb = species[0];
+    const std::optional<ir::SymbolId> model =
+        herb.alphabet.find("leafModel" + std::to_string(shared::kSurfaceLastShape + 1));
+    ASSERT_TRUE(model);
+    EXPECT_EQ(turtle::turtleSettings(herb, herb.alphabet).surfaceShape[*model], shared::kSurfaceLastShape + 1);
+    // Without a place for the models, the stages keep the built-in blade.
+    const std::vector<ir::Grammar> plain = lang::loadSpecies(scene);
+    EXPECT_FALSE(plain[0].alphabet.find("leafModel" + std::to_string(shared::kSurfaceLastShape + 1)));
 }
 
 TEST_F(ObjLeafModel, FlowersAreBlossomsOfThePlantsNameOrTheirModelAndNoLeafArea) {

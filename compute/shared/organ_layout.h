@@ -35,6 +35,11 @@ SIMECO_CONST kSurfaceLastShape = kBlossomRose; // models are shapes kSurfaceLast
 // OrganInstance.shape for kOrganDisc: faces the viewer (@o) rather than lying in the heading-left plane (@c).
 SIMECO_CONST kDiscFacesViewer = 1u;
 
+// OrganInstance.color.w: kColorUntextured for an organ drawn in its colour, kColorFirstTexture + k for one whose
+// colour tints texture layer k (a SimEco stage's Texture; ir::DrawAssets).
+SIMECO_CONST_FLOAT kColorUntextured = 1.0f;
+SIMECO_CONST_FLOAT kColorFirstTexture = 2.0f;
+
 // A triangle stores its vertices in position.xyz, heading.xyz and up.xyz; the other kinds a frame.
 struct OrganInstance {
     vec4 position; // xyz: base (stem, leaf) or centre (sphere, disc); w: length along heading (stem, leaf)

@@ -10,6 +10,8 @@ layout(location = 1) in vec3 inNormal;
 layout(location = 2) flat in vec3 inAlbedo;
 layout(location = 3) flat in uint inPlant;
 layout(location = 4) flat in uint inOrgan;
+layout(location = 5) in vec2 inUv;
+layout(location = 6) flat in int inTexture;
 
 layout(std140, set = 0, binding = 1) uniform Frame {
     DrawFrame frame;
@@ -17,12 +19,21 @@ layout(std140, set = 0, binding = 1) uniform Frame {
 layout(push_constant) uniform Push {
     DrawPush push;
 };
+// A stage's Texture, tinted by the organ's colour (src/draw/texture_array.h).
+layout(set = 0, binding = 2) uniform sampler2DArray textures;
 
 layout(location = 0) out vec4 outColor;
 layout(location = 1) out uint outPlant;
 layout(location = 2) out uint outOrgan;
 
 void main() {
+    vec3 albedo = inAlbedo;
+    if (inTexture >= 0) {
+        vec4 texel = texture(textures, vec3(inUv, float(inTexture)));
+        // A texture's transparent pixels cut the organ's outline (a leaf image on its blade).
+        if (texel.a < 0.5) discard;
+        albedo *= texel.rgb;
+    }
     vec3 normal = normalize(inNormal);
     if (dot(normal, frame.cameraPosition.xyz - inWorld) < 0.0) {
         normal = -normal;
@@ -42,7 +53,7 @@ void main() {
         light += sun * frame.sunColor.rgb;
     }
     // The sun pass adds to the ambient pass's colour, alpha included, so it adds no alpha.
-    outColor = vec4(light * inAlbedo, push.pass == kPassSun ? 0.0 : 1.0);
+    outColor = vec4(light * albedo, push.pass == kPassSun ? 0.0 : 1.0);
     outPlant = inPlant;
     outOrgan = inOrgan;
 }

@@ -24,6 +24,21 @@ layout(location = 1) out vec3 outNormal;
 layout(location = 2) flat out vec3 outAlbedo;
 layout(location = 3) flat out uint outPlant;
 layout(location = 4) flat out uint outOrgan;
+layout(location = 5) out vec2 outUv;
+layout(location = 6) flat out int outTexture; // the texture layer the albedo tints, or -1
+
+// Where a mesh vertex samples its organ's texture: a surface (leaf, blossom, model) by its plane, x along the
+// midrib and y across; a stem around (mirrored, so that no seam shows) and along; a cap, a disc or a sphere by
+// its cross-section; a polygon's triangle by its corners.
+vec2 organUv(uint kind, vec4 local, vec4 localNormal) {
+    if (kind == kOrganLeaf) return vec2(local.x, 0.5 - local.y);
+    if (kind == kOrganStem) {
+        if (localNormal.w > 0.5) return 0.5 + 0.5 * local.yz;
+        return vec2(acos(clamp(local.y, -1.0, 1.0)) / 3.14159265, local.w);
+    }
+    if (kind == kOrganTriangle) return local.x < 0.5 ? vec2(0.0) : (local.x < 1.5 ? vec2(1.0, 0.0) : vec2(0.0, 1.0));
+    return 0.5 + 0.5 * (kind == kOrganDisc ? local.xy : local.yz);
+}
 
 // The sun pass redraws with depth test EQUAL, so positions must come out the same in every pass: no fused or
 // reordered arithmetic that one pipeline's compilation could choose differently from another's.
@@ -38,6 +53,8 @@ void main() {
         outAlbedo = frame.groundColor.rgb;
         outPlant = 0xFFFFFFFFu;
         outOrgan = 0xFFFFFFFFu;
+        outUv = vec2(0.0);
+        outTexture = -1;
     } else {
         OrganInstance o = instances[gl_InstanceIndex];
         OrganVertex v = organVertex(o, push.kind, inPosition, inNormal, frame.cameraRight.xyz, frame.cameraUp.xyz);
@@ -48,6 +65,8 @@ void main() {
             outAlbedo = mix(outAlbedo, vec3(kBlossomEyeRed, kBlossomEyeGreen, kBlossomEyeBlue), inPosition.w);
         outPlant = o.plant;
         outOrgan = o.module;
+        outUv = organUv(push.kind, inPosition, inNormal);
+        outTexture = o.color.w >= kColorFirstTexture - 0.5 ? int(o.color.w - kColorFirstTexture + 0.5) : -1;
     }
     outWorld = world;
     gl_Position = frame.viewProj * vec4(world, 1.0);

@@ -55,7 +55,7 @@ void runRender(const RenderArgs& args) {
     field::OrganExtent extent = field::organExtent(context, organs);
     if (extent.organs == 0) throw std::runtime_error(fmt::format("{}: the plants draw nothing", source.file));
 
-    draw::Renderer renderer(context, field.models);
+    draw::Renderer renderer(context, field.assets);
     draw::Frame frame = renderer.render(field::organParts(organs), extent.bounds, settings);
     // Both files appear, or neither.
     draw::OutputBatch outputs;

@@ -190,7 +190,7 @@ void runRun(RunArgs args) {
     const fs::path out(args.out);
     fs::create_directories(out);
 
-    draw::Renderer renderer(context, simulation.species().leafModels);
+    draw::Renderer renderer(context, simulation.species().assets);
     draw::Bounds framed = simulation.grownBounds();
     if (framed.empty()) framed = draw::Bounds{};
     draw::OutputBatch outputs;

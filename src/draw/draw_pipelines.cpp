@@ -177,9 +177,10 @@ vk::UniquePipeline createPipeline(VkDevice device, VkPipelineLayout layout, VkRe
 DrawPipelines::DrawPipelines(const vk::Context& context, VkRenderPass renderPass)
     : cmdPushDescriptorSet_(context.cmdPushDescriptorSet()) {
     VkDevice device = context.device();
-    std::array<VkDescriptorSetLayoutBinding, 2> bindings{{
+    std::array<VkDescriptorSetLayoutBinding, 3> bindings{{
         {0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr},
         {1, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
+        {2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
     }};
     setLayout_ = vk::createPushDescriptorSetLayout(device, bindings);
     layout_ = vk::createPipelineLayout(device, setLayout_.get(),
@@ -195,18 +196,21 @@ DrawPipelines::DrawPipelines(const vk::Context& context, VkRenderPass renderPass
 }
 
 void DrawPipelines::pushDescriptors(VkCommandBuffer cmd, const vk::Buffer& instances,
-                                    const vk::Buffer& frameConstants) const {
+                                    const vk::Buffer& frameConstants, const VkDescriptorImageInfo& textures) const {
     std::array<VkDescriptorBufferInfo, 2> infos{{
         {instances.handle(), 0, instances.bindingRange()},
         {frameConstants.handle(), 0, frameConstants.bindingRange()},
     }};
-    std::array<VkWriteDescriptorSet, 2> writes{};
+    std::array<VkWriteDescriptorSet, 3> writes{};
     for (std::uint32_t i = 0; i < writes.size(); ++i) {
         writes[i].sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
         writes[i].dstBinding = i;
         writes[i].descriptorCount = 1;
-        writes[i].descriptorType = i == 0 ? VK_DESCRIPTOR_TYPE_STORAGE_BUFFER : VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
-        writes[i].pBufferInfo = &infos[i];
+        writes[i].descriptorType = i == 0   ? VK_DESCRIPTOR_TYPE_STORAGE_BUFFER
+                                   : i == 1 ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER
+                                            : VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+        if (i < 2) writes[i].pBufferInfo = &infos[i];
+        else writes[i].pImageInfo = &textures;
     }
     cmdPushDescriptorSet_(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.get(), 0,
                           static_cast<std::uint32_t>(writes.size()), writes.data());

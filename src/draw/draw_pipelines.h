@@ -33,7 +33,9 @@ public:
     VkPipeline sun(Culling culling) const { return culling == Culling::Back ? sunCulled_.get() : sun_.get(); }
     VkPipeline volume() const { return volume_.get(); }
 
-    void pushDescriptors(VkCommandBuffer cmd, const vk::Buffer& instances, const vk::Buffer& frameConstants) const;
+    // The organs' instances, the frame's constants and the textures (draw::TextureArray) for the draws after it.
+    void pushDescriptors(VkCommandBuffer cmd, const vk::Buffer& instances, const vk::Buffer& frameConstants,
+                         const VkDescriptorImageInfo& textures) const;
 
 private:
     PFN_vkCmdPushDescriptorSetKHR cmdPushDescriptorSet_ = nullptr;

@@ -17,6 +17,7 @@
 #include "draw/draw_pipelines.h"
 #include "draw/organ_meshes.h"
 #include "draw/render_target.h"
+#include "draw/texture_array.h"
 #include "render/shared/draw_layout.h"
 #include "vk/buffer.h"
 #include "vk/context.h"
@@ -68,8 +69,8 @@ void requireFeatures(const vk::Context& context) {
 } // namespace
 
 struct Renderer::Resources {
-    Resources(const vk::Context& context, const std::vector<ir::LeafModel>& leafModels)
-        : meshes(context, leafModels), renderPass(createRenderPass(context)), pipelines(context, renderPass.get()),
+    Resources(const vk::Context& context, const ir::DrawAssets& assets)
+        : meshes(context, assets.models), textures(context, assets.textures), renderPass(createRenderPass(context)), pipelines(context, renderPass.get()),
           drawArgs(kernel(context, "organs/draw_args")), shadowVolumes(kernel(context, "shadows/shadow_volumes")),
           toonOutline(kernel(context, "styles/toon_outline")),
           frameConstants(context, sizeof(shared::DrawFrame), vk::MemoryUsage::DeviceLocal,
@@ -78,6 +79,7 @@ struct Renderer::Resources {
                      VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT) {}
 
     OrganMeshes meshes;
+    TextureArray textures;
     UniqueRenderPass renderPass;
     DrawPipelines pipelines;
     vk::ComputePipeline drawArgs;
@@ -112,9 +114,9 @@ CameraView frameCamera(const Bounds& bounds, const RenderSettings& settings) {
     return cameraView(settings.camera.value_or(Camera{}), bounds, aspect);
 }
 
-Renderer::Renderer(const vk::Context& context, const std::vector<ir::LeafModel>& leafModels) : context_(context) {
+Renderer::Renderer(const vk::Context& context, const ir::DrawAssets& assets) : context_(context) {
     requireFeatures(context);
-    resources_ = std::make_unique<Resources>(context, leafModels);
+    resources_ = std::make_unique<Resources>(context, assets);
 }
 
 Renderer::~Renderer() = default;
@@ -327,7 +329,8 @@ void Renderer::Resources::recordScene(VkCommandBuffer cmd, const RenderTarget& i
             vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
                               sunPass ? r.pipelines.sun(culling) : r.pipelines.base(culling));
             for (size_t part = 0; part < parts.size(); ++part) {
-                r.pipelines.pushDescriptors(cmd, *parts[part].instances, r.frameConstants);
+                r.pipelines.pushDescriptors(cmd, *parts[part].instances, r.frameConstants,
+                                            r.textures.descriptor());
                 for (std::uint32_t kind = 0; kind < kOrganKinds; ++kind) {
                     if (mesh.closedHull[kind] == (culling == Culling::Back)) {
                         drawKind(kind, part);

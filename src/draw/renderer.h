@@ -21,7 +21,7 @@
 #include "draw/frame.h"
 #include "draw/render_settings.h"
 #include "draw/render_target.h"
-#include "ir/leaf_model.h"
+#include "ir/draw_assets.h"
 #include "render/shared/draw_layout.h"
 
 namespace simeco::vk {
@@ -61,8 +61,9 @@ class Renderer {
 public:
     // Builds the meshes, pipelines and kernels once. Throws VulkanError when the device lacks what rendering
     // needs (the attachment formats, drawIndirectFirstInstance, independentBlend, depthClamp).
-    // `leafModels`: leaf shapes after the built-in ones (draw::buildOrganMeshes), for leaves drawn from models.
-    explicit Renderer(const vk::Context& context, const std::vector<ir::LeafModel>& leafModels = {});
+    // `assets`: the models, surface shapes after the built-in ones (draw::buildOrganMeshes), and the textures
+    // (draw::TextureArray) a scene's organs are drawn with.
+    explicit Renderer(const vk::Context& context, const ir::DrawAssets& assets = {});
     ~Renderer();
 
     Renderer(const Renderer&) = delete;

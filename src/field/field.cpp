@@ -17,9 +17,9 @@
 
 namespace simeco::field {
 
-std::vector<ir::Grammar> loadSpecies(const std::string& path, std::vector<ir::LeafModel>* models) {
+std::vector<ir::Grammar> loadSpecies(const std::string& path, ir::DrawAssets* assets) {
     std::vector<ir::EcoWarning> warnings;
-    std::vector<ir::Grammar> species = lang::loadSpecies(path, &warnings, models);
+    std::vector<ir::Grammar> species = lang::loadSpecies(path, &warnings, assets);
     for (const ir::EcoWarning& w : warnings)
         std::fprintf(stderr, "%s:%d:%d: warning: %s\n", w.loc.file.c_str(), w.loc.line, w.loc.col, w.message.c_str());
     return ir::unifySpecies(std::move(species));
@@ -39,7 +39,7 @@ Field& Field::operator=(Field&&) noexcept = default;
 
 Field deriveField(const FieldSource& source, const vk::Context* context) {
     Field field;
-    field.species = loadSpecies(source.file, &field.models);
+    field.species = loadSpecies(source.file, &field.assets);
     stream::DeriveOptions options;
     options.steps = source.steps;
     options.seed = source.seed;

@@ -11,7 +11,7 @@
 #include "field/backend.h"
 #include "gpu/derive_gpu.h"
 #include "ir/grammar.h"
-#include "ir/leaf_model.h"
+#include "ir/draw_assets.h"
 #include "stream/derive_options.h"
 #include "stream/module_string.h"
 #include "turtle/interpretation.h"
@@ -44,8 +44,8 @@ struct FieldSource {
 };
 
 // The species of any input file, sharing one alphabet (ir::unifySpecies); a scene's warnings go to stderr. With
-// `models`, a scene's `.obj` models are read into it for the renderer.
-std::vector<ir::Grammar> loadSpecies(const std::string& path, std::vector<ir::LeafModel>* models = nullptr);
+// `assets`, a scene's models and textures are read into it for the renderer.
+std::vector<ir::Grammar> loadSpecies(const std::string& path, ir::DrawAssets* assets = nullptr);
 
 // A batch of a field's plants copied out of its derived string (field_parts.h).
 struct FieldBatchBuffers {
@@ -55,7 +55,7 @@ struct FieldBatchBuffers {
 // A field derived and ready for the turtle.
 struct Field {
     std::vector<ir::Grammar> species; // one alphabet (ir::unifySpecies)
-    std::vector<ir::LeafModel> models; // the `.obj` models a scene's stages draw with (draw::Renderer's)
+    ir::DrawAssets assets;            // the models and textures a scene's stages draw with (draw::Renderer's)
     // Every plant, under its homomorphism: with the GPU backend left on the device by `deriver` (then `string`
     // stays empty), else on the host.
     stream::ModuleString string;

@@ -285,7 +285,7 @@ void Simulation::resume(const SimulationState& state) {
 
 std::vector<const turtle::DeviceOrgans*> Simulation::Impl::interpretOnDevice() {
     if (!turtle) turtle = std::make_unique<turtle::GpuTurtle>(*context, commands, turtles);
-    if (!statistics) statistics = std::make_unique<GpuPlantStatistics>(*context, leafShapeAreas(g.leafModels));
+    if (!statistics) statistics = std::make_unique<GpuPlantStatistics>(*context, leafShapeAreas(g.assets.models));
     const bool merged = batches.size() > 1 || hasObstacles();
     if (merged) organMerge().begin();
     lastStatistics.clear();
@@ -346,7 +346,7 @@ std::vector<const turtle::DeviceOrgans*> Simulation::Impl::interpretOnHost() {
     const turtle::Interpretation organs = turtle::interpretCpu(field, commands, turtles, where);
     seconds.interpret += secondsSince(start);
     start = Clock::now();
-    lastStatistics = plantStatisticsCpu(organs, baseHeights(placements), field.particles, leafShapeAreas(g.leafModels));
+    lastStatistics = plantStatisticsCpu(organs, baseHeights(placements), field.particles, leafShapeAreas(g.assets.models));
     seconds.statistics += secondsSince(start);
     uploaded = turtle::uploadOrgans(*context, organs);
     if (!hasObstacles()) return {&uploaded};

@@ -5,7 +5,7 @@
 
 #include "ir/source_loc.h"
 #include "ir/species.h"
-#include "lang/eco_models.h"
+#include "lang/eco_assets.h"
 #include "lang/eco_parser.h"
 #include "lang/load_grammar.h"
 
@@ -34,12 +34,12 @@ GrowingSpecies growingSpecies(ir::EcoScene parsed, std::vector<ir::EcoWarning>* 
     GrowingSpecies g;
     auto scene = std::make_unique<ir::EcoScene>(std::move(parsed));
     if (scene->plants.empty()) throw ir::InputError(scene->loc, "the scene has no plant");
-    const lang::EcoModelShapes models = lang::loadEcoModels(*scene, g.leafModels, warnings);
+    const lang::EcoAssets assets = lang::loadEcoAssets(*scene, g.assets, warnings);
     std::vector<ir::Grammar> species;
     for (size_t i = 0; i < scene->plants.size(); ++i) {
         const ir::EcoPlant& plant = scene->plants[i];
         if (plant.grammar.empty()) {
-            species.push_back(lang::compileEcoPlant(*scene, i, lang::EcoDrawing::Grown, &models));
+            species.push_back(lang::compileEcoPlant(*scene, i, lang::EcoDrawing::Grown, &assets));
             continue;
         }
         species.push_back(lang::loadScenePlantGrammar(*scene, plant, warnings));

@@ -8,7 +8,7 @@
 
 #include "ir/eco_scene.h"
 #include "ir/grammar.h"
-#include "ir/leaf_model.h"
+#include "ir/draw_assets.h"
 
 namespace simeco::grow {
 
@@ -16,8 +16,8 @@ struct GrowingSpecies {
     std::unique_ptr<const ir::EcoScene> scene;  // null for a grammar file; ecoPlants point into it
     std::vector<ir::Grammar> species;           // one alphabet (ir::unifySpecies)
     std::vector<const ir::EcoPlant*> ecoPlants; // per species: its plant in the scene, or null
-    // The leaf models its stages name and simeco reads (`.obj`); model k is surface shape kSurfaceLastShape + 1 + k.
-    std::vector<ir::LeafModel> leafModels;
+    // The models and textures its stages name and simeco reads (lang/eco_assets.h).
+    ir::DrawAssets assets;
     // Whether species s is a SimEco plant whose organs grow as particles (not a grammar file's).
     bool growsOrgans(size_t s) const { return ecoPlants[s] && ecoPlants[s]->grammar.empty(); }
 

@@ -116,6 +116,8 @@ struct ViewSettings {
     float elasticityIncrement = 0.0f;
     // `;` colour indices to linear RGB (a model's colour map); empty: simeco's default palette.
     std::vector<std::array<float, 3>> palette;
+    // Per palette entry (where shorter, -1 for the rest): the texture layer its colour tints, or -1 for none.
+    std::vector<int> paletteTextures;
     // `~name` surfaces the view file names, with the file each was read from and its scale.
     struct Surface {
         std::string name, file;

@@ -57,8 +57,8 @@ std::optional<ir::Expr> conjoin(std::optional<ir::Expr> a, std::optional<ir::Exp
 
 class PlantCompiler {
 public:
-    PlantCompiler(const ir::EcoScene& scene, EcoDrawing drawing, const EcoModelShapes* models)
-        : drawing_(drawing), models_(models) {
+    PlantCompiler(const ir::EcoScene& scene, EcoDrawing drawing, const EcoAssets* assets)
+        : drawing_(drawing), assets_(assets) {
         grammar_.sourceFile = scene.file;
         // Stems bend toward gravity or away from it (the growth's `tropism` modules).
         const float g[3] = {scene.gravity.x.typical(), scene.gravity.y.typical(), scene.gravity.z.typical()};
@@ -77,7 +77,7 @@ public:
         grammar_.axiom = successorModules(plant.grow.axiom);
         for (const ir::EcoRule& rule : plant.grow.rules) lowerRule(rule);
         grammar_.productions.present = !plant.grow.rules.empty();
-        addEcoOrganGeometry(plant, grammar_, drawing_, models_);
+        addEcoOrganGeometry(plant, grammar_, drawing_, assets_);
 
         grammar_.contextSkip.resize(grammar_.alphabet.size(), false);
         for (const char* rotation : kRotationNames) grammar_.contextSkip[symbol(rotation)] = true;
@@ -177,17 +177,17 @@ private:
 
     ir::Grammar grammar_;
     EcoDrawing drawing_;
-    const EcoModelShapes* models_;
+    const EcoAssets* assets_;
 };
 
 } // namespace
 
 ir::Grammar compileEcoPlant(const ir::EcoScene& scene, size_t plantIndex, EcoDrawing drawing,
-                            const EcoModelShapes* models) {
+                            const EcoAssets* assets) {
     if (plantIndex >= scene.plants.size())
         throw ir::InputError({scene.file, 0, 0}, fmt::format("the scene has {} plant(s); there is no plant {}",
                                                              scene.plants.size(), plantIndex));
-    return PlantCompiler(scene, drawing, models).compile(scene.plants[plantIndex]);
+    return PlantCompiler(scene, drawing, assets).compile(scene.plants[plantIndex]);
 }
 
 } // namespace simeco::lang

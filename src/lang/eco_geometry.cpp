@@ -32,8 +32,8 @@ float growth(const ir::EcoOrgan& organ, const ir::EcoStage* stage) {
 
 class GeometryBuilder {
 public:
-    GeometryBuilder(const ir::EcoPlant& plant, ir::Grammar& g, EcoDrawing drawing, const EcoModelShapes* models)
-        : plant_(plant), g_(g), drawing_(drawing), models_(models) {
+    GeometryBuilder(const ir::EcoPlant& plant, ir::Grammar& g, EcoDrawing drawing, const EcoAssets* assets)
+        : plant_(plant), g_(g), drawing_(drawing), assets_(assets) {
         // Index 0 stays black and 1 bark-brown, as in simeco's default palette; stage colours follow.
         g_.view.palette = {{0.0f, 0.0f, 0.0f}, {0.20f, 0.11f, 0.05f}, {0.09f, 0.30f, 0.05f}};
     }
@@ -58,8 +58,8 @@ private:
     const ir::EcoPlant& plant_;
     ir::Grammar& g_;
     EcoDrawing drawing_;
-    const EcoModelShapes* models_;
-    std::map<std::array<float, 3>, int> colorIndex_;
+    const EcoAssets* assets_;
+    std::map<std::pair<std::array<float, 3>, int>, int> colorIndex_; // a colour and its texture layer (or -1)
     std::map<int, int> leafShades_; // a mature leaf colour's index: the first of its shades
 
     // The stage's Color, tinted by its Material's diffuse factor (MTRL's first three numbers, scaled so that
@@ -68,7 +68,9 @@ private:
         const ir::EcoColor* c = nullptr;
         if (stage && stage->color) c = &*stage->color;
         else if (organ.defaultStage && organ.defaultStage->color) c = &*organ.defaultStage->color;
-        if (!c) return kind == EcoOrganKind::Stem || kind == EcoOrganKind::Root ? 1 : 2;
+        const int texture = textureOf(organ, stage);
+        if (!c && texture < 0) return kind == EcoOrganKind::Stem || kind == EcoOrganKind::Root ? 1 : 2;
+        if (!c) return paletteEntry({1.0f, 1.0f, 1.0f}, texture); // the texture in its own colours
         std::array<float, 3> tint = {1.0f, 1.0f, 1.0f};
         const ir::EcoMaterial* material = nullptr;
         if (stage && stage->material) material = &*stage->material;
@@ -84,13 +86,34 @@ private:
         std::array<float, 3> rgb = {srgbToLinear(std::clamp(c->r.typical() * tint[0], 0.0f, 1.0f)),
                                      srgbToLinear(std::clamp(c->g.typical() * tint[1], 0.0f, 1.0f)),
                                      srgbToLinear(std::clamp(c->b.typical() * tint[2], 0.0f, 1.0f))};
-        auto it = colorIndex_.find(rgb);
+        return paletteEntry(rgb, texture);
+    }
+
+    // The texture layer of the stage's Texture where the renderer holds it, else -1.
+    int textureOf(const ir::EcoOrgan& organ, const ir::EcoStage* stage) const {
+        const std::optional<std::string>* texture = nullptr;
+        if (stage && stage->texture) texture = &stage->texture;
+        else if (organ.defaultStage && organ.defaultStage->texture) texture = &organ.defaultStage->texture;
+        if (!assets_ || !texture) return -1;
+        auto it = assets_->textureLayers.find(**texture);
+        return it == assets_->textureLayers.end() ? -1 : static_cast<int>(it->second);
+    }
+
+    // The palette entry of a colour tinting texture layer `texture` (-1: none), added where it is new.
+    int paletteEntry(const std::array<float, 3>& rgb, int texture) {
+        auto it = colorIndex_.find({rgb, texture});
         if (it != colorIndex_.end()) return it->second;
         if (g_.view.palette.size() >= 256) return 2; // a palette holds 256 colours
         int index = static_cast<int>(g_.view.palette.size());
-        g_.view.palette.push_back(rgb);
-        colorIndex_[rgb] = index;
+        addPaletteEntry(rgb, texture);
+        colorIndex_[{rgb, texture}] = index;
         return index;
+    }
+
+    void addPaletteEntry(const std::array<float, 3>& rgb, int texture) {
+        g_.view.palette.push_back(rgb);
+        g_.view.paletteTextures.resize(g_.view.palette.size(), -1);
+        g_.view.paletteTextures.back() = texture;
     }
 
     // A leaf colour's three palette entries, for code kGrownLeafColor + the first: mature, young (lighter and
@@ -105,9 +128,11 @@ private:
         std::array<float, 3> young;
         for (size_t k = 0; k < 3; ++k) young[k] = 0.5f * (rgb[k] + spring[k]);
         const int first = static_cast<int>(g_.view.palette.size());
-        g_.view.palette.push_back(rgb);
-        g_.view.palette.push_back(young);
-        g_.view.palette.push_back(autumn);
+        const std::vector<int>& textures = g_.view.paletteTextures;
+        const int texture = size_t(mature) < textures.size() ? textures[size_t(mature)] : -1;
+        addPaletteEntry(rgb, texture);
+        addPaletteEntry(young, texture);
+        addPaletteEntry(autumn, texture);
         leafShades_[mature] = first;
         return first;
     }
@@ -118,9 +143,9 @@ private:
         const std::optional<std::string>* model = nullptr;
         if (stage && stage->model) model = &stage->model;
         else if (organ.defaultStage && organ.defaultStage->model) model = &organ.defaultStage->model;
-        if (!models_ || !model) return builtIn;
-        auto it = models_->find(**model);
-        if (it == models_->end()) return builtIn;
+        if (!assets_ || !model) return builtIn;
+        auto it = assets_->modelShapes.find(**model);
+        if (it == assets_->modelShapes.end()) return builtIn;
         const std::string name = "leafModel" + std::to_string(it->second);
         const bool known = std::any_of(g_.view.surfaces.begin(), g_.view.surfaces.end(),
                                        [&](const ir::ViewSettings::Surface& s) { return s.name == name; });
@@ -276,8 +301,8 @@ private:
 } // namespace
 
 void addEcoOrganGeometry(const ir::EcoPlant& plant, ir::Grammar& g, EcoDrawing drawing,
-                         const EcoModelShapes* models) {
-    GeometryBuilder(plant, g, drawing, models).build();
+                         const EcoAssets* assets) {
+    GeometryBuilder(plant, g, drawing, assets).build();
 }
 
 } // namespace simeco::lang

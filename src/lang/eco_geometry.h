@@ -9,6 +9,7 @@
 
 #include "ir/eco_scene.h"
 #include "ir/grammar.h"
+#include "lang/eco_assets.h"
 
 namespace simeco::lang {
 
@@ -19,7 +20,7 @@ namespace simeco::lang {
 //   leaf L:          ;(colour) ~ leaf(size)          size = the leaf model's, scaled by 1 + the growth of
 //                                                    stages 0 to its own (leaves pass through their stages
 //                                                    in order)
-//   flower F:        ;(colour) @ c(diameter)         a disc, diameter = GrowRate x GrowTime
+//   flower F:        ;(colour) ~ blossom(diameter)   the plant's blossom, diameter = GrowRate x GrowTime
 //   fruit T:         ;(colour) @ O(diameter)         a sphere
 //   apex A:          nothing
 // A stage's unset properties come from the organ's Default stage, then from simeco's defaults below. These are
@@ -29,12 +30,12 @@ namespace simeco::lang {
 // geotropism and weight, and is shed with the rest of its branch once its LifeTime has passed; a leaf's colour
 // follows its age (young, mature, old):
 //   stem S, root R:  ;(colour) !(width) [tropism(bend)] [alive(a)] rotu(roll) rotr(pitch) rotu(-roll) G(length)
-// `models`: a stage's Model, as the script writes it, and the leaf shape that draws the model (a leaf model the
-// renderer holds, lang/obj_leaf_model.h): a leaf of such a stage is drawn with it; others with the built-in blade.
+// `assets`: the models and textures the renderer holds (lang/eco_assets.h): a leaf, flower or fruit of a stage whose
+// Model is among them is drawn with it, others with the built-in blade, blossom or sphere; a stage whose Texture is
+// among them gets a colour of its own that tints the texture (ViewSettings::paletteTextures).
 enum class EcoDrawing { Final, Grown };
-using EcoModelShapes = std::map<std::string, uint32_t>;
 void addEcoOrganGeometry(const ir::EcoPlant& plant, ir::Grammar& g, EcoDrawing drawing = EcoDrawing::Final,
-                         const EcoModelShapes* models = nullptr);
+                         const EcoAssets* assets = nullptr);
 
 inline constexpr float kEcoDefaultGrowTime = 1.0f;
 inline constexpr float kEcoDefaultStemLength = 1.0f;

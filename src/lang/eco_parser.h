@@ -20,7 +20,7 @@ ir::EcoScene parseEcoText(const std::string& text, const std::string& file);
 // The Grow block of one plant as a grammar (each plant is its own grammar), its organs drawn as `drawing` says
 // (lang/eco_geometry.h). Throws InputError when the scene has no plant `plantIndex`.
 ir::Grammar compileEcoPlant(const ir::EcoScene& scene, size_t plantIndex, EcoDrawing drawing = EcoDrawing::Final,
-                            const EcoModelShapes* models = nullptr);
+                            const EcoAssets* assets = nullptr);
 
 // Derivation steps of a plant whose script sets no `DerivationLength` (see eco_compile.cpp).
 inline constexpr int kDefaultEcoDerivationLength = 10;

@@ -8,7 +8,7 @@
 #include "lang/cpfg_parser.h"
 #include "lang/cpfg_preprocessor.h"
 #include "lang/cpfg_view.h"
-#include "lang/eco_models.h"
+#include "lang/eco_assets.h"
 #include "lang/eco_parser.h"
 #include "lang/material_file.h"
 #include "lang/quick_grammar.h"
@@ -67,17 +67,17 @@ ir::Grammar loadScenePlantGrammar(const ir::EcoScene& scene, const ir::EcoPlant&
 }
 
 std::vector<ir::Grammar> loadSpecies(const std::string& path, std::vector<ir::EcoWarning>* warnings,
-                                     std::vector<ir::LeafModel>* models) {
+                                     ir::DrawAssets* assets) {
     std::string ext = fs::path(path).extension().string();
     std::vector<ir::Grammar> species;
     if (ext == ".eco") {
         ir::EcoScene scene = parseEcoFile(path);
         if (warnings) warnings->insert(warnings->end(), scene.warnings.begin(), scene.warnings.end());
         if (scene.plants.empty()) throw ir::InputError(scene.loc, "the scene has no plant");
-        const EcoModelShapes shapes = models ? loadEcoModels(scene, *models, warnings) : EcoModelShapes{};
+        const EcoAssets found = assets ? loadEcoAssets(scene, *assets, warnings) : EcoAssets{};
         for (size_t i = 0; i < scene.plants.size(); ++i)
             species.push_back(scene.plants[i].grammar.empty()
-                                  ? compileEcoPlant(scene, i, EcoDrawing::Final, &shapes)
+                                  ? compileEcoPlant(scene, i, EcoDrawing::Final, &found)
                                   : loadScenePlantGrammar(scene, scene.plants[i], warnings));
     } else if (ext == ".lsys") {
         species.push_back(parseQuickGrammar(readSourceFile(path), path));

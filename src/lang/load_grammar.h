@@ -6,17 +6,17 @@
 
 #include "ir/eco_scene.h"
 #include "ir/grammar.h"
-#include "ir/leaf_model.h"
+#include "ir/draw_assets.h"
 
 namespace simeco::lang {
 
 // The one entry point for every input language, chosen by the file's extension: `.l`: cpfg / L-studio (with the
 // model's view file from the same folder, when there is one); `.lsys`: quick (Houdini-style) grammar; `.eco`:
 // SimEco scene, one grammar per plant (species) of the scene, its warnings added to `warnings` when given. With
-// `models`, the `.obj` models a scene's stages name are read into it and draw those stages' organs
-// (lang/eco_models.h).
+// `assets`, the models and textures a scene's stages name are read into it and draw those stages' organs
+// (lang/eco_assets.h).
 std::vector<ir::Grammar> loadSpecies(const std::string& path, std::vector<ir::EcoWarning>* warnings = nullptr,
-                                     std::vector<ir::LeafModel>* models = nullptr);
+                                     ir::DrawAssets* assets = nullptr);
 
 // The grammar of a scene's plant that names a Grammar file (relative to the scene's folder).
 ir::Grammar loadScenePlantGrammar(const ir::EcoScene& scene, const ir::EcoPlant& plant,

@@ -86,8 +86,11 @@ TurtleSettings turtleSettings(const ir::Grammar& grammar, const ir::Alphabet& al
         t.palette = defaultPalette();
     } else {
         t.palette.assign(kPaletteSize, glm::vec4(0, 0, 0, 1));
-        for (size_t i = 0; i < std::min(kPaletteSize, v.palette.size()); ++i)
-            t.palette[i] = glm::vec4(v.palette[i][0], v.palette[i][1], v.palette[i][2], 1.0f);
+        for (size_t i = 0; i < std::min(kPaletteSize, v.palette.size()); ++i) {
+            const int texture = i < v.paletteTextures.size() ? v.paletteTextures[i] : -1;
+            const float w = texture < 0 ? shared::kColorUntextured : shared::kColorFirstTexture + float(texture);
+            t.palette[i] = glm::vec4(v.palette[i][0], v.palette[i][1], v.palette[i][2], w);
+        }
     }
     // Any symbol can follow `~` as a surface id: scale 1 and a shape from its name unless the view names it.
     t.surfaceScale.assign(alphabet.size(), 1.0f);

@@ -188,7 +188,7 @@ TEST_F(SimulationTest, LeavesOfAModelAreDrawnAndMeasuredWithIt) {
     field::Simulation gpu(options, &context());
     options.backend = field::Backend::Cpu;
     field::Simulation cpu(options, &context());
-    ASSERT_EQ(gpu.species().leafModels.size(), 1u);
+    ASSERT_EQ(gpu.species().assets.models.size(), 1u);
     for (int tick = 0; tick < 4; ++tick) gpu.tick(), cpu.tick(); // past the leaf's first DeriveTime: unfolded
     const std::vector<const turtle::DeviceOrgans*> parts = gpu.interpretParts();
     cpu.interpret();
@@ -196,7 +196,7 @@ TEST_F(SimulationTest, LeavesOfAModelAreDrawnAndMeasuredWithIt) {
     EXPECT_NEAR(gpu.statistics()[0].leafArea, 0.25f * 9.0f, 1e-4f);
     EXPECT_NEAR(cpu.statistics()[0].leafArea, 0.25f * 9.0f, 1e-4f);
     // Drawn with the model's triangles: the leaf shows.
-    draw::Renderer renderer(context(), gpu.species().leafModels);
+    draw::Renderer renderer(context(), gpu.species().assets);
     draw::RenderSettings settings;
     settings.width = 160;
     settings.height = 120;
@@ -208,6 +208,76 @@ TEST_F(SimulationTest, LeavesOfAModelAreDrawnAndMeasuredWithIt) {
     const draw::Frame frame =
         renderer.render(field::organParts(parts), draw::Bounds{drawn.bounds.min, drawn.bounds.max}, settings);
     EXPECT_GT(std::count(frame.organ.begin(), frame.organ.end(), leaf), 100);
+    std::filesystem::remove_all(folder);
+}
+
+// A 24-bit Windows bitmap of 2 x 2 pixels, its left column red and its right column blue, stored bottom-up.
+void writeRedBlueBitmap(const std::filesystem::path& path) {
+    std::vector<uint8_t> b(54 + 2 * 8, 0);
+    auto put = [&](size_t at, uint32_t v, size_t bytes) {
+        for (size_t k = 0; k < bytes; ++k) b[at + k] = uint8_t(v >> (8 * k));
+    };
+    b[0] = 'B', b[1] = 'M';
+    put(2, uint32_t(b.size()), 4), put(10, 54, 4), put(14, 40, 4), put(18, 2, 4), put(22, 2, 4), put(26, 1, 2);
+    put(28, 24, 2);
+    for (size_t row = 0; row < 2; ++row) {
+        const size_t at = 54 + 8 * row;
+        b[at + 2] = 255; // red: blue, green, red
+        b[at + 3] = 255; // blue
+    }
+    std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(b.data()), std::streamsize(b.size()));
+}
+
+TEST_F(SimulationTest, ATexturedStagesOrgansShowItsTexture) {
+    const std::filesystem::path folder = std::filesystem::temp_directory_path() / "simeco-texture-test";
+    std::filesystem::create_directories(folder);
+    writeRedBlueBitmap(folder / "red-blue.bmp");
+    field::SimulationOptions options;
+    options.file = (folder / "texture.eco").string();
+    // Stage 0's leaf is textured, stage 1's names a texture that is not there and keeps its colour.
+    options.sceneText = R"(EcoSystem 1.0 "Texture" {
+        Plant "Herb" {
+            Stem { Default { GrowRate = 1.0; GrowTime = 1.0; BroadenRate = 0.1; } }
+            Leaf {
+                Stage 0 { Texture = "red-blue.bmp"; }
+                Stage 1 { Texture = "missing.png"; Color = RGBA(0.2, 0.6, 0.2, 1.0); }
+            }
+            Grow { w = S(0)[rotr(1.2)L(0)][rotr(-1.2)L(1)]; }
+        }
+    })";
+    field::Simulation gpu(options, &context());
+    ASSERT_EQ(gpu.species().assets.textures.size(), 1u);
+    for (int tick = 0; tick < 4; ++tick) gpu.tick();
+    const std::vector<const turtle::DeviceOrgans*> parts = gpu.interpretParts();
+    const turtle::Interpretation drawn = turtle::readBack(context(), *parts.front(), 1);
+    ASSERT_EQ(drawn.count[shared::kOrganLeaf], 2u);
+    const shared::OrganInstance& textured = drawn.organs[drawn.first[shared::kOrganLeaf]];
+    const shared::OrganInstance& plain = drawn.organs[drawn.first[shared::kOrganLeaf] + 1];
+    EXPECT_EQ(textured.color.w, shared::kColorFirstTexture);
+    EXPECT_EQ(plain.color.w, shared::kColorUntextured);
+
+    draw::Renderer renderer(context(), gpu.species().assets);
+    draw::RenderSettings settings;
+    settings.width = 200;
+    settings.height = 150;
+    settings.shadows = draw::Shadows::None;
+    const draw::Frame frame =
+        renderer.render(field::organParts(parts), draw::Bounds{drawn.bounds.min, drawn.bounds.max}, settings);
+    // The textured leaf shows the red and the blue halves of its texture; the plain one neither.
+    auto count = [&](uint32_t module, auto hue) {
+        int n = 0;
+        for (size_t i = 0; i < frame.organ.size(); ++i) {
+            const float r = frame.rgba[4 * i], g = frame.rgba[4 * i + 1], bl = frame.rgba[4 * i + 2];
+            n += frame.organ[i] == module && hue(r, g, bl) ? 1 : 0;
+        }
+        return n;
+    };
+    auto red = [](float r, float g, float b) { return r > 3 * g && r > 3 * b; };
+    auto blue = [](float r, float g, float b) { return b > 3 * g && b > 3 * r; };
+    EXPECT_GT(count(textured.module, red), 20);
+    EXPECT_GT(count(textured.module, blue), 20);
+    EXPECT_EQ(count(plain.module, red) + count(plain.module, blue), 0);
+    EXPECT_GT(std::count(frame.organ.begin(), frame.organ.end(), plain.module), 20);
     std::filesystem::remove_all(folder);
 }
 

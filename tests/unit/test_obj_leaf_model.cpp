@@ -86,8 +86,8 @@ TEST_F(ObjLeafModel, LeafStagesNamingAModelAreDrawnWithIt) {
     })");
     std::vector<ir::EcoWarning> warnings;
     const grow::GrowingSpecies g = grow::growingSpecies(lang::parseEcoFile(scene), &warnings);
-    ASSERT_EQ(g.leafModels.size(), 1u);
-    EXPECT_FLOAT_EQ(g.leafModels[0].area, 0.25f);
+    ASSERT_EQ(g.assets.models.size(), 1u);
+    EXPECT_FLOAT_EQ(g.assets.models[0].area, 0.25f);
     // One warning names both models that cannot be read.
     ASSERT_EQ(warnings.size(), 1u);
     EXPECT_NE(warnings[0].message.find("\"missing.obj\""), std::string::npos) << warnings[0].message;
@@ -112,9 +112,9 @@ TEST_F(ObjLeafModel, AScenesRenderedStagesAreDrawnWithItsModelsToo) {
             Grow { w = S(0)[L(0)][L(1)]; }
         }
     })");
-    std::vector<ir::LeafModel> models;
-    const std::vector<ir::Grammar> species = lang::loadSpecies(scene, nullptr, &models);
-    ASSERT_EQ(models.size(), 1u);
+    ir::DrawAssets assets;
+    const std::vector<ir::Grammar> species = lang::loadSpecies(scene, nullptr, &assets);
+    ASSERT_EQ(assets.models.size(), 1u);
     const ir::Grammar& herb = species[0];
     const std::optional<ir::SymbolId> model =
         herb.alphabet.find("leafModel" + std::to_string(shared::kSurfaceLastShape + 1));
@@ -134,8 +134,8 @@ TEST_F(ObjLeafModel, FlowersAreBlossomsOfThePlantsNameOrTheirModelAndNoLeafArea)
         }
     })");
     const grow::GrowingSpecies g = grow::growingSpecies(lang::parseEcoFile(scene));
-    ASSERT_EQ(g.leafModels.size(), 1u);
-    EXPECT_FALSE(g.leafModels[0].leaf);
+    ASSERT_EQ(g.assets.models.size(), 1u);
+    EXPECT_FALSE(g.assets.models[0].leaf);
     const ir::Grammar& lantana = g.species[0];
     const turtle::TurtleSettings t = turtle::turtleSettings(lantana, lantana.alphabet);
     const std::optional<ir::SymbolId> model =
@@ -145,7 +145,7 @@ TEST_F(ObjLeafModel, FlowersAreBlossomsOfThePlantsNameOrTheirModelAndNoLeafArea)
     EXPECT_EQ(t.surfaceShape[*model], shared::kSurfaceLastShape + 1);
     EXPECT_EQ(t.surfaceShape[*blossom], shared::kBlossomHead);
     // Neither a blossom nor a flower's model counts as leaf area; the blades do.
-    const std::vector<float> areas = field::leafShapeAreas(g.leafModels);
+    const std::vector<float> areas = field::leafShapeAreas(g.assets.models);
     ASSERT_EQ(areas.size(), shared::kSurfaceLastShape + 2u);
     EXPECT_GT(areas[shared::kLeafSerrate], 0.1f);
     for (uint32_t shape = shared::kLeafLastShape + 1; shape < areas.size(); ++shape) EXPECT_EQ(areas[shape], 0.0f);

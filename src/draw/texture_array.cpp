@@ -73,42 +73,10 @@ TextureArray::TextureArray(const vk::Context& context, const std::vector<ir::Tex
     : layers_(std::max<std::uint32_t>(1, std::uint32_t(textures.size()))) {
     VkDevice device = context.device();
     const std::uint32_t levels = mipLevels();
-    VkImageCreateInfo info{};
-    info.sType = VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO;
-    info.imageType = VK_IMAGE_TYPE_2D;
-    info.format = kTextureFormat;
-    info.extent = {kTextureSide, kTextureSide, 1};
-    info.mipLevels = levels;
-    info.arrayLayers = layers_;
-    info.samples = VK_SAMPLE_COUNT_1_BIT;
-    info.tiling = VK_IMAGE_TILING_OPTIMAL;
-    info.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
-    info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
-    info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-    VkImage rawImage = VK_NULL_HANDLE;
-    VK_CHECK(vkCreateImage(device, &info, nullptr, &rawImage));
-    image_ = UniqueImage(device, rawImage);
-    VkMemoryRequirements requirements{};
-    vkGetImageMemoryRequirements(device, rawImage, &requirements);
-    VkMemoryAllocateInfo allocateInfo{};
-    allocateInfo.sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO;
-    allocateInfo.allocationSize = requirements.size;
-    allocateInfo.memoryTypeIndex = vk::chooseMemoryType(context.memoryProperties(), requirements.memoryTypeBits, 0,
-                                                        VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-    VkDeviceMemory rawMemory = VK_NULL_HANDLE;
-    VK_CHECK(vkAllocateMemory(device, &allocateInfo, nullptr, &rawMemory));
-    memory_ = vk::UniqueMemory(device, rawMemory);
-    VK_CHECK(vkBindImageMemory(device, rawImage, rawMemory, 0));
-
-    VkImageViewCreateInfo viewInfo{};
-    viewInfo.sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO;
-    viewInfo.image = rawImage;
-    viewInfo.viewType = VK_IMAGE_VIEW_TYPE_2D_ARRAY;
-    viewInfo.format = kTextureFormat;
-    viewInfo.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, levels, 0, layers_};
-    VkImageView rawView = VK_NULL_HANDLE;
-    VK_CHECK(vkCreateImageView(device, &viewInfo, nullptr, &rawView));
-    view_ = UniqueImageView(device, rawView);
+    image_ = DeviceImage(context, kTextureFormat, VK_IMAGE_ASPECT_COLOR_BIT,
+                         VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT, {kTextureSide, kTextureSide},
+                         levels, layers_, VK_IMAGE_VIEW_TYPE_2D_ARRAY);
+    const VkImage rawImage = image_.image.get();
 
     VkSamplerCreateInfo samplerInfo{};
     samplerInfo.sType = VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO;

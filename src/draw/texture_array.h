@@ -28,14 +28,12 @@ public:
     TextureArray(const vk::Context& context, const std::vector<ir::TextureImage>& textures);
 
     VkDescriptorImageInfo descriptor() const {
-        return {sampler_.get(), view_.get(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+        return {sampler_.get(), image_.view.get(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     }
     std::uint32_t layers() const { return layers_; }
 
 private:
-    vk::UniqueMemory memory_; // declared first so the image and view go before their memory
-    UniqueImage image_;
-    UniqueImageView view_;
+    DeviceImage image_;
     vk::DeviceHandle<VkSampler, vkDestroySampler> sampler_;
     std::uint32_t layers_ = 0;
 };

@@ -6,17 +6,17 @@
 
 namespace simeco::draw {
 
-Attachment::Attachment(const vk::Context& context, VkFormat imageFormat, VkImageAspectFlags aspect,
-                       VkImageUsageFlags usage, std::uint32_t width, std::uint32_t height)
-    : format(imageFormat) {
+DeviceImage::DeviceImage(const vk::Context& context, VkFormat format, VkImageAspectFlags aspect,
+                         VkImageUsageFlags usage, VkExtent2D extent, std::uint32_t levels, std::uint32_t layers,
+                         VkImageViewType viewType) {
     VkDevice device = context.device();
     VkImageCreateInfo info{};
     info.sType = VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO;
     info.imageType = VK_IMAGE_TYPE_2D;
     info.format = format;
-    info.extent = {width, height, 1};
-    info.mipLevels = 1;
-    info.arrayLayers = 1;
+    info.extent = {extent.width, extent.height, 1};
+    info.mipLevels = levels;
+    info.arrayLayers = layers;
     info.samples = VK_SAMPLE_COUNT_1_BIT;
     info.tiling = VK_IMAGE_TILING_OPTIMAL;
     info.usage = usage;
@@ -41,13 +41,17 @@ Attachment::Attachment(const vk::Context& context, VkFormat imageFormat, VkImage
     VkImageViewCreateInfo viewInfo{};
     viewInfo.sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO;
     viewInfo.image = rawImage;
-    viewInfo.viewType = VK_IMAGE_VIEW_TYPE_2D;
+    viewInfo.viewType = viewType;
     viewInfo.format = format;
-    viewInfo.subresourceRange = {aspect, 0, 1, 0, 1};
+    viewInfo.subresourceRange = {aspect, 0, levels, 0, layers};
     VkImageView rawView = VK_NULL_HANDLE;
     VK_CHECK(vkCreateImageView(device, &viewInfo, nullptr, &rawView));
     view = UniqueImageView(device, rawView);
 }
+
+Attachment::Attachment(const vk::Context& context, VkFormat imageFormat, VkImageAspectFlags aspect,
+                       VkImageUsageFlags usage, std::uint32_t width, std::uint32_t height)
+    : DeviceImage(context, imageFormat, aspect, usage, {width, height}, 1, 1), format(imageFormat) {}
 
 void memoryDependency(VkCommandBuffer cmd, VkPipelineStageFlags srcStages, VkAccessFlags srcAccess,
                       VkPipelineStageFlags dstStages, VkAccessFlags dstAccess) {

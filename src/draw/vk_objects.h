@@ -18,15 +18,25 @@ using UniqueImageView = vk::DeviceHandle<VkImageView, vkDestroyImageView>;
 using UniqueRenderPass = vk::DeviceHandle<VkRenderPass, vkDestroyRenderPass>;
 using UniqueFramebuffer = vk::DeviceHandle<VkFramebuffer, vkDestroyFramebuffer>;
 
-// A 2D image in device-local memory with a view of the given aspect.
-struct Attachment {
-    Attachment() = default;
-    Attachment(const vk::Context& context, VkFormat format, VkImageAspectFlags aspect, VkImageUsageFlags usage,
-               std::uint32_t width, std::uint32_t height);
+// A 2D image in device-local memory with `levels` mip levels and `layers` layers, and a view of all of them of the
+// given aspect and type.
+struct DeviceImage {
+    DeviceImage() = default;
+    DeviceImage(const vk::Context& context, VkFormat format, VkImageAspectFlags aspect, VkImageUsageFlags usage,
+                VkExtent2D extent, std::uint32_t levels, std::uint32_t layers,
+                VkImageViewType viewType = VK_IMAGE_VIEW_TYPE_2D);
 
     vk::UniqueMemory memory; // declared first so the image and view go before their memory
     UniqueImage image;
     UniqueImageView view;
+};
+
+// A render target's image: one level, one layer.
+struct Attachment : DeviceImage {
+    Attachment() = default;
+    Attachment(const vk::Context& context, VkFormat format, VkImageAspectFlags aspect, VkImageUsageFlags usage,
+               std::uint32_t width, std::uint32_t height);
+
     VkFormat format = VK_FORMAT_UNDEFINED;
 };
 

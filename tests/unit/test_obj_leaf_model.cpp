@@ -23,6 +23,14 @@ namespace {
 namespace fs = std::filesystem;
 
 // A folder of its own for the test's files, removed at the end.
+// The surface the first model read is drawn as, and the shape the turtle draws surface `name` of `g` with
+// (~0 where `g` has no such symbol).
+const std::string kFirstModel = "leafModel" + std::to_string(shared::kSurfaceLastShape + 1);
+uint32_t surfaceShape(const ir::Grammar& g, const std::string& name) {
+    const std::optional<ir::SymbolId> symbol = g.alphabet.find(name);
+    return symbol ? turtle::turtleSettings(g, g.alphabet).surfaceShape[*symbol] : ~0u;
+}
+
 class ObjLeafModel : public ::testing::Test {
 protected:
     void SetUp() override {
@@ -93,14 +101,8 @@ TEST_F(ObjLeafModel, LeafStagesNamingAModelAreDrawnWithIt) {
     EXPECT_NE(warnings[0].message.find("\"missing.obj\""), std::string::npos) << warnings[0].message;
     EXPECT_NE(warnings[0].message.find("\"thesis.i\""), std::string::npos) << warnings[0].message;
     // The model's leaves have its shape, the others the built-in blade of the plant's name.
-    const ir::Grammar& herb = g.species[0];
-    const turtle::TurtleSettings t = turtle::turtleSettings(herb, herb.alphabet);
-    const std::optional<ir::SymbolId> model =
-        herb.alphabet.find("leafModel" + std::to_string(shared::kSurfaceLastShape + 1));
-    const std::optional<ir::SymbolId> blade = herb.alphabet.find("leaf");
-    ASSERT_TRUE(model && blade);
-    EXPECT_EQ(t.surfaceShape[*model], shared::kSurfaceLastShape + 1);
-    EXPECT_EQ(t.surfaceShape[*blade], shared::kLeafOvate);
+    EXPECT_EQ(surfaceShape(g.species[0], kFirstModel), shared::kSurfaceLastShape + 1);
+    EXPECT_EQ(surfaceShape(g.species[0], "leaf"), shared::kLeafOvate);
 }
 
 // `simeco render` draws a scene's stages at their final sizes (lang::loadSpecies), with the same models.
@@ -115,14 +117,10 @@ TEST_F(ObjLeafModel, AScenesRenderedStagesAreDrawnWithItsModelsToo) {
     ir::DrawAssets assets;
     const std::vector<ir::Grammar> species = lang::loadSpecies(scene, nullptr, &assets);
     ASSERT_EQ(assets.models.size(), 1u);
-    const ir::Grammar& herb = species[0];
-    const std::optional<ir::SymbolId> model =
-        herb.alphabet.find("leafModel" + std::to_string(shared::kSurfaceLastShape + 1));
-    ASSERT_TRUE(model);
-    EXPECT_EQ(turtle::turtleSettings(herb, herb.alphabet).surfaceShape[*model], shared::kSurfaceLastShape + 1);
+    EXPECT_EQ(surfaceShape(species[0], kFirstModel), shared::kSurfaceLastShape + 1);
     // Without a place for the models, the stages keep the built-in blade.
     const std::vector<ir::Grammar> plain = lang::loadSpecies(scene);
-    EXPECT_FALSE(plain[0].alphabet.find("leafModel" + std::to_string(shared::kSurfaceLastShape + 1)));
+    EXPECT_FALSE(plain[0].alphabet.find(kFirstModel));
 }
 
 TEST_F(ObjLeafModel, FlowersAreBlossomsOfThePlantsNameOrTheirModelAndNoLeafArea) {
@@ -136,14 +134,8 @@ TEST_F(ObjLeafModel, FlowersAreBlossomsOfThePlantsNameOrTheirModelAndNoLeafArea)
     const grow::GrowingSpecies g = grow::growingSpecies(lang::parseEcoFile(scene));
     ASSERT_EQ(g.assets.models.size(), 1u);
     EXPECT_FALSE(g.assets.models[0].leaf);
-    const ir::Grammar& lantana = g.species[0];
-    const turtle::TurtleSettings t = turtle::turtleSettings(lantana, lantana.alphabet);
-    const std::optional<ir::SymbolId> model =
-        lantana.alphabet.find("leafModel" + std::to_string(shared::kSurfaceLastShape + 1));
-    const std::optional<ir::SymbolId> blossom = lantana.alphabet.find("blossom");
-    ASSERT_TRUE(model && blossom);
-    EXPECT_EQ(t.surfaceShape[*model], shared::kSurfaceLastShape + 1);
-    EXPECT_EQ(t.surfaceShape[*blossom], shared::kBlossomHead);
+    EXPECT_EQ(surfaceShape(g.species[0], kFirstModel), shared::kSurfaceLastShape + 1);
+    EXPECT_EQ(surfaceShape(g.species[0], "blossom"), shared::kBlossomHead);
     // Neither a blossom nor a flower's model counts as leaf area; the blades do.
     const std::vector<float> areas = field::leafShapeAreas(g.assets.models);
     ASSERT_EQ(areas.size(), shared::kSurfaceLastShape + 2u);

@@ -1,0 +1,45 @@
+// The light grid, last pass: each organ the turtle drew takes the light of its voxel and the direction most of it
+// comes from into its module's particle (kParticleLight, kParticleLightDirection as an octahedral pair packed by
+// packSnorm2x16); an organ outside the grid is in the open: all the light there is, from straight above. Where a
+// module draws several organs of a kind (a tube's segments), its first organ of the kind writes.
+#version 450
+#extension GL_GOOGLE_include_directive : require
+#include "compute/shared/light_layout.h"
+#include "compute/shared/organ_layout.h"
+#include "compute/shared/particle_layout.h"
+
+layout(local_size_x = kLightWorkgroupSize) in;
+layout(set = 0, binding = 0, std430) readonly buffer Instances { OrganInstance instances[]; };
+layout(set = 0, binding = 1, std430) readonly buffer Table { OrganTable table; };
+layout(set = 0, binding = 2, std430) readonly buffer Light { vec4 light[]; };
+layout(set = 0, binding = 3, std430) readonly buffer Directions { LightDirection directions[]; };
+layout(set = 0, binding = 4, std430) buffer Particles { float particles[]; };
+layout(push_constant) uniform Push { LightGridPush pc; };
+
+#include "compute/grow/light_grid.glsl"
+
+// A unit direction as the two coordinates of the octahedron's unfolding (src/grow/light_grid.cpp's octahedral).
+vec2 octahedral(vec3 n) {
+    n /= abs(n.x) + abs(n.y) + abs(n.z);
+    vec2 e = n.xz;
+    if (n.y < 0.0) e = (1.0 - abs(e.yx)) * vec2(e.x >= 0.0 ? 1.0 : -1.0, e.y >= 0.0 ? 1.0 : -1.0);
+    return e;
+}
+
+void main() {
+    uint s = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * gl_WorkGroupSize.x + gl_LocalInvocationID.x;
+    uint last = kOrganKinds - 1u;
+    if (s >= table.first[last] + table.count[last]) return;
+    OrganInstance o = instances[s];
+    if (s > table.first[o.kind] && instances[s - 1u].module == o.module) return;
+    int v = voxelAt(organCentre(o));
+    vec4 l = vec4(0.0, 1.0, 0.0, 0.0);
+    if (v >= 0) {
+        l = light[v];
+    } else {
+        for (uint d = 0u; d < pc.directions; ++d) l.w += max(directions[d].towardAndIntensity.w, 0.0);
+    }
+    uint at = kParticleStateFloats * o.module;
+    particles[at + kParticleLight] = l.w;
+    particles[at + kParticleLightDirection] = uintBitsToFloat(packSnorm2x16(octahedral(l.xyz)));
+}

@@ -1,0 +1,27 @@
+// The light grid's voxels and what an organ puts in them (src/grow/light_grid.cpp does the same on the CPU).
+// Needs shared/organ_layout.h, shared/light_layout.h and a push block `pc` of LightGridPush.
+
+// The voxel holding point p, or -1 outside the grid.
+int voxelAt(vec3 p) {
+    vec3 cell = floor((p - pc.origin.xyz) / pc.origin.w);
+    if (any(lessThan(cell, vec3(0.0))) || cell.x >= float(pc.sizeX) || cell.y >= float(pc.sizeY) ||
+        cell.z >= float(pc.sizeZ))
+        return -1;
+    return int((uint(cell.z) * pc.sizeY + uint(cell.y)) * pc.sizeX + uint(cell.x));
+}
+
+// Where an organ stands for the light: the middle of its segment or blade, its centre, its triangle's centroid.
+vec3 organCentre(OrganInstance o) {
+    if (o.kind == kOrganStem || o.kind == kOrganLeaf) return o.position.xyz + 0.5 * o.position.w * o.heading.xyz;
+    if (o.kind == kOrganTriangle) return (o.position.xyz + o.heading.xyz + o.up.xyz) / 3.0;
+    return o.position.xyz;
+}
+
+// The area an organ shades with: a blade's (its shape's area at its length and width, `shapeArea`), a segment's
+// side seen across it (length times diameter), a disc's or sphere's cross-section, a triangle's.
+float organShadingArea(OrganInstance o, float shapeArea) {
+    if (o.kind == kOrganLeaf) return o.position.w * o.heading.w * shapeArea;
+    if (o.kind == kOrganStem) return o.position.w * (o.heading.w + o.up.w);
+    if (o.kind == kOrganTriangle) return 0.5 * length(cross(o.heading.xyz - o.position.xyz, o.up.xyz - o.position.xyz));
+    return 3.14159265 * o.heading.w * o.heading.w;
+}

@@ -1,0 +1,105 @@
+// The light grid of the growth simulation (compute/shared/light_layout.h): a box of cubic voxels over the field,
+// the organs' shading area splatted into it, light propagated from the sun and the sky, and each organ's particle
+// given the light of its voxel and the direction most of it comes from. On the device (GpuLightGrid, recorded into
+// the caller's command buffer) and in a CPU reference (LightGridCpu) the tests compare it with.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+#include <vulkan/vulkan.h>
+
+#include "compute/shared/light_layout.h"
+#include "compute/shared/particle_layout.h"
+#include "turtle/interpretation.h"
+#include "turtle/turtle_gpu.h"
+#include "vk/buffer.h"
+#include "vk/pipeline.h"
+
+namespace simeco::vk {
+class Context;
+}
+
+namespace simeco::grow {
+
+struct LightGridSpec {
+    glm::vec3 origin{0.0f}; // the lowest corner
+    float side = 1.0f;      // of a voxel
+    std::array<uint32_t, 3> size{1, 1, 1};
+
+    uint64_t voxels() const { return uint64_t(size[0]) * size[1] * size[2]; }
+    glm::vec3 centre(uint64_t voxel) const;
+    // The voxel holding p, or -1 outside (compute/grow/light_grid.glsl's voxelAt).
+    int64_t voxelAt(glm::vec3 p) const;
+};
+
+// Voxels the grid may have per plant, and at least and at most in all: the grid's cost stays proportional to the
+// field's plants (each plant shades within a few voxels of its organs), bounded for a field of any size.
+inline constexpr uint64_t kVoxelsPerPlant = 512;
+inline constexpr uint64_t kLeastVoxels = 4096;
+inline constexpr uint64_t kMostVoxels = uint64_t(1) << 24;
+
+// A grid of cubic voxels over [low, high] (the field's extent as it grows), as many as the field's plants allow.
+LightGridSpec lightGridOver(glm::vec3 low, glm::vec3 high, uint32_t plants);
+
+// Where light comes from: the sun (towards it, `sunIntensity`; none below the horizon), then the sky as
+// kSkyDirections directions over the upper hemisphere sharing `skyLight` (one at the zenith and rings at 60° and
+// 30° of elevation), each its share of the light on a horizontal surface.
+inline constexpr uint32_t kSkyDirections = 13;
+std::vector<shared::LightDirection> lightDirections(glm::vec3 sunToward, float sunIntensity, float skyLight);
+
+// The direction as light_gather.comp packs it into a particle (octahedral, packSnorm2x16), and back.
+float packLightDirection(glm::vec3 unit);
+glm::vec3 unpackLightDirection(float packed);
+
+// The CPU reference: the same passes as plain loops.
+class LightGridCpu {
+public:
+    // `obstacles`: per voxel, 1 where an obstacle fills it.
+    LightGridCpu(const LightGridSpec& spec, std::vector<shared::LightDirection> directions,
+                 std::vector<uint32_t> obstacles);
+
+    void clear(); // the splatted areas
+    void splat(const turtle::Interpretation& organs, const std::vector<float>& shapeAreas);
+    void propagate();
+    // Each organ's light into `particles` (one state per module of the drawn string).
+    void gather(const turtle::Interpretation& organs, std::vector<shared::ParticleState>& particles) const;
+
+    const std::vector<uint32_t>& occupancy() const { return occupancy_; }
+    const std::vector<glm::vec4>& light() const { return light_; } // xyz: most light from; w: light
+
+private:
+    LightGridSpec spec_;
+    std::vector<shared::LightDirection> directions_;
+    std::vector<uint32_t> obstacles_, occupancy_;
+    std::vector<glm::vec4> light_;
+};
+
+class GpuLightGrid {
+public:
+    GpuLightGrid(const vk::Context& context, const LightGridSpec& spec,
+                 const std::vector<shared::LightDirection>& directions, const std::vector<uint32_t>& obstacles,
+                 const std::vector<float>& shapeAreas);
+
+    void recordClear(VkCommandBuffer cmd);
+    void recordSplat(VkCommandBuffer cmd, const turtle::DeviceOrgans& organs);
+    void recordPropagate(VkCommandBuffer cmd);
+    void recordGather(VkCommandBuffer cmd, const turtle::DeviceOrgans& organs, const vk::Buffer& drawnParticles);
+
+    const vk::Buffer& occupancy() const { return occupancy_; }
+    const vk::Buffer& light() const { return light_; }
+    const LightGridSpec& spec() const { return spec_; }
+
+private:
+    shared::LightGridPush push() const;
+
+    LightGridSpec spec_;
+    uint32_t directionCount_;
+    vk::ComputePipeline splat_, propagate_, gather_;
+    vk::Buffer directions_, obstacles_, shapeAreas_, occupancy_, light_;
+};
+
+} // namespace simeco::grow

@@ -61,7 +61,8 @@ if report.get("tool") == "simeco bench --render":
 
 if report.get("tool") == "simeco bench --sim":
     series = [(None, "tick: all its stages", "#000000"), ("derive", "derive", "#1f77b4"), ("grow", "grow", "#2ca02c"),
-              ("interpret", "interpret (turtle)", "#d62728"), ("statistics", "statistics", "#9467bd"),
+              ("interpret", "interpret (turtle)", "#d62728"), ("light", "light grid", "#e6a000"),
+              ("statistics", "statistics", "#9467bd"),
               ("draw", "draw a frame", "#8c564b")]
     plots = []
     for key, title, color in series:
@@ -70,7 +71,7 @@ if report.get("tool") == "simeco bench --sim":
             # A field not drawn ticks its growth alone: only its derive and grow stages compare with the others'.
             if e.get("status") != "ok" or ("not_drawn" in e and key not in ("derive", "grow")):
                 continue
-            seconds = e["median_tick_seconds"] if key is None else e["stage_median_seconds"][key]
+            seconds = e["median_tick_seconds"] if key is None else e["stage_median_seconds"].get(key, 0)
             if seconds > 0:
                 rows.append((e["plants"], seconds))
         if not rows:

@@ -1,7 +1,8 @@
 // The light grid, second pass: the light reaching each voxel's centre from every direction light comes from,
 // through the leaf area of the voxels on the way (Beer–Lambert, compute/shared/light_layout.h), and the direction
-// most of it comes from. A ray starts half a voxel through its own voxel and steps a voxel at a time until it
-// leaves the grid; a voxel an obstacle fills stops it.
+// most of it comes from. A ray steps a voxel's length at a time from the voxel's centre until it leaves the grid,
+// through the leaf area of the voxels it lands in; the voxel's own does not shade it (the organs in a voxel share
+// its light, as in Palubicki's shadow propagation); a voxel an obstacle fills stops it.
 #version 450
 #extension GL_GOOGLE_include_directive : require
 #include "compute/shared/light_layout.h"
@@ -33,8 +34,7 @@ void main() {
     for (uint d = 0u; d < pc.directions; ++d) {
         vec4 from = directions[d].towardAndIntensity;
         if (from.w <= 0.0) continue;
-        // Half its own voxel, then a voxel's length at a time.
-        float depth = 0.5 * side * perUnit * float(occupancy[v]);
+        float depth = 0.0;
         bool blocked = false;
         for (uint step = 1u; step < 4096u; ++step) {
             int u = voxelAt(centre + from.xyz * (float(step) * side));

@@ -39,7 +39,7 @@ SimEntry measure(const SimBenchOptions& o, const std::string& scene, std::uint32
     settings.width = o.width;
     settings.height = o.height;
     const draw::Bounds framed = simulation.grownBounds();
-    std::vector<double> derive, grow, interpret, statistics, draw;
+    std::vector<double> derive, grow, interpret, light, statistics, draw;
     auto tick = [&] {
         const field::StageSeconds before = simulation.stageSeconds();
         const Clock::time_point start = Clock::now();
@@ -61,17 +61,18 @@ SimEntry measure(const SimBenchOptions& o, const std::string& scene, std::uint32
         derive.push_back(after.derive - before.derive);
         grow.push_back(after.grow - before.grow);
         interpret.push_back(after.interpret - before.interpret);
+        light.push_back(after.light - before.light);
         statistics.push_back(after.statistics - before.statistics);
         draw.push_back(e.notDrawn.empty() ? secondsSince(drawn) : 0.0);
         return secondsSince(start);
     };
     e.tickSeconds = repeatRuns(o.warmUp, o.repeat, tick);
     // The stages of the timed ticks only.
-    for (std::vector<double>* v : {&derive, &grow, &interpret, &statistics, &draw})
+    for (std::vector<double>* v : {&derive, &grow, &interpret, &light, &statistics, &draw})
         v->erase(v->begin(), v->begin() + o.warmUp);
     e.medianTickSeconds = median(e.tickSeconds);
     e.ticksPerSecond = e.medianTickSeconds > 0 ? 1.0 / e.medianTickSeconds : 0;
-    e.stages = {median(derive), median(grow), median(interpret), median(statistics), median(draw)};
+    e.stages = {median(derive), median(grow), median(interpret), median(light), median(statistics), median(draw)};
     if (e.stages.grow > 0) {
         e.particlesPerSecond = double(simulation.modules()) / e.stages.grow;
         e.growBytesPerSecond = e.particlesPerSecond * kGrowBytesPerParticle;

@@ -30,7 +30,7 @@ struct SimBenchOptions {
 
 // Median seconds of each stage over the timed ticks.
 struct SimStages {
-    double derive = 0, grow = 0, interpret = 0, statistics = 0, draw = 0;
+    double derive = 0, grow = 0, interpret = 0, light = 0, statistics = 0, draw = 0;
 };
 
 struct SimEntry {

@@ -36,6 +36,7 @@ nlohmann::json simReportJson(const SimBenchReport& report) {
             entry["stage_median_seconds"] = {{"derive", e.stages.derive},
                                              {"grow", e.stages.grow},
                                              {"interpret", e.stages.interpret},
+                                             {"light", e.stages.light},
                                              {"statistics", e.stages.statistics},
                                              {"draw", e.stages.draw}};
         }
@@ -49,17 +50,18 @@ std::string formatSimTable(const SimBenchReport& report) {
     std::string out = fmt::format("simeco bench --sim: {} on {} ({}); {} bytes of state per particle\n", report.scene,
                                   report.deviceName, report.deviceType, report.bytesPerParticle);
     if (report.copy) out += fmt::format("copy bandwidth: {:.2f} GB/s\n", report.copy->bytesPerSecond * 1e-9);
-    out += fmt::format("{:>7} {:>7} {:>10} {:>9} {:>12} {:>9} {:>9} {:>10} {:>10} {:>9} {:>8}\n", "plants", "batches",
-                       "particles", "ticks/s", "particles/s", "copy", "derive", "grow", "interpret", "stats", "draw");
+    out += fmt::format("{:>7} {:>7} {:>10} {:>9} {:>12} {:>9} {:>9} {:>10} {:>10} {:>9} {:>9} {:>8}\n", "plants",
+                       "batches", "particles", "ticks/s", "particles/s", "copy", "derive", "grow", "interpret", "light",
+                       "stats", "draw");
     for (const SimEntry& e : report.entries) {
         if (e.status != "ok") {
             out += fmt::format("{:>7} failed: {}\n", e.plants, e.reason);
             continue;
         }
         out += fmt::format("{:>7} {:>7} {:>10} {:>9.3f} {:>12.3g} {:>8.1f}% {:>8.3f}s {:>9.3f}s {:>9.3f}s {:>8.3f}s "
-                           "{:>7.3f}s\n",
+                           "{:>8.3f}s {:>7.3f}s\n",
                            e.plants, e.batches, e.modules, e.ticksPerSecond, e.particlesPerSecond,
-                           100.0 * e.copyFraction, e.stages.derive, e.stages.grow, e.stages.interpret,
+                           100.0 * e.copyFraction, e.stages.derive, e.stages.grow, e.stages.interpret, e.stages.light,
                            e.stages.statistics, e.stages.draw);
         if (!e.notDrawn.empty()) out += fmt::format("{:>7} not drawn: {}\n", "", e.notDrawn);
     }

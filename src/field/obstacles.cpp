@@ -2,13 +2,25 @@
 
 #include <cmath>
 
+#include <glm/geometric.hpp>
+
 #include "compute/shared/organ_layout.h"
 #include "lang/color_map.h"
 
 namespace simeco::field {
 
+namespace {
+
+// An obstacle's own axes in the world: x (a wall's length) turned by its yaw about y, y up, z across.
+std::array<glm::vec3, 3> obstacleAxes(const ir::EcoObstacle& o) {
+    return {glm::vec3(std::cos(o.yaw), 0.0f, -std::sin(o.yaw)), glm::vec3(0, 1, 0),
+            glm::vec3(std::sin(o.yaw), 0.0f, std::cos(o.yaw))};
+}
+
+} // namespace
+
 std::array<glm::vec3, 8> obstacleCorners(const ir::EcoObstacle& o) {
-    const glm::vec3 x(std::cos(o.yaw), 0.0f, -std::sin(o.yaw)), y(0, 1, 0), z(std::sin(o.yaw), 0.0f, std::cos(o.yaw));
+    const auto [x, y, z] = obstacleAxes(o);
     const glm::vec3 center(o.center[0], o.center[1], o.center[2]);
     std::array<glm::vec3, 8> corners;
     for (int k = 0; k < 8; ++k)
@@ -16,6 +28,21 @@ std::array<glm::vec3, 8> obstacleCorners(const ir::EcoObstacle& o) {
                              y * ((k & 2) ? o.halfSize[1] : -o.halfSize[1]) +
                              z * ((k & 4) ? o.halfSize[2] : -o.halfSize[2]);
     return corners;
+}
+
+std::vector<uint32_t> obstacleVoxels(const grow::LightGridSpec& grid, const std::vector<ir::EcoObstacle>& obstacles) {
+    std::vector<uint32_t> mask(grid.voxels(), 0);
+    for (const ir::EcoObstacle& o : obstacles) {
+        const std::array<glm::vec3, 3> axes = obstacleAxes(o);
+        const glm::vec3 center(o.center[0], o.center[1], o.center[2]);
+        for (uint64_t v = 0; v < grid.voxels(); ++v) {
+            const glm::vec3 d = grid.centre(v) - center;
+            bool inside = true;
+            for (size_t k = 0; k < 3; ++k) inside = inside && std::abs(glm::dot(d, axes[k])) <= o.halfSize[k];
+            if (inside) mask[v] = 1;
+        }
+    }
+    return mask;
 }
 
 turtle::Interpretation obstacleOrgans(const std::vector<ir::EcoObstacle>& obstacles) {

@@ -8,6 +8,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "grow/light_grid.h"
 #include "ir/eco_field.h"
 #include "turtle/interpretation.h"
 
@@ -15,6 +16,9 @@ namespace simeco::field {
 
 // The eight corners of an obstacle, in the world.
 std::array<glm::vec3, 8> obstacleCorners(const ir::EcoObstacle& obstacle);
+
+// Per voxel of `grid`, 1 where its centre lies inside an obstacle: what stops the light (grow/light_grid.h).
+std::vector<uint32_t> obstacleVoxels(const grow::LightGridSpec& grid, const std::vector<ir::EcoObstacle>& obstacles);
 
 // The obstacles' triangles, as one interpretation whose organs are of plant 0 and of module k for obstacle k:
 // kept by a turtle::OrganMerge after the field's batches, they take the plant index past the field's plants.

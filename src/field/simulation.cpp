@@ -12,6 +12,7 @@
 #include "compute/shared/random.h"
 #include "compute/shared/turtle_state_layout.h"
 #include "cpu/derive.h"
+#include "draw/render_settings.h"
 #include "field/field_parts.h"
 #include "field/field_placement.h"
 #include "field/grown_plants.h"
@@ -19,6 +20,7 @@
 #include "field/plant_statistics.h"
 #include "gpu/derive_gpu.h"
 #include "grow/growth_tables.h"
+#include "grow/light_grid.h"
 #include "grow/tick_cpu.h"
 #include "grow/tick_gpu.h"
 #include "ir/source_loc.h"
@@ -42,6 +44,9 @@ double secondsSince(Clock::time_point start) { return std::chrono::duration<doub
 // half a binding), the other half of the binding left to plants that grow larger than the one grown before the
 // field.
 constexpr uint64_t kBatchDrawnModules = kBatchModules;
+
+// The sky's light in the light grid, as a share of the sun's: about a clear day's diffuse light.
+constexpr float kSkyShare = 0.3f;
 
 // The random streams of batch b: the field's seed for the first, another for each other, so that plants at the
 // same place in two batches differ.
@@ -101,6 +106,11 @@ struct Simulation::Impl {
     std::vector<shared::PlantStatistics> lastStatistics;
     bool drawn = false;
     StageSeconds seconds;
+    // The light grid (grow/light_grid.h) over the field's grown extent, made at the first interpretation: each
+    // interpretation gives the organs the light of the last one's grid, then splats them for the next.
+    std::unique_ptr<grow::GpuLightGrid> lightGpu;
+    std::unique_ptr<grow::LightGridCpu> lightCpu;
+    void prepareLight(const draw::Bounds& extent, uint32_t standing);
 
     grow::TickSettings settings(const Batch& b, uint32_t tick) const {
         return {&tables, uint32_t(g.species.size()), options.dt, tick, b.seed, g.relativeGravity(),
@@ -281,6 +291,26 @@ void Simulation::resume(const SimulationState& state) {
     m.time = double(state.ticks) * m.options.dt;
     m.nextStep = state.nextStep;
     m.drawn = false;
+    // The light grid as the saved run left it: splatted from the organs of the state saved.
+    if (m.context) interpretParts();
+}
+
+void Simulation::Impl::prepareLight(const draw::Bounds& extent, uint32_t standing) {
+    if (lightGpu || lightCpu) return;
+    const grow::LightGridSpec spec = grow::lightGridOver(extent.min, extent.max, standing);
+    const ir::EcoLight light = g.scene ? g.scene->light : ir::EcoLight{};
+    // The sun the renderer draws with where the scene sets none.
+    const glm::vec3 sun = light.sunDirection ? glm::vec3((*light.sunDirection)[0], (*light.sunDirection)[1],
+                                                         (*light.sunDirection)[2])
+                                             : draw::RenderSettings{}.sunDirection;
+    const std::vector<shared::LightDirection> directions = grow::lightDirections(
+        sun, light.sunIntensity.value_or(1.0f), kSkyShare * light.skyLight.value_or(1.0f));
+    std::vector<uint32_t> blocked = hasObstacles() ? obstacleVoxels(spec, g.scene->obstacles) : std::vector<uint32_t>{};
+    if (options.backend == Backend::Gpu)
+        lightGpu = std::make_unique<grow::GpuLightGrid>(*context, spec, directions, blocked,
+                                                        leafShapeAreas(g.assets.models));
+    else
+        lightCpu = std::make_unique<grow::LightGridCpu>(spec, directions, std::move(blocked));
 }
 
 std::vector<const turtle::DeviceOrgans*> Simulation::Impl::interpretOnDevice() {
@@ -289,6 +319,9 @@ std::vector<const turtle::DeviceOrgans*> Simulation::Impl::interpretOnDevice() {
     const bool merged = batches.size() > 1 || hasObstacles();
     if (merged) organMerge().begin();
     lastStatistics.clear();
+    Clock::time_point lightStart = Clock::now();
+    context->submitAndWait([&](VkCommandBuffer cmd) { lightGpu->recordClear(cmd); });
+    seconds.light += secondsSince(lightStart);
     uint64_t firstModule = 0;
     const turtle::DeviceOrgans* organs = nullptr;
     for (Batch& b : batches) {
@@ -304,8 +337,12 @@ std::vector<const turtle::DeviceOrgans*> Simulation::Impl::interpretOnDevice() {
         seconds.interpret += secondsSince(start);
         start = Clock::now();
         const std::vector<float> bases = baseHeights(b.field.placements);
-        context->submitAndWait(
-            [&](VkCommandBuffer cmd) { statistics->record(cmd, *organs, drawnModules.particles, bases); });
+        // The light of the last grid, the statistics with it, and the organs splatted for the next.
+        context->submitAndWait([&](VkCommandBuffer cmd) {
+            if (drawnModules.particles) lightGpu->recordGather(cmd, *organs, *drawnModules.particles);
+            statistics->record(cmd, *organs, drawnModules.particles, bases);
+            lightGpu->recordSplat(cmd, *organs);
+        });
         const std::vector<shared::PlantStatistics> s = statistics->read();
         lastStatistics.insert(lastStatistics.end(), s.begin(), s.end());
         seconds.statistics += secondsSince(start);
@@ -314,6 +351,9 @@ std::vector<const turtle::DeviceOrgans*> Simulation::Impl::interpretOnDevice() {
         firstModule += drawnModules.count;
         seconds.interpret += secondsSince(start);
     }
+    lightStart = Clock::now();
+    context->submitAndWait([&](VkCommandBuffer cmd) { lightGpu->recordPropagate(cmd); });
+    seconds.light += secondsSince(lightStart);
     if (!merged) return {organs};
     const Clock::time_point start = Clock::now();
     if (hasObstacles()) merge->keep(obstacleOrganBuffers(), derive.plants, firstModule);
@@ -346,8 +386,17 @@ std::vector<const turtle::DeviceOrgans*> Simulation::Impl::interpretOnHost() {
     const turtle::Interpretation organs = turtle::interpretCpu(field, commands, turtles, where);
     seconds.interpret += secondsSince(start);
     start = Clock::now();
-    lastStatistics = plantStatisticsCpu(organs, baseHeights(placements), field.particles, leafShapeAreas(g.assets.models));
+    const std::vector<float> shapeAreas = leafShapeAreas(g.assets.models);
+    lightCpu->gather(organs, field.particles);
+    seconds.light += secondsSince(start);
+    start = Clock::now();
+    lastStatistics = plantStatisticsCpu(organs, baseHeights(placements), field.particles, shapeAreas);
     seconds.statistics += secondsSince(start);
+    start = Clock::now();
+    lightCpu->clear();
+    lightCpu->splat(organs, shapeAreas);
+    lightCpu->propagate();
+    seconds.light += secondsSince(start);
     uploaded = turtle::uploadOrgans(*context, organs);
     if (!hasObstacles()) return {&uploaded};
     organMerge().begin();
@@ -359,6 +408,7 @@ std::vector<const turtle::DeviceOrgans*> Simulation::Impl::interpretOnHost() {
 std::vector<const turtle::DeviceOrgans*> Simulation::interpretParts() {
     Impl& m = *impl_;
     if (!m.context) throw std::logic_error("Simulation::interpret: drawing needs a Vulkan device");
+    m.prepareLight(grownBounds(), standingPlants());
     std::vector<const turtle::DeviceOrgans*> parts =
         m.options.backend == Backend::Gpu ? m.interpretOnDevice() : m.interpretOnHost();
     m.drawn = true;

@@ -56,12 +56,13 @@ struct StageSeconds {
     double derive = 0;     // the due plants' derivation steps
     double grow = 0;       // the particles' tick
     double interpret = 0;  // the homomorphism, the grown sizes, the turtle and the batches' merge
+    double light = 0;      // the light grid: the organs given its light, splatted into it, the light propagated
     double statistics = 0; // each plant's statistics
 };
 
 // The whole state of a field: the clock, when each plant derives next, and each batch's derivation (its string
-// with its particles, its plants' variables and the random streams' step). The light and occupancy grids will
-// join it.
+// with its particles, its plants' variables and the random streams' step). The light grid is not kept: it is made
+// from the organs of this state, so resume() splats them again.
 struct SimulationState {
     uint32_t ticks = 0;
     std::vector<float> nextStep;               // per plant

@@ -125,6 +125,7 @@ LightGridCpu::LightGridCpu(const LightGridSpec& spec, std::vector<shared::LightD
     : spec_(spec), directions_(std::move(directions)), obstacles_(std::move(obstacles)),
       occupancy_(spec.voxels(), 0), light_(spec.voxels(), glm::vec4(0, 1, 0, 0)) {
     obstacles_.resize(spec.voxels(), 0);
+    propagate(); // the light of an empty field until the first organs are splatted
 }
 
 void LightGridCpu::clear() {
@@ -156,7 +157,7 @@ void LightGridCpu::propagate() {
         for (const shared::LightDirection& d : directions_) {
             const glm::vec3 toward = xyz(d.towardAndIntensity);
             if (d.towardAndIntensity.w <= 0.0f) continue;
-            float depth = 0.5f * side * perUnit * float(occupancy_[v]);
+            float depth = 0.0f;
             bool blocked = false;
             for (uint32_t step = 1; step < 4096; ++step) {
                 const int64_t u = spec_.voxelAt(centre + toward * (float(step) * side));

@@ -33,7 +33,7 @@ for e in entries:
         positive(e, key, where)
     check(len(e.get("tick_seconds", [])) == 2, f"{where}: tick_seconds does not hold 2 ticks")
     stages = e.get("stage_median_seconds", {})
-    for stage in ("derive", "grow", "interpret", "statistics", "draw"):
+    for stage in ("derive", "grow", "interpret", "light", "statistics", "draw"):
         check(stage in stages and stages[stage] >= 0, f"{where}: stage {stage} missing")
     check(sum(stages.values()) <= 1.5 * max(e.get("tick_seconds", [0])), f"{where}: stages outlast the ticks")
 finish(f"sim bench smoke test: {len(entries)} fields")

@@ -211,6 +211,45 @@ TEST_F(SimulationTest, LeavesOfAModelAreDrawnAndMeasuredWithIt) {
     std::filesystem::remove_all(folder);
 }
 
+// Two plants of one kind, one under a roof and one in the open: the roofed one's leaves catch less light, on the
+// device as in the reference.
+TEST_F(SimulationTest, APlantUnderARoofCatchesLessLightThanOneInTheOpen) {
+    const std::string herb = R"(
+            DeriveTime = 3.0;
+            Stem { Default { GrowRate = 1.0; GrowTime = 3.0; BroadenRate = 0.05; } }
+            Leaf { Default { GrowRate = 0.2; GrowTime = 3.0; } }
+            Grow { w = S(0)[rotr(1.0)L(0)][rotr(1.0)rotu(3.1)L(0)]S(0)[rotr(1.0)rotu(1.6)L(0)]; }
+        })";
+    field::SimulationOptions options;
+    options.file = "roof.eco";
+    options.sceneText = "EcoSystem 1.0 \"Roof\" {\n SunDirection = vector(0.2, 1.0, 0.1);\n"
+                        " Plant \"Roofed\" { Position = vector(-10.0, 0.0, 0.0);" + herb +
+                        "\n Plant \"Open\" { Position = vector(10.0, 0.0, 0.0);" + herb +
+                        "\n Box \"Roof\" { Min = vector(-16.0, 8.0, -6.0); Max = vector(-4.0, 9.0, 6.0); }\n}\n";
+    options.seed = 3;
+    field::Simulation gpu(options, &context());
+    options.backend = field::Backend::Cpu;
+    field::Simulation cpu(options, &context());
+    std::vector<shared::PlantStatistics> a, b;
+    for (int tick = 0; tick < 8; ++tick) {
+        gpu.tick(), cpu.tick();
+        gpu.interpretParts(), cpu.interpretParts();
+        a = gpu.statistics(), b = cpu.statistics();
+        ASSERT_EQ(a.size(), 2u);
+        for (size_t p = 0; p < 2; ++p) {
+            EXPECT_NEAR(a[p].light, b[p].light, 1e-4f * std::max(1.0f, b[p].light)) << tick << " " << p;
+            EXPECT_NEAR(a[p].leafArea, b[p].leafArea, 1e-4f * std::max(1.0f, b[p].leafArea)) << tick << " " << p;
+        }
+    }
+    // The two grew alike; the open one's leaves have the light of the open (1.3 where nothing shades them).
+    ASSERT_GT(a[1].leafArea, 1.0f);
+    EXPECT_NEAR(a[0].leafArea, a[1].leafArea, 1e-3f * a[1].leafArea);
+    const float roofed = a[0].light / a[0].leafArea, open = a[1].light / a[1].leafArea;
+    EXPECT_GT(open, 1.0f);
+    EXPECT_LE(open, 1.3f + 1e-4f);
+    EXPECT_LT(roofed, 0.6f * open);
+}
+
 // A 24-bit Windows bitmap of 2 x 2 pixels, its left column red and its right column blue, stored bottom-up.
 void writeRedBlueBitmap(const std::filesystem::path& path) {
     std::vector<uint8_t> b(54 + 2 * 8, 0);

@@ -1,7 +1,8 @@
 // The light grid, last pass: each organ the turtle drew takes the light of its voxel and the direction most of it
 // comes from into its module's particle (kParticleLight, kParticleLightDirection as an octahedral pair packed by
 // packSnorm2x16); an organ outside the grid is in the open: all the light there is, from straight above. Where a
-// module draws several organs of a kind (a tube's segments), its first organ of the kind writes.
+// module draws several organs of a kind (a tube's segments), its first organ of the kind writes. The light also
+// goes to the particle of the derived string the module was drawn from, which grows by it in the next tick.
 #version 450
 #extension GL_GOOGLE_include_directive : require
 #include "compute/shared/light_layout.h"
@@ -14,6 +15,9 @@ layout(set = 0, binding = 1, std430) readonly buffer Table { OrganTable table; }
 layout(set = 0, binding = 2, std430) readonly buffer Light { vec4 light[]; };
 layout(set = 0, binding = 3, std430) readonly buffer Directions { LightDirection directions[]; };
 layout(set = 0, binding = 4, std430) buffer Particles { float particles[]; };
+// The drawn modules' origins in the derived string, and the derived string's particles (LightGridPush::derived).
+layout(set = 0, binding = 5, std430) readonly buffer Origins { uint origin[]; };
+layout(set = 0, binding = 6, std430) buffer DerivedParticles { float derivedParticles[]; };
 layout(push_constant) uniform Push { LightGridPush pc; };
 
 #include "compute/grow/light_grid.glsl"
@@ -39,7 +43,13 @@ void main() {
     } else {
         for (uint d = 0u; d < pc.directions; ++d) l.w += max(directions[d].towardAndIntensity.w, 0.0);
     }
+    float direction = uintBitsToFloat(packSnorm2x16(octahedral(l.xyz)));
     uint at = kParticleStateFloats * o.module;
     particles[at + kParticleLight] = l.w;
-    particles[at + kParticleLightDirection] = uintBitsToFloat(packSnorm2x16(octahedral(l.xyz)));
+    particles[at + kParticleLightDirection] = direction;
+    if (pc.derived != kLightToDrawnOnly) {
+        uint to = kParticleStateFloats * (pc.derived == kLightToOrigin ? origin[o.module] : o.module);
+        derivedParticles[to + kParticleLight] = l.w;
+        derivedParticles[to + kParticleLightDirection] = direction;
+    }
 }

@@ -20,6 +20,11 @@ SIMECO_CONST_FLOAT kAreaFixedPoint = 4096.0f; // a voxel's splatted area counts 
 // Leaves facing every way (a spherical leaf angle distribution) block half their area along any direction.
 SIMECO_CONST_FLOAT kLeafExtinction = 0.5f;
 SIMECO_CONST kMostLightDirections = 16u;
+// Where the gather also writes an organ's light (LightGridPush::derived): nowhere else, the derived string's
+// particle of the same index (a string drawn as derived), or that of the drawn module's origin (the homomorphism's).
+SIMECO_CONST kLightToDrawnOnly = 0u;
+SIMECO_CONST kLightToSameModule = 1u;
+SIMECO_CONST kLightToOrigin = 2u;
 
 // Where light comes from: xyz towards it (unit length), w its intensity on a surface facing it.
 struct LightDirection {
@@ -33,7 +38,7 @@ struct LightGridPush {
     uint sizeZ;
     uint directions; // LightDirection entries (the sun first, then the sky's)
     uint plants;     // gather: plants of the drawn string (its particles)
-    uint pad0;
+    uint derived;    // gather: where the light goes besides the drawn string's particles (kLightTo*)
     uint pad1;
     uint pad2;
 };

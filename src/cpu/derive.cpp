@@ -1,6 +1,7 @@
 #include "cpu/derive.h"
 
 #include <algorithm>
+#include <bit>
 #include <optional>
 #include <stdexcept>
 
@@ -572,6 +573,20 @@ uint32_t SteppedDerivation::advance(const std::vector<uint8_t>& due) {
     return deriving;
 }
 
-ModuleString SteppedDerivation::drawn() const { return applyHomomorphismCpu(species_, string_, options_); }
+ModuleString SteppedDerivation::drawn(std::vector<uint32_t>* origins) const {
+    if (!origins || string_.particles.empty()) return applyHomomorphismCpu(species_, string_, options_);
+    // Each drawn module takes the state of the module it comes from: a copy whose states are stamped with their
+    // modules' indices tells which, and the drawn modules then take the true states.
+    ModuleString stamped = string_;
+    for (size_t i = 0; i < stamped.size(); ++i) stamped.particles[i].value[0] = std::bit_cast<float>(uint32_t(i));
+    ModuleString drawn = applyHomomorphismCpu(species_, stamped, options_);
+    origins->resize(drawn.size());
+    for (size_t j = 0; j < drawn.size(); ++j) {
+        const uint32_t origin = std::bit_cast<uint32_t>(drawn.particles[j].value[0]);
+        (*origins)[j] = origin;
+        drawn.particles[j] = string_.particles[origin];
+    }
+    return drawn;
+}
 
 } // namespace simeco::cpu

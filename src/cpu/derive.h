@@ -33,14 +33,15 @@ stream::ModuleString applyHomomorphismCpu(const std::vector<ir::Grammar>& specie
 // the plants start from their axioms; advance() derives one more step of the plants `due` flags that have steps
 // left (the others are copied) and returns how many derived, their random draws keyed by the count of advance()
 // calls that derived; current() is the derived string, whose particle state the simulation updates between
-// steps; drawn() is it under the homomorphism.
+// steps; drawn() is it under the homomorphism, and with `origins` each drawn module's index in current() (where the
+// derivation carries particle state).
 class SteppedDerivation {
 public:
     SteppedDerivation(const std::vector<ir::Grammar>& species, const stream::DeriveOptions& options);
     uint32_t advance(const std::vector<uint8_t>& due);
     stream::ModuleString& current() { return string_; }
     const stream::ModuleString& current() const { return string_; }
-    stream::ModuleString drawn() const;
+    stream::ModuleString drawn(std::vector<uint32_t>* origins = nullptr) const;
     uint32_t plants() const { return control_.plants(); }
     // Where the derivation stands, and back to it (a state saved from a derivation of the same species and
     // options, on either engine).

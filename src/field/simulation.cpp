@@ -339,7 +339,9 @@ std::vector<const turtle::DeviceOrgans*> Simulation::Impl::interpretOnDevice() {
         const std::vector<float> bases = baseHeights(b.field.placements);
         // The light of the last grid, the statistics with it, and the organs splatted for the next.
         context->submitAndWait([&](VkCommandBuffer cmd) {
-            if (drawnModules.particles) lightGpu->recordGather(cmd, *organs, *drawnModules.particles);
+            if (drawnModules.particles)
+                lightGpu->recordGather(cmd, *organs, *drawnModules.particles, drawnModules.origins,
+                                       b.deriver->current().particles);
             statistics->record(cmd, *organs, drawnModules.particles, bases);
             lightGpu->recordSplat(cmd, *organs);
         });
@@ -372,8 +374,12 @@ std::vector<const turtle::DeviceOrgans*> Simulation::Impl::interpretOnHost() {
     // The batches' drawn strings one after the other: the field's.
     stream::ModuleString field;
     field.plantStart.push_back(0);
+    // Where each batch's drawn modules start in the field's, and the module of its derived string each comes from.
+    std::vector<size_t> drawnStarts;
+    std::vector<std::vector<uint32_t>> origins(batches.size());
     for (Batch& b : batches) {
-        stream::ModuleString drawnModules = b.reference->drawn();
+        drawnStarts.push_back(field.size());
+        stream::ModuleString drawnModules = b.reference->drawn(&origins[drawnStarts.size() - 1]);
         if (tables.drawsGrowth() || tables.growsSegments())
             grow::growSizesCpu(settings(b, ticks == 0 ? 0 : ticks - 1), b.deriveTimes, drawnModules);
         if (b.first == 0) field.stride = drawnModules.stride; // the batches' species, and so their strides, alike
@@ -387,7 +393,15 @@ std::vector<const turtle::DeviceOrgans*> Simulation::Impl::interpretOnHost() {
     seconds.interpret += secondsSince(start);
     start = Clock::now();
     const std::vector<float> shapeAreas = leafShapeAreas(g.assets.models);
-    lightCpu->gather(organs, field.particles);
+    // The light goes to the drawn modules' particles and to those of the derived modules they come from.
+    auto derivedOf = [&](uint32_t module) -> shared::ParticleState* {
+        const size_t k = size_t(std::upper_bound(drawnStarts.begin(), drawnStarts.end(), size_t(module)) -
+                                drawnStarts.begin()) - 1;
+        const std::vector<uint32_t>& from = origins[k];
+        const size_t j = module - drawnStarts[k];
+        return j < from.size() ? &batches[k].reference->current().particles[from[j]] : nullptr;
+    };
+    lightCpu->gather(organs, field.particles, derivedOf);
     seconds.light += secondsSince(start);
     start = Clock::now();
     lastStatistics = plantStatisticsCpu(organs, baseHeights(placements), field.particles, shapeAreas);

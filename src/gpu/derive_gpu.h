@@ -112,6 +112,7 @@ public:
     void begin(const stream::DeriveOptions& options);
     uint32_t advance(const std::vector<uint8_t>& due);
     stream::DeviceModules current() const;
+    // Its `origins` say which module of current() each drawn module comes from.
     stream::DeviceModules drawn();
     // Where the stepped derivation stands (read back from the device), and begin() from there instead of the
     // axioms: a state saved from a derivation of the same species and options, on either engine, goes on as it

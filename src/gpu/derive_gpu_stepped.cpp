@@ -111,7 +111,9 @@ stream::DeviceModules GpuDeriver::drawn() {
     std::vector<Impl::RecordedStep> batch;
     m.planHomomorphism(control, batch);
     m.lastStream = m.runSteppedBatch(batch, 0);
-    return lastString();
+    stream::DeviceModules modules = lastString();
+    modules.origins = &m.streams[m.lastStream].origin; // the particle gather's: where each module came from
+    return modules;
 }
 
 } // namespace simeco::gpu

@@ -176,7 +176,8 @@ void LightGridCpu::propagate() {
     }
 }
 
-void LightGridCpu::gather(const turtle::Interpretation& organs, std::vector<shared::ParticleState>& particles) const {
+void LightGridCpu::gather(const turtle::Interpretation& organs, std::vector<shared::ParticleState>& particles,
+                          const DerivedParticle& derivedOf) const {
     float open = 0.0f;
     for (const shared::LightDirection& d : directions_) open += std::max(d.towardAndIntensity.w, 0.0f);
     for (uint32_t kind = 0; kind < shared::kOrganKinds; ++kind)
@@ -186,8 +187,13 @@ void LightGridCpu::gather(const turtle::Interpretation& organs, std::vector<shar
             if (o.module >= particles.size()) continue;
             const int64_t v = spec_.voxelAt(organCentre(o));
             const glm::vec4 l = v >= 0 ? light_[size_t(v)] : glm::vec4(0, 1, 0, open);
+            const float direction = packLightDirection(glm::vec3(l));
             particles[o.module].value[shared::kParticleLight] = l.w;
-            particles[o.module].value[shared::kParticleLightDirection] = packLightDirection(glm::vec3(l));
+            particles[o.module].value[shared::kParticleLightDirection] = direction;
+            if (shared::ParticleState* derived = derivedOf ? derivedOf(o.module) : nullptr) {
+                derived->value[shared::kParticleLight] = l.w;
+                derived->value[shared::kParticleLightDirection] = direction;
+            }
         }
 }
 
@@ -205,6 +211,7 @@ GpuLightGrid::GpuLightGrid(const vk::Context& context, const LightGridSpec& spec
     shapeAreas_ = vk::deviceBufferWith(context, std::span<const float>(shapeAreas));
     occupancy_ = vk::Buffer(context, spec.voxels() * 4, vk::MemoryUsage::DeviceLocal);
     light_ = vk::Buffer(context, spec.voxels() * sizeof(glm::vec4), vk::MemoryUsage::DeviceLocal);
+    none_ = vk::Buffer(context, sizeof(shared::ParticleState), vk::MemoryUsage::DeviceLocal);
     context.submitAndWait([&](VkCommandBuffer cmd) {
         recordClear(cmd);
         recordPropagate(cmd); // the light of an empty field until the first organs are splatted
@@ -240,11 +247,17 @@ void GpuLightGrid::recordPropagate(VkCommandBuffer cmd) {
 }
 
 void GpuLightGrid::recordGather(VkCommandBuffer cmd, const turtle::DeviceOrgans& organs,
-                                const vk::Buffer& drawnParticles) {
+                                const vk::Buffer& drawnParticles, const vk::Buffer* origins,
+                                const vk::Buffer* derivedParticles) {
     if (organs.capacity == 0) return;
+    shared::LightGridPush p = push();
+    const bool elsewhere = derivedParticles && derivedParticles->handle() != drawnParticles.handle();
+    p.derived = !elsewhere ? shared::kLightToDrawnOnly : origins ? shared::kLightToOrigin : shared::kLightToSameModule;
     vk::memoryBarrier(cmd, vk::Hazard::AnyToAny);
-    gather_.dispatch(cmd, {organs.instances, organs.table, light_, directions_, drawnParticles}, push(),
-                     gather_.groupsFor(organs.capacity));
+    gather_.dispatch(cmd,
+                     {organs.instances, organs.table, light_, directions_, drawnParticles,
+                      origins && elsewhere ? *origins : none_, elsewhere ? *derivedParticles : none_},
+                     p, gather_.groupsFor(organs.capacity));
     vk::memoryBarrier(cmd, vk::Hazard::ComputeToCompute);
 }
 

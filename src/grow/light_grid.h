@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -65,8 +66,11 @@ public:
     void clear(); // the splatted areas
     void splat(const turtle::Interpretation& organs, const std::vector<float>& shapeAreas);
     void propagate();
-    // Each organ's light into `particles` (one state per module of the drawn string).
-    void gather(const turtle::Interpretation& organs, std::vector<shared::ParticleState>& particles) const;
+    // Each organ's light into `particles` (one state per module of the drawn string), and into the particle
+    // `derivedOf` gives for its module (the derived string's it was drawn from), where it gives one.
+    using DerivedParticle = std::function<shared::ParticleState*(uint32_t drawnModule)>;
+    void gather(const turtle::Interpretation& organs, std::vector<shared::ParticleState>& particles,
+                const DerivedParticle& derivedOf = {}) const;
 
     const std::vector<uint32_t>& occupancy() const { return occupancy_; }
     const std::vector<glm::vec4>& light() const { return light_; } // xyz: most light from; w: light
@@ -87,7 +91,11 @@ public:
     void recordClear(VkCommandBuffer cmd);
     void recordSplat(VkCommandBuffer cmd, const turtle::DeviceOrgans& organs);
     void recordPropagate(VkCommandBuffer cmd);
-    void recordGather(VkCommandBuffer cmd, const turtle::DeviceOrgans& organs, const vk::Buffer& drawnParticles);
+    // The organs' light into the drawn string's particles, and into the derived string's it was drawn from: by the
+    // drawn modules' `origins` where it was drawn under the homomorphism, else module for module where
+    // `derivedParticles` is another buffer than the drawn ones (a copy drawn).
+    void recordGather(VkCommandBuffer cmd, const turtle::DeviceOrgans& organs, const vk::Buffer& drawnParticles,
+                      const vk::Buffer* origins = nullptr, const vk::Buffer* derivedParticles = nullptr);
 
     const vk::Buffer& occupancy() const { return occupancy_; }
     const vk::Buffer& light() const { return light_; }
@@ -100,6 +108,7 @@ private:
     uint32_t directionCount_;
     vk::ComputePipeline splat_, propagate_, gather_;
     vk::Buffer directions_, obstacles_, shapeAreas_, occupancy_, light_;
+    vk::Buffer none_; // bound where the gather has no origins or derived particles
 };
 
 } // namespace simeco::grow

@@ -20,6 +20,8 @@ struct DeviceModules {
     std::uint32_t plants = 0;
     std::uint32_t stride = 1;
     const vk::Buffer* particles = nullptr; // null unless the derivation carried particle state
+    // Of a string drawn under the homomorphism: each module's index in the derived string it was drawn from.
+    const vk::Buffer* origins = nullptr;
     // The modules are counted only on the device, by the plant table's last entry: the string of a derivation
     // recorded into a command buffer, which its submission writes.
     bool countOnDevice = false;

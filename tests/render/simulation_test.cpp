@@ -241,6 +241,25 @@ TEST_F(SimulationTest, APlantUnderARoofCatchesLessLightThanOneInTheOpen) {
             EXPECT_NEAR(a[p].leafArea, b[p].leafArea, 1e-4f * std::max(1.0f, b[p].leafArea)) << tick << " " << p;
         }
     }
+    // The derived string's particles have the light their drawn organs had, alike on both backends.
+    const field::SimulationState sa = gpu.save(), sb = cpu.save();
+    ASSERT_EQ(sa.batches.size(), 1u);
+    const std::vector<shared::ParticleState>& pa = sa.batches[0].string.particles;
+    const std::vector<shared::ParticleState>& pb = sb.batches[0].string.particles;
+    ASSERT_EQ(pa.size(), pb.size());
+    // The open plant's two stems and three leaves have the open's light, the roofed plant's little or none.
+    const auto& starts = sb.batches[0].string.plantStart;
+    int openLit = 0;
+    for (size_t k = 0; k < pa.size(); ++k) {
+        const float light = pb[k].value[shared::kParticleLight];
+        EXPECT_NEAR(pa[k].value[shared::kParticleLight], light, 1e-4f) << k;
+        if (k < starts[1]) {
+            EXPECT_LT(light, 0.2f) << k;
+        } else {
+            openLit += light > 1.2f ? 1 : 0;
+        }
+    }
+    EXPECT_EQ(openLit, 5);
     // The two grew alike; the open one's leaves have the light of the open (1.3 where nothing shades them).
     ASSERT_GT(a[1].leafArea, 1.0f);
     EXPECT_NEAR(a[0].leafArea, a[1].leafArea, 1e-3f * a[1].leafArea);

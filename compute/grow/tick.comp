@@ -52,6 +52,7 @@ void main() {
         p[kParticleStage] = stage;
         p[kParticleClass] = uintBitsToFloat(klass);
         p[kParticleId] = uintBitsToFloat(randomBits(pc.seed, plant, kGrowIdentityPass, i - start, pc.tick) | 1u);
+        if (organ) p[kParticleLight] = pc.openLight; // in the open until the light grid says otherwise
     } else if (p[kParticleStage] != stage) {
         p[kParticleStage] = stage;
         p[kParticleStageAge] = 0.0;
@@ -64,8 +65,9 @@ void main() {
         float growing = alive(row, plant, self, p[kParticleAge])
                             ? clamp(property(row, kGrowTime, plant, self) - p[kParticleStageAge], 0.0, pc.dt)
                             : 0.0;
-        p[kParticleElongation] += property(row, kGrowRate, plant, self) * vigour[plant] * growing;
-        p[kParticleBroadening] += property(row, kBroadenRate, plant, self) * vigour[plant] * growing;
+        float rate = vigour[plant] * lightResponse(p[kParticleLight], pc.openLight) * growing;
+        p[kParticleElongation] += property(row, kGrowRate, plant, self) * rate;
+        p[kParticleBroadening] += property(row, kBroadenRate, plant, self) * rate;
         p[kParticleNoiseClock] += pc.dt;
         float noiseTime = property(row, kNoiseTime, plant, self), cone = property(row, kConeNoise, plant, self);
         if (growing > 0.0 && noiseTime > 0.0 && cone > 0.0 && p[kParticleNoiseClock] >= noiseTime) {

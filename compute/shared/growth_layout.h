@@ -112,7 +112,19 @@ struct GrowPush {
     uint stride;   // parameters per module
     float gravity; // the scene's gravity, as a multiple of Earth's (9.81)
     uint atSymbol; // the alphabet's `@` (a segment letter after it is a command's prefix), else 0xFFFFFFFF
+    float openLight; // the light in the open where a light grid runs (organs grow by their light), else 0
 };
+
+// How an organ's growth follows its light (kParticleLight) where a light grid runs: a saturating response,
+// light / (light + K), K (half saturation) a quarter of the open's light, scaled so that an organ in the open
+// grows at its stage's rates; 0.36 of them in a tenth of the open's light, nothing in the dark.
+SIMECO_CONST_FLOAT kLightHalfSaturation = 0.25f;
+SIMECO_FN float lightResponse(float light, float openLight) {
+    if (openLight <= 0.0f) return 1.0f;
+    float halfLight = kLightHalfSaturation * openLight;
+    float lit = light > 0.0f ? light : 0.0f;
+    return lit / (lit + halfLight) * (openLight + halfLight) / openLight;
+}
 
 SIMECO_SHARED_END
 

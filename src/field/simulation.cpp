@@ -110,11 +110,14 @@ struct Simulation::Impl {
     // interpretation gives the organs the light of the last one's grid, then splats them for the next.
     std::unique_ptr<grow::GpuLightGrid> lightGpu;
     std::unique_ptr<grow::LightGridCpu> lightCpu;
+    std::vector<shared::LightDirection> lightFrom; // the sun's and the sky's, as the scene sets them
+    float openLight = 0.0f;                        // their light in the open, which organs grow by in full
+    void chooseLight();
     void prepareLight(const draw::Bounds& extent, uint32_t standing);
 
     grow::TickSettings settings(const Batch& b, uint32_t tick) const {
         return {&tables, uint32_t(g.species.size()), options.dt, tick, b.seed, g.relativeGravity(),
-                b.vigour.empty() ? nullptr : &b.vigour};
+                b.vigour.empty() ? nullptr : &b.vigour, openLight};
     }
     // The height each plant stands at.
     static std::vector<float> baseHeights(const std::vector<shared::PlantPlacement>& placements) {
@@ -206,6 +209,7 @@ Simulation::Simulation(const SimulationOptions& options, const vk::Context* cont
     m.derive.particles = true;
     m.derive.seed = m.seed;
     m.tables = grow::growthTables(m.g.species, m.g.ecoPlants);
+    m.chooseLight();
     m.deriveTimes = grow::plantDeriveTimes(m.g.ecoPlants, m.derive.plants, m.seed);
     m.nextStep = m.deriveTimes;
     const ir::Alphabet& alphabet = m.g.species.front().alphabet;
@@ -295,22 +299,27 @@ void Simulation::resume(const SimulationState& state) {
     if (m.context) interpretParts();
 }
 
-void Simulation::Impl::prepareLight(const draw::Bounds& extent, uint32_t standing) {
-    if (lightGpu || lightCpu) return;
-    const grow::LightGridSpec spec = grow::lightGridOver(extent.min, extent.max, standing);
+void Simulation::Impl::chooseLight() {
     const ir::EcoLight light = g.scene ? g.scene->light : ir::EcoLight{};
     // The sun the renderer draws with where the scene sets none.
     const glm::vec3 sun = light.sunDirection ? glm::vec3((*light.sunDirection)[0], (*light.sunDirection)[1],
                                                          (*light.sunDirection)[2])
                                              : draw::RenderSettings{}.sunDirection;
-    const std::vector<shared::LightDirection> directions = grow::lightDirections(
-        sun, light.sunIntensity.value_or(1.0f), kSkyShare * light.skyLight.value_or(1.0f));
+    lightFrom = grow::lightDirections(sun, light.sunIntensity.value_or(1.0f),
+                                      kSkyShare * light.skyLight.value_or(1.0f));
+    openLight = 0.0f;
+    for (const shared::LightDirection& d : lightFrom) openLight += d.towardAndIntensity.w;
+}
+
+void Simulation::Impl::prepareLight(const draw::Bounds& extent, uint32_t standing) {
+    if (lightGpu || lightCpu) return;
+    const grow::LightGridSpec spec = grow::lightGridOver(extent.min, extent.max, standing);
     std::vector<uint32_t> blocked = hasObstacles() ? obstacleVoxels(spec, g.scene->obstacles) : std::vector<uint32_t>{};
     if (options.backend == Backend::Gpu)
-        lightGpu = std::make_unique<grow::GpuLightGrid>(*context, spec, directions, blocked,
+        lightGpu = std::make_unique<grow::GpuLightGrid>(*context, spec, lightFrom, blocked,
                                                         leafShapeAreas(g.assets.models));
     else
-        lightCpu = std::make_unique<grow::LightGridCpu>(spec, directions, std::move(blocked));
+        lightCpu = std::make_unique<grow::LightGridCpu>(spec, lightFrom, std::move(blocked));
 }
 
 std::vector<const turtle::DeviceOrgans*> Simulation::Impl::interpretOnDevice() {

@@ -51,8 +51,9 @@ void growOrgan(const TickSettings& ts, const float* row, uint32_t plant, float* 
                               ? std::clamp(property(shared::kGrowTime) - p[shared::kParticleStageAge], 0.0f, ts.dt)
                               : 0.0f;
     const float vigour = ts.vigour ? (*ts.vigour)[plant] : 1.0f;
-    p[shared::kParticleElongation] += property(shared::kGrowRate) * vigour * growing;
-    p[shared::kParticleBroadening] += property(shared::kBroadenRate) * vigour * growing;
+    const float rate = vigour * shared::lightResponse(p[shared::kParticleLight], ts.openLight) * growing;
+    p[shared::kParticleElongation] += property(shared::kGrowRate) * rate;
+    p[shared::kParticleBroadening] += property(shared::kBroadenRate) * rate;
     p[shared::kParticleNoiseClock] += ts.dt;
     const float noiseTime = property(shared::kNoiseTime), cone = property(shared::kConeNoise);
     if (growing > 0.0f && noiseTime > 0.0f && cone > 0.0f && p[shared::kParticleNoiseClock] >= noiseTime) {
@@ -138,6 +139,7 @@ void tickCpu(const TickSettings& ts, stream::ModuleString& s) {
                 const uint32_t fresh =
                     shared::randomBits(ts.seed, plant, shared::kGrowIdentityPass, uint32_t(i - start), ts.tick) | 1u;
                 p[shared::kParticleId] = std::bit_cast<float>(fresh);
+                if (organ) p[shared::kParticleLight] = ts.openLight; // in the open until the light grid says otherwise
             } else if (p[shared::kParticleStage] != stage) {
                 p[shared::kParticleStage] = stage;
                 p[shared::kParticleStageAge] = 0.0f;

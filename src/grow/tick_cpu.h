@@ -21,6 +21,7 @@ struct TickSettings {
     uint32_t seed = 0;
     float gravity = 1.0f;
     const std::vector<float>* vigour = nullptr; // per plant: a factor on its GrowRate and BroadenRate (none: 1)
+    float openLight = 0.0f; // the light in the open where a light grid runs (organs grow by their light), else 0
 };
 
 // One tick of every particle of the derived string `s` (which carries particle state): the modules that continue

@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
+#include "compute/shared/growth_layout.h"
 #include "compute/shared/organ_layout.h"
 #include "field/plant_statistics.h"
 #include "grow/light_grid.h"
@@ -125,6 +126,21 @@ TEST(LightGrid, OrgansTakeTheLightOfTheirVoxelIntoTheirParticles) {
     EXPECT_GT(most.y, 0.5f);
     for (const glm::vec3 d : {glm::vec3(0, 1, 0), glm::normalize(glm::vec3(0.3f, -0.8f, 0.5f)), glm::vec3(-1, 0, 0)})
         EXPECT_GT(glm::dot(grow::unpackLightDirection(grow::packLightDirection(d)), d), 0.9999f);
+}
+
+TEST(LightGrid, GrowthFollowsLightSaturatingInTheOpen) {
+    const float open = 1.3f;
+    EXPECT_FLOAT_EQ(shared::lightResponse(open, open), 1.0f);
+    EXPECT_FLOAT_EQ(shared::lightResponse(0.0f, open), 0.0f);
+    EXPECT_FLOAT_EQ(shared::lightResponse(-1.0f, open), 0.0f);
+    EXPECT_NEAR(shared::lightResponse(0.1f * open, open), 0.357f, 1e-3f);
+    float previous = 0.0f;
+    for (float light = 0.05f; light <= open; light += 0.05f) {
+        EXPECT_GT(shared::lightResponse(light, open), previous);
+        previous = shared::lightResponse(light, open);
+    }
+    // Without a light grid, organs grow at their stages' rates.
+    EXPECT_EQ(shared::lightResponse(0.0f, 0.0f), 1.0f);
 }
 
 } // namespace

@@ -19,7 +19,6 @@ SIMECO_CONST kLightWorkgroupSize = 64u;
 SIMECO_CONST_FLOAT kAreaFixedPoint = 4096.0f; // a voxel's splatted area counts in 1/4096 square units
 // Leaves facing every way (a spherical leaf angle distribution) block half their area along any direction.
 SIMECO_CONST_FLOAT kLeafExtinction = 0.5f;
-SIMECO_CONST kMostLightDirections = 16u;
 // Where the gather also writes an organ's light (LightGridPush::derived): nowhere else, the derived string's
 // particle of the same index (a string drawn as derived), or that of the drawn module's origin (the homomorphism's).
 SIMECO_CONST kLightToDrawnOnly = 0u;
@@ -37,8 +36,8 @@ struct LightGridPush {
     uint sizeY;
     uint sizeZ;
     uint directions; // LightDirection entries (the sun first, then the sky's)
-    uint plants;     // gather: plants of the drawn string (its particles)
     uint derived;    // gather: where the light goes besides the drawn string's particles (kLightTo*)
+    uint pad0;
     uint pad1;
     uint pad2;
 };

@@ -19,6 +19,7 @@
 #include "field/obstacles.h"
 #include "field/plant_statistics.h"
 #include "gpu/derive_gpu.h"
+#include "grow/environment.h"
 #include "grow/growth_tables.h"
 #include "grow/light_grid.h"
 #include "grow/tick_cpu.h"
@@ -204,6 +205,14 @@ Simulation::Simulation(const SimulationOptions& options, const vk::Context* cont
     m.derive.plants = hasPopulations(m.g) ? uint32_t(layout.placements.size())
                       : options.plants    ? options.plants
                                           : uint32_t(m.g.species.size());
+    // The scene's climate and soil scale every plant's growth rates (grow/environment.h).
+    if (m.g.scene) {
+        const float climate = grow::environmentGrowthFactor(*m.g.scene);
+        if (climate != 1.0f) {
+            if (m.vigour.empty()) m.vigour.assign(m.derive.plants, 1.0f);
+            for (float& v : m.vigour) v *= climate;
+        }
+    }
     m.derive.maxModules = options.maxModules;
     m.derive.maxSeconds = options.maxSeconds;
     m.derive.particles = true;

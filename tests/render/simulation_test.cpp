@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include <fmt/format.h>
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 #include <gtest/gtest.h>
@@ -273,6 +274,33 @@ TEST_F(SimulationTest, APlantUnderARoofCatchesLessLightAndGrowsLessThanOneInTheO
     EXPECT_GT(open, 1.0f);
     EXPECT_LE(open, 1.3f + 1e-4f);
     EXPECT_LT(roofed, 0.6f * open);
+}
+
+// The same plant under longer days grows a larger leaf area (grow/environment.h), on either backend.
+TEST_F(SimulationTest, LeafAreaRisesWithDayLight) {
+    auto leafArea = [&](float hours, field::Backend backend) {
+        field::SimulationOptions options;
+        options.file = "days.eco";
+        options.sceneText = fmt::format(R"(EcoSystem 1.0 "Days" {{
+            DayLight = {};
+            Plant "Herb" {{
+                DeriveTime = 3.0;
+                Stem {{ Default {{ GrowRate = 1.0; GrowTime = 3.0; BroadenRate = 0.05; }} }}
+                Leaf {{ Default {{ GrowRate = 0.2; GrowTime = 3.0; }} }}
+                Grow {{ w = S(0)[rotr(1.0)L(0)][rotr(1.0)rotu(3.1)L(0)]S(0); }}
+            }}
+        }})", hours);
+        options.backend = backend;
+        field::Simulation simulation(options, &context());
+        for (int tick = 0; tick < 6; ++tick) simulation.tick();
+        simulation.interpretParts();
+        return simulation.statistics().at(0).leafArea;
+    };
+    for (field::Backend backend : {field::Backend::Gpu, field::Backend::Cpu}) {
+        const float shortDays = leafArea(6.0f, backend), thesisDays = leafArea(12.0f, backend);
+        EXPECT_LT(shortDays, thesisDays);
+        EXPECT_LT(thesisDays, leafArea(18.0f, backend));
+    }
 }
 
 // A 24-bit Windows bitmap of 2 x 2 pixels, its left column red and its right column blue, stored bottom-up.

@@ -1,5 +1,5 @@
 // The light grid's CPU reference (grow/light_grid.h): its size, where light comes from, and how leaves and
-// obstacles shade what lies beyond them.
+// obstacles shade what lies beyond them; growth's responses to light and to the scene's climate and soil.
 #include <cmath>
 #include <vector>
 
@@ -9,6 +9,7 @@
 #include "compute/shared/growth_layout.h"
 #include "compute/shared/organ_layout.h"
 #include "field/plant_statistics.h"
+#include "grow/environment.h"
 #include "grow/light_grid.h"
 
 namespace simeco {
@@ -141,6 +142,29 @@ TEST(LightGrid, GrowthFollowsLightSaturatingInTheOpen) {
     }
     // Without a light grid, organs grow at their stages' rates.
     EXPECT_EQ(shared::lightResponse(0.0f, 0.0f), 1.0f);
+}
+
+TEST(Environment, ClimateAndSoilScaleGrowthAroundTheThesisValues) {
+    ir::EcoScene scene;
+    scene.dayLight = ir::EcoNumber::constant(12.0f);
+    scene.rainRate = ir::EcoNumber::constant(0.9f);
+    scene.soilPH = ir::EcoNumber::constant(7.0f);
+    EXPECT_FLOAT_EQ(grow::environmentGrowthFactor(scene), 1.0f);
+    // Longer days, more rain: more growth, saturating; none without light or water.
+    EXPECT_LT(grow::dayLightResponse(6.0f), 1.0f);
+    EXPECT_GT(grow::dayLightResponse(16.0f), 1.0f);
+    EXPECT_LT(grow::dayLightResponse(24.0f) - grow::dayLightResponse(18.0f),
+              grow::dayLightResponse(12.0f) - grow::dayLightResponse(6.0f));
+    EXPECT_EQ(grow::dayLightResponse(0.0f), 0.0f);
+    EXPECT_EQ(grow::rainResponse(0.0f), 0.0f);
+    EXPECT_GT(grow::rainResponse(2.0f), 1.0f);
+    // Acid or alkaline soil slows growth alike.
+    EXPECT_FLOAT_EQ(grow::soilResponse(6.5f), 1.0f);
+    EXPECT_NEAR(grow::soilResponse(4.5f), std::exp(-1.0f), 1e-6f);
+    EXPECT_NEAR(grow::soilResponse(9.0f), std::exp(-1.0f), 1e-6f);
+    scene.soilPH = ir::EcoNumber::constant(4.5f);
+    scene.dayLight = ir::EcoNumber::constant(16.0f);
+    EXPECT_FLOAT_EQ(grow::environmentGrowthFactor(scene), grow::dayLightResponse(16.0f) * std::exp(-1.0f));
 }
 
 } // namespace

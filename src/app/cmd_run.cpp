@@ -14,6 +14,8 @@
 #include <string>
 
 #include <fmt/format.h>
+#include <glm/common.hpp>
+#include <glm/vec3.hpp>
 #include <nlohmann/json.hpp>
 
 #include "app/commands.h"
@@ -49,6 +51,7 @@ struct RunArgs {
     std::string device;
     std::string save;   // where the state is written at the end; empty: nowhere
     std::string resume; // the state the field starts from; empty: the axioms
+    std::optional<float> lightSlice; // the height of the light grid's layer written as light.png
 };
 
 // One line on a terminal, rewritten as the run goes.
@@ -124,6 +127,30 @@ std::string plantsTable(const field::Simulation& simulation, const std::vector<s
                            shared::plantAlive(s) ? 1 : 0, modules[p], s.height, s.leafArea, s.light);
     }
     return csv;
+}
+
+// A layer of the light grid as an image seen from above (x to the right, z down), each voxel a square of pixels:
+// dark blue where no light comes, through green, to pale yellow for the light in the open.
+draw::Frame lightSliceImage(const field::LightSlice& slice) {
+    const uint32_t scale = std::max(1u, std::min(16u, 1024u / std::max(slice.width, slice.depth)));
+    draw::Frame frame;
+    frame.width = slice.width * scale;
+    frame.height = slice.depth * scale;
+    frame.rgba.resize(frame.pixelCount() * 4);
+    frame.depth.assign(frame.pixelCount(), 0.0f);
+    frame.plant.assign(frame.pixelCount(), draw::Frame::kNoId);
+    frame.organ.assign(frame.pixelCount(), draw::Frame::kNoId);
+    const glm::vec3 ramp[] = {{0.01f, 0.01f, 0.08f}, {0.02f, 0.25f, 0.08f}, {1.0f, 0.95f, 0.55f}};
+    for (uint32_t y = 0; y < frame.height; ++y)
+        for (uint32_t x = 0; x < frame.width; ++x) {
+            const float t = std::clamp(slice.light[size_t(y / scale) * slice.width + x / scale] /
+                                           std::max(slice.open, 1e-6f), 0.0f, 1.0f);
+            const glm::vec3 c =
+                t < 0.5f ? glm::mix(ramp[0], ramp[1], 2.0f * t) : glm::mix(ramp[1], ramp[2], 2.0f * t - 1.0f);
+            float* p = &frame.rgba[frame.index(x, y) * 4];
+            p[0] = c.r, p[1] = c.g, p[2] = c.b, p[3] = 1.0f;
+        }
+    return frame;
 }
 
 void writeText(draw::OutputBatch& outputs, const fs::path& path, const std::string& text) {
@@ -217,6 +244,8 @@ void runRun(RunArgs args) {
             }
         }
     }
+    if (args.lightSlice)
+        draw::writePng(outputs, out / "light.png", lightSliceImage(simulation.lightSlice(*args.lightSlice)));
     writeText(outputs, out / "stats.jsonl", stats);
     writeText(outputs, out / "plants.csv", plantsTable(simulation, perPlant));
     if (!args.save.empty())
@@ -263,6 +292,9 @@ void registerRunCommand(CLI::App& app, CommandContext& ctx) {
     addTimeLimitOption(*cmd, s.maxSeconds);
     cmd->add_option("--device", args->device, "Vulkan device: an index or a name part (see `simeco devices`)");
     cmd->add_option("--save", args->save, "write the field's whole state to FILE at the end");
+    cmd->add_option("--light-slice", args->lightSlice,
+                    "also write light.png: the light grid's layer at height H at the end, seen from above")
+        ->check(CLI::Range(-1e6f, 1e6f));
     cmd->add_option("--resume", args->resume,
                     "go on from a state --save wrote (its scene and options; --time counts from the field's start)")
         ->excludes(scene)

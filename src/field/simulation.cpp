@@ -485,6 +485,25 @@ std::string Simulation::speciesName(uint32_t plant) const {
     return std::filesystem::path(m.options.file).stem().string();
 }
 
+LightSlice Simulation::lightSlice(float height) const {
+    const Impl& m = *impl_;
+    LightSlice slice;
+    if (!m.lightGpu && !m.lightCpu) return slice;
+    const grow::LightGridSpec& spec = m.lightGpu ? m.lightGpu->spec() : m.lightCpu->spec();
+    const std::vector<glm::vec4> light =
+        m.lightGpu ? vk::downloadVector<glm::vec4>(*m.context, m.lightGpu->light(), spec.voxels()) : m.lightCpu->light();
+    const auto layer = uint32_t(std::clamp(std::floor((height - spec.origin.y) / spec.side), 0.0f,
+                                           float(spec.size[1] - 1)));
+    slice.width = spec.size[0];
+    slice.depth = spec.size[2];
+    slice.height = spec.origin.y + (float(layer) + 0.5f) * spec.side;
+    slice.open = m.openLight;
+    for (uint32_t z = 0; z < slice.depth; ++z)
+        for (uint32_t x = 0; x < slice.width; ++x)
+            slice.light.push_back(light[(size_t(z) * spec.size[1] + layer) * spec.size[0] + x].w);
+    return slice;
+}
+
 draw::Bounds Simulation::grownBounds() const {
     const Impl& m = *impl_;
     draw::Bounds field{glm::vec3(1e30f), glm::vec3(-1e30f)};

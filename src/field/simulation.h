@@ -52,6 +52,15 @@ struct TickReport {
 
 // Wall-clock seconds each stage took, summed since the field began. Every stage's call waits for the device, so on
 // a CPU device this is the device's time and on a GPU it includes the submissions' overhead.
+// One horizontal layer of the light grid (docs/SCENES.md), seen from above: light[z * width + x] at voxel column
+// (x, z), x along the world's x and z along its z; `open` is the light in the open.
+struct LightSlice {
+    uint32_t width = 0, depth = 0;
+    float height = 0;  // of the layer's centres
+    float open = 0;
+    std::vector<float> light;
+};
+
 struct StageSeconds {
     double derive = 0;     // the due plants' derivation steps
     double grow = 0;       // the particles' tick
@@ -98,6 +107,8 @@ public:
     // Where the field will reach when grown, as one plant of each species grows on the CPU (a plant's own random
     // draws may take it a little further): what a camera that stays put while the field grows frames.
     draw::Bounds grownBounds() const;
+    // The light grid's layer at `height` (clamped to the grid), as the last drawing left it; empty before one.
+    LightSlice lightSlice(float height) const;
     const grow::GrowingSpecies& species() const;
     const StageSeconds& stageSeconds() const;
     // The name of a plant's species: its scene plant's, else the grammar file's.

@@ -72,6 +72,7 @@ public:
     void gather(const turtle::Interpretation& organs, std::vector<shared::ParticleState>& particles,
                 const DerivedParticle& derivedOf = {}) const;
 
+    const LightGridSpec& spec() const { return spec_; }
     const std::vector<uint32_t>& occupancy() const { return occupancy_; }
     const std::vector<glm::vec4>& light() const { return light_; } // xyz: most light from; w: light
 

@@ -7,6 +7,7 @@
 #include "compute/shared/config.h"
 #include "compute/shared/derive_layout.h"
 #include "compute/shared/growth_layout.h"
+#include "compute/shared/organ_layout.h"
 #include "compute/shared/particle_layout.h"
 #include "compute/shared/random.h"
 
@@ -19,11 +20,21 @@ layout(set = 0, binding = 4, std430) readonly buffer SpeciesWords { uint species
 layout(set = 0, binding = 5, std430) readonly buffer DeriveTimes { float deriveTimes[]; };
 layout(set = 0, binding = 6, std430) readonly buffer Rows { float rows[]; };
 layout(set = 0, binding = 7, std430) readonly buffer Classes { uint classes[]; };
+layout(set = 0, binding = 8, std430) readonly buffer Placements { PlantPlacement placements[]; };
 layout(push_constant) uniform Push { GrowPush pc; };
 
 #include "compute/grow/growth.glsl"
+#include "compute/grow/light_direction.glsl"
 
 float particle(uint i, uint slot) { return particles[kParticleStateFloats * i + slot]; }
+
+// The direction of most light at particle i, turned from the field's frame into its plant's own (the transpose of
+// the plant's rotation).
+vec3 lightInPlantFrame(uint i, uint plant) {
+    vec3 d = unpackLightDirection(particle(i, kParticleLightDirection));
+    PlantPlacement m = placements[plant];
+    return normalize(d.x * m.x.xyz + d.y * m.y.xyz + d.z * m.z.xyz);
+}
 
 float grownValue(uint code, uint i, uint plant) {
     float age = particle(i, kParticleAge);
@@ -32,7 +43,7 @@ float grownValue(uint code, uint i, uint plant) {
     bool rowed = klass < kGrowOrganKinds && hasRows(species, klass);
     uint row = rowed ? stageRow(species, klass, particle(i, kParticleStage)) : 0u;
     uint id = floatBitsToUint(particle(i, kParticleId));
-    float living = !rowed || alive(row, plant, id, age) ? 1.0 : 0.0;
+    float living = !rowed || alive(row, plant, id, age, particle(i, kParticleShade)) ? 1.0 : 0.0;
     if (code >= kGrownLeafColor) {
         float lifeTime = rowed ? property(row, kLifeTime, plant, id) : 0.0;
         uint shade = age < deriveTimes[plant]                                   ? kLeafYoungShade
@@ -57,6 +68,15 @@ float grownValue(uint code, uint i, uint plant) {
                      property(row, kWeightFactor, plant, id) * particle(i, kParticleElongation) / strength;
         return clamp(pc.gravity * bend, -kMaxBend, kMaxBend);
     }
+    case kGrownLightBend: {
+        if (!rowed) return 0.0;
+        float growTime = property(row, kGrowTime, plant, id);
+        float grown = growTime > 0.0 ? min(age / growTime, 1.0) : 1.0;
+        return clamp(property(row, kPhototropism, plant, id) * grown, -kMaxBend, kMaxBend);
+    }
+    case kGrownLightX:
+    case kGrownLightY:
+    case kGrownLightZ: return lightInPlantFrame(i, plant)[code - kGrownLightX];
     default: return living;
     }
 }

@@ -36,10 +36,10 @@ float property(uint row, uint k, uint plant, uint id) {
     return lo + (hi - lo) * randomUnit(pc.seed, plant, kGrowPropertyPass, id, k);
 }
 
-// Whether a particle of this age lives by its row's LifeTime (none: 0).
-bool alive(uint row, uint plant, uint id, float age) {
+// Whether a particle lives: its age within its row's LifeTime (none: 0), and not shed in the shade.
+bool alive(uint row, uint plant, uint id, float age, float shade) {
     float lifeTime = property(row, kLifeTime, plant, id);
-    return lifeTime <= 0.0 || age < lifeTime;
+    return (lifeTime <= 0.0 || age < lifeTime) && !shedInShade(property(row, kShadeTime, plant, id), shade);
 }
 
 #endif

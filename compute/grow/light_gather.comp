@@ -20,15 +20,8 @@ layout(set = 0, binding = 5, std430) readonly buffer Origins { uint origin[]; };
 layout(set = 0, binding = 6, std430) buffer DerivedParticles { float derivedParticles[]; };
 layout(push_constant) uniform Push { LightGridPush pc; };
 
+#include "compute/grow/light_direction.glsl"
 #include "compute/grow/light_grid.glsl"
-
-// A unit direction as the two coordinates of the octahedron's unfolding (src/grow/light_grid.cpp's octahedral).
-vec2 octahedral(vec3 n) {
-    n /= abs(n.x) + abs(n.y) + abs(n.z);
-    vec2 e = n.xz;
-    if (n.y < 0.0) e = (1.0 - abs(e.yx)) * vec2(e.x >= 0.0 ? 1.0 : -1.0, e.y >= 0.0 ? 1.0 : -1.0);
-    return e;
-}
 
 void main() {
     uint s = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * gl_WorkGroupSize.x + gl_LocalInvocationID.x;
@@ -43,7 +36,7 @@ void main() {
     } else {
         for (uint d = 0u; d < pc.directions; ++d) l.w += max(directions[d].towardAndIntensity.w, 0.0);
     }
-    float direction = uintBitsToFloat(packSnorm2x16(octahedral(l.xyz)));
+    float direction = packLightDirection(l.xyz);
     uint at = kParticleStateFloats * o.module;
     particles[at + kParticleLight] = l.w;
     particles[at + kParticleLightDirection] = direction;

@@ -62,21 +62,21 @@ void main() {
         uint row = stageRow(species, klass, stage);
         uint self = floatBitsToUint(p[kParticleId]);
         // A dead organ grows no more.
-        float growing = alive(row, plant, self, p[kParticleAge])
-                            ? clamp(property(row, kGrowTime, plant, self) - p[kParticleStageAge], 0.0, pc.dt)
-                            : 0.0;
+        bool living = alive(row, plant, self, p[kParticleAge], p[kParticleShade]);
+        float growing = living ? clamp(property(row, kGrowTime, plant, self) - p[kParticleStageAge], 0.0, pc.dt) : 0.0;
         float rate = vigour[plant] * lightResponse(p[kParticleLight], pc.openLight) * growing;
         p[kParticleElongation] += property(row, kGrowRate, plant, self) * rate;
         p[kParticleBroadening] += property(row, kBroadenRate, plant, self) * rate;
-        p[kParticleNoiseClock] += pc.dt;
         float noiseTime = property(row, kNoiseTime, plant, self), cone = property(row, kConeNoise, plant, self);
-        if (growing > 0.0 && noiseTime > 0.0 && cone > 0.0 && p[kParticleNoiseClock] >= noiseTime) {
-            p[kParticleNoiseClock] = mod(p[kParticleNoiseClock], noiseTime);
+        if (growing > 0.0 && noiseTime > 0.0 && cone > 0.0 &&
+            periodsUpTo(p[kParticleAge] + pc.dt, noiseTime) > periodsUpTo(p[kParticleAge], noiseTime)) {
             float u = randomUnit(pc.seed, plant, kGrowNoisePass, self, 2u * pc.tick);
             float v = randomUnit(pc.seed, plant, kGrowNoisePass, self, 2u * pc.tick + 1u);
             p[kParticlePitch] = cone * sqrt(u);
             p[kParticleRoll] = kTwoPi * v;
         }
+        if (living && pc.openLight > 0.0)
+            p[kParticleShade] = p[kParticleLight] < kDeepShade * pc.openLight ? p[kParticleShade] + pc.dt : 0.0;
     }
     p[kParticleAge] += pc.dt;
     p[kParticleStageAge] += pc.dt;

@@ -45,8 +45,9 @@ SIMECO_CONST kSpeciesDrawsGrowth = 1u;
 SIMECO_CONST kSpeciesGrowsSegments = 2u;
 SIMECO_CONST kGrowSegment = 0x80000000u;
 
-// A stage row: the stage number, then each property's min and max; rows of an organ sorted by stage.
-SIMECO_CONST kStageRowFloats = 20u;
+// A stage row: the stage number, then each property's min and max (padded to a multiple of four floats); rows of an
+// organ sorted by stage.
+SIMECO_CONST kStageRowFloats = 24u;
 SIMECO_CONST kStageNumber = 0u;
 SIMECO_CONST kGrowRate = 0u;
 SIMECO_CONST kGrowTime = 1u;
@@ -57,7 +58,9 @@ SIMECO_CONST kConeNoise = 5u;
 SIMECO_CONST kNoiseTime = 6u;
 SIMECO_CONST kStrength = 7u;
 SIMECO_CONST kGeotropism = 8u;
-SIMECO_CONST kStageProperties = 9u;
+SIMECO_CONST kPhototropism = 9u;
+SIMECO_CONST kShadeTime = 10u;
+SIMECO_CONST kStageProperties = 11u;
 SIMECO_FN uint propertyMin(uint property) {
     return 1u + 2u * property;
 }
@@ -81,8 +84,12 @@ SIMECO_CONST kGrownPitch = 3u;    // its pitch, in radians
 SIMECO_CONST kGrownRoll = 4u;     // its roll, in radians
 SIMECO_CONST kGrownUnroll = 5u;   // minus its roll: the frame turns back after the tilt
 SIMECO_CONST kGrownBend = 6u;     // its tropism elasticity: geotropism and bending under its weight
-SIMECO_CONST kGrownAlive = 7u;    // 1 while it lives, 0 once its LifeTime has passed
-SIMECO_CONST kGrownCodes = 8u;
+SIMECO_CONST kGrownAlive = 7u;    // 1 while it lives, 0 once its LifeTime has passed or it is shed in the shade
+SIMECO_CONST kGrownLightBend = 8u; // its phototropism: how far it turns toward the light (Phototropism x its growth)
+SIMECO_CONST kGrownLightX = 9u;    // the direction of most light at it, in its plant's own frame
+SIMECO_CONST kGrownLightY = 10u;
+SIMECO_CONST kGrownLightZ = 11u;
+SIMECO_CONST kGrownCodes = 12u;
 // A leaf's colour: code kGrownLeafColor + c names palette colour c while the leaf is mature, c + 1 while it is
 // young (unfolding, its first DeriveTime) and c + 2 once it is old (the last kLeafOldAge of its LifeTime).
 SIMECO_CONST kGrownLeafColor = 16u;
@@ -95,6 +102,26 @@ SIMECO_CONST_FLOAT kLeafOldAge = 0.3f;
 // as kMinStrength.
 SIMECO_CONST_FLOAT kMaxBend = 1.0f;
 SIMECO_CONST_FLOAT kMinStrength = 0.05f;
+// Phototropism: a stem turns toward the direction of most light at it by Phototropism x its growth so far (up to
+// one GrowTime) x |H x light| (the turtle's `phototropism`), within kMaxBend.
+
+// Shedding in the shade (where a light grid runs): an organ whose light stays below kDeepShade of the open's for its
+// stage's ShadeTime without a break is shed (dead, as at the end of its LifeTime; a stem takes its branch with it).
+// kParticleShade counts the seconds; once it reaches ShadeTime it counts no more, so the organ stays shed.
+SIMECO_CONST_FLOAT kDeepShade = 0.15f;
+SIMECO_FN bool shedInShade(float shadeTime, float shadeSeconds) {
+    return shadeTime > 0.0f && shadeSeconds >= shadeTime;
+}
+
+// Cone noise turns an organ whenever its age passes a multiple of NoiseTime while it grows: the multiples of
+// `period` up to `age`, found with products (exact on every device) rather than a quotient (which a device may round
+// differently).
+SIMECO_FN uint periodsUpTo(float age, float period) {
+    uint k = uint(age / period);
+    while (k > 0u && float(k) * period > age) k -= 1u;
+    while (float(k + 1u) * period <= age) k += 1u;
+    return k;
+}
 // A leaf model's size before it grows, in the scripts' units: the seed plants' leaves are about as long as an
 // internode grows in its first stages (GrowRate 0.5 for GrowTime 3 s).
 SIMECO_CONST_FLOAT kLeafModelSize = 3.0f;

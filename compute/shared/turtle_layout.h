@@ -54,7 +54,9 @@ SIMECO_CONST kTurtleQueryUp = 42u;       // ?U
 SIMECO_CONST kTurtleIgnored = 43u;       // a predefined command simeco does not draw (@PS, @Tx, @!, ...)
 SIMECO_CONST kTurtleTropism = 44u;       // tropism(e): SimEco's growth, set the elasticity to e
 SIMECO_CONST kTurtleAlive = 45u;         // alive(a): SimEco's growth, scale what follows by a (0: shed)
-SIMECO_CONST kTurtleCommands = 46u;
+SIMECO_CONST kTurtlePhototropism = 46u;  // phototropism(e,x,y,z): SimEco's growth, turn the heading toward the
+                                         // direction (x,y,z) by e |H x d| about H x d (d the direction made unit)
+SIMECO_CONST kTurtleCommands = 47u;
 
 // cpfg writes its predefined modules of several characters as separate modules: `@O(d)` is `@` then `O(d)`,
 // `@Gc(n)` is `@`, `G`, `c(n)`, `?P(x,y)` is `?` then `P(x,y)`, `~l(s)` is `~` then `l(s)` (productions can

@@ -71,7 +71,8 @@ bool isNonlinear(uint command, TurtleSpecies sp) {
     case kTurtleSetHeading:
     case kTurtleRotateWorldX:
     case kTurtleRotateWorldY:
-    case kTurtleRotateWorldZ: return true;
+    case kTurtleRotateWorldZ:
+    case kTurtlePhototropism: return true;
     case kTurtleDraw: return sp.tropism.w != 0.0; // tropism bends the heading after each segment
     default: return false;
     }
@@ -136,6 +137,11 @@ TurtleState applyNonlinear(TurtleState s, uint command, uint i, TurtleSpecies sp
         bend(f, sp.tropism.xyz, s.position.w);
         break;
     case kTurtleRollLevel: rollLevel(f); break;
+    case kTurtlePhototropism: {
+        vec3 d = vec3(paramAt(i, 1u, 0.0), paramAt(i, 2u, 0.0), paramAt(i, 3u, 0.0));
+        if (length(d) > 0.0) bend(f, normalize(d), paramAt(i, 0u, 0.0));
+        break;
+    }
     case kTurtleRotateWorldX: rotateFrame(f, vec3(1, 0, 0), paramAt(i, 0u, 0.0)); break;
     case kTurtleRotateWorldY: rotateFrame(f, vec3(0, 1, 0), paramAt(i, 0u, 0.0)); break;
     case kTurtleRotateWorldZ: rotateFrame(f, vec3(0, 0, 1), paramAt(i, 0u, 0.0)); break;

@@ -14,7 +14,8 @@ namespace simeco::field {
 namespace {
 
 constexpr char kMagic[] = "simeco saved run\n";
-constexpr uint32_t kVersion = 1;
+// 2: a particle's fourth slot counts its seconds in deep shade (it was the cone noise's clock).
+constexpr uint32_t kVersion = 2;
 
 class Writer {
 public:

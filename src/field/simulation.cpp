@@ -118,7 +118,7 @@ struct Simulation::Impl {
 
     grow::TickSettings settings(const Batch& b, uint32_t tick) const {
         return {&tables, uint32_t(g.species.size()), options.dt, tick, b.seed, g.relativeGravity(),
-                b.vigour.empty() ? nullptr : &b.vigour, openLight};
+                b.vigour.empty() ? nullptr : &b.vigour, openLight, &b.field.placements};
     }
     // The height each plant stands at.
     static std::vector<float> baseHeights(const std::vector<shared::PlantPlacement>& placements) {
@@ -166,7 +166,7 @@ void Simulation::Impl::makeBatches(uint32_t plantsPerBatch) {
         if (options.backend == Backend::Gpu) {
             b.deriver = std::make_unique<gpu::GpuDeriver>(*context, g.species, gpu::GpuStrategy::Parallel);
             b.deriver->begin(batch);
-            b.growth = std::make_unique<grow::GpuGrowth>(*context, tables, b.deriveTimes, b.vigour);
+            b.growth = std::make_unique<grow::GpuGrowth>(*context, tables, b.deriveTimes, b.vigour, b.field.placements);
             b.modules = b.deriver->current().count;
         } else {
             b.reference = std::make_unique<cpu::SteppedDerivation>(g.species, batch);

@@ -37,8 +37,12 @@ const std::optional<ir::EcoNumber>& scriptProperty(const ir::EcoStage& stage, ui
         return stage.noiseTime;
     case shared::kStrength:
         return stage.strength;
-    default:
+    case shared::kGeotropism:
         return stage.geotropism;
+    case shared::kPhototropism:
+        return stage.phototropism;
+    default:
+        return stage.shadeTime;
     }
 }
 
@@ -78,7 +82,7 @@ float defaultProperty(EcoOrganKind kind, uint32_t property) {
     case shared::kStrength:
         return 1.0f;
     default:
-        return 0.0f; // no life time limit, weight, noise or tropism
+        return 0.0f; // no life time limit, weight, noise, tropism or shedding in the shade
     }
 }
 
@@ -135,13 +139,17 @@ GrowthTables growthTables(const std::vector<ir::Grammar>& species, const std::ve
     return t;
 }
 
+// The draw of the growth's property pass that a plant's DeriveTime takes, as identity 0 (no particle's: theirs are
+// odd, so no stage property draws it).
+constexpr uint32_t kDeriveTimeDraw = 9;
+
 std::vector<float> plantDeriveTimes(const std::vector<const ir::EcoPlant*>& ecoPlants, uint32_t plants, uint32_t seed) {
     std::vector<float> times(plants, kDefaultDeriveTime);
     if (ecoPlants.empty()) return times;
     for (uint32_t plant = 0; plant < plants; ++plant) {
         const ir::EcoPlant* eco = ecoPlants[ir::speciesOfPlant(plant, ecoPlants.size())];
         if (!eco) continue;
-        const float u = shared::randomUnit(seed, plant, shared::kGrowPropertyPass, 0, shared::kStageProperties);
+        const float u = shared::randomUnit(seed, plant, shared::kGrowPropertyPass, 0, kDeriveTimeDraw);
         times[plant] = std::max(eco->deriveTime.min + (eco->deriveTime.max - eco->deriveTime.min) * u, 1e-3f);
     }
     return times;

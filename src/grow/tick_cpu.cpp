@@ -5,9 +5,12 @@
 #include <cmath>
 #include <stdexcept>
 
+#include <glm/geometric.hpp>
+
 #include "compute/shared/growth_layout.h"
 #include "compute/shared/particle_layout.h"
 #include "compute/shared/random.h"
+#include "grow/light_grid.h"
 #include "ir/species.h"
 
 namespace simeco::grow {
@@ -37,32 +40,45 @@ float property(const TickSettings& ts, const float* row, uint32_t plant, uint32_
     return lo + (hi - lo) * shared::randomUnit(ts.seed, plant, shared::kGrowPropertyPass, id, k);
 }
 
-// Whether a particle of this age lives by its row's LifeTime (none: 0).
-bool alive(const TickSettings& ts, const float* row, uint32_t plant, uint32_t id, float age) {
+// Whether a particle lives: its age within its row's LifeTime (none: 0), and not shed in the shade.
+bool alive(const TickSettings& ts, const float* row, uint32_t plant, uint32_t id, const float* p) {
     const float lifeTime = property(ts, row, plant, id, shared::kLifeTime);
-    return lifeTime <= 0.0f || age < lifeTime;
+    return (lifeTime <= 0.0f || p[shared::kParticleAge] < lifeTime) &&
+           !shared::shedInShade(property(ts, row, plant, id, shared::kShadeTime), p[shared::kParticleShade]);
+}
+
+// The direction of most light at a particle, turned from the field's frame into its plant's own.
+glm::vec3 lightInPlantFrame(const TickSettings& ts, const float* p, uint32_t plant) {
+    const glm::vec3 d = unpackLightDirection(p[shared::kParticleLightDirection]);
+    if (!ts.placements || plant >= ts.placements->size()) return d;
+    const shared::PlantPlacement& m = (*ts.placements)[plant];
+    return glm::normalize(d.x * glm::vec3(m.x.x, m.x.y, m.x.z) + d.y * glm::vec3(m.y.x, m.y.y, m.y.z) +
+                          d.z * glm::vec3(m.z.x, m.z.y, m.z.z));
 }
 
 // An organ's growth over one tick, by its stage's row; a dead organ grows no more.
 void growOrgan(const TickSettings& ts, const float* row, uint32_t plant, float* p) {
     const uint32_t id = std::bit_cast<uint32_t>(p[shared::kParticleId]);
     auto property = [&](uint32_t k) { return grow::property(ts, row, plant, id, k); };
-    const float growing = alive(ts, row, plant, id, p[shared::kParticleAge])
-                              ? std::clamp(property(shared::kGrowTime) - p[shared::kParticleStageAge], 0.0f, ts.dt)
-                              : 0.0f;
+    const bool living = alive(ts, row, plant, id, p);
+    const float growing =
+        living ? std::clamp(property(shared::kGrowTime) - p[shared::kParticleStageAge], 0.0f, ts.dt) : 0.0f;
     const float vigour = ts.vigour ? (*ts.vigour)[plant] : 1.0f;
     const float rate = vigour * shared::lightResponse(p[shared::kParticleLight], ts.openLight) * growing;
     p[shared::kParticleElongation] += property(shared::kGrowRate) * rate;
     p[shared::kParticleBroadening] += property(shared::kBroadenRate) * rate;
-    p[shared::kParticleNoiseClock] += ts.dt;
     const float noiseTime = property(shared::kNoiseTime), cone = property(shared::kConeNoise);
-    if (growing > 0.0f && noiseTime > 0.0f && cone > 0.0f && p[shared::kParticleNoiseClock] >= noiseTime) {
-        p[shared::kParticleNoiseClock] = std::fmod(p[shared::kParticleNoiseClock], noiseTime);
+    const float age = p[shared::kParticleAge];
+    if (growing > 0.0f && noiseTime > 0.0f && cone > 0.0f &&
+        shared::periodsUpTo(age + ts.dt, noiseTime) > shared::periodsUpTo(age, noiseTime)) {
         const float u = shared::randomUnit(ts.seed, plant, shared::kGrowNoisePass, id, 2 * ts.tick);
         const float v = shared::randomUnit(ts.seed, plant, shared::kGrowNoisePass, id, 2 * ts.tick + 1);
         p[shared::kParticlePitch] = cone * std::sqrt(u);
         p[shared::kParticleRoll] = kTwoPi * v;
     }
+    if (living && ts.openLight > 0.0f)
+        p[shared::kParticleShade] =
+            p[shared::kParticleLight] < shared::kDeepShade * ts.openLight ? p[shared::kParticleShade] + ts.dt : 0.0f;
 }
 
 // The value kGrownValue code `code` names for a module of `plant` whose particle is `p`.
@@ -73,7 +89,7 @@ float grownValue(const TickSettings& ts, uint32_t code, const float* p, uint32_t
     const uint32_t species = ir::speciesOfPlant(plant, ts.species);
     const float* row =
         klass < shared::kGrowOrganKinds ? stageRow(*ts.tables, species, klass, p[shared::kParticleStage]) : nullptr;
-    const float living = !row || alive(ts, row, plant, id, age) ? 1.0f : 0.0f;
+    const float living = !row || alive(ts, row, plant, id, p) ? 1.0f : 0.0f;
     if (code >= shared::kGrownLeafColor) {
         const float lifeTime = row ? property(ts, row, plant, id, shared::kLifeTime) : 0.0f;
         const uint32_t shade = age < deriveTime ? shared::kLeafYoungShade
@@ -106,6 +122,17 @@ float grownValue(const TickSettings& ts, uint32_t code, const float* p, uint32_t
                                strength;
         return std::clamp(ts.gravity * bend, -shared::kMaxBend, shared::kMaxBend);
     }
+    case shared::kGrownLightBend: {
+        if (!row) return 0.0f;
+        const float growTime = property(ts, row, plant, id, shared::kGrowTime);
+        const float grown = growTime > 0.0f ? std::min(age / growTime, 1.0f) : 1.0f;
+        return std::clamp(property(ts, row, plant, id, shared::kPhototropism) * grown, -shared::kMaxBend,
+                          shared::kMaxBend);
+    }
+    case shared::kGrownLightX:
+    case shared::kGrownLightY:
+    case shared::kGrownLightZ:
+        return lightInPlantFrame(ts, p, plant)[int(code - shared::kGrownLightX)];
     default:
         return living;
     }

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "compute/shared/organ_layout.h"
 #include "grow/growth_tables.h"
 #include "stream/module_string.h"
 
@@ -22,11 +23,14 @@ struct TickSettings {
     float gravity = 1.0f;
     const std::vector<float>* vigour = nullptr; // per plant: a factor on its GrowRate and BroadenRate (none: 1)
     float openLight = 0.0f; // the light in the open where a light grid runs (organs grow by their light), else 0
+    // per plant: where it stands (the light's direction turns into its own frame for phototropism; none: as is)
+    const std::vector<shared::PlantPlacement>* placements = nullptr;
 };
 
 // One tick of every particle of the derived string `s` (which carries particle state): the modules that continue
 // a particle and those born (compute/shared/growth_layout.h), aging, each living organ's growth by its stage's
-// GrowRate and BroadenRate for its GrowTime, and its cone noise every NoiseTime while it grows.
+// GrowRate and BroadenRate for its GrowTime, its cone noise every NoiseTime while it grows,
+// and the seconds it stands in deep shade.
 void tickCpu(const TickSettings& settings, stream::ModuleString& s);
 
 // The drawn string's kGrownValue codes replaced with its particles' values; `deriveTimes` per plant.

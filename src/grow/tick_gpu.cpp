@@ -24,10 +24,15 @@ std::vector<float> orOnes(const std::vector<float>& values, size_t count) {
     return values.empty() ? std::vector<float>(count, 1.0f) : values;
 }
 
+std::vector<shared::PlantPlacement> orAsDrawn(const std::vector<shared::PlantPlacement>& placements, size_t count) {
+    const shared::PlantPlacement asDrawn{{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}};
+    return placements.empty() ? std::vector<shared::PlantPlacement>(std::max<size_t>(count, 1), asDrawn) : placements;
+}
+
 } // namespace
 
 GpuGrowth::GpuGrowth(const vk::Context& context, const GrowthTables& tables, const std::vector<float>& deriveTimes,
-                     const std::vector<float>& vigour)
+                     const std::vector<float>& vigour, const std::vector<shared::PlantPlacement>& placements)
     : context_(context), symbols_(tables.symbols), atSymbol_(tables.atSymbol),
       tickKernel_(vk::ComputePipeline::embedded(context, "grow/tick")),
       sizesKernel_(vk::ComputePipeline::embedded(context, "grow/grown_sizes")),
@@ -35,7 +40,9 @@ GpuGrowth::GpuGrowth(const vk::Context& context, const GrowthTables& tables, con
       species_(vk::deviceBufferWith(context, std::span<const uint32_t>(tables.species))),
       rows_(vk::deviceBufferWith(context, std::span<const float>(tables.rows))),
       deriveTimes_(vk::deviceBufferWith(context, std::span<const float>(deriveTimes))),
-      vigour_(vk::deviceBufferWith(context, std::span<const float>(orOnes(vigour, deriveTimes.size())))) {}
+      vigour_(vk::deviceBufferWith(context, std::span<const float>(orOnes(vigour, deriveTimes.size())))),
+      placements_(vk::deviceBufferWith(
+          context, std::span<const shared::PlantPlacement>(orAsDrawn(placements, deriveTimes.size())))) {}
 
 void GpuGrowth::recordTick(VkCommandBuffer cmd, const stream::DeviceModules& derived, const TickSettings& settings) {
     if (!derived.particles) throw std::logic_error("GpuGrowth::recordTick: the string carries no particle state");
@@ -61,7 +68,7 @@ void GpuGrowth::recordSizes(VkCommandBuffer cmd, const stream::DeviceModules& dr
     vk::memoryBarrier(cmd, vk::Hazard::AnyToAny);
     sizesKernel_.dispatch(cmd,
                           {*drawn.symbols, *drawn.params, *drawn.plantStarts, *drawn.particles, species_, deriveTimes_,
-                           rows_, classes_},
+                           rows_, classes_, placements_},
                           growPush(drawn, settings, symbols_, atSymbol_), sizesKernel_.groupsFor(drawn.count));
     vk::memoryBarrier(cmd, vk::Hazard::ComputeToCompute);
 }

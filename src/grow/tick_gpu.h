@@ -22,10 +22,10 @@ namespace simeco::grow {
 
 class GpuGrowth {
 public:
-    // The tables, each plant's DeriveTime and each plant's vigour (a factor on its growth rates; empty: 1) go to
-    // the device once.
+    // The tables, each plant's DeriveTime, each plant's vigour (a factor on its growth rates; empty: 1) and where
+    // each stands (which turns the light's direction into its own frame; empty: as drawn) go to the device once.
     GpuGrowth(const vk::Context& context, const GrowthTables& tables, const std::vector<float>& deriveTimes,
-              const std::vector<float>& vigour = {});
+              const std::vector<float>& vigour = {}, const std::vector<shared::PlantPlacement>& placements = {});
 
     // One tick of `derived`'s particles (which it must carry), in place: the next states are written beside them
     // and copied back. `settings.tables` is not read (the device's copy is).
@@ -44,7 +44,7 @@ private:
     const vk::Context& context_;
     uint32_t symbols_, atSymbol_;
     vk::ComputePipeline tickKernel_, sizesKernel_;
-    vk::Buffer classes_, species_, rows_, deriveTimes_, vigour_;
+    vk::Buffer classes_, species_, rows_, deriveTimes_, vigour_, placements_;
     vk::Buffer nextStates_; // the tick's output, copied back into the string's particles
     vk::Buffer drawnSymbols_, drawnParams_, drawnStarts_, drawnParticles_; // copyForDrawing's
 };

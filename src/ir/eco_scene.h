@@ -62,6 +62,8 @@ struct EcoStage {
     std::optional<EcoNumber> noiseTime;
     std::optional<EcoNumber> strength;
     std::optional<EcoNumber> geotropism;
+    std::optional<EcoNumber> phototropism; // simeco's: how far a stem turns toward the light
+    std::optional<EcoNumber> shadeTime;    // simeco's: seconds an organ lives in deep shade before it is shed
     std::optional<EcoColor> color; // `Color` or `ColorFront`
     std::optional<EcoColor> colorBack;
     std::optional<EcoMaterial> material; // `Material` or `MaterialFront`

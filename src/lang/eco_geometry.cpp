@@ -219,8 +219,9 @@ private:
     }
 
     // The drawing at the sizes the particle has grown to: each size a code the growth simulation replaces. Stems
-    // bend (`tropism`) only where a stage sets Geotropism or WeightFactor, and are shed (`alive`) only where one
-    // sets a LifeTime, so that plants without them draw no more modules.
+    // bend (`tropism`) only where a stage sets Geotropism or WeightFactor, turn toward the light (`phototropism`)
+    // only where one sets Phototropism, and are shed (`alive`) only where one sets a LifeTime or a ShadeTime, so
+    // that plants without them draw no more modules.
     void grownDrawing(EcoOrganKind kind, const ir::EcoOrgan& organ, int color, const std::string& surface,
                       const ir::SourceLoc& loc, std::vector<ir::SuccessorModule>& out) {
         auto code = [](uint32_t c) { return shared::kGrownValue - float(c); };
@@ -232,11 +233,16 @@ private:
             out.push_back(module("!", {code(shared::kGrownWidth)}, loc));
             if (anySet(organ, &ir::EcoStage::geotropism) || anySet(organ, &ir::EcoStage::weightFactor))
                 out.push_back(module("tropism", {code(shared::kGrownBend)}, loc));
-            if (anySet(organ, &ir::EcoStage::lifeTime))
+            if (anySet(organ, &ir::EcoStage::lifeTime) || anySet(organ, &ir::EcoStage::shadeTime))
                 out.push_back(module("alive", {code(shared::kGrownAlive)}, loc));
             out.push_back(module("rotu", {code(shared::kGrownRoll)}, loc));
             out.push_back(module("rotr", {code(shared::kGrownPitch)}, loc));
             out.push_back(module("rotu", {code(shared::kGrownUnroll)}, loc));
+            if (anySet(organ, &ir::EcoStage::phototropism))
+                out.push_back(module("phototropism",
+                                     {code(shared::kGrownLightBend), code(shared::kGrownLightX),
+                                      code(shared::kGrownLightY), code(shared::kGrownLightZ)},
+                                     loc));
             out.push_back(module("G", {code(shared::kGrownLength)}, loc));
             break;
         case EcoOrganKind::Leaf:

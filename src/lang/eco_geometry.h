@@ -27,9 +27,11 @@ namespace simeco::lang {
 // the sizes the stage's growth reaches at the end of its GrowTime (EcoDrawing::Final).
 // Grown: the sizes are kGrownValue codes (compute/shared/growth_layout.h) that the growth simulation replaces
 // with each module's particle's; a stem segment also tilts by its particle's pitch and roll, bends by its
-// geotropism and weight, and is shed with the rest of its branch once its LifeTime has passed; a leaf's colour
-// follows its age (young, mature, old):
-//   stem S, root R:  ;(colour) !(width) [tropism(bend)] [alive(a)] rotu(roll) rotr(pitch) rotu(-roll) G(length)
+// geotropism and weight, turns toward the light by its phototropism, and is shed with the rest of its branch once
+// its LifeTime has passed or it has stood its ShadeTime in deep shade; a leaf's colour follows its age (young,
+// mature, old):
+//   stem S, root R:  ;(colour) !(width) [tropism(bend)] [alive(a)] rotu(roll) rotr(pitch) rotu(-roll)
+//                    [phototropism(e, light x, y, z)] G(length)
 // `assets`: the models and textures the renderer holds (lang/eco_assets.h): a leaf, flower or fruit of a stage whose
 // Model is among them is drawn with it, others with the built-in blade, blossom or sphere; a stage whose Texture is
 // among them gets a colour of its own that tints the texture (ViewSettings::paletteTextures).

@@ -578,7 +578,8 @@ private:
             {"LifeTime", &ir::EcoStage::lifeTime},       {"BroadenRate", &ir::EcoStage::broadenRate},
             {"WeightFactor", &ir::EcoStage::weightFactor}, {"ConeNoise", &ir::EcoStage::coneNoise},
             {"NoiseTime", &ir::EcoStage::noiseTime},     {"Strength", &ir::EcoStage::strength},
-            {"Geotropism", &ir::EcoStage::geotropism},
+            {"Geotropism", &ir::EcoStage::geotropism},   {"Phototropism", &ir::EcoStage::phototropism},
+            {"ShadeTime", &ir::EcoStage::shadeTime},
         };
         struct NamedProperty {
             const char* name;
@@ -626,7 +627,7 @@ private:
         }
         cur_.failAt(t, fmt::format("unknown stage property '{}' in {} (expected Model, Texture, GrowRate, "
                                    "GrowTime, LifeTime, BroadenRate, WeightFactor, Color, Material, ConeNoise, "
-                                   "NoiseTime, Strength or Geotropism)",
+                                   "NoiseTime, Strength, Geotropism, Phototropism or ShadeTime)",
                                    t.text, where));
     }
 

@@ -20,7 +20,7 @@ uint32_t plainCommand(std::string_view name) {
         {";", kTurtleColorUp},    {",", kTurtleColorDown},   {"{", kTurtlePolygonBegin}, {"}", kTurtlePolygonEnd},
         {".", kTurtlePolygonVertex}, {"rotx", kTurtleRotateWorldX}, {"roty", kTurtleRotateWorldY},
         {"rotz", kTurtleRotateWorldZ}, {"rotr", kTurtlePitchRadians}, {"rotu", kTurtleRollRadians},
-        {"tropism", kTurtleTropism}, {"alive", kTurtleAlive},
+        {"tropism", kTurtleTropism}, {"alive", kTurtleAlive}, {"phototropism", kTurtlePhototropism},
     };
     auto it = kCommands.find(name);
     return it == kCommands.end() ? kTurtleNone : it->second;

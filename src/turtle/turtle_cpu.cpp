@@ -211,6 +211,11 @@ private:
         case kTurtleElasticityUp: st.elasticity += param(i, 1, t_.elasticityIncrement); break;
         case kTurtleElasticityDown: st.elasticity -= param(i, 1, t_.elasticityIncrement); break;
         case kTurtleTropism: st.elasticity = param(i, 0, st.elasticity); break;
+        case kTurtlePhototropism: {
+            const glm::vec3 d(param(i, 1, 0), param(i, 2, 0), param(i, 3, 0));
+            if (glm::length(d) > 0.0f) bend(f, glm::normalize(d), param(i, 0, 0));
+            break;
+        }
         case kTurtleSetPosition:
             st.position = {param(i, 0, st.position.x), param(i, 1, st.position.y), param(i, 2, st.position.z)};
             st.lastStem = -1;

@@ -1,11 +1,14 @@
 // The growth simulation's life cycle and bending, on the CPU reference, as the turtle draws them: organs that die
-// at their LifeTime and are shed with their branch, leaves that turn from young to mature to old, shoots that
-// turn against gravity (Geotropism) and bend under their weight (WeightFactor against Strength).
+// at their LifeTime or after their ShadeTime in deep shade and are shed with their branch, leaves that turn from
+// young to mature to old, shoots that turn against gravity (Geotropism) and bend under their weight (WeightFactor
+// against Strength).
 #include <algorithm>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -43,8 +46,11 @@ public:
     std::vector<shared::OrganInstance> after(uint32_t seconds) { return drawnAfter(seconds).organs; }
     turtle::Interpretation drawnAfter(uint32_t seconds) {
         grow::TickSettings ts{&tables_, 1, 1.0f, 0, 1, g_.relativeGravity()};
+        if (light_ >= 0.0f) ts.openLight = 1.0f;
         for (; ticks_ < seconds; ++ticks_) {
             ts.tick = ticks_;
+            if (light_ >= 0.0f)
+                for (shared::ParticleState& p : derivation_.current().particles) p.value[shared::kParticleLight] = light_;
             grow::tickCpu(ts, derivation_.current());
         }
         stream::ModuleString drawn = derivation_.drawn();
@@ -54,6 +60,8 @@ public:
                                     {turtle::turtleSettings(g_.species[0], alphabet)}, {});
     }
     const stream::ModuleString& derived() { return derivation_.current(); }
+    // From now on every particle stands in `light` (as a share of the open's, which a light grid gives them).
+    void standIn(float light) { light_ = light; }
 
 private:
     static stream::DeriveOptions options() {
@@ -68,6 +76,7 @@ private:
     std::vector<float> deriveTimes_;
     cpu::SteppedDerivation derivation_;
     uint32_t ticks_ = 0;
+    float light_ = -1.0f; // none: no light grid runs
 };
 
 std::vector<shared::OrganInstance> ofKind(const std::vector<shared::OrganInstance>& organs, uint32_t kind) {
@@ -119,6 +128,46 @@ TEST(GrowthLife, AStemThatDiesIsShedWithItsBranchAndLeavesAgeThenFall) {
     // At 9 s every leaf has fallen.
     for (const shared::OrganInstance& leaf : ofKind(plant.after(9), shared::kOrganLeaf))
         EXPECT_FLOAT_EQ(leaf.position.w, 0.0f);
+}
+
+TEST(GrowthLife, AnOrganInDeepShadeForItsShadeTimeIsShedWithItsBranchAndStaysShed) {
+    // S(1) [ S(0) L(0) ] S(1): the stage-0 stem and the leaf are shed after 3 s without a break in deep shade.
+    GrownPlant plant(scene("Stage 0 { GrowRate = 1.0; GrowTime = 20.0; ShadeTime = 3.0; }\n"
+                           "Default { GrowRate = 1.0; GrowTime = 20.0; }\n",
+                           "Default { GrowRate = 0.1; GrowTime = 20.0; ShadeTime = 3.0; }\n",
+                           "S(1) [ rotr(0.5) S(0) L(0) ] S(1)"));
+    auto drawn = [&](uint32_t seconds) {
+        const std::vector<shared::OrganInstance> organs = plant.after(seconds);
+        return std::pair(ofKind(organs, shared::kOrganStem), ofKind(organs, shared::kOrganLeaf));
+    };
+    plant.standIn(1.0f);
+    auto [stems, leaves] = drawn(2);
+    ASSERT_EQ(stems.size(), 3u); // S(1), S(0), S(1)
+    ASSERT_EQ(leaves.size(), 1u);
+    EXPECT_FLOAT_EQ(stems[1].position.w, 2.0f);
+    // Two seconds in deep shade (below 0.15 of the open's light), two in the light, two in the shade again: never
+    // three without a break, so all live, growing at the pace of their light.
+    plant.standIn(0.1f);
+    drawn(4);
+    plant.standIn(1.0f);
+    drawn(6);
+    plant.standIn(0.1f);
+    std::tie(stems, leaves) = drawn(8);
+    EXPECT_GT(stems[1].position.w, 4.0f);
+    EXPECT_GT(leaves[0].position.w, 0.0f);
+    const float stemAt8 = stems[1].position.w;
+    // A third second in the shade sheds the stem and its leaf; the main axis, never shaded long enough, is not
+    // (all stand in the same light, but only the stage-0 stem and the leaf have a ShadeTime).
+    std::tie(stems, leaves) = drawn(9);
+    EXPECT_FLOAT_EQ(stems[1].position.w, 0.0f);
+    EXPECT_FLOAT_EQ(leaves[0].position.w, 0.0f);
+    EXPECT_GT(stems[0].position.w, stemAt8);
+    // Back in the light it stays shed.
+    plant.standIn(1.0f);
+    std::tie(stems, leaves) = drawn(12);
+    EXPECT_FLOAT_EQ(stems[1].position.w, 0.0f);
+    EXPECT_FLOAT_EQ(leaves[0].position.w, 0.0f);
+    EXPECT_GT(stems[2].position.w, 0.0f);
 }
 
 TEST(GrowthLife, APlantLivesUntilEveryOrganItDrewIsShed) {

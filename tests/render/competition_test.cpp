@@ -1,0 +1,212 @@
+// Plants that compete for light (field::Simulation with its light grid), on the device against the CPU reference:
+// shoots turn toward the light, away from an obstacle's shade; a dense stand sheds its shaded lower branches while
+// an open-grown plant keeps them; a plant among taller neighbours catches less light than one alone.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include "compute/shared/organ_layout.h"
+#include "field/simulation.h"
+#include "gpu_fixture.h"
+#include "same_organs.h"
+#include "turtle/interpretation.h"
+#include "turtle/turtle_gpu.h"
+
+namespace simeco::test {
+namespace {
+
+using CompetitionTest = GpuTest;
+
+// A herb of one shoot: a node each DeriveTime, each with a leaf on alternate sides; its stems turn toward the light.
+std::string shoot(float phototropism) {
+    return fmt::format(R"(
+            DeriveTime = 2.0;
+            Stem {{ Default {{ GrowRate = 0.5; GrowTime = 2.0; BroadenRate = 0.02; Phototropism = {}; }} }}
+            Leaf {{ Default {{ GrowRate = 0.5; GrowTime = 2.0; }} }}
+            Grow {{ w = A(0); A(0) -> S(0)[rotr(1.0)L(0)]rotu(3.1416)A(0); }}
+        }})",
+                       phototropism);
+}
+
+field::SimulationOptions scene(const std::string& body, field::Backend backend) {
+    field::SimulationOptions options;
+    options.file = "competition.eco";
+    options.sceneText = "EcoSystem 1.0 \"Competition\" {\n" + body + "}\n";
+    options.seed = 5;
+    options.dt = 1.0f;
+    options.backend = backend;
+    return options;
+}
+
+// What a plant's drawn stems show: how far their tips lean along x from its base, on average, and its top.
+struct Lean {
+    float x = 0.0f;
+    float top = 0.0f;
+    int stems = 0;
+};
+
+std::vector<Lean> leans(const turtle::Interpretation& drawn, const std::vector<shared::PlantPlacement>& placements) {
+    std::vector<Lean> lean(placements.size());
+    for (uint32_t k = 0; k < drawn.count[shared::kOrganStem]; ++k) {
+        const shared::OrganInstance& o = drawn.organs[drawn.first[shared::kOrganStem] + k];
+        if (o.position.w <= 0.0f || o.plant >= lean.size()) continue;
+        const float tipX = o.position.x + o.position.w * o.heading.x, tipY = o.position.y + o.position.w * o.heading.y;
+        Lean& l = lean[o.plant];
+        l.x += tipX - placements[o.plant].x.w;
+        l.top = std::max(l.top, tipY);
+        ++l.stems;
+    }
+    for (Lean& l : lean)
+        if (l.stems > 0) l.x /= float(l.stems);
+    return lean;
+}
+
+// Grows the scene on both backends for `ticks`, checks that they draw alike, and returns the device's drawing.
+turtle::Interpretation grownAlike(const vk::Context& context, const std::string& body, int ticks,
+                                  std::vector<shared::PlantStatistics>* statistics = nullptr) {
+    field::Simulation gpu(scene(body, field::Backend::Gpu), &context);
+    field::Simulation cpu(scene(body, field::Backend::Cpu), &context);
+    for (int tick = 0; tick < ticks; ++tick) {
+        gpu.tick(), cpu.tick();
+        gpu.interpretParts(), cpu.interpretParts();
+    }
+    const turtle::Interpretation want = turtle::readBack(context, cpu.interpret(), cpu.plants());
+    const turtle::Interpretation got = turtle::readBack(context, gpu.interpret(), gpu.plants());
+    EXPECT_EQ(organDifference(want, got), "");
+    if (statistics) *statistics = gpu.statistics();
+    return got;
+}
+
+TEST_F(CompetitionTest, ShootsTurnTowardTheSunWhereverItIs) {
+    const std::string plants = " Plant \"Turning\" { Position = vector(0.0, 0.0, 0.0);" + shoot(0.3) +
+                               "\n Plant \"Straight\" { Position = vector(0.0, 0.0, 8.0);" + shoot(0.0) + "\n";
+    float lean[2][2] = {};
+    for (int side = 0; side < 2; ++side) {
+        const float x = side == 0 ? 1.0f : -1.0f;
+        const std::string sun = fmt::format(" SunDirection = vector({}, 0.8, 0.0);\n", x);
+        field::Simulation probe(scene(sun + plants, field::Backend::Cpu), &context());
+        const turtle::Interpretation drawn = grownAlike(context(), sun + plants, 12);
+        const std::vector<Lean> l = leans(drawn, probe.placements());
+        ASSERT_GE(l[0].stems, 5);
+        ASSERT_EQ(l[0].stems, l[1].stems);
+        lean[side][0] = l[0].x, lean[side][1] = l[1].x;
+    }
+    // The turning shoot leans toward the sun, east then west; the one without phototropism stands as it grew.
+    EXPECT_GT(lean[0][0], 0.3f);
+    EXPECT_LT(lean[1][0], -0.3f);
+    EXPECT_NEAR(lean[0][0], -lean[1][0], 0.05f * lean[0][0]);
+    EXPECT_LT(std::abs(lean[0][1]), 0.02f);
+    EXPECT_LT(std::abs(lean[1][1]), 0.02f);
+}
+
+TEST_F(CompetitionTest, AShootBesideAWallTurnsAwayFromItsShadeAndGrowsLess) {
+    // The sun low in the east behind a tall wall; the sky's light still comes over the west.
+    const std::string body = " SunDirection = vector(1.0, 0.5, 0.0);\n"
+                             " Plant \"Walled\" { Position = vector(0.0, 0.0, 0.0);" + shoot(0.3) +
+                             "\n Plant \"Open\" { Position = vector(0.0, 0.0, 30.0);" + shoot(0.3) +
+                             "\n Wall \"Wall\" { From = vector(7.0, 0.0, -10.0); To = vector(7.0, 0.0, 10.0);"
+                             " Height = 14.0; Thickness = 1.0; }\n";
+    std::vector<shared::PlantStatistics> statistics;
+    field::Simulation probe(scene(body, field::Backend::Cpu), &context());
+    const turtle::Interpretation drawn = grownAlike(context(), body, 12, &statistics);
+    const std::vector<Lean> l = leans(drawn, probe.placements());
+    ASSERT_GE(l[1].stems, 5);
+    EXPECT_GT(l[1].x, 0.3f);  // toward the sun in the open
+    EXPECT_LT(l[0].x, -0.1f); // away from the wall's shade
+    ASSERT_EQ(statistics.size(), 2u);
+    EXPECT_LT(statistics[0].light, 0.7f * statistics[1].light);
+    EXPECT_LT(statistics[0].leafArea, 0.8f * statistics[1].leafArea);
+    EXPECT_LT(statistics[0].height, statistics[1].height);
+}
+
+// A small tree: a trunk of internodes (stage 0), each node a side branch of two internodes (stage 1) with leaves;
+// the side branches and the leaves are shed after `shadeTime` seconds in deep shade, the trunk lives on.
+std::string tree(float shadeTime) {
+    return fmt::format(R"(
+            DeriveTime = 2.0;
+            Stem {{
+                Stage 0 {{ GrowRate = 0.8; GrowTime = 2.0; BroadenRate = 0.03; }}
+                Stage 1 {{ GrowRate = 0.5; GrowTime = 2.0; BroadenRate = 0.02; ShadeTime = {0}; }}
+            }}
+            Leaf {{ Default {{ GrowRate = 0.1; GrowTime = 2.0; ShadeTime = {0}; }} }}
+            Grow {{
+                w = A(0);
+                A(0) -> S(0)[rotr(1.2)A(1)]rotu(2.4)A(0);
+                A(1) -> S(1)[rotr(0.8)L(0)][rotr(0.8)rotu(3.1416)L(0)]A(2);
+                A(2) -> S(1)[rotr(0.8)L(0)][rotr(0.8)rotu(3.1416)L(0)];
+            }}
+        }})",
+                       shadeTime);
+}
+
+// Per plant: its drawn leaves, and the height of its lowest one.
+struct Leaves {
+    int count = 0;
+    float lowest = 1e30f;
+};
+
+std::vector<Leaves> leavesOf(const turtle::Interpretation& drawn, size_t plants) {
+    std::vector<Leaves> leaves(plants);
+    for (uint32_t k = 0; k < drawn.count[shared::kOrganLeaf]; ++k) {
+        const shared::OrganInstance& o = drawn.organs[drawn.first[shared::kOrganLeaf] + k];
+        if (o.position.w <= 0.0f || o.plant >= plants) continue;
+        ++leaves[o.plant].count;
+        leaves[o.plant].lowest = std::min(leaves[o.plant].lowest, o.position.y);
+    }
+    return leaves;
+}
+
+TEST_F(CompetitionTest, ADenseStandShedsItsShadedLowerBranchesWhereAnOpenTreeKeepsThem) {
+    std::string body = " SunDirection = vector(0.2, 1.0, 0.1);\n";
+    // Plant 0 grows in the open; plants 1 to 9 stand a little apart in a square, plant 5 in its middle.
+    body += " Plant \"Open\" { Position = vector(-12.0, 0.0, 0.0);" + tree(4.0f) + "\n";
+    for (int k = 0; k < 9; ++k)
+        body += fmt::format(" Plant \"Stand {}\" {{ Position = vector({}, 0.0, {});", k, 2.5f * float(k % 3),
+                            2.5f * float(k / 3)) +
+                tree(4.0f) + "\n";
+    std::vector<shared::PlantStatistics> statistics;
+    const turtle::Interpretation drawn = grownAlike(context(), body, 20, &statistics);
+    const std::vector<Leaves> leaves = leavesOf(drawn, 10);
+    ASSERT_EQ(statistics.size(), 10u);
+    // The open tree keeps its lowest branch's leaves; the stand's middle tree has shed its lower ones.
+    ASSERT_GT(leaves[0].count, 8);
+    ASSERT_GT(leaves[5].count, 0);
+    EXPECT_LT(leaves[5].count, leaves[0].count);
+    EXPECT_GT(leaves[5].lowest, leaves[0].lowest + 1.0f);
+    EXPECT_LT(statistics[5].living, statistics[0].living);
+}
+
+TEST_F(CompetitionTest, APlantAmongTallerNeighboursCatchesLessLightThanOneAlone) {
+    const std::string small = R"(
+            DeriveTime = 2.0;
+            Stem { Default { GrowRate = 0.2; GrowTime = 2.0; BroadenRate = 0.02; } }
+            Leaf { Default { GrowRate = 0.5; GrowTime = 2.0; } }
+            Grow { w = A(0); A(0) -> S(0)[rotr(1.0)L(0)]rotu(3.1416)A(0); }
+        })";
+    std::string body = " SunDirection = vector(0.3, 1.0, 0.2);\n";
+    body += " Plant \"Alone\" { Position = vector(-14.0, 0.0, 0.0);" + small + "\n";
+    body += " Plant \"Crowded\" { Position = vector(0.0, 0.0, 0.0);" + small + "\n";
+    for (int k = 0; k < 8; ++k) {
+        const float a = 6.2832f * float(k) / 8.0f;
+        body += fmt::format(" Plant \"Tall {}\" {{ Position = vector({}, 0.0, {});", k, 2.0f * std::cos(a),
+                            2.0f * std::sin(a)) +
+                shoot(0.0f) + "\n";
+    }
+    std::vector<shared::PlantStatistics> statistics;
+    grownAlike(context(), body, 12, &statistics);
+    ASSERT_EQ(statistics.size(), 10u);
+    ASSERT_GT(statistics[0].leafArea, 0.0f);
+    // Alike as they are, the crowded plant's leaves catch less light per area, and grow less.
+    const float alone = statistics[0].light / statistics[0].leafArea;
+    const float crowded = statistics[1].light / std::max(statistics[1].leafArea, 1e-6f);
+    EXPECT_LT(crowded, 0.75f * alone);
+    EXPECT_LT(statistics[1].leafArea, statistics[0].leafArea);
+}
+
+} // namespace
+} // namespace simeco::test

@@ -1,5 +1,6 @@
 #include "field/obstacles.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <glm/geometric.hpp>
@@ -35,10 +36,14 @@ std::vector<uint32_t> obstacleVoxels(const grow::LightGridSpec& grid, const std:
     for (const ir::EcoObstacle& o : obstacles) {
         const std::array<glm::vec3, 3> axes = obstacleAxes(o);
         const glm::vec3 center(o.center[0], o.center[1], o.center[2]);
+        // An obstacle thinner than a voxel fills the layer of voxels it passes through, so that a thin wall casts its
+        // shade however coarse the grid.
+        std::array<float, 3> reach{};
+        for (size_t k = 0; k < 3; ++k) reach[k] = std::max(o.halfSize[k], 0.5f * grid.side);
         for (uint64_t v = 0; v < grid.voxels(); ++v) {
             const glm::vec3 d = grid.centre(v) - center;
             bool inside = true;
-            for (size_t k = 0; k < 3; ++k) inside = inside && std::abs(glm::dot(d, axes[k])) <= o.halfSize[k];
+            for (size_t k = 0; k < 3; ++k) inside = inside && std::abs(glm::dot(d, axes[k])) <= reach[k];
             if (inside) mask[v] = 1;
         }
     }

@@ -17,7 +17,8 @@ namespace simeco::field {
 // The eight corners of an obstacle, in the world.
 std::array<glm::vec3, 8> obstacleCorners(const ir::EcoObstacle& obstacle);
 
-// Per voxel of `grid`, 1 where its centre lies inside an obstacle: what stops the light (grow/light_grid.h).
+// Per voxel of `grid`, 1 where its centre lies inside an obstacle, an obstacle's thin sides widened to half a voxel
+// (so that it fills at least one layer): what stops the light (grow/light_grid.h).
 std::vector<uint32_t> obstacleVoxels(const grow::LightGridSpec& grid, const std::vector<ir::EcoObstacle>& obstacles);
 
 // The obstacles' triangles, as one interpretation whose organs are of plant 0 and of module k for obstacle k:

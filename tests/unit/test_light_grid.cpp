@@ -8,6 +8,7 @@
 
 #include "compute/shared/growth_layout.h"
 #include "compute/shared/organ_layout.h"
+#include "field/obstacles.h"
 #include "field/plant_statistics.h"
 #include "grow/environment.h"
 #include "grow/light_grid.h"
@@ -106,6 +107,26 @@ TEST(LightGrid, AnObstacleStopsTheLightFromItsSide) {
     EXPECT_LT(shaded.x, 0.0f);
     EXPECT_GT(sunlit.x, 0.5f);
     EXPECT_EQ(grid.light()[size_t(spec.voxelAt({6.5f, 1.5f, 5.5f}))].w, 0.0f);
+}
+
+TEST(LightGrid, AWallThinnerThanAVoxelFillsALayerOfThem) {
+    // A wall 0.2 thick across the 1-unit voxels, between their centres at x = 5.5 and 6.5, 4 high, turned a little.
+    const grow::LightGridSpec spec = tenCubed();
+    ir::EcoObstacle wall;
+    wall.center[0] = 6.1f, wall.center[1] = 2.0f, wall.center[2] = 5.0f;
+    wall.halfSize[0] = 4.0f, wall.halfSize[1] = 2.0f, wall.halfSize[2] = 0.1f;
+    wall.yaw = 1.5707963f + 0.05f; // its length along z
+    const std::vector<uint32_t> mask = field::obstacleVoxels(spec, {wall});
+    // Every row of voxels across it, below its top and within its length, meets one blocked voxel, the one whose
+    // centre lies nearest its middle plane; none above it.
+    for (uint32_t y = 0; y < 10; ++y)
+        for (uint32_t z = 2; z < 8; ++z) {
+            int blocked = 0;
+            for (uint32_t x = 0; x < 10; ++x)
+                blocked += int(mask[size_t(spec.voxelAt({float(x) + 0.5f, float(y) + 0.5f, float(z) + 0.5f}))]);
+            EXPECT_EQ(blocked, y < 4 ? 1 : 0) << y << " " << z;
+        }
+    EXPECT_EQ(mask[size_t(spec.voxelAt({6.5f, 1.5f, 5.5f}))], 1u);
 }
 
 TEST(LightGrid, OrgansTakeTheLightOfTheirVoxelIntoTheirParticles) {

@@ -17,6 +17,12 @@ vec3 organCentre(OrganInstance o) {
     return o.position.xyz;
 }
 
+// Where an organ reaches to: the end of its segment or blade; a triangle's centroid, a sphere's or disc's centre.
+vec3 organTip(OrganInstance o) {
+    if (o.kind == kOrganStem || o.kind == kOrganLeaf) return o.position.xyz + o.position.w * o.heading.xyz;
+    return organCentre(o);
+}
+
 // The area an organ shades with: a blade's (its shape's area at its length and width, `shapeArea`), a segment's
 // side seen across it (length times diameter), a disc's or sphere's cross-section, a triangle's.
 float organShadingArea(OrganInstance o, float shapeArea) {

@@ -13,6 +13,9 @@ layout(set = 0, binding = 0, std430) readonly buffer Occupancy { uint occupancy[
 layout(set = 0, binding = 1, std430) readonly buffer Obstacles { uint obstacle[]; };
 layout(set = 0, binding = 2, std430) readonly buffer Directions { LightDirection directions[]; };
 layout(set = 0, binding = 3, std430) writeonly buffer Light { vec4 light[]; }; // xyz: most light from; w: light
+layout(set = 0, binding = 4, std430) readonly buffer Holders { uint holder[]; };
+// Each voxel's holder and splatted area, kept for the next drawing's gather.
+layout(set = 0, binding = 5, std430) writeonly buffer Room { uvec2 room[]; };
 layout(push_constant) uniform Push { LightGridPush pc; };
 
 #include "compute/grow/light_grid.glsl"
@@ -20,6 +23,7 @@ layout(push_constant) uniform Push { LightGridPush pc; };
 void main() {
     uint v = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * gl_WorkGroupSize.x + gl_LocalInvocationID.x;
     if (v >= pc.sizeX * pc.sizeY * pc.sizeZ) return;
+    room[v] = uvec2(holder[v], occupancy[v]);
     if (obstacle[v] != 0u) {
         light[v] = vec4(0.0, 1.0, 0.0, 0.0);
         return;

@@ -1,5 +1,6 @@
 // The light grid, first pass: each organ the turtle drew adds its shading area to the voxel of its centre, in
-// fixed point (kAreaFixedPoint), so that the sums are exact in any order.
+// fixed point (kAreaFixedPoint), so that the sums are exact in any order, and marks the voxel held by its plant
+// (or by several: compute/shared/light_layout.h), which comes out the same in any order too.
 #version 450
 #extension GL_GOOGLE_include_directive : require
 #include "compute/shared/light_layout.h"
@@ -10,6 +11,7 @@ layout(set = 0, binding = 0, std430) readonly buffer Instances { OrganInstance i
 layout(set = 0, binding = 1, std430) readonly buffer Table { OrganTable table; };
 layout(set = 0, binding = 2, std430) readonly buffer ShapeAreas { float shapeArea[]; };
 layout(set = 0, binding = 3, std430) buffer Occupancy { uint occupancy[]; };
+layout(set = 0, binding = 4, std430) buffer Holders { uint holder[]; };
 layout(push_constant) uniform Push { LightGridPush pc; };
 
 #include "compute/grow/light_grid.glsl"
@@ -24,5 +26,9 @@ void main() {
     float shape = o.kind == kOrganLeaf && o.shape < uint(shapeArea.length()) ? shapeArea[o.shape] : 0.0;
     // At most 2^20 units (256 square units) an organ: 4,096 of the largest fill a voxel's count.
     uint units = uint(clamp(organShadingArea(o, shape), 0.0, 256.0) * kAreaFixedPoint + 0.5);
-    if (units > 0u) atomicAdd(occupancy[v], units);
+    if (units == 0u) return;
+    atomicAdd(occupancy[v], units);
+    uint plant = o.plant + pc.firstPlant + 1u;
+    uint was = atomicCompSwap(holder[v], kVoxelEmpty, plant);
+    if (was != kVoxelEmpty && was != plant) atomicExchange(holder[v], kVoxelShared);
 }

@@ -48,23 +48,46 @@ void main() {
     bool born = id == 0u || floatBitsToUint(p[kParticleClass]) != klass;
     for (uint j = i; !born && j > start && idOf(j - 1u) == id; --j) born = classOf(species, j - 1u) == klass;
     if (born) {
+        // An organ is born with the light and room of the organ it comes from (an apex's: those of the stem it
+        // stands on), else in the open with room to grow, until the light grid says otherwise.
+        bool fromOrgan = id != 0u && floatBitsToUint(p[kParticleClass]) < kGrowOrganKinds;
+        float light = fromOrgan ? p[kParticleLight] : pc.openLight, space = fromOrgan ? p[kParticleSpace] : 1.0;
         for (uint k = 0u; k < kParticleStateFloats; ++k) p[k] = 0.0;
         p[kParticleStage] = stage;
         p[kParticleClass] = uintBitsToFloat(klass);
         p[kParticleId] = uintBitsToFloat(randomBits(pc.seed, plant, kGrowIdentityPass, i - start, pc.tick) | 1u);
-        if (organ) p[kParticleLight] = pc.openLight; // in the open until the light grid says otherwise
+        if (organ) {
+            p[kParticleLight] = light;
+            p[kParticleSpace] = space;
+        }
     } else if (p[kParticleStage] != stage) {
         p[kParticleStage] = stage;
         p[kParticleStageAge] = 0.0;
     }
 
+    if (klass == kGrowApex && pc.openLight > 0.0) {
+        uint depth = 0u; // branches passed over
+        for (uint j = i; j > start && i - j < kApexLightReach; --j) {
+            uint sym = symbols[j - 1u] & kSymbolMask;
+            if (sym == 1u) { // `]`
+                ++depth;
+            } else if (sym == 0u) { // `[`
+                if (depth > 0u) --depth;
+            } else if (depth == 0u && classOf(species, j - 1u) == kGrowStem) {
+                p[kParticleLight] = particlesIn[kParticleStateFloats * (j - 1u) + kParticleLight];
+                p[kParticleSpace] = particlesIn[kParticleStateFloats * (j - 1u) + kParticleSpace];
+                break;
+            }
+        }
+    }
     if (organ && hasRows(species, klass)) {
         uint row = stageRow(species, klass, stage);
         uint self = floatBitsToUint(p[kParticleId]);
         // A dead organ grows no more.
         bool living = alive(row, plant, self, p[kParticleAge], p[kParticleShade]);
         float growing = living ? clamp(property(row, kGrowTime, plant, self) - p[kParticleStageAge], 0.0, pc.dt) : 0.0;
-        float rate = vigour[plant] * lightResponse(p[kParticleLight], pc.openLight) * growing;
+        float room = pc.openLight > 0.0 ? p[kParticleSpace] : 1.0;
+        float rate = vigour[plant] * lightResponse(p[kParticleLight], pc.openLight) * room * growing;
         p[kParticleElongation] += property(row, kGrowRate, plant, self) * rate;
         p[kParticleBroadening] += property(row, kBroadenRate, plant, self) * rate;
         float noiseTime = property(row, kNoiseTime, plant, self), cone = property(row, kConeNoise, plant, self);

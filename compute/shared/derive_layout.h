@@ -52,6 +52,9 @@ struct DerivePush {
     // the first, in every field whose species derive different lengths.
     uint frozenPlants;
     uint zero; // always 0: the kernels' opaqueZero() (derive_lib.glsl)
+    // Where a light grid runs, 1 / the light in the open (light() = the rewritten module's particle's light times
+    // this); 0: none, light() is 1 (stream::DeriveOptions::lightScale).
+    float lightScale;
 };
 
 // plantFrozen values: the host freezes a plant that stopped or finished its derivation length; a production
@@ -183,7 +186,7 @@ struct StepSizesPush {
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(DerivePush) == 88);
+static_assert(sizeof(DerivePush) == 92);
 static_assert(sizeof(StepSizesPush) == 52);
 static_assert(kArgsTreeLevels + 3u * (kMaxDepthLevels - 1u) <= kArgsCopy);
 static_assert(kArgsOne + 3u <= kStepBlockWords);

@@ -27,7 +27,13 @@ SIMECO_CONST kGrowWorkgroupSize = 128u;
 // Module classes (per species and symbol): the six SimEco organ kinds (ir::EcoOrganKind's order), then every
 // other module as kGrowPlainClass + its symbol (with kGrowSegment where a grammar's segment grows).
 SIMECO_CONST kGrowOrganKinds = 6u;
+SIMECO_CONST kGrowApex = 0u;
+SIMECO_CONST kGrowStem = 1u;
 SIMECO_CONST kGrowPlainClass = 8u;
+// An apex draws nothing, so the light grid gives it no light of its own: where a grid runs it takes the light and
+// the room to grow of the stem it stands on, the nearest stem before it on its own axis (passing over the branches
+// between them and out of the branch it opens), looked for among the kApexLightReach modules before it.
+SIMECO_CONST kApexLightReach = 64u;
 
 // A species' words (kSpeciesGrowthWords per species): per organ kind its first stage row, its row count and its
 // Default row (kGrowNoRow: none), then flags.

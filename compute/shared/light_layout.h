@@ -37,10 +37,24 @@ struct LightGridPush {
     uint sizeZ;
     uint directions; // LightDirection entries (the sun first, then the sky's)
     uint derived;    // gather: where the light goes besides the drawn string's particles (kLightTo*)
-    uint pad0;
+    uint firstPlant; // splat and gather: added to each organ's plant, the field's numbering of the batch's plants
     uint pad1;
     uint pad2;
 };
+
+// Space: each voxel also keeps which plant holds it (splat: the plant's number + 1 of the organs whose centres lie
+// in it; kVoxelShared where several plants' do; kVoxelEmpty where none), and propagate keeps each voxel's holder
+// and splatted area of the last drawing for the gather (the current one is cleared and refilled meanwhile).
+// An organ's room to grow (kParticleSpace) is 0 where its tip lies in a voxel an obstacle or another plant holds
+// (a voxel held by several plants counts as another's): it does not grow into it; else, in a voxel several plants
+// share, 1 / (1 + the voxel's splatted area / the voxel's cross-section) (crowding); else 1.
+SIMECO_CONST kVoxelEmpty = 0u;
+SIMECO_CONST kVoxelShared = 0xFFFFFFFFu;
+SIMECO_FN float roomToGrow(bool tipBlocked, bool crowded, uint areaUnits, float side) {
+    if (tipBlocked) return 0.0f;
+    if (!crowded) return 1.0f;
+    return 1.0f / (1.0f + float(areaUnits) / (kAreaFixedPoint * side * side));
+}
 
 SIMECO_SHARED_END
 

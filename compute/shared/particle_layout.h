@@ -13,8 +13,8 @@
 
 SIMECO_SHARED_BEGIN
 
-// Three vec4 per module: the kernels move a module's state as three vector loads and stores.
-SIMECO_CONST kParticleStateFloats = 12u;
+// Four vec4 per module: the kernels move a module's state as four vector loads and stores.
+SIMECO_CONST kParticleStateFloats = 16u;
 SIMECO_CONST kParticleStateVec4s = kParticleStateFloats / 4u;
 // The slots, as the growth simulation uses them.
 SIMECO_CONST kParticleAge = 0u;        // seconds since the particle was born
@@ -29,6 +29,8 @@ SIMECO_CONST kParticleStage = 8u;      // the stage it was in at the last tick
 SIMECO_CONST kParticleId = 9u;         // its identity, a uint's bits (0: not yet born)
 SIMECO_CONST kParticleLightDirection = 10u; // the direction of most light: octahedral x, y as GLSL's packSnorm2x16
 SIMECO_CONST kParticleClass = 11u;     // the class of the module it was born as (growth_layout.h), a uint's bits
+SIMECO_CONST kParticleSpace = 12u;     // the room it has to grow, from the light grid (light_layout.h): 1 free
+// Slots 13 to 15 are unused (zero).
 
 #ifdef __cplusplus
 struct ParticleState {

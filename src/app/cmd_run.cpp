@@ -51,7 +51,8 @@ struct RunArgs {
     std::string device;
     std::string save;   // where the state is written at the end; empty: nowhere
     std::string resume; // the state the field starts from; empty: the axioms
-    std::optional<float> lightSlice; // the height of the light grid's layer written as light.png
+    std::optional<float> lightSlice;   // the height of the light grid's layer written as light.png
+    std::optional<float> lightSection; // the depth of its vertical layer written as light-section.png
 };
 
 // One line on a terminal, rewritten as the run goes.
@@ -129,13 +130,14 @@ std::string plantsTable(const field::Simulation& simulation, const std::vector<s
     return csv;
 }
 
-// A layer of the light grid as an image seen from above (x to the right, z down), each voxel a square of pixels:
-// dark blue where no light comes, through green, to pale yellow for the light in the open.
+// A layer of the light grid as an image (a slice seen from above: x to the right, z down; a section seen from the
+// front: x to the right, up up), each voxel a square of pixels: dark blue where no light comes, through green, to
+// pale yellow for the light in the open.
 draw::Frame lightSliceImage(const field::LightSlice& slice) {
-    const uint32_t scale = std::max(1u, std::min(16u, 1024u / std::max(slice.width, slice.depth)));
+    const uint32_t scale = std::max(1u, std::min(16u, 1024u / std::max(slice.width, slice.rows)));
     draw::Frame frame;
     frame.width = slice.width * scale;
-    frame.height = slice.depth * scale;
+    frame.height = slice.rows * scale;
     frame.rgba.resize(frame.pixelCount() * 4);
     frame.depth.assign(frame.pixelCount(), 0.0f);
     frame.plant.assign(frame.pixelCount(), draw::Frame::kNoId);
@@ -246,6 +248,9 @@ void runRun(RunArgs args) {
     }
     if (args.lightSlice)
         draw::writePng(outputs, out / "light.png", lightSliceImage(simulation.lightSlice(*args.lightSlice)));
+    if (args.lightSection)
+        draw::writePng(outputs, out / "light-section.png",
+                       lightSliceImage(simulation.lightSection(*args.lightSection)));
     writeText(outputs, out / "stats.jsonl", stats);
     writeText(outputs, out / "plants.csv", plantsTable(simulation, perPlant));
     if (!args.save.empty())
@@ -294,6 +299,10 @@ void registerRunCommand(CLI::App& app, CommandContext& ctx) {
     cmd->add_option("--save", args->save, "write the field's whole state to FILE at the end");
     cmd->add_option("--light-slice", args->lightSlice,
                     "also write light.png: the light grid's layer at height H at the end, seen from above")
+        ->check(CLI::Range(-1e6f, 1e6f));
+    cmd->add_option("--light-section", args->lightSection,
+                    "also write light-section.png: the light grid's vertical layer at depth Z (z = Z) at the end, "
+                    "seen from the front")
         ->check(CLI::Range(-1e6f, 1e6f));
     cmd->add_option("--resume", args->resume,
                     "go on from a state --save wrote (its scene and options; --time counts from the field's start)")

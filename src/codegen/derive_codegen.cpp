@@ -14,6 +14,7 @@
 #include "codegen/successor_slots.h"
 #include "compute/shaders.h"
 #include "compute/shared/derive_layout.h"
+#include "compute/shared/particle_layout.h"
 
 namespace simeco::codegen {
 
@@ -27,7 +28,7 @@ using codegen::RuleKind;
 // The buffers of each kernel. Contexts always read the string being rewritten (symIn, parIn).
 // `parameters`: the type of parOut's elements, a module's parameter slots (codegen::parameterVectorWidth).
 // `parameterVectors`: the width of parVec, the string's parameters read as one vector per module (1: none).
-std::string declarations(bool texelInputs, bool decomposition, bool write, bool fusedScan = false,
+std::string declarations(bool texelInputs, bool decomposition, bool write, bool readsLight, bool fusedScan = false,
                          bool carriesPartners = false, const std::string& parameters = "float",
                          uint32_t parameterVectors = 1) {
     codegen::Bindings b(texelInputs);
@@ -67,7 +68,8 @@ std::string declarations(bool texelInputs, bool decomposition, bool write, bool 
     }
     b.addInput("uint", "plantHints"); // of the stream plantOf() searches (derive/plant_hints.comp)
     if (parameterVectors > 1) b.addVectorInput(parameterVectors, "parVec");
-    return b.text();
+    if (readsLight) b.add("readonly", "float", "particles");
+    return b.text() + moduleLightCode(readsLight);
 }
 
 // A weighted draw among the applicable productions of one symbol `list`: every candidate is tested in file order
@@ -374,7 +376,7 @@ DerivePlan planDeriveKernels(const std::vector<ir::Grammar>& species, const Spec
 // The step's match pass: each module's production (and alternative) and successor count.
 std::string stepMatchKernel(const DerivePlan& plan, const GeneratedKernels& k) {
     std::string s = plan.prelude +
-                    declarations(plan.texelInputs, false, false, k.fusedScan, false, "float",
+                    declarations(plan.texelInputs, false, false, k.readsLight, k.fusedScan, false, "float",
                                  k.matchReadsParameterVectors ? plan.paramVector : 1) +
                     plan.library + plan.functions;
     s += codegen::slotDeclarations(plan.stepSlots);
@@ -393,9 +395,10 @@ std::string stepMatchKernel(const DerivePlan& plan, const GeneratedKernels& k) {
              "        if (plantFrozen[plant] == kPlantFrozen) { matchedChoice = kChoiceCopy; return 1u; }\n"
              "    }\n"
              "    uint species = speciesOf(plant);\n"
-             "    uint sym = word & kSymbolMask, count = word >> kSymbolBits;\n";
+             "    uint sym = word & kSymbolMask, count = word >> kSymbolBits;\n"
+             "    lightModule = i;\n";
     } else {
-        s += "uint matchModule(uint i) {\n" + stepPlantLookup(plan.matchInputs, true, k.fusedScan);
+        s += "uint matchModule(uint i) {\n    lightModule = i;\n" + stepPlantLookup(plan.matchInputs, true, k.fusedScan);
         s += "    uint sym = symOf(i), count = countOf(i);\n";
     }
     s += own.load +
@@ -435,8 +438,8 @@ std::string stepMatchKernel(const DerivePlan& plan, const GeneratedKernels& k) {
 // The step's write pass: each module's successor at its position.
 std::string stepWriteKernel(const DerivePlan& plan, const GeneratedKernels& k) {
     std::string s = plan.prelude +
-                    declarations(plan.texelInputs, false, true, k.fusedScan, k.carriesPartners, plan.parameterType,
-                                 k.writeReadsParameterVectors ? plan.paramVector : 1) +
+                    declarations(plan.texelInputs, false, true, k.readsLight, k.fusedScan, k.carriesPartners,
+                                 plan.parameterType, k.writeReadsParameterVectors ? plan.paramVector : 1) +
                     plan.library + plan.functions;
     s += codegen::slotDeclarations(plan.stepSlots) +
          codegen::slotStoreCode(plan.stepSlots, k.hasDecomposition, k.carriesPartners, plan.paramVector);
@@ -459,6 +462,7 @@ std::string stepWriteKernel(const DerivePlan& plan, const GeneratedKernels& k) {
         s += "    givenAlternative = choice >> kProductionBits;\n"
              "    choice &= (1u << kProductionBits) - 1u;\n";
     s += "    uint origin = i;\n"
+         "    lightModule = i;\n"
          "    uint word = symInAt(i);\n" +
          own.load +
          "    uint produced = 1u;\n"
@@ -503,6 +507,7 @@ const std::string kDecompositionSetup =
     "    uint species = speciesOf(plant);\n"
     "    uint pBegin = plantStartAt(plant), pEnd = plantStartAt(plant + 1u);\n"
     "    uint origin = originX[i];\n"
+    "    lightModule = origin;\n"
     "    uint key = examined[i] - examined[plantStartXAt(plant)];\n"
     "    int ctxLeft = int(origin) - 1;\n"
     "    uint ctxRight = origin + 1u;\n"
@@ -510,8 +515,9 @@ const std::string kDecompositionSetup =
     "    prefetchContexts(i, species, sym, ctxLeft, ctxRight, pBegin, pEnd);\n";
 
 // A decomposition depth's match pass: the production each module of the depth takes, and its count.
-std::string decompositionMatchKernel(const DerivePlan& plan) {
-    std::string s = plan.prelude + declarations(plan.texelInputs, true, false) + plan.library + plan.functions;
+std::string decompositionMatchKernel(const DerivePlan& plan, const GeneratedKernels& k) {
+    std::string s =
+        plan.prelude + declarations(plan.texelInputs, true, false, k.readsLight) + plan.library + plan.functions;
     s += "double strictParam(uint i, uint k) { return double(parX[i * pc.stride + k]); }\n" +
          codegen::slotDeclarations(plan.decompositionSlots);
     s += findPlant("plantStartX", "plantOfX");
@@ -527,8 +533,9 @@ std::string decompositionMatchKernel(const DerivePlan& plan) {
 }
 
 // A decomposition depth's write pass.
-std::string decompositionWriteKernel(const DerivePlan& plan) {
-    std::string s = plan.prelude + declarations(plan.texelInputs, true, true) + plan.library + plan.functions;
+std::string decompositionWriteKernel(const DerivePlan& plan, const GeneratedKernels& k) {
+    std::string s =
+        plan.prelude + declarations(plan.texelInputs, true, true, k.readsLight) + plan.library + plan.functions;
     s += "double strictParam(uint i, uint k) { return double(parX[i * pc.stride + k]); }\n" +
          codegen::slotDeclarations(plan.decompositionSlots) +
          codegen::slotStoreCode(plan.decompositionSlots, true, false);
@@ -559,18 +566,31 @@ std::string decompositionWriteKernel(const DerivePlan& plan) {
 }
 } // namespace
 
-GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species, bool texelInputs, bool contextChunks) {
+std::string moduleLightCode(bool particles) {
+    if (!particles) return "uint lightModule = 0u;\ndouble moduleLight() { return 1.0LF; }\n\n";
+    return fmt::format("uint lightModule = 0u; // the module being rewritten (or decomposed: its origin)\n"
+                       "double moduleLight() {{\n"
+                       "    uint at = lightModule * {}u;\n"
+                       "    if (pc.lightScale <= 0.0 || floatBitsToUint(particles[at + {}u]) == 0u) return 1.0LF;\n"
+                       "    return double(particles[at + {}u]) * double(pc.lightScale);\n"
+                       "}}\n\n",
+                       shared::kParticleStateFloats, shared::kParticleId, shared::kParticleLight);
+}
+
+GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species, bool texelInputs, bool contextChunks,
+                                       bool sensesLight) {
     SpeciesClasses classes = classifySpecies(species);
     const std::vector<ir::Grammar>& code = classes.representatives;
     GeneratedKernels k = codegen::speciesTraits(code);
+    if (!sensesLight) k.readsLight = false;
     k.speciesTable = codegen::speciesTable(classes);
     k.functionTables = codegen::hoistedTable(classes);
     DerivePlan plan = planDeriveKernels(code, classes, texelInputs, contextChunks, k);
     k.match = stepMatchKernel(plan, k);
     k.write = stepWriteKernel(plan, k);
     if (k.hasDecomposition) {
-        k.decompositionMatch = decompositionMatchKernel(plan);
-        k.decompositionWrite = decompositionWriteKernel(plan);
+        k.decompositionMatch = decompositionMatchKernel(plan, k);
+        k.decompositionWrite = decompositionWriteKernel(plan, k);
     }
     return k;
 }

@@ -66,6 +66,9 @@ struct GeneratedKernels {
     // (codegen::parameterVectorWidth), from a binding after plantHints: the parameters viewed as such vectors.
     bool matchReadsParameterVectors = false;
     bool writeReadsParameterVectors = false;
+    // The productions call light(): the step's and decomposition's passes read the particles of the string being
+    // rewritten, from a binding after all their others (moduleLightCode).
+    bool readsLight = false;
 };
 
 // The GLSL of the kernels for plants of the given species (one alphabet: ir::unifySpecies); plant p is of
@@ -74,8 +77,15 @@ struct GeneratedKernels {
 // per-module results of earlier passes through uniform texel buffers (codegen::Bindings), which the host
 // binds as such (the dispatch reads the binding types from the kernels). `contextChunks`: the step's match pass
 // finds first context modules by chunks where its productions read them (GeneratedKernels::chunkedMatch).
+// `sensesLight`: light() reads the particles (a derivation's kernels); else it is 1 (the homomorphism's, as the
+// CPU's drawing).
 GeneratedKernels generateDeriveKernels(const std::vector<ir::Grammar>& species, bool texelInputs = false,
-                                       bool contextChunks = false);
+                                       bool contextChunks = false, bool sensesLight = true);
+
+// light(), as the generated kernels define it before their productions: with `particles`, the light of module
+// `lightModule`'s particle times pc.lightScale (1 where the scale is 0 or the particle is not yet born), from
+// the binding `particles`; without, 1.
+std::string moduleLightCode(bool particles);
 
 // The sequential strategy's kernel (sequential_codegen.cpp): one invocation per plant walks the plant's string
 // in order, exactly as the CPU reference does, so productions may write globals and arrays, locals carry over

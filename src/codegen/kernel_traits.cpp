@@ -127,6 +127,11 @@ GeneratedKernels speciesTraits(const std::vector<ir::Grammar>& species) {
             if (m.sym == ir::kCut) k.mayCut = true;
         for (const ir::Production& p : g.productions.productions)
             k.longestPredecessor = std::max<uint32_t>(k.longestPredecessor, static_cast<uint32_t>(p.strict.size()));
+        auto sensesLight = [&](const ir::Expr& e) {
+            if (e.op == ir::Op::Call && e.fn == ir::Builtin::Light) k.readsLight = true;
+        };
+        for (const ir::RuleSet* rules : {&g.productions, &g.decomposition})
+            for (const ir::Production& p : rules->productions) walkProductionCode(p, sensesLight, [](const ir::Stmt&) {});
     }
     if (k.mayCut) k.needsBrackets = true;
     return k;

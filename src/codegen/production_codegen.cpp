@@ -255,6 +255,7 @@ private:
             return define(fmt::format("curveValue{}({}, {}, {}, {}u)", species_, a[0], axis,
                                       e.fn == Builtin::CurveGal ? "0.0LF" : a[1], where));
         }
+        case Builtin::Light: return define("moduleLight()");
         default: return "0.0LF"; // excluded by gpuUnsupportedReason
         }
     }

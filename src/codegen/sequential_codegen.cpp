@@ -371,7 +371,7 @@ GeneratedKernels generateSequentialKernel(const std::vector<ir::Grammar>& all, b
     std::string s = codegen::kernelPrelude(all.size());
     s += fmt::format("const uint kFrameSlots = {}u;\nconst uint kStackWidth = {}u;\n", std::max(k.frameSlots, 1u),
                      k.stackWidth);
-    s += declarations(texelInputs);
+    s += declarations(texelInputs) + moduleLightCode(false); // light() is 1: GpuDeriver refuses a grid's light
     s += codegen::deriveLibrary(classes);
     s += kMachinery;
     std::string productions;

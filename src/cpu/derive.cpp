@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "compute/shared/particle_layout.h"
 #include "compute/shared/random.h"
 #include "stream/evaluator.h"
 #include "stream/plant_control.h"
@@ -86,6 +87,7 @@ public:
     // string. A `%` it produces stays in the string (the turtle ignores it) rather than cutting.
     void applyHomomorphism() {
         if (g_.homomorphism.productions.empty()) return;
+        evaluator_.light = 1.0; // the drawing does not sense
         matchBrackets();
         next_.clear();
         depthCounter_.assign(1, 0);
@@ -126,6 +128,15 @@ private:
     uint32_t step_ = 0;
     std::vector<uint32_t> depthCounter_;
     bool carries_ = false; // the strings carry particle state
+
+    // What light() says while module i of cur_ is rewritten (or decomposed): its particle's light as a share of
+    // the open's, where a light grid runs and the particle has been born; else 1.
+    void sense(size_t i) {
+        const float scale = control_.lightScale();
+        const shared::ParticleState* p = carries_ ? &cur_.particles[i] : nullptr;
+        const bool born = p && std::bit_cast<uint32_t>(p->value[shared::kParticleId]) != 0;
+        evaluator_.light = born && scale > 0.0f ? double(p->value[shared::kParticleLight]) * double(scale) : 1.0;
+    }
 
     // The modules next_ gained since the last call came from module `source` of cur_: they take its particle
     // state.
@@ -399,6 +410,7 @@ private:
         for (size_t i = 0; i < n;) {
             uint32_t sym = cur_.sym[i];
             setKey(step_ * kPassesPerStep, uint32_t(i));
+            sense(i);
             int64_t found = kNone;
             candidates.clear();
             if (sym < productionsBySymbol_.size()) {

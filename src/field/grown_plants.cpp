@@ -30,6 +30,7 @@ GrownPlants growOneOfEach(const grow::GrowingSpecies& g, const grow::GrowthTable
     stream::DeriveOptions one = derive;
     one.plants = uint32_t(g.species.size());
     one.absent.clear(); // one plant of each species, whatever slots the field leaves empty
+    one.lightScale = 0.0f; // each grows alone, in the open: light() is 1
     cpu::SteppedDerivation plants(g.species, one);
     std::vector<float> times(deriveTimes.begin(), deriveTimes.begin() + std::min(deriveTimes.size(), g.species.size()));
     times.resize(one.plants, grow::kDefaultDeriveTime);

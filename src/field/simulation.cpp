@@ -114,6 +114,8 @@ struct Simulation::Impl {
     std::vector<shared::LightDirection> lightFrom; // the sun's and the sky's, as the scene sets them
     float openLight = 0.0f;                        // their light in the open, which organs grow by in full
     void chooseLight();
+    // The light grid's layer across `axis` (1: a horizontal slice, rows along z; 2: a vertical section, rows down y).
+    LightSlice lightLayer(int axis, float coordinate) const;
     void prepareLight(const draw::Bounds& extent, uint32_t standing);
 
     grow::TickSettings settings(const Batch& b, uint32_t tick) const {
@@ -219,6 +221,7 @@ Simulation::Simulation(const SimulationOptions& options, const vk::Context* cont
     m.derive.seed = m.seed;
     m.tables = grow::growthTables(m.g.species, m.g.ecoPlants);
     m.chooseLight();
+    m.derive.lightScale = m.openLight > 0.0f ? 1.0f / m.openLight : 0.0f;
     m.deriveTimes = grow::plantDeriveTimes(m.g.ecoPlants, m.derive.plants, m.seed);
     m.nextStep = m.deriveTimes;
     const ir::Alphabet& alphabet = m.g.species.front().alphabet;
@@ -359,9 +362,9 @@ std::vector<const turtle::DeviceOrgans*> Simulation::Impl::interpretOnDevice() {
         context->submitAndWait([&](VkCommandBuffer cmd) {
             if (drawnModules.particles)
                 lightGpu->recordGather(cmd, *organs, *drawnModules.particles, drawnModules.origins,
-                                       b.deriver->current().particles);
+                                       b.deriver->current().particles, b.first);
             statistics->record(cmd, *organs, drawnModules.particles, bases);
-            lightGpu->recordSplat(cmd, *organs);
+            lightGpu->recordSplat(cmd, *organs, b.first);
         });
         const std::vector<shared::PlantStatistics> s = statistics->read();
         lastStatistics.insert(lastStatistics.end(), s.begin(), s.end());
@@ -486,21 +489,32 @@ std::string Simulation::speciesName(uint32_t plant) const {
 }
 
 LightSlice Simulation::lightSlice(float height) const {
-    const Impl& m = *impl_;
+    return impl_->lightLayer(1, height);
+}
+
+LightSlice Simulation::lightSection(float depth) const {
+    return impl_->lightLayer(2, depth);
+}
+
+LightSlice Simulation::Impl::lightLayer(int axis, float coordinate) const {
     LightSlice slice;
-    if (!m.lightGpu && !m.lightCpu) return slice;
-    const grow::LightGridSpec& spec = m.lightGpu ? m.lightGpu->spec() : m.lightCpu->spec();
+    if (!lightGpu && !lightCpu) return slice;
+    const grow::LightGridSpec& spec = lightGpu ? lightGpu->spec() : lightCpu->spec();
     const std::vector<glm::vec4> light =
-        m.lightGpu ? vk::downloadVector<glm::vec4>(*m.context, m.lightGpu->light(), spec.voxels()) : m.lightCpu->light();
-    const auto layer = uint32_t(std::clamp(std::floor((height - spec.origin.y) / spec.side), 0.0f,
-                                           float(spec.size[1] - 1)));
+        lightGpu ? vk::downloadVector<glm::vec4>(*context, lightGpu->light(), spec.voxels()) : lightCpu->light();
+    const auto k = size_t(axis);
+    const auto layer = uint32_t(std::clamp(std::floor((coordinate - spec.origin[int(axis)]) / spec.side), 0.0f,
+                                           float(spec.size[k] - 1)));
+    slice.at = spec.origin[int(axis)] + (float(layer) + 0.5f) * spec.side;
+    slice.open = openLight;
     slice.width = spec.size[0];
-    slice.depth = spec.size[2];
-    slice.height = spec.origin.y + (float(layer) + 0.5f) * spec.side;
-    slice.open = m.openLight;
-    for (uint32_t z = 0; z < slice.depth; ++z)
+    slice.rows = axis == 1 ? spec.size[2] : spec.size[1];
+    auto voxel = [&](uint32_t x, uint32_t y, uint32_t z) {
+        return light[(size_t(z) * spec.size[1] + y) * spec.size[0] + x].w;
+    };
+    for (uint32_t r = 0; r < slice.rows; ++r)
         for (uint32_t x = 0; x < slice.width; ++x)
-            slice.light.push_back(light[(size_t(z) * spec.size[1] + layer) * spec.size[0] + x].w);
+            slice.light.push_back(axis == 1 ? voxel(x, layer, r) : voxel(x, slice.rows - 1 - r, layer));
     return slice;
 }
 

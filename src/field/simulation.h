@@ -54,9 +54,10 @@ struct TickReport {
 // a CPU device this is the device's time and on a GPU it includes the submissions' overhead.
 // One horizontal layer of the light grid (docs/SCENES.md), seen from above: light[z * width + x] at voxel column
 // (x, z), x along the world's x and z along its z; `open` is the light in the open.
+// A layer of the light grid: `rows` of `width` voxels' light, the first row the one an image shows at its top.
 struct LightSlice {
-    uint32_t width = 0, depth = 0;
-    float height = 0;  // of the layer's centres
+    uint32_t width = 0, rows = 0;
+    float at = 0; // the layer's centres' height (a slice) or depth (a section)
     float open = 0;
     std::vector<float> light;
 };
@@ -109,6 +110,8 @@ public:
     draw::Bounds grownBounds() const;
     // The light grid's layer at `height` (clamped to the grid), as the last drawing left it; empty before one.
     LightSlice lightSlice(float height) const;
+    // The light grid's vertical layer at z = `depth` seen from the front (-z): x across, the top layer first.
+    LightSlice lightSection(float depth) const;
     const grow::GrowingSpecies& species() const;
     const StageSeconds& stageSeconds() const;
     // The name of a plant's species: its scene plant's, else the grammar file's.

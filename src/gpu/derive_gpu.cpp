@@ -148,6 +148,9 @@ void GpuDeriver::Impl::startDerivation(stream::PlantControl& control, const stre
                                        const stream::ModuleString* from) {
     plants = control.plants();
     carriesParticles = options.particles;
+    lightScale = options.particles ? options.lightScale : 0.0f;
+    if (lightScale > 0.0f && kernels.readsLight && strategy == GpuStrategy::Sequential)
+        throw std::invalid_argument("light() in a production senses the light grid on the parallel strategy only");
     partnersStream = -1;
     bracketTrees = 0;
     stream::ModuleString axioms = control.startAll();

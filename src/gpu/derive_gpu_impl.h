@@ -99,6 +99,7 @@ struct GpuDeriver::Impl {
         const std::vector<codegen::ErrorSite>* errors = nullptr;
         vk::Buffer speciesTable, funcTables;
         VkDeviceSize errorOffset = 0;
+        bool readsLight = false; // the passes bind the rewritten string's particles last (light())
     };
     KernelTables derivationTables, homomorphismTables;
     const KernelTables* active = &derivationTables;
@@ -110,6 +111,8 @@ struct GpuDeriver::Impl {
     // fused scan, specialised for its match words), or from each module's origin.
     std::optional<vk::ComputePipeline> particleScatter, particleGather;
     bool carriesParticles = false; // the derivation running carries particle state (DeriveOptions::particles)
+    float lightScale = 0.0f;       // light()'s DeriveOptions::lightScale, where the derivation carries particles
+    vk::Buffer noParticles;        // bound for light() where the string carries none (lightScale is then 0)
     GpuScan scan;
     BracketTree brackets; // after scan, which it uses
     vk::Buffer errors, readback;

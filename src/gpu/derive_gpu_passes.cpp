@@ -37,6 +37,7 @@ DerivePush GpuDeriver::Impl::push(uint32_t count, uint32_t step, uint32_t seed, 
     p.arrayStride = arrayStride;
     p.oldCount = oldCount;
     p.depth = depth;
+    p.lightScale = lightScale;
     p.loopProbeTrips = shared::kLoopProbeTrips;
     for (uint32_t k = 0; k < shared::kLoopProbeCounts; ++k)
         p.loopProbeCounts[k] = k + 1;
@@ -99,6 +100,7 @@ std::vector<vk::BufferRange> GpuDeriver::Impl::deriveBindings(const Stream& stri
     if (parameterVectors)
         buffers.push_back(vk::BufferRange(strings.par).viewedAs(stride == 4 ? VK_FORMAT_R32G32B32A32_SFLOAT
                                                                              : VK_FORMAT_R32G32_SFLOAT));
+    if (active->readsLight) buffers.push_back(strings.particles ? strings.particles : noParticles);
     return buffers;
 }
 

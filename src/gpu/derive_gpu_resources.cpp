@@ -80,6 +80,7 @@ GpuDeriver::Impl::Impl(const vk::Context& c, std::vector<ir::Grammar> grammars, 
     // The homomorphism's error words after the derivation's, at a binding's offset.
     homomorphismTables.errorOffset = vk::alignUp(16, ctx.limits().minStorageBufferOffsetAlignment);
     errors = vk::Buffer(ctx, homomorphismTables.errorOffset + 16, vk::MemoryUsage::DeviceLocal);
+    if (kernels.readsLight) noParticles = vk::Buffer(ctx, sizeof(shared::ParticleState), vk::MemoryUsage::DeviceLocal);
     readback = vk::Buffer(ctx, 16, vk::MemoryUsage::Readback);
 }
 
@@ -98,7 +99,7 @@ template <typename Build> void GpuDeriver::Impl::buildHomomorphism(Build& build)
         return;
     }
     if (homomorphismHostReason) return;
-    homomorphismKernels = codegen::generateDeriveKernels(images, texelInputs);
+    homomorphismKernels = codegen::generateDeriveKernels(images, texelInputs, false, false);
     homomorphismMatch.emplace(build(homomorphismKernels.decompositionMatch, "derive/homomorphism_match"));
     homomorphismWrite.emplace(build(homomorphismKernels.decompositionWrite, "derive/homomorphism_write"));
     homomorphismTables = tablesOf(homomorphismKernels);
@@ -113,6 +114,7 @@ GpuDeriver::Impl::KernelTables GpuDeriver::Impl::tablesOf(const codegen::Generat
     std::vector<double> functions = k.functionTables;
     if (functions.empty()) functions.push_back(0.0);
     tables.funcTables = vk::deviceBufferWith(ctx, std::span<const double>(functions));
+    tables.readsLight = k.readsLight;
     return tables;
 }
 

@@ -20,7 +20,7 @@ namespace {
 
 constexpr float kPi = 3.14159265358979f;
 
-// compute/grow/light_grid.glsl's organCentre and organShadingArea.
+// compute/grow/light_grid.glsl's organCentre, organTip and organShadingArea.
 glm::vec3 xyz(const shared::vec4& v) {
     return {v.x, v.y, v.z};
 }
@@ -30,6 +30,12 @@ glm::vec3 organCentre(const shared::OrganInstance& o) {
         return xyz(o.position) + 0.5f * o.position.w * xyz(o.heading);
     if (o.kind == shared::kOrganTriangle) return (xyz(o.position) + xyz(o.heading) + xyz(o.up)) / 3.0f;
     return xyz(o.position);
+}
+
+glm::vec3 organTip(const shared::OrganInstance& o) {
+    if (o.kind == shared::kOrganStem || o.kind == shared::kOrganLeaf)
+        return xyz(o.position) + o.position.w * xyz(o.heading);
+    return organCentre(o);
 }
 
 float organShadingArea(const shared::OrganInstance& o, float shapeArea) {
@@ -123,13 +129,15 @@ glm::vec3 unpackLightDirection(float packed) {
 LightGridCpu::LightGridCpu(const LightGridSpec& spec, std::vector<shared::LightDirection> directions,
                            std::vector<uint32_t> obstacles)
     : spec_(spec), directions_(std::move(directions)), obstacles_(std::move(obstacles)),
-      occupancy_(spec.voxels(), 0), light_(spec.voxels(), glm::vec4(0, 1, 0, 0)) {
+      occupancy_(spec.voxels(), 0), holders_(spec.voxels(), shared::kVoxelEmpty),
+      light_(spec.voxels(), glm::vec4(0, 1, 0, 0)), room_(spec.voxels(), glm::uvec2(0)) {
     obstacles_.resize(spec.voxels(), 0);
     propagate(); // the light of an empty field until the first organs are splatted
 }
 
 void LightGridCpu::clear() {
     std::fill(occupancy_.begin(), occupancy_.end(), 0u);
+    std::fill(holders_.begin(), holders_.end(), shared::kVoxelEmpty);
 }
 
 void LightGridCpu::splat(const turtle::Interpretation& organs, const std::vector<float>& shapeAreas) {
@@ -139,7 +147,10 @@ void LightGridCpu::splat(const turtle::Interpretation& organs, const std::vector
         const float shape = o.kind == shared::kOrganLeaf && o.shape < shapeAreas.size() ? shapeAreas[o.shape] : 0.0f;
         const auto units =
             uint32_t(std::clamp(organShadingArea(o, shape), 0.0f, 256.0f) * shared::kAreaFixedPoint + 0.5f);
+        if (units == 0) continue;
         occupancy_[size_t(v)] += units;
+        uint32_t& holder = holders_[size_t(v)];
+        holder = holder == shared::kVoxelEmpty || holder == o.plant + 1 ? o.plant + 1 : shared::kVoxelShared;
     }
 }
 
@@ -147,6 +158,7 @@ void LightGridCpu::propagate() {
     const float side = spec_.side;
     const float perUnit = shared::kLeafExtinction / (shared::kAreaFixedPoint * side * side * side);
     for (uint64_t v = 0; v < spec_.voxels(); ++v) {
+        room_[v] = glm::uvec2(holders_[v], occupancy_[v]);
         if (obstacles_[v] != 0) {
             light_[v] = glm::vec4(0, 1, 0, 0);
             continue;
@@ -188,11 +200,19 @@ void LightGridCpu::gather(const turtle::Interpretation& organs, std::vector<shar
             const int64_t v = spec_.voxelAt(organCentre(o));
             const glm::vec4 l = v >= 0 ? light_[size_t(v)] : glm::vec4(0, 1, 0, open);
             const float direction = packLightDirection(glm::vec3(l));
-            particles[o.module].value[shared::kParticleLight] = l.w;
-            particles[o.module].value[shared::kParticleLightDirection] = direction;
-            if (shared::ParticleState* derived = derivedOf ? derivedOf(o.module) : nullptr) {
-                derived->value[shared::kParticleLight] = l.w;
-                derived->value[shared::kParticleLightDirection] = direction;
+            // Its room to grow: none where its tip reaches into an obstacle's or (beyond its own voxel) another
+            // plant's.
+            const int64_t t = spec_.voxelAt(organTip(o));
+            const bool blocked = t >= 0 && (obstacles_[size_t(t)] != 0 ||
+                                            (t != v && room_[size_t(t)].x != shared::kVoxelEmpty &&
+                                             room_[size_t(t)].x != o.plant + 1));
+            const bool crowded = v >= 0 && room_[size_t(v)].x == shared::kVoxelShared;
+            const float space = shared::roomToGrow(blocked, crowded, v >= 0 ? room_[size_t(v)].y : 0u, spec_.side);
+            for (shared::ParticleState* p : {&particles[o.module], derivedOf ? derivedOf(o.module) : nullptr}) {
+                if (!p) continue;
+                p->value[shared::kParticleLight] = l.w;
+                p->value[shared::kParticleLightDirection] = direction;
+                p->value[shared::kParticleSpace] = space;
             }
         }
 }
@@ -210,7 +230,9 @@ GpuLightGrid::GpuLightGrid(const vk::Context& context, const LightGridSpec& spec
     obstacles_ = vk::deviceBufferWith(context, std::span<const uint32_t>(mask));
     shapeAreas_ = vk::deviceBufferWith(context, std::span<const float>(shapeAreas));
     occupancy_ = vk::Buffer(context, spec.voxels() * 4, vk::MemoryUsage::DeviceLocal);
+    holders_ = vk::Buffer(context, spec.voxels() * 4, vk::MemoryUsage::DeviceLocal);
     light_ = vk::Buffer(context, spec.voxels() * sizeof(glm::vec4), vk::MemoryUsage::DeviceLocal);
+    room_ = vk::Buffer(context, spec.voxels() * sizeof(glm::uvec2), vk::MemoryUsage::DeviceLocal);
     none_ = vk::Buffer(context, sizeof(shared::ParticleState), vk::MemoryUsage::DeviceLocal);
     context.submitAndWait([&](VkCommandBuffer cmd) {
         recordClear(cmd);
@@ -231,32 +253,38 @@ shared::LightGridPush GpuLightGrid::push() const {
 void GpuLightGrid::recordClear(VkCommandBuffer cmd) {
     vk::memoryBarrier(cmd, vk::Hazard::AnyToTransfer);
     vkCmdFillBuffer(cmd, occupancy_.handle(), 0, VK_WHOLE_SIZE, 0);
+    vkCmdFillBuffer(cmd, holders_.handle(), 0, VK_WHOLE_SIZE, shared::kVoxelEmpty);
     vk::memoryBarrier(cmd, vk::Hazard::TransferToAny);
 }
 
-void GpuLightGrid::recordSplat(VkCommandBuffer cmd, const turtle::DeviceOrgans& organs) {
+void GpuLightGrid::recordSplat(VkCommandBuffer cmd, const turtle::DeviceOrgans& organs, uint32_t firstPlant) {
     if (organs.capacity == 0) return;
+    shared::LightGridPush p = push();
+    p.firstPlant = firstPlant;
     vk::memoryBarrier(cmd, vk::Hazard::AnyToAny);
-    splat_.dispatch(cmd, {organs.instances, organs.table, shapeAreas_, occupancy_}, push(), splat_.groupsFor(organs.capacity));
+    splat_.dispatch(cmd, {organs.instances, organs.table, shapeAreas_, occupancy_, holders_}, p,
+                    splat_.groupsFor(organs.capacity));
 }
 
 void GpuLightGrid::recordPropagate(VkCommandBuffer cmd) {
     vk::memoryBarrier(cmd, vk::Hazard::AnyToAny);
-    propagate_.dispatch(cmd, {occupancy_, obstacles_, directions_, light_}, push(), propagate_.groupsFor(spec_.voxels()));
+    propagate_.dispatch(cmd, {occupancy_, obstacles_, directions_, light_, holders_, room_}, push(),
+                        propagate_.groupsFor(spec_.voxels()));
     vk::memoryBarrier(cmd, vk::Hazard::ComputeToCompute);
 }
 
 void GpuLightGrid::recordGather(VkCommandBuffer cmd, const turtle::DeviceOrgans& organs,
                                 const vk::Buffer& drawnParticles, const vk::Buffer* origins,
-                                const vk::Buffer* derivedParticles) {
+                                const vk::Buffer* derivedParticles, uint32_t firstPlant) {
     if (organs.capacity == 0) return;
     shared::LightGridPush p = push();
+    p.firstPlant = firstPlant;
     const bool elsewhere = derivedParticles && derivedParticles->handle() != drawnParticles.handle();
     p.derived = !elsewhere ? shared::kLightToDrawnOnly : origins ? shared::kLightToOrigin : shared::kLightToSameModule;
     vk::memoryBarrier(cmd, vk::Hazard::AnyToAny);
     gather_.dispatch(cmd,
                      {organs.instances, organs.table, light_, directions_, drawnParticles,
-                      origins && elsewhere ? *origins : none_, elsewhere ? *derivedParticles : none_},
+                      origins && elsewhere ? *origins : none_, elsewhere ? *derivedParticles : none_, room_, obstacles_},
                      p, gather_.groupsFor(organs.capacity));
     vk::memoryBarrier(cmd, vk::Hazard::ComputeToCompute);
 }

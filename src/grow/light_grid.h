@@ -9,6 +9,7 @@
 #include <functional>
 #include <vector>
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 #include <vulkan/vulkan.h>
@@ -63,24 +64,27 @@ public:
     LightGridCpu(const LightGridSpec& spec, std::vector<shared::LightDirection> directions,
                  std::vector<uint32_t> obstacles);
 
-    void clear(); // the splatted areas
+    void clear(); // the splatted areas and the voxels' holders
+    // `organs`' plants numbered as in the field.
     void splat(const turtle::Interpretation& organs, const std::vector<float>& shapeAreas);
     void propagate();
-    // Each organ's light into `particles` (one state per module of the drawn string), and into the particle
-    // `derivedOf` gives for its module (the derived string's it was drawn from), where it gives one.
+    // Each organ's light and room to grow into `particles` (one state per module of the drawn string), and into the
+    // particle `derivedOf` gives for its module (the derived string's it was drawn from), where it gives one.
     using DerivedParticle = std::function<shared::ParticleState*(uint32_t drawnModule)>;
     void gather(const turtle::Interpretation& organs, std::vector<shared::ParticleState>& particles,
                 const DerivedParticle& derivedOf = {}) const;
 
     const LightGridSpec& spec() const { return spec_; }
     const std::vector<uint32_t>& occupancy() const { return occupancy_; }
-    const std::vector<glm::vec4>& light() const { return light_; } // xyz: most light from; w: light
+    const std::vector<uint32_t>& holders() const { return holders_; } // plant + 1, kVoxelEmpty or kVoxelShared
+    const std::vector<glm::vec4>& light() const { return light_; }    // xyz: most light from; w: light
 
 private:
     LightGridSpec spec_;
     std::vector<shared::LightDirection> directions_;
-    std::vector<uint32_t> obstacles_, occupancy_;
+    std::vector<uint32_t> obstacles_, occupancy_, holders_;
     std::vector<glm::vec4> light_;
+    std::vector<glm::uvec2> room_; // the last propagation's holders and areas, which the gather reads
 };
 
 class GpuLightGrid {
@@ -90,15 +94,18 @@ public:
                  const std::vector<float>& shapeAreas);
 
     void recordClear(VkCommandBuffer cmd);
-    void recordSplat(VkCommandBuffer cmd, const turtle::DeviceOrgans& organs);
+    // `firstPlant`: the field's number of the organs' plant 0 (a batch's first plant).
+    void recordSplat(VkCommandBuffer cmd, const turtle::DeviceOrgans& organs, uint32_t firstPlant = 0);
     void recordPropagate(VkCommandBuffer cmd);
-    // The organs' light into the drawn string's particles, and into the derived string's it was drawn from: by the
-    // drawn modules' `origins` where it was drawn under the homomorphism, else module for module where
-    // `derivedParticles` is another buffer than the drawn ones (a copy drawn).
+    // The organs' light and room to grow into the drawn string's particles, and into the derived string's it was
+    // drawn from: by the drawn modules' `origins` where it was drawn under the homomorphism, else module for module
+    // where `derivedParticles` is another buffer than the drawn ones (a copy drawn).
     void recordGather(VkCommandBuffer cmd, const turtle::DeviceOrgans& organs, const vk::Buffer& drawnParticles,
-                      const vk::Buffer* origins = nullptr, const vk::Buffer* derivedParticles = nullptr);
+                      const vk::Buffer* origins = nullptr, const vk::Buffer* derivedParticles = nullptr,
+                      uint32_t firstPlant = 0);
 
     const vk::Buffer& occupancy() const { return occupancy_; }
+    const vk::Buffer& holders() const { return holders_; }
     const vk::Buffer& light() const { return light_; }
     const LightGridSpec& spec() const { return spec_; }
 
@@ -108,7 +115,7 @@ private:
     LightGridSpec spec_;
     uint32_t directionCount_;
     vk::ComputePipeline splat_, propagate_, gather_;
-    vk::Buffer directions_, obstacles_, shapeAreas_, occupancy_, light_;
+    vk::Buffer directions_, obstacles_, shapeAreas_, occupancy_, holders_, light_, room_;
     vk::Buffer none_; // bound where the gather has no origins or derived particles
 };
 

@@ -64,7 +64,8 @@ void growOrgan(const TickSettings& ts, const float* row, uint32_t plant, float* 
     const float growing =
         living ? std::clamp(property(shared::kGrowTime) - p[shared::kParticleStageAge], 0.0f, ts.dt) : 0.0f;
     const float vigour = ts.vigour ? (*ts.vigour)[plant] : 1.0f;
-    const float rate = vigour * shared::lightResponse(p[shared::kParticleLight], ts.openLight) * growing;
+    const float room = ts.openLight > 0.0f ? p[shared::kParticleSpace] : 1.0f;
+    const float rate = vigour * shared::lightResponse(p[shared::kParticleLight], ts.openLight) * room * growing;
     p[shared::kParticleElongation] += property(shared::kGrowRate) * rate;
     p[shared::kParticleBroadening] += property(shared::kBroadenRate) * rate;
     const float noiseTime = property(shared::kNoiseTime), cone = property(shared::kConeNoise);
@@ -79,6 +80,24 @@ void growOrgan(const TickSettings& ts, const float* row, uint32_t plant, float* 
     if (living && ts.openLight > 0.0f)
         p[shared::kParticleShade] =
             p[shared::kParticleLight] < shared::kDeepShade * ts.openLight ? p[shared::kParticleShade] + ts.dt : 0.0f;
+}
+
+// The state, as the tick found it, of the stem apex i of `s` stands on (growth_layout.h, kApexLightReach), or
+// null.
+const shared::ParticleState* stemBelow(const std::vector<shared::ParticleState>& before, const stream::ModuleString& s,
+                                       const uint32_t* classes, size_t start, size_t i) {
+    uint32_t depth = 0; // branches passed over
+    for (size_t j = i; j > start && i - j < shared::kApexLightReach; --j) {
+        const uint32_t sym = s.sym[j - 1];
+        if (sym == ir::kBranchClose) {
+            ++depth;
+        } else if (sym == ir::kBranchOpen) {
+            if (depth > 0) --depth;
+        } else if (depth == 0 && classes[sym] == shared::kGrowStem) {
+            return &before[j - 1];
+        }
+    }
+    return nullptr;
 }
 
 // The value kGrownValue code `code` names for a module of `plant` whose particle is `p`.
@@ -160,17 +179,31 @@ void tickCpu(const TickSettings& ts, stream::ModuleString& s) {
             for (size_t j = i; !born && j > start && idOf(before[j - 1]) == id; --j)
                 born = classes[s.sym[j - 1]] == klass;
             if (born) {
+                // An organ is born with the light and room of the organ it comes from (an apex's: those of the stem
+                // it stands on), else in the open with room to grow, until the light grid says otherwise.
+                const bool fromOrgan =
+                    id != 0 && std::bit_cast<uint32_t>(p[shared::kParticleClass]) < shared::kGrowOrganKinds;
+                const float light = fromOrgan ? p[shared::kParticleLight] : ts.openLight;
+                const float space = fromOrgan ? p[shared::kParticleSpace] : 1.0f;
                 s.particles[i] = {};
                 p[shared::kParticleStage] = stage;
                 p[shared::kParticleClass] = std::bit_cast<float>(klass);
                 const uint32_t fresh =
                     shared::randomBits(ts.seed, plant, shared::kGrowIdentityPass, uint32_t(i - start), ts.tick) | 1u;
                 p[shared::kParticleId] = std::bit_cast<float>(fresh);
-                if (organ) p[shared::kParticleLight] = ts.openLight; // in the open until the light grid says otherwise
+                if (organ) {
+                    p[shared::kParticleLight] = light;
+                    p[shared::kParticleSpace] = space;
+                }
             } else if (p[shared::kParticleStage] != stage) {
                 p[shared::kParticleStage] = stage;
                 p[shared::kParticleStageAge] = 0.0f;
             }
+            if (klass == shared::kGrowApex && ts.openLight > 0.0f)
+                if (const shared::ParticleState* stem = stemBelow(before, s, classes, start, i)) {
+                    p[shared::kParticleLight] = stem->value[shared::kParticleLight];
+                    p[shared::kParticleSpace] = stem->value[shared::kParticleSpace];
+                }
             if (organ) {
                 if (const float* row = stageRow(t, species, klass, stage)) growOrgan(ts, row, plant, p);
             }

@@ -16,6 +16,7 @@ const std::vector<BuiltinInfo>& builtinTable() {
         {"curveZ", Builtin::CurveZ, 2, 2}, {"curveGAL", Builtin::CurveGal, 1, 1},
         {"fopen", Builtin::Fopen, 2, 2}, {"fclose", Builtin::Fclose, 1, 1}, {"fflush", Builtin::Fflush, 1, 1},
         {"fprintf", Builtin::Fprintf, 2, 64}, {"fscanf", Builtin::Fscanf, 2, 64},   {"printf", Builtin::Printf, 1, 64}, {"stop", Builtin::Stop, 0, 1},
+        {"light", Builtin::Light, 0, 0},
     };
     return table;
 }

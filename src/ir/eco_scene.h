@@ -137,6 +137,7 @@ struct EcoRule {
     EcoPatternSegment predecessor;
     std::vector<EcoPatternSegment> right;
     std::vector<std::string> slotNames; // frame slots: pattern segments in text order (left, strict, right)
+    std::optional<Expr> condition;      // `: expression` before `->` (simeco's: the environment, the stages)
     std::vector<EcoAlternative> alternatives;
     SourceLoc loc;
 };

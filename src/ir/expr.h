@@ -27,6 +27,7 @@ enum class Builtin : uint8_t {
     Fopen, Fclose, Fflush, Fprintf, Fscanf, // file input and output from control blocks
     Printf, // printf("...", ...): evaluated for its arguments, prints nothing in derivation
     Stop,   // stop(n): ends the derivation after the current step
+    Light,  // light(): the light the rewritten module's particle had, as a share of the open's (1 without a grid)
 };
 
 struct BuiltinInfo {

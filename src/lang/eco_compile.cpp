@@ -153,7 +153,7 @@ private:
         for (const ir::EcoPatternSegment& seg : rule.left) p.left.push_back(pattern(seg));
         p.strict.push_back(pattern(rule.predecessor));
         for (const ir::EcoPatternSegment& seg : rule.right) p.right.push_back(pattern(seg));
-        p.condition = stageConditions(rule);
+        p.condition = conjoin(stageConditions(rule), rule.condition, rule.loc);
         p.frameSize = static_cast<int>(rule.slotNames.size());
         p.slotNames = rule.slotNames;
         p.loc = rule.loc;

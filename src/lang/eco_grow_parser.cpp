@@ -135,6 +135,7 @@ private:
             throw ir::InputError(strict[1].loc, "a rule rewrites one segment; mark contexts with '<' and '>'");
         r.predecessor = strict[0];
         if (cur_.acceptPunct(">")) r.right = patternList("after '>'");
+        if (cur_.acceptPunct(":")) r.condition = expression(); // on the segments' stages and the environment
         cur_.expectPunct("->", "after the predecessor");
         r.slotNames = slotNames_;
 
@@ -152,10 +153,10 @@ private:
         return r;
     }
 
-    // One or more segments, up to `<`, `>` or `->`.
+    // One or more segments, up to `<`, `>`, `:` or `->`.
     std::vector<ir::EcoPatternSegment> patternList(const char* where) {
         std::vector<ir::EcoPatternSegment> list;
-        while (!cur_.atPunct("<") && !cur_.atPunct(">") && !cur_.atPunct("->")) {
+        while (!cur_.atPunct("<") && !cur_.atPunct(">") && !cur_.atPunct(":") && !cur_.atPunct("->")) {
             const EcoToken& t = cur_.peek();
             if (t.kind == EcoTokenKind::Punct && (t.text == "[" || t.text == "]"))
                 cur_.failAt(t, "brackets cannot appear in a predecessor or its contexts");

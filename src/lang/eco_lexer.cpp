@@ -17,7 +17,7 @@ bool isDigit(char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; 
 
 // Longest first, so that `->` is not read as `-` `>`.
 constexpr const char* kPuncts[] = {"->", "<=", ">=", "==", "!=", "&&", "||", "{", "}", "(", ")", "[", "]",
-                                   ";",  ",",  "=",  "|",  "<",  ">",  "+",  "-",  "*", "/", "!", "%"};
+                                   ";",  ",",  "=",  "|",  "<",  ">",  "+",  "-",  "*", "/", "!", "%", ":"};
 
 class Lexer {
 public:

@@ -49,6 +49,10 @@ struct DeriveOptions {
     // at zero when it is empty.
     bool particles = false;
     std::vector<shared::ParticleState> initialParticles;
+    // Where a light grid runs, 1 / the light in the open: light() in a production is the rewritten module's
+    // particle's light times this (compute/shared/particle_layout.h); 0 (no grid) or without particles, light()
+    // is 1.
+    float lightScale = 0.0f;
     // Per plant (or empty: none): the plants that stand out of the field. They have no axiom and derive no steps,
     // so cost next to nothing: a field whose species' plants are unequal in number leaves such slots in the
     // rounds of its species (plant p is of species p mod their count).

@@ -224,6 +224,7 @@ double Evaluator::call(const ir::Expr& e, double* frame) {
     case Builtin::Stop:
         if (e.args.empty() || arg(0) != 0.0) state_.stopRequested = true;
         return 0.0;
+    case Builtin::Light: return light;
     }
     return 0.0;
 }

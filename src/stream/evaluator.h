@@ -44,6 +44,8 @@ public:
     double draw();
 
     RandomKey key;
+    // What light() returns: the light of the module being rewritten, as a share of the open's.
+    double light = 1.0;
 
 private:
     const ir::Grammar& g_;

@@ -17,6 +17,7 @@ PlantControl::PlantControl(const std::vector<ir::Grammar>& species, const Derive
         stride_ = std::max(stride_, g.maxParams());
     budget_ = options.maxModules ? options.maxModules : defaultModuleBudget(stride_);
     maxSeconds_ = options.maxSeconds;
+    lightScale_ = options.lightScale;
     started_ = std::chrono::steady_clock::now();
     fixedSteps_ = options.steps;
     for (uint32_t plant = 0; plant < std::min<uint32_t>(plants_, uint32_t(species.size())); ++plant)

@@ -25,6 +25,7 @@ public:
 
     uint32_t plants() const { return plants_; }
     uint32_t seed() const { return seed_; }
+    float lightScale() const { return lightScale_; } // DeriveOptions::lightScale
     int stride() const { return stride_; }
     // The module budget of the whole stream: options.maxModules, else sized to this machine's memory.
     uint64_t budget() const { return budget_; }
@@ -71,6 +72,7 @@ private:
     int stride_ = 1;
     uint64_t budget_ = 0;
     double maxSeconds_ = 0;
+    float lightScale_ = 0.0f;
     std::chrono::steady_clock::time_point started_;
     int fixedSteps_ = -1;
     int steps_ = 0;

@@ -1,5 +1,6 @@
 // The light grid's kernels (compute/grow/light_*.comp) against its CPU reference (grow/light_grid.h): the same
 // splatted areas to the unit, the same light within float rounding, the same light in each organ's particle.
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <span>
@@ -51,6 +52,11 @@ TEST_F(LightGridGpuTest, TheDeviceLightsAFieldAsTheReference) {
                       1.5f};
         o.heading = {0.6f, 0.0f, 0.8f, 0.8f};
         o.up = {0, 1, 0, 0};
+        o.plant = uint32_t(k % 9);
+        canopy.push_back(o);
+        // A small leaf of the next plant beside it: the two plants share the voxel.
+        o.plant = uint32_t(k + 1) % 9;
+        o.position.w = 0.05f;
         canopy.push_back(o);
     }
     // The leaves go with the field's leaves (none here), in module order.
@@ -81,6 +87,11 @@ TEST_F(LightGridGpuTest, TheDeviceLightsAFieldAsTheReference) {
         gpu.recordGather(cmd, uploaded, particles);
     });
     EXPECT_EQ(vk::downloadVector<uint32_t>(context(), gpu.occupancy(), spec.voxels()), cpu.occupancy());
+    // The voxels' holders: the bushes' own, shared where the canopy's leaves of two plants meet.
+    const std::vector<uint32_t> holders = vk::downloadVector<uint32_t>(context(), gpu.holders(), spec.voxels());
+    EXPECT_EQ(holders, cpu.holders());
+    EXPECT_GT(std::count(holders.begin(), holders.end(), shared::kVoxelShared), 5);
+    EXPECT_GT(std::count(holders.begin(), holders.end(), 9u), 5); // the last bush's alone
     const std::vector<glm::vec4> light = vk::downloadVector<glm::vec4>(context(), gpu.light(), spec.voxels());
     int shaded = 0;
     for (size_t v = 0; v < light.size(); ++v) {
@@ -91,9 +102,13 @@ TEST_F(LightGridGpuTest, TheDeviceLightsAFieldAsTheReference) {
     EXPECT_GT(shaded, 10); // the canopy and the bushes shade something
     const std::vector<shared::ParticleState> got =
         vk::downloadVector<shared::ParticleState>(context(), particles, string.size());
-    int lit = 0;
+    int lit = 0, blocked = 0, crowded = 0;
     for (size_t m = 0; m < got.size(); ++m) {
         ASSERT_NEAR(got[m].value[shared::kParticleLight], want[m].value[shared::kParticleLight], 1e-5f) << m;
+        const float space = want[m].value[shared::kParticleSpace];
+        ASSERT_NEAR(got[m].value[shared::kParticleSpace], space, 1e-5f) << m;
+        blocked += space == 0.0f ? 1 : 0;
+        crowded += space > 0.0f && space < 1.0f ? 1 : 0;
         const glm::vec3 a = grow::unpackLightDirection(got[m].value[shared::kParticleLightDirection]);
         const glm::vec3 b = grow::unpackLightDirection(want[m].value[shared::kParticleLightDirection]);
         if (want[m].value[shared::kParticleLight] > 0.0f) {
@@ -102,6 +117,8 @@ TEST_F(LightGridGpuTest, TheDeviceLightsAFieldAsTheReference) {
         lit += want[m].value[shared::kParticleLight] > 0.0f ? 1 : 0;
     }
     EXPECT_GT(lit, 100);
+    EXPECT_GT(blocked, 0); // organs reaching into a neighbour's voxels
+    EXPECT_GT(crowded, 0); // organs in voxels they share
 }
 
 } // namespace

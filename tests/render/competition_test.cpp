@@ -1,6 +1,7 @@
-// Plants that compete for light (field::Simulation with its light grid), on the device against the CPU reference:
-// shoots turn toward the light, away from an obstacle's shade; a dense stand sheds its shaded lower branches while
-// an open-grown plant keeps them; a plant among taller neighbours catches less light than one alone.
+// Plants that compete for light and space (field::Simulation with its light grid), on the device against the CPU
+// reference: shoots turn toward the light, away from an obstacle's shade; a dense stand sheds its shaded lower
+// branches while an open-grown plant keeps them; a plant among taller neighbours catches less light than one alone;
+// a shoot does not grow into a wall; rules on the light choose what grows.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -193,19 +194,92 @@ TEST_F(CompetitionTest, APlantAmongTallerNeighboursCatchesLessLightThanOneAlone)
     body += " Plant \"Crowded\" { Position = vector(0.0, 0.0, 0.0);" + small + "\n";
     for (int k = 0; k < 8; ++k) {
         const float a = 6.2832f * float(k) / 8.0f;
-        body += fmt::format(" Plant \"Tall {}\" {{ Position = vector({}, 0.0, {});", k, 2.0f * std::cos(a),
-                            2.0f * std::sin(a)) +
+        body += fmt::format(" Plant \"Tall {}\" {{ Position = vector({}, 0.0, {});", k, 3.0f * std::cos(a),
+                            3.0f * std::sin(a)) +
                 shoot(0.0f) + "\n";
     }
     std::vector<shared::PlantStatistics> statistics;
     grownAlike(context(), body, 12, &statistics);
     ASSERT_EQ(statistics.size(), 10u);
     ASSERT_GT(statistics[0].leafArea, 0.0f);
-    // Alike as they are, the crowded plant's leaves catch less light per area, and grow less.
+    // Alike as they are, the crowded plant's leaves catch less light per area, and grow less, short of light and
+    // of room.
     const float alone = statistics[0].light / statistics[0].leafArea;
     const float crowded = statistics[1].light / std::max(statistics[1].leafArea, 1e-6f);
-    EXPECT_LT(crowded, 0.75f * alone);
-    EXPECT_LT(statistics[1].leafArea, statistics[0].leafArea);
+    EXPECT_LT(crowded, 0.8f * alone);
+    EXPECT_LT(statistics[1].leafArea, 0.8f * statistics[0].leafArea);
+}
+
+TEST_F(CompetitionTest, AShootStopsAtAWallWhereItsTwinInTheOpenGrowsOn) {
+    // Two shoots leaning toward +x under a high sun, one with a wall across its way at x = 3.
+    const std::string leaning = R"(
+            Direction = vector(1.0, 0.35, 0.0);
+            DeriveTime = 2.0;
+            Stem { Default { GrowRate = 0.6; GrowTime = 2.0; BroadenRate = 0.02; } }
+            Grow { w = A(0); A(0) -> S(0)A(0); }
+        })";
+    const std::string body = " SunDirection = vector(0.0, 1.0, 0.2);\n"
+                             " Plant \"Walled\" { Position = vector(0.0, 0.0, 0.0);" + leaning +
+                             "\n Plant \"Open\" { Position = vector(0.0, 0.0, 12.0);" + leaning +
+                             "\n Wall \"Wall\" { From = vector(3.5, 0.0, -4.0); To = vector(3.5, 0.0, 4.0);"
+                             " Height = 6.0; Thickness = 1.0; }\n";
+    const turtle::Interpretation drawn = grownAlike(context(), body, 16);
+    float reach[2] = {-1e30f, -1e30f};
+    for (uint32_t k = 0; k < drawn.count[shared::kOrganStem]; ++k) {
+        const shared::OrganInstance& o = drawn.organs[drawn.first[shared::kOrganStem] + k];
+        if (o.plant < 2 && o.position.w > 0.0f)
+            reach[o.plant] = std::max(reach[o.plant], o.position.x + o.position.w * o.heading.x);
+    }
+    // The open shoot reaches past where the wall stands; the walled one stops at its face (x = 3), within a voxel
+    // of the light grid (about 0.7 here).
+    EXPECT_GT(reach[1], 5.0f);
+    EXPECT_LT(reach[0], 4.0f);
+    EXPECT_GT(reach[0], 1.5f);
+}
+
+TEST_F(CompetitionTest, ARuleOnTheLightBranchesInTheSunAndNotInTheShade) {
+    // Apices branch where their stem has more than half the open's light, and only grow on in the shade.
+    const std::string herb = R"(
+            DeriveTime = 2.0;
+            Stem { Default { GrowRate = 0.5; GrowTime = 2.0; BroadenRate = 0.02; } }
+            Leaf { Default { GrowRate = 0.2; GrowTime = 2.0; } }
+            Grow {
+                w = A(0);
+                A(0) -> S(0)[rotr(1.0)L(0)]A(1);
+                A(1) : light() > 0.5 -> S(0)[rotr(0.7)A(1)][rotr(0.7)rotu(3.1416)A(1)];
+                A(1) : light() <= 0.5 -> S(0)[rotr(1.0)L(0)]rotu(2.4)A(1);
+            }
+        })";
+    const std::string body = " SunDirection = vector(0.2, 1.0, 0.1);\n"
+                             " Plant \"Roofed\" { Position = vector(-10.0, 0.0, 0.0);" + herb +
+                             "\n Plant \"Open\" { Position = vector(10.0, 0.0, 0.0);" + herb +
+                             "\n Box \"Roof\" { Min = vector(-16.0, 4.0, -6.0); Max = vector(-4.0, 5.0, 6.0); }\n";
+    field::Simulation gpu(scene(body, field::Backend::Gpu), &context());
+    field::Simulation cpu(scene(body, field::Backend::Cpu), &context());
+    for (int tick = 0; tick < 9; ++tick) {
+        gpu.tick(), cpu.tick();
+        gpu.interpretParts(), cpu.interpretParts();
+        ASSERT_EQ(gpu.plantModules(), cpu.plantModules()) << tick;
+    }
+    const turtle::Interpretation want = turtle::readBack(context(), cpu.interpret(), cpu.plants());
+    const turtle::Interpretation got = turtle::readBack(context(), gpu.interpret(), gpu.plants());
+    EXPECT_EQ(organDifference(want, got), "");
+    // After four steps the open plant's apices have doubled three times; the roofed plant's one apex has grown on
+    // with a leaf at each node.
+    const field::SimulationState saved = cpu.save();
+    const stream::ModuleString& derived = saved.batches[0].string;
+    const ir::Alphabet& alphabet = gpu.species().species[0].alphabet;
+    const uint32_t apex = *alphabet.find("A"), leaf = *alphabet.find("L");
+    int apices[2] = {0, 0}, leaves[2] = {0, 0};
+    for (size_t k = 0; k < derived.size(); ++k) {
+        const int plant = k >= derived.plantStart[1] ? 1 : 0;
+        apices[plant] += derived.sym[k] == apex;
+        leaves[plant] += derived.sym[k] == leaf;
+    }
+    EXPECT_EQ(apices[0], 1);
+    EXPECT_EQ(leaves[0], 4);
+    EXPECT_EQ(apices[1], 8);
+    EXPECT_EQ(leaves[1], 1);
 }
 
 } // namespace

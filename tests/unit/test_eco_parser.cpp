@@ -2,6 +2,7 @@
 // describe, and malformed scripts fail at the right line and column.
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -20,7 +21,7 @@ ir::EcoScene parseSeedScript(const std::string& name) {
     return lang::parseEcoFile(path);
 }
 
-// Evaluates the arithmetic and logic of a condition or argument over a frame (no calls).
+// Evaluates the arithmetic and logic of a condition or argument over a frame (no calls but light()).
 float eval(const ir::Expr& e, const std::vector<float>& frame) {
     auto arg = [&](size_t i) { return eval(e.args.at(i), frame); };
     switch (e.op) {
@@ -40,6 +41,10 @@ float eval(const ir::Expr& e, const std::vector<float>& frame) {
     case ir::Op::Ne: return arg(0) != arg(1);
     case ir::Op::And: return (arg(0) != 0.0f && arg(1) != 0.0f) ? 1.0f : 0.0f;
     case ir::Op::Or: return (arg(0) != 0.0f || arg(1) != 0.0f) ? 1.0f : 0.0f;
+    case ir::Op::Call:
+        if (e.fn == ir::Builtin::Light) return 1.0f; // no light grid
+        ADD_FAILURE() << "unexpected call in test evaluator";
+        return NAN;
     default: ADD_FAILURE() << "unexpected op in test evaluator"; return NAN;
     }
 }
@@ -428,6 +433,33 @@ TEST(EcoParser, UnreachableAlternativeIsWarned) {
     EXPECT_NE(scene.warnings[0].message.find("never taken"), std::string::npos);
 }
 
+TEST(EcoParser, ARuleMayHoldOnTheLightAndItsStages) {
+    ir::EcoScene scene = lang::parseEcoText("EcoSystem 1.0 \"w\" { Plant \"p\" { Grow { w = A(0);\n"
+                                            "A(s) : s < 3 && light() > 0.5 -> A(s + 1)S(0);\n"
+                                            "S(0) : light() < 0.2 -> S(1); } } }",
+                                            "w.eco");
+    const ir::Grammar g = lang::compileEcoPlant(scene, 0);
+    // A condition is the rule's own, conjoined with its literal stages'.
+    ASSERT_EQ(g.productions.productions.size(), 2u);
+    const ir::Production& apex = g.productions.productions[0];
+    ASSERT_TRUE(apex.condition.has_value());
+    EXPECT_EQ(apex.condition->op, ir::Op::And);
+    const ir::Production& stem = g.productions.productions[1];
+    ASSERT_TRUE(stem.condition.has_value());
+    EXPECT_EQ(stem.condition->op, ir::Op::And); // S(0)'s stage and the light
+    bool callsLight = false;
+    std::function<void(const ir::Expr&)> walk = [&](const ir::Expr& e) {
+        if (e.op == ir::Op::Call && e.fn == ir::Builtin::Light) callsLight = true;
+        for (const ir::Expr& a : e.args) walk(a);
+    };
+    walk(*stem.condition);
+    EXPECT_TRUE(callsLight);
+    // Without a light grid light() is 1: the apex rule holds for stages below 3, the stem's never.
+    EXPECT_TRUE(holds(apex, {2.0f}));
+    EXPECT_FALSE(holds(apex, {3.0f}));
+    EXPECT_FALSE(holds(stem, {0.0f}));
+}
+
 // ---- malformed scripts ----
 
 struct Malformed {
@@ -466,6 +498,8 @@ TEST(EcoParser, MalformedScriptsReportLineAndColumn) {
         {"number with a letter", "EcoSystem 1.0 \"t\" {\n  DayLight = 12h;\n}\n", 2, 14, "bad number '12h'"},
         {"number beyond a float", "EcoSystem 1.0 \"t\" {\n  DayLight = 1e39;\n}\n", 2, 14,
          "number '1e39' is beyond the largest a scene holds (3.40282e+38)"},
+        {"rule condition without an expression", withRules("      S(0) : -> S(1);"), 5, 14, "expected"},
+        {"rule condition without an expression", withRules("      S(0) : -> S(1);"), 5, 14, "expected"},
         {"missing '}' of the ecosystem", "EcoSystem 1.0 \"t\" {\n  SoilPH = 7.0;\n", 3, 1, "missing '}'"},
         {"missing '}' of a stage", withStem("      Stage 1 { GrowRate = 0.1;\n      Stage 2 { }"), 5, 7,
          "missing '}' closing Stem Stage 1"},

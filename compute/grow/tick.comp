@@ -1,8 +1,9 @@
 // One growth tick of every particle of the derived string (compute/shared/growth_layout.h): which modules continue
-// a particle and which are born, aging, each living organ's growth by its stage row for its GrowTime, and its
-// cone noise every NoiseTime while it grows. Reads the particles as the last tick left them and writes the next
-// states into particlesOut, since a module's birth depends on the states of the modules before it. The CPU
-// reference is src/grow/tick_cpu.cpp.
+// a particle and which are born, aging, each living organ's growth by its stage row for its GrowTime (times its
+// light's response and its room to grow where a light grid runs), its cone noise every NoiseTime while it grows,
+// its seconds in deep shade, and an apex's light and room from the stem it stands on. Reads the particles as the
+// last tick left them and writes the next states into particlesOut, since a module's birth depends on the states
+// of the modules before it. The CPU reference is src/grow/tick_cpu.cpp.
 #version 450
 #extension GL_GOOGLE_include_directive : require
 #include "compute/shared/config.h"

@@ -6,8 +6,9 @@
 // in any order. Light then travels from the sun and from the sky's directions (LightDirection: where it comes from
 // and how strong it is) through the leaf area each voxel holds, by Beer–Lambert's law: a path of length l through
 // leaf area density a (area per volume) lets exp(-kLeafExtinction a l) through; a voxel an obstacle fills (a mask
-// made once from the scene) lets nothing through (light_propagate.comp). Each voxel keeps the light that reaches its centre and the direction most of it
-// comes from, which the organs in it take into their particles for the next tick (light_gather.comp).
+// made once from the scene) lets nothing through (light_propagate.comp). Each voxel keeps the light that reaches its
+// centre and the direction most of it comes from, which the organs in it take into their particles for the next
+// tick (light_gather.comp).
 #ifndef SIMECO_SHARED_LIGHT_LAYOUT_H
 #define SIMECO_SHARED_LIGHT_LAYOUT_H
 

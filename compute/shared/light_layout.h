@@ -39,9 +39,15 @@ struct LightGridPush {
     uint directions; // LightDirection entries (the sun first, then the sky's)
     uint derived;    // gather: where the light goes besides the drawn string's particles (kLightTo*)
     uint firstPlant; // splat and gather: added to each organ's plant, the field's numbering of the batch's plants
-    uint pad1;
-    uint pad2;
+    uint count;      // queries: the drawn modules
+    uint stride;     // queries: parameters per module of the derived string
 };
+
+// cpfg's environment queries (`?E(...)`, Měch and Prusinkiewicz's open L-systems), answered by the grid where one
+// runs, from the light of the last drawing, as light_gather.comp gives organs theirs: after each drawing a module
+// ?E's first parameter becomes the light at the turtle's position as a share of the open's (1 outside the grid),
+// and with four parameters or more, the second to fourth the direction most of it comes from, in its plant's own
+// frame (light_queries.comp). They are written into the derived string's module, which the next step reads.
 
 // Space: each voxel also keeps which plant holds it (splat: the plant's number + 1 of the organs whose centres lie
 // in it; kVoxelShared where several plants' do; kVoxelEmpty where none), and propagate keeps each voxel's holder

@@ -56,7 +56,8 @@ SIMECO_CONST kTurtleTropism = 44u;       // tropism(e): SimEco's growth, set the
 SIMECO_CONST kTurtleAlive = 45u;         // alive(a): SimEco's growth, scale what follows by a (0: shed)
 SIMECO_CONST kTurtlePhototropism = 46u;  // phototropism(e,x,y,z): SimEco's growth, turn the heading toward the
                                          // direction (x,y,z) by e |H x d| about H x d (d the direction made unit)
-SIMECO_CONST kTurtleCommands = 47u;
+SIMECO_CONST kTurtleQueryEnvironment = 47u; // ?E(...): answered by the light grid where one runs (light_layout.h)
+SIMECO_CONST kTurtleCommands = 48u;
 
 // cpfg writes its predefined modules of several characters as separate modules: `@O(d)` is `@` then `O(d)`,
 // `@Gc(n)` is `@`, `G`, `c(n)`, `?P(x,y)` is `?` then `P(x,y)`, `~l(s)` is `~` then `l(s)` (productions can

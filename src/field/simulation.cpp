@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "compute/shared/random.h"
+#include "compute/shared/turtle_layout.h"
 #include "compute/shared/turtle_state_layout.h"
 #include "cpu/derive.h"
 #include "draw/render_settings.h"
@@ -113,7 +114,12 @@ struct Simulation::Impl {
     std::unique_ptr<grow::LightGridCpu> lightCpu;
     std::vector<shared::LightDirection> lightFrom; // the sun's and the sky's, as the scene sets them
     float openLight = 0.0f;                        // their light in the open, which organs grow by in full
+    bool answersQueries = false; // the alphabet spells cpfg's `?E`
     void chooseLight();
+    // cpfg's ?E queries of the field's drawn string (the batches' one after the other, from `drawnStarts`, each
+    // module's derived one in `origins`), answered from the last drawing's light grid into the derived strings.
+    void answerQueriesOnHost(const stream::ModuleString& field, const std::vector<size_t>& drawnStarts,
+                             const std::vector<std::vector<uint32_t>>& origins);
     // The light grid's layer across `axis` (1: a horizontal slice, rows along z; 2: a vertical section, rows down y).
     LightSlice lightLayer(int axis, float coordinate) const;
     void prepareLight(const draw::Bounds& extent, uint32_t standing);
@@ -226,6 +232,9 @@ Simulation::Simulation(const SimulationOptions& options, const vk::Context* cont
     m.nextStep = m.deriveTimes;
     const ir::Alphabet& alphabet = m.g.species.front().alphabet;
     m.commands = turtle::turtleCommands(alphabet);
+    m.answersQueries = m.commands.query != turtle::kNoSymbol &&
+                       std::count(m.commands.afterQuery.begin(), m.commands.afterQuery.end(),
+                                  shared::kTurtleQueryEnvironment) > 0;
     for (const ir::Grammar& grammar : m.g.species)
         m.turtles.push_back(turtle::turtleSettings(grammar, alphabet));
     m.grown = growOneOfEach(m.g, m.tables, m.derive, m.seed, m.deriveTimes,
@@ -363,6 +372,12 @@ std::vector<const turtle::DeviceOrgans*> Simulation::Impl::interpretOnDevice() {
             if (drawnModules.particles)
                 lightGpu->recordGather(cmd, *organs, *drawnModules.particles, drawnModules.origins,
                                        b.deriver->current().particles, b.first);
+            if (answersQueries) {
+                const stream::DeviceModules derived = b.deriver->current();
+                lightGpu->recordQueries(cmd, turtle->lastModuleStates(), drawnModules.count,
+                                        drawnModules.symbols == derived.symbols ? nullptr : drawnModules.origins,
+                                        *derived.symbols, *derived.params, derived.stride);
+            }
             statistics->record(cmd, *organs, drawnModules.particles, bases);
             lightGpu->recordSplat(cmd, *organs, b.first);
         });
@@ -423,6 +438,7 @@ std::vector<const turtle::DeviceOrgans*> Simulation::Impl::interpretOnHost() {
         return j < from.size() ? &batches[k].reference->current().particles[from[j]] : nullptr;
     };
     lightCpu->gather(organs, field.particles, derivedOf);
+    if (answersQueries) answerQueriesOnHost(field, drawnStarts, origins);
     seconds.light += secondsSince(start);
     start = Clock::now();
     lastStatistics = plantStatisticsCpu(organs, baseHeights(placements), field.particles, shapeAreas);
@@ -438,6 +454,28 @@ std::vector<const turtle::DeviceOrgans*> Simulation::Impl::interpretOnHost() {
     merge->keep(uploaded, 0, 0);
     merge->keep(obstacleOrganBuffers(), derive.plants, field.size());
     return merge->mergeParts();
+}
+
+void Simulation::Impl::answerQueriesOnHost(const stream::ModuleString& field, const std::vector<size_t>& drawnStarts,
+                                           const std::vector<std::vector<uint32_t>>& origins) {
+    for (const turtle::EnvironmentQuery& q : turtle::environmentQueries(field, commands, turtles)) {
+        const size_t k = size_t(std::upper_bound(drawnStarts.begin(), drawnStarts.end(), q.module) -
+                                drawnStarts.begin()) - 1;
+        const size_t j = q.module - drawnStarts[k];
+        if (j >= origins[k].size()) continue;
+        stream::ModuleString& derived = batches[k].reference->current();
+        const size_t to = origins[k][j];
+        const shared::PlantPlacement& m = placements[q.plant];
+        const glm::vec4 l = lightCpu->lightAt(turtle::placePoint(m, q.position));
+        // light_queries.comp's answer: the light as a share of the open's, its direction in the plant's frame.
+        const glm::vec3 toward = glm::normalize(l.x * glm::vec3(m.x.x, m.x.y, m.x.z) +
+                                                l.y * glm::vec3(m.y.x, m.y.y, m.y.z) +
+                                                l.z * glm::vec3(m.z.x, m.z.y, m.z.z));
+        const float answer[4] = {openLight > 0.0f ? l.w / openLight : 1.0f, toward.x, toward.y, toward.z};
+        const uint32_t count = derived.paramCount[to];
+        for (uint32_t a = 0; a < std::min(count, count >= 4 ? 4u : 1u); ++a)
+            derived.params[to * size_t(derived.stride) + a] = answer[a];
+    }
 }
 
 std::vector<const turtle::DeviceOrgans*> Simulation::interpretParts() {

@@ -188,6 +188,14 @@ void LightGridCpu::propagate() {
     }
 }
 
+glm::vec4 LightGridCpu::lightAt(glm::vec3 p) const {
+    const int64_t v = spec_.voxelAt(p);
+    if (v >= 0) return light_[size_t(v)];
+    float open = 0.0f;
+    for (const shared::LightDirection& d : directions_) open += std::max(d.towardAndIntensity.w, 0.0f);
+    return {0.0f, 1.0f, 0.0f, open};
+}
+
 void LightGridCpu::gather(const turtle::Interpretation& organs, std::vector<shared::ParticleState>& particles,
                           const DerivedParticle& derivedOf) const {
     float open = 0.0f;
@@ -223,7 +231,8 @@ GpuLightGrid::GpuLightGrid(const vk::Context& context, const LightGridSpec& spec
     : spec_(spec), directionCount_(uint32_t(directions.size())),
       splat_(vk::ComputePipeline::embedded(context, "grow/light_splat")),
       propagate_(vk::ComputePipeline::embedded(context, "grow/light_propagate")),
-      gather_(vk::ComputePipeline::embedded(context, "grow/light_gather")) {
+      gather_(vk::ComputePipeline::embedded(context, "grow/light_gather")),
+      queries_(vk::ComputePipeline::embedded(context, "grow/light_queries")) {
     directions_ = vk::deviceBufferWith(context, std::span<const shared::LightDirection>(directions));
     std::vector<uint32_t> mask = obstacles;
     mask.resize(spec.voxels(), 0);
@@ -284,8 +293,25 @@ void GpuLightGrid::recordGather(VkCommandBuffer cmd, const turtle::DeviceOrgans&
     vk::memoryBarrier(cmd, vk::Hazard::AnyToAny);
     gather_.dispatch(cmd,
                      {organs.instances, organs.table, light_, directions_, drawnParticles,
-                      origins && elsewhere ? *origins : none_, elsewhere ? *derivedParticles : none_, room_, obstacles_},
+                      origins && elsewhere ? *origins : none_, elsewhere ? *derivedParticles : none_, room_,
+                      obstacles_},
                      p, gather_.groupsFor(organs.capacity));
+    vk::memoryBarrier(cmd, vk::Hazard::ComputeToCompute);
+}
+
+void GpuLightGrid::recordQueries(VkCommandBuffer cmd, const turtle::GpuTurtle::ModuleStates& states, uint32_t count,
+                                 const vk::Buffer* origins, const vk::Buffer& derivedSymbols,
+                                 const vk::Buffer& derivedParams, uint32_t stride) {
+    if (count == 0 || !states.placements) return;
+    shared::LightGridPush p = push();
+    p.derived = origins ? shared::kLightToOrigin : shared::kLightToSameModule;
+    p.count = count;
+    p.stride = stride;
+    vk::memoryBarrier(cmd, vk::Hazard::AnyToAny);
+    queries_.dispatch(cmd,
+                      {*states.states, *states.commands, *states.plants, *states.placements, light_, directions_,
+                       origins ? *origins : none_, derivedSymbols, derivedParams},
+                      p, queries_.groupsFor(count));
     vk::memoryBarrier(cmd, vk::Hazard::ComputeToCompute);
 }
 

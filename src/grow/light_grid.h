@@ -68,6 +68,9 @@ public:
     // `organs`' plants numbered as in the field.
     void splat(const turtle::Interpretation& organs, const std::vector<float>& shapeAreas);
     void propagate();
+    // The light at point `p` of the field: xyz the direction most of it comes from, w its amount (the open's outside
+    // the grid).
+    glm::vec4 lightAt(glm::vec3 p) const;
     // Each organ's light and room to grow into `particles` (one state per module of the drawn string), and into the
     // particle `derivedOf` gives for its module (the derived string's it was drawn from), where it gives one.
     using DerivedParticle = std::function<shared::ParticleState*(uint32_t drawnModule)>;
@@ -104,6 +107,13 @@ public:
                       const vk::Buffer* origins = nullptr, const vk::Buffer* derivedParticles = nullptr,
                       uint32_t firstPlant = 0);
 
+    // cpfg's `?E` queries among the `count` modules the turtle last interpreted (`states`), answered from the last
+    // drawing's light into the derived string's modules (`derivedSymbols`, `derivedParams`, `stride` slots a
+    // module): through `origins` where the string was drawn under the homomorphism, else module for module.
+    void recordQueries(VkCommandBuffer cmd, const turtle::GpuTurtle::ModuleStates& states, uint32_t count,
+                       const vk::Buffer* origins, const vk::Buffer& derivedSymbols, const vk::Buffer& derivedParams,
+                       uint32_t stride);
+
     const vk::Buffer& occupancy() const { return occupancy_; }
     const vk::Buffer& holders() const { return holders_; }
     const vk::Buffer& light() const { return light_; }
@@ -114,7 +124,7 @@ private:
 
     LightGridSpec spec_;
     uint32_t directionCount_;
-    vk::ComputePipeline splat_, propagate_, gather_;
+    vk::ComputePipeline splat_, propagate_, gather_, queries_;
     vk::Buffer directions_, obstacles_, shapeAreas_, occupancy_, holders_, light_, room_;
     vk::Buffer none_; // bound where the gather has no origins or derived particles
 };

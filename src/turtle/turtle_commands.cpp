@@ -80,7 +80,8 @@ uint32_t queryCommand(std::string_view name) {
     if (name == "H") return kTurtleQueryHeading;
     if (name == "L") return kTurtleQueryLeft;
     if (name == "U") return kTurtleQueryUp;
-    return kTurtleIgnored; // ?E and other environment queries
+    if (name == "E") return kTurtleQueryEnvironment;
+    return kTurtleIgnored; // other environment queries
 }
 
 } // namespace

@@ -397,4 +397,19 @@ void fillQueries(stream::ModuleString& string, const TurtleCommands& commands,
     }
 }
 
+std::vector<EnvironmentQuery> environmentQueries(const stream::ModuleString& string, const TurtleCommands& commands,
+                                                 const std::vector<TurtleSettings>& species) {
+    std::vector<EnvironmentQuery> queries;
+    std::vector<OrganInstance> unused;
+    for (uint32_t p = 0; p < string.plants(); ++p) {
+        PlantTurtle turtle(string, commands, species[p % species.size()], p, unused);
+        turtle.walk(string.plantStart[p], string.plantStart[p + 1],
+                    [&](size_t i, uint32_t command, const TurtleState& st) {
+                        if (command == kTurtleQueryEnvironment) queries.push_back({i, p, st.position});
+                    });
+        unused.clear();
+    }
+    return queries;
+}
+
 } // namespace simeco::turtle

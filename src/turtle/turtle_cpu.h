@@ -26,4 +26,14 @@ Bounds organBounds(const shared::OrganInstance& o);
 void fillQueries(stream::ModuleString& string, const TurtleCommands& commands,
                  const std::vector<TurtleSettings>& species);
 
+// Where each module the turtle takes for cpfg's `?E` stands: the turtle's position after it, in its plant's own
+// space (the light grid answers it: compute/shared/light_layout.h).
+struct EnvironmentQuery {
+    size_t module = 0;
+    uint32_t plant = 0;
+    glm::vec3 position{0.0f};
+};
+std::vector<EnvironmentQuery> environmentQueries(const stream::ModuleString& string, const TurtleCommands& commands,
+                                                 const std::vector<TurtleSettings>& species);
+
 } // namespace simeco::turtle

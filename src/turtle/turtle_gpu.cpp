@@ -663,6 +663,12 @@ GpuTurtle::GpuTurtle(const vk::Context& context, const turtle::TurtleCommands& c
 
 GpuTurtle::~GpuTurtle() = default;
 
+GpuTurtle::ModuleStates GpuTurtle::lastModuleStates() const {
+    const Impl& m = *impl_;
+    return {&m.scratch.states, &m.scratch.commands, &m.scratch.plantOf,
+            m.organs.placements.empty() ? nullptr : &m.placements};
+}
+
 const DeviceOrgans& GpuTurtle::interpret(const stream::DeviceModules& modules, const turtle::FieldOptions& field) {
     return impl_->interpret(modules, field);
 }

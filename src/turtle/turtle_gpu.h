@@ -97,6 +97,17 @@ public:
     // than those in flight use, and interpret() refuses while any is); each is read once, oldest first.
     RecordedInterpretation recorded();
 
+    // The last interpretation's per-module arrays, valid until the next: each module's state after it (in its
+    // plant's own frame), its command and its plant, and the plants' placements (FieldOptions::placements; unset
+    // without them).
+    struct ModuleStates {
+        const vk::Buffer* states = nullptr;
+        const vk::Buffer* commands = nullptr;
+        const vk::Buffer* plants = nullptr;
+        const vk::Buffer* placements = nullptr;
+    };
+    ModuleStates lastModuleStates() const;
+
     // Levels of non-linear commands the last interpretation resolved one after another.
     std::uint32_t lastLevels() const;
     // Bytes the last interpretation's passes read and wrote in their per-module and per-organ arrays, as the

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -280,6 +282,62 @@ TEST_F(CompetitionTest, ARuleOnTheLightBranchesInTheSunAndNotInTheShade) {
     EXPECT_EQ(leaves[0], 4);
     EXPECT_EQ(apices[1], 8);
     EXPECT_EQ(leaves[1], 1);
+}
+
+TEST_F(CompetitionTest, TheLightGridAnswersCpfgEnvironmentQueries) {
+    // A cpfg grammar whose plants ask for the light at two points (`?E(x)`, and `?E(x,dx,dy,dz)` with the direction
+    // it comes from); one plant under a roof, one in the open.
+    const std::filesystem::path folder = std::filesystem::temp_directory_path() / "simeco-queries-test";
+    std::filesystem::create_directories(folder);
+    std::ofstream(folder / "queries.l") << "Lsystem: 1\nderivation length: 3\n"
+                                           "Axiom: F(1)?E(0)[+(60)F(1)?E(0,0,0,0)]\n"
+                                           "F(x) --> F(x)\nendlsystem\n";
+    const std::string body = " SunDirection = vector(0.2, 1.0, 0.1);\n"
+                             " Plant \"Queries\" { Grammar = \"queries.l\"; DeriveTime = 2.0; }\n"
+                             " Population \"Roofed\" { Plant = \"Queries\"; Count = 1;"
+                             " Center = vector(-10.0, 0.0, 0.0); Size = vector(0.1, 0.0, 0.1); }\n"
+                             " Population \"Open\" { Plant = \"Queries\"; Count = 1; Center = vector(10.0, 0.0, 0.0);"
+                             " Size = vector(0.1, 0.0, 0.1); }\n"
+                             " Box \"Roof\" { Min = vector(-14.0, 3.0, -4.0); Max = vector(-6.0, 4.0, 4.0); }\n";
+    std::vector<field::SimulationState> states;
+    uint32_t e = 0; // the symbol `E`
+    for (field::Backend backend : {field::Backend::Gpu, field::Backend::Cpu}) {
+        field::SimulationOptions options = scene(body, backend);
+        options.file = (folder / "queries.eco").string();
+        field::Simulation sim(options, &context());
+        e = *sim.species().species[0].alphabet.find("E");
+        for (int tick = 0; tick < 4; ++tick) {
+            sim.tick();
+            sim.interpretParts();
+        }
+        states.push_back(sim.save());
+    }
+    const stream::ModuleString& gpu = states[0].batches[0].string;
+    const stream::ModuleString& cpu = states[1].batches[0].string;
+    ASSERT_EQ(gpu.sym, cpu.sym);
+    std::vector<std::vector<float>> answers[2];
+    for (size_t k = 0; k < cpu.size(); ++k) {
+        if (cpu.sym[k] != e) continue;
+        const int plant = k >= cpu.plantStart[1] ? 1 : 0;
+        std::vector<float> a(cpu.paramsOf(k), cpu.paramsOf(k) + cpu.paramCount[k]);
+        for (size_t n = 0; n < a.size(); ++n) EXPECT_NEAR(gpu.paramsOf(k)[n], a[n], 1e-4f) << k << " " << n;
+        answers[plant].push_back(a);
+    }
+    // Each plant's two queries, answered: the light as a share of the open's, and its direction (up, mostly).
+    ASSERT_EQ(answers[0].size(), 2u);
+    ASSERT_EQ(answers[1].size(), 2u);
+    for (int plant = 0; plant < 2; ++plant)
+        for (const std::vector<float>& a : answers[plant]) {
+            if (plant == 0) {
+                EXPECT_LT(a[0], 0.3f); // under the roof
+            } else {
+                EXPECT_GT(a[0], 0.9f); // in the open
+            }
+            if (a.size() == 4) {
+                EXPECT_NEAR(a[1] * a[1] + a[2] * a[2] + a[3] * a[3], 1.0f, 1e-3f);
+            }
+        }
+    EXPECT_GT(answers[1][1][2], 0.5f); // the open plant's light comes from above
 }
 
 } // namespace

@@ -25,15 +25,14 @@ layout(push_constant) uniform Push { GrowPush pc; };
 
 #include "compute/grow/growth.glsl"
 #include "compute/grow/light_direction.glsl"
+#include "compute/turtle/organ_bounds.glsl"
 
 float particle(uint i, uint slot) { return particles[kParticleStateFloats * i + slot]; }
 
 // The direction of most light at particle i, turned from the field's frame into its plant's own (the transpose of
 // the plant's rotation).
 vec3 lightInPlantFrame(uint i, uint plant) {
-    vec3 d = unpackLightDirection(particle(i, kParticleLightDirection));
-    PlantPlacement m = placements[plant];
-    return normalize(d.x * m.x.xyz + d.y * m.y.xyz + d.z * m.z.xyz);
+    return normalize(turnIntoPlant(placements[plant], unpackLightDirection(particle(i, kParticleLightDirection))));
 }
 
 float grownValue(uint code, uint i, uint plant) {

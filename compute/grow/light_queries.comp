@@ -22,18 +22,18 @@ layout(set = 0, binding = 8, std430) buffer DerivedParams { float derivedParams[
 layout(push_constant) uniform Push { LightGridPush pc; };
 
 #include "compute/grow/light_grid.glsl"
+#include "compute/turtle/organ_bounds.glsl"
 
 void main() {
     uint i = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * gl_WorkGroupSize.x + gl_LocalInvocationID.x;
     if (i >= pc.count || commands[i] != kTurtleQueryEnvironment) return;
     PlantPlacement m = placements[plantOfModule[i]];
-    vec3 local = states[i].position.xyz;
-    vec3 at = vec3(dot(m.x.xyz, local), dot(m.y.xyz, local), dot(m.z.xyz, local)) + vec3(m.x.w, m.y.w, m.z.w);
+    vec3 at = placePoint(m, states[i].position.xyz);
     float open = 0.0;
     for (uint d = 0u; d < pc.directions; ++d) open += max(directions[d].towardAndIntensity.w, 0.0);
     int v = voxelAt(at);
     vec4 l = v >= 0 ? light[v] : vec4(0.0, 1.0, 0.0, open);
-    vec3 toward = normalize(l.x * m.x.xyz + l.y * m.y.xyz + l.z * m.z.xyz); // into the plant's own frame
+    vec3 toward = normalize(turnIntoPlant(m, l.xyz));
     uint to = pc.derived == kLightToOrigin ? origin[i] : i;
     uint count = derivedSymbols[to] >> kSymbolBits;
     float answer[4] = float[4](open > 0.0 ? l.w / open : 1.0, toward.x, toward.y, toward.z);

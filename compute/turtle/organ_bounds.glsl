@@ -58,6 +58,8 @@ uint fieldColumns(uint plants) {
 // A plant's point or direction in the field (shared/organ_layout.h's PlantPlacement; turtle_cpu.cpp does the same).
 vec3 turnDirection(PlantPlacement m, vec3 v) { return vec3(dot(m.x.xyz, v), dot(m.y.xyz, v), dot(m.z.xyz, v)); }
 vec3 placePoint(PlantPlacement m, vec3 p) { return turnDirection(m, p) + vec3(m.x.w, m.y.w, m.z.w); }
+// A direction of the field turned into the plant's own frame (turnDirection's inverse: the rotation's transpose).
+vec3 turnIntoPlant(PlantPlacement m, vec3 v) { return v.x * m.x.xyz + v.y * m.y.xyz + v.z * m.z.xyz; }
 
 vec3 fieldCell(uint plant, uint plants) {
     uint columns = fieldColumns(plants);

@@ -468,9 +468,7 @@ void Simulation::Impl::answerQueriesOnHost(const stream::ModuleString& field, co
         const shared::PlantPlacement& m = placements[q.plant];
         const glm::vec4 l = lightCpu->lightAt(turtle::placePoint(m, q.position));
         // light_queries.comp's answer: the light as a share of the open's, its direction in the plant's frame.
-        const glm::vec3 toward = glm::normalize(l.x * glm::vec3(m.x.x, m.x.y, m.x.z) +
-                                                l.y * glm::vec3(m.y.x, m.y.y, m.y.z) +
-                                                l.z * glm::vec3(m.z.x, m.z.y, m.z.z));
+        const glm::vec3 toward = glm::normalize(turtle::turnIntoPlant(m, glm::vec3(l)));
         const float answer[4] = {openLight > 0.0f ? l.w / openLight : 1.0f, toward.x, toward.y, toward.z};
         const uint32_t count = derived.paramCount[to];
         for (uint32_t a = 0; a < std::min(count, count >= 4 ? 4u : 1u); ++a)

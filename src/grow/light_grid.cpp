@@ -188,18 +188,20 @@ void LightGridCpu::propagate() {
     }
 }
 
-glm::vec4 LightGridCpu::lightAt(glm::vec3 p) const {
-    const int64_t v = spec_.voxelAt(p);
-    if (v >= 0) return light_[size_t(v)];
+float LightGridCpu::openLight() const {
     float open = 0.0f;
     for (const shared::LightDirection& d : directions_) open += std::max(d.towardAndIntensity.w, 0.0f);
-    return {0.0f, 1.0f, 0.0f, open};
+    return open;
+}
+
+glm::vec4 LightGridCpu::lightAt(glm::vec3 p) const {
+    const int64_t v = spec_.voxelAt(p);
+    return v >= 0 ? light_[size_t(v)] : glm::vec4(0.0f, 1.0f, 0.0f, openLight());
 }
 
 void LightGridCpu::gather(const turtle::Interpretation& organs, std::vector<shared::ParticleState>& particles,
                           const DerivedParticle& derivedOf) const {
-    float open = 0.0f;
-    for (const shared::LightDirection& d : directions_) open += std::max(d.towardAndIntensity.w, 0.0f);
+    const float open = openLight();
     for (uint32_t kind = 0; kind < shared::kOrganKinds; ++kind)
         for (uint32_t i = organs.first[kind]; i < organs.first[kind] + organs.count[kind]; ++i) {
             const shared::OrganInstance& o = organs.organs[i];

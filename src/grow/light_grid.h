@@ -83,6 +83,8 @@ public:
     const std::vector<glm::vec4>& light() const { return light_; }    // xyz: most light from; w: light
 
 private:
+    float openLight() const; // the light outside the grid: all its directions' in full
+
     LightGridSpec spec_;
     std::vector<shared::LightDirection> directions_;
     std::vector<uint32_t> obstacles_, occupancy_, holders_;

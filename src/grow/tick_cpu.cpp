@@ -12,6 +12,7 @@
 #include "compute/shared/random.h"
 #include "grow/light_grid.h"
 #include "ir/species.h"
+#include "turtle/interpretation.h"
 
 namespace simeco::grow {
 
@@ -51,9 +52,7 @@ bool alive(const TickSettings& ts, const float* row, uint32_t plant, uint32_t id
 glm::vec3 lightInPlantFrame(const TickSettings& ts, const float* p, uint32_t plant) {
     const glm::vec3 d = unpackLightDirection(p[shared::kParticleLightDirection]);
     if (!ts.placements || plant >= ts.placements->size()) return d;
-    const shared::PlantPlacement& m = (*ts.placements)[plant];
-    return glm::normalize(d.x * glm::vec3(m.x.x, m.x.y, m.x.z) + d.y * glm::vec3(m.y.x, m.y.y, m.y.z) +
-                          d.z * glm::vec3(m.z.x, m.z.y, m.z.z));
+    return glm::normalize(turtle::turnIntoPlant((*ts.placements)[plant], d));
 }
 
 // An organ's growth over one tick, by its stage's row; a dead organ grows no more.

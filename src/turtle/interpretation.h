@@ -58,6 +58,11 @@ inline glm::vec3 turnDirection(const shared::PlantPlacement& m, glm::vec3 v) {
 inline glm::vec3 placePoint(const shared::PlantPlacement& m, glm::vec3 p) {
     return turnDirection(m, p) + plantOrigin(m);
 }
+// A direction of the field turned into the plant's own frame (turnDirection's inverse: the rotation's transpose).
+inline glm::vec3 turnIntoPlant(const shared::PlantPlacement& m, glm::vec3 v) {
+    return {m.x.x * v.x + m.y.x * v.y + m.z.x * v.z, m.x.y * v.x + m.y.y * v.y + m.z.y * v.z,
+            m.x.z * v.x + m.y.z * v.y + m.z.z * v.z};
+}
 
 // The placement of a plant standing at `position`, turned by `yaw` radians about its own axis, then tilted (by
 // the shortest turn) from growing along +y to growing along `direction` (+y where it is zero).

@@ -102,6 +102,11 @@ SIMECO_CONST kGateNonlinear = 4u; // kMarkNonlinear
 SIMECO_CONST kGates = 5u;
 SIMECO_CONST kGateWords = 6u;
 
+// The lists a round of pointer jumping walks (jump_list.glsl): a header of the workgroups that walk the list
+// (x, y, z, written by list_groups.comp) and the items' count, then the items (module indices).
+SIMECO_CONST kJumpListCount = 3u;
+SIMECO_CONST kJumpListHeader = 4u;
+
 struct TurtlePush {
     uint count;       // modules at most (the status words count them)
     uint plants;

@@ -1,7 +1,7 @@
 // Searches up the module tree, first pass: each invocation walks kTurtleChunk consecutive modules in order and
 // finds each one's nearest strict ancestor with a mark of hitMask | stopMask when it lies in the chunk. Where
-// the search leaves the chunk at an unmarked module, that module becomes a target: jump_search.comp resolves
-// the targets among themselves and search_finish.comp gives every module its answer.
+// the search leaves the chunk at an unmarked module, that module becomes a target, appended to the list that
+// jump_search.comp walks: it resolves the targets among themselves and search_finish.comp gives every module its answer.
 #version 450
 #extension GL_GOOGLE_include_directive : require
 #include "compute/shared/derive_layout.h"
@@ -14,6 +14,8 @@ layout(set = 0, binding = 3, std430) buffer Targets { uint targets[]; };
 layout(push_constant) uniform Push { TurtlePush pc; };
 #define TURTLE_STATUS_BINDING 4
 #include "compute/turtle/module_count.glsl"
+#define JUMP_LIST_OUT_BINDING 5
+#include "compute/turtle/jump_list.glsl"
 
 bool ends(uint j) { return j == kNoModule || (marks[j] & (pc.hitMask | pc.stopMask)) != 0u; }
 
@@ -26,6 +28,6 @@ void main() {
         uint p = parents[i];
         uint q = (ends(p) || p < begin) ? p : pointers[p];
         pointers[i] = q;
-        if (!ends(q)) targets[q] = 1u;
+        if (!ends(q)) markTarget(q);
     }
 }

@@ -1,8 +1,8 @@
 // Turtle, pass 3: each invocation composes the steps of kTurtleChunk consecutive modules in order. A module
 // whose parent lies in the chunk (and is linear) takes over the parent's composition and pointer; one whose
 // parent lies before the chunk points at it, and that parent becomes a target: only targets take part in the
-// pointer jumping that follows (jump_steps.comp). A target's own pointer again leaves its chunk or ends at an
-// anchor, so the targets are closed under their pointers.
+// pointer jumping that follows (jump_steps.comp), which walks the list of them this pass appends. A target's own
+// pointer again leaves its chunk or ends at an anchor, so the targets are closed under their pointers.
 #version 450
 #extension GL_GOOGLE_include_directive : require
 #include "compute/shared/derive_layout.h"
@@ -16,6 +16,8 @@ layout(set = 0, binding = 4, std430) buffer Targets { uint targets[]; };
 layout(push_constant) uniform Push { TurtlePush pc; };
 #define TURTLE_STATUS_BINDING 5
 #include "compute/turtle/module_count.glsl"
+#define JUMP_LIST_OUT_BINDING 6
+#include "compute/turtle/jump_list.glsl"
 #include "compute/turtle/turtle_math.glsl"
 
 void main() {
@@ -32,6 +34,6 @@ void main() {
             pointers[i] = pointers[p];
         }
         uint q = pointers[i];
-        if (q != kNoModule && q < begin && (marks[q] & kMarkNonlinear) == 0u) targets[q] = 1u;
+        if (q != kNoModule && q < begin && (marks[q] & kMarkNonlinear) == 0u) markTarget(q);
     }
 }

@@ -97,7 +97,8 @@ struct GpuTurtle::Impl {
     gpu::GpuScan scan;
     gpu::BracketTree brackets;
     vk::ComputePipeline setup, polygons, chunkSteps, jumpSteps, chunkSearch, jumpSearch, searchFinish, jumpLevels,
-        levelCount, levelLayout, levelScatter, resolveLevel, states, classify, emit, links, field, place, passSizes;
+        levelCount, levelLayout, levelScatter, resolveLevel, states, classify, emit, links, field, place, passSizes,
+        listGroups;
     // For strings counted only on the device: the workgroups of the bracket tree's dispatches, as a recorded
     // derivation step sizes them (made on the first such recording).
     std::optional<vk::ComputePipeline> stepSizes;
@@ -122,6 +123,9 @@ struct GpuTurtle::Impl {
         vk::Buffer levels[2];
         vk::Buffer counts, order;
         vk::Buffer flags, offsets;
+        // The work lists of the pointer jumping (jump_list.glsl): round r walks lists[r % 2] and hands on to the
+        // other; the chunk passes start lists[0].
+        vk::Buffer lists[2];
         std::uint64_t modules = 0; // capacity
     } scratch;
     vk::Buffer plantBounds, present;
@@ -169,7 +173,8 @@ struct GpuTurtle::Impl {
           links(vk::ComputePipeline::embedded(c, "turtle/links")),
           field(vk::ComputePipeline::embedded(c, "turtle/field")),
           place(vk::ComputePipeline::embedded(c, "turtle/place")),
-          passSizes(vk::ComputePipeline::embedded(c, "turtle/pass_sizes")) {
+          passSizes(vk::ComputePipeline::embedded(c, "turtle/pass_sizes")),
+          listGroups(vk::ComputePipeline::embedded(c, "turtle/list_groups")) {
         bool elastic = hasElasticityCommands(commands);
         std::vector<TurtleSpecies> table;
         std::vector<float> scales;
@@ -244,6 +249,12 @@ struct GpuTurtle::Impl {
         std::uint32_t levels = 0;     // levels of non-linear modules laid out and resolved
     };
 
+    // Empties the list a chunk pass starts (a fill: a transfer-to-compute barrier must follow).
+    void startList(VkCommandBuffer cmd) const;
+    // Round r of pointer jumping: the workgroups that walk its list, then `pipeline` over them.
+    void dispatchRound(VkCommandBuffer cmd, const vk::ComputePipeline& pipeline,
+                       std::initializer_list<vk::BufferRange> buffers, std::span<const std::byte> push,
+                       const Run& run, std::uint32_t r) const;
     // Nearest strict ancestor with a hit or stop mark, into `result`: within chunks, then among the targets the
     // chunks point at (searchChunk -> searchJumps[0] -> [1] -> [0] ...; the last round writes [0]), then for all.
     void recordSearch(VkCommandBuffer cmd, const Run& run, std::uint32_t gate, std::uint32_t hit,
@@ -285,11 +296,11 @@ struct GpuTurtle::Impl {
                                                             // pointer and step out
         perModule += 4;                                     // polygons: commands
         // Chunk passes (step composition and four searches) and the jumps among their targets, counted as one
-        // target per chunk (the chunk boundary); every round reads each module's target flag.
+        // target per chunk (the chunk boundary) in every round, an upper bound: the lists drop targets once done.
         perModule += 2 * (step + 4) + 4 * 4 * 4;
-        perModule += rounds * 5 * 4 + rounds * (3 * (step + 4) + 4 * 3 * 4) / kTurtleChunk;
+        perModule += rounds * (3 * (step + 4) + 4 * (3 * 4 + 4) + 5 * 2 * 4) / kTurtleChunk;
         perModule += 4 * 4 * 3;                             // searches' final answers
-        perModule += rounds * 4 + 2 * 4;                    // levels: marks; counting and scattering
+        perModule += 4 + 2 * 4;                             // levels: marks; counting and scattering
         perModule += 4 + step + 4 + 2 * state;              // states: marks, step, anchor, anchor's and own state
         perModule += 4 * 4 + state + 4 * kOrganKinds;       // classify: commands, marks, polygon, cylinders; flags
         perModule += 3 * 4 * kOrganKinds;                   // scan of the flags
@@ -299,6 +310,7 @@ struct GpuTurtle::Impl {
         perModule += 2 * organ;                             // place: instance read and written
         std::uint64_t perNonlinear = 4 * 3 + step + 4 + 2 * state; // resolve: order, parent, command, step,
                                                                    // anchor, anchor's and own state
+        perNonlinear += rounds * (3 * 8 + 2 * 4);                   // levels' jumps: own, up, out; the lists
         return n * perModule + nonlinear * perNonlinear;
     }
 };
@@ -431,6 +443,21 @@ void GpuTurtle::Impl::dispatchPass(VkCommandBuffer cmd, const vk::ComputePipelin
     }
 }
 
+void GpuTurtle::Impl::startList(VkCommandBuffer cmd) const {
+    vkCmdFillBuffer(cmd, scratch.lists[0].handle(), 4 * kJumpListCount, 4, 0);
+}
+
+void GpuTurtle::Impl::dispatchRound(VkCommandBuffer cmd, const vk::ComputePipeline& pipeline,
+                                    std::initializer_list<vk::BufferRange> buffers, std::span<const std::byte> push,
+                                    const Run& run, std::uint32_t r) const {
+    const vk::Buffer& walked = scratch.lists[r % 2];
+    listGroups.dispatch(cmd, {walked, scratch.lists[1 - r % 2]}, run.push, 1);
+    vk::memoryBarrier(cmd, Hazard::ComputeToIndirect);
+    pipeline.dispatchIndirectBytes(cmd, std::span<const vk::BufferRange>(buffers.begin(), buffers.size()), push,
+                                   walked, 0);
+    vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+}
+
 void GpuTurtle::Impl::recordSearch(VkCommandBuffer cmd, const Run& run, std::uint32_t gate, std::uint32_t hit,
                                    std::uint32_t stop, const vk::Buffer& result) {
     const Scratch& b = scratch;
@@ -439,15 +466,18 @@ void GpuTurtle::Impl::recordSearch(VkCommandBuffer cmd, const Run& run, std::uin
     p.stopMask = stop;
     vk::memoryBarrier(cmd, Hazard::ComputeToTransfer);
     vkCmdFillBuffer(cmd, b.searchTargets.handle(), 0, VK_WHOLE_SIZE, 0);
+    startList(cmd);
     vk::memoryBarrier(cmd, Hazard::TransferToCompute);
-    dispatchPass(cmd, chunkSearch, {b.marks, b.parents, b.searchChunk, b.searchTargets, status}, p, run, gate,
-                 Over::Chunks);
+    dispatchPass(cmd, chunkSearch, {b.marks, b.parents, b.searchChunk, b.searchTargets, status, b.lists[0]}, p, run,
+                 gate, Over::Chunks);
     vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
     for (std::uint32_t r = 0; r < run.rounds; ++r) {
+        TurtlePush round = p;
+        round.first = r;
         const vk::Buffer& in = r == 0 ? b.searchChunk : b.searchJumps[r % 2 == 1 ? 0 : 1];
-        dispatchPass(cmd, jumpSearch, {b.marks, b.searchTargets, in, b.searchJumps[r % 2 == 1 ? 1 : 0], status}, p,
-                     run, gate, Over::Modules);
-        vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+        dispatchRound(cmd, jumpSearch,
+                      {b.marks, in, b.searchJumps[r % 2 == 1 ? 1 : 0], b.lists[r % 2], b.lists[1 - r % 2]},
+                      std::as_bytes(std::span(&round, 1)), run, r);
     }
     dispatchPass(cmd, searchFinish, {b.marks, b.searchChunk, b.searchJumps[0], result, status}, p, run, gate,
                  Over::Modules);
@@ -459,6 +489,7 @@ void GpuTurtle::Impl::recordSetup(VkCommandBuffer cmd, const Run& run) {
     vkCmdFillBuffer(cmd, present.handle(), 0, VK_WHOLE_SIZE, 0);
     vkCmdFillBuffer(cmd, b.triangleFirst.handle(), 0, VK_WHOLE_SIZE, kNoModule);
     vkCmdFillBuffer(cmd, b.stepTargets.handle(), 0, VK_WHOLE_SIZE, 0);
+    startList(cmd);
     vkCmdFillBuffer(cmd, b.counts.handle(), 0, VK_WHOLE_SIZE, 0);
     VkDeviceSize half = std::uint64_t(run.plants) * 16;
     if (run.plants > 0) {
@@ -505,16 +536,17 @@ void GpuTurtle::Impl::recordSetup(VkCommandBuffer cmd, const Run& run) {
 
 void GpuTurtle::Impl::recordComposition(VkCommandBuffer cmd, const Run& run) {
     const Scratch& b = scratch;
-    dispatchPass(cmd, chunkSteps, {b.marks, b.parents, b.steps[0], b.pointers[0], b.stepTargets, status},
-                 run.push, run, kGateModules, Over::Chunks);
+    dispatchPass(cmd, chunkSteps,
+                 {b.marks, b.parents, b.steps[0], b.pointers[0], b.stepTargets, status, b.lists[0]}, run.push, run,
+                 kGateModules, Over::Chunks);
     vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
     // The targets' entries alternate between the buffers; the other modules' stay in the first (chunks).
     for (std::uint32_t r = 0; r < run.rounds; ++r) {
         std::uint32_t from = r % 2, to = 1 - from;
-        dispatchPass(cmd, jumpSteps,
-                     {b.marks, b.stepTargets, b.steps[from], b.pointers[from], b.steps[to], b.pointers[to], status},
-                     run.push, run, kGateModules, Over::Modules);
-        vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+        dispatchRound(cmd, jumpSteps,
+                      {b.marks, b.steps[from], b.pointers[from], b.steps[to], b.pointers[to], b.lists[from],
+                       b.lists[to]},
+                      {}, run, r);
     }
     if (run.marked & kMarkStem) recordSearch(cmd, run, kGateStems, kMarkStem, kMarkStemBreak, b.stemBelow);
     if (run.marked & (kMarkCylinderStart | kMarkCylinderPoint)) {
@@ -522,15 +554,22 @@ void GpuTurtle::Impl::recordComposition(VkCommandBuffer cmd, const Run& run) {
         recordSearch(cmd, run, kGateCylinders, kMarkCylinderStart, 0, b.cylinderStarts);
     }
     if (run.marked & kMarkNonlinear) {
+        // Round 0 walks the modules and lists the non-linear ones; the later rounds walk the lists.
         for (std::uint32_t r = 0; r < run.rounds; ++r) {
             TurtlePush p = run.push;
             p.first = r;
-            dispatchPass(cmd, jumpLevels,
-                         {run.symbols, run.params, run.starts, commandTable, speciesTable, b.marks, b.parents,
-                          b.stepTargets, b.steps[0], b.pointers[0], b.steps[1], b.pointers[1], b.plantOf, b.states,
-                          b.levels[(r + 1) % 2], b.levels[r % 2], status},
-                         p, run, kGateNonlinear, Over::Modules);
-            vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+            const std::initializer_list<vk::BufferRange> buffers = {
+                run.symbols, run.params, run.starts, commandTable, speciesTable, b.marks, b.parents, b.stepTargets,
+                b.steps[0], b.pointers[0], b.steps[1], b.pointers[1], b.plantOf, b.states, b.levels[(r + 1) % 2],
+                b.levels[r % 2], status, b.lists[r % 2], b.lists[1 - r % 2]};
+            if (r == 0) {
+                listGroups.dispatch(cmd, {b.lists[0], b.lists[1]}, run.push, 1); // empties the list round 0 fills
+                vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+                dispatchPass(cmd, jumpLevels, buffers, p, run, kGateNonlinear, Over::Modules);
+                vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+            } else {
+                dispatchRound(cmd, jumpLevels, buffers, std::as_bytes(std::span(&p, 1)), run, r);
+            }
         }
         dispatchPass(cmd, levelCount, {b.marks, b.levels[0], b.counts, status}, run.push, run, kGateNonlinear,
                      Over::Modules);
@@ -641,6 +680,9 @@ void GpuTurtle::Impl::reserve(std::uint64_t n, std::uint64_t plants) {
     b.levels[0] = deviceBuffer(capacity, 8);
     b.levels[1] = deviceBuffer(capacity, 8);
     b.counts = deviceBuffer(capacity + 1, 4);
+    for (vk::Buffer& list : b.lists)
+        list = vk::Buffer(ctx, (kJumpListHeader + capacity) * 4, vk::MemoryUsage::DeviceLocal,
+                          VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT);
     b.flags = deviceBuffer(capacity * kOrganKinds, 4);
     b.offsets = deviceBuffer(capacity * kOrganKinds, 4);
     b.modules = capacity;

@@ -35,31 +35,51 @@ vec3 lightInPlantFrame(uint i, uint plant) {
     return normalize(turnIntoPlant(placements[plant], unpackLightDirection(particle(i, kParticleLightDirection))));
 }
 
-float grownValue(uint code, uint i, uint plant) {
-    float age = particle(i, kParticleAge);
+// What every value of a module's particle starts from, found once per module.
+struct Grown {
+    uint i, plant, id, row;
+    float age, living;
+    bool rowed;
+    bool lit;   // `light` holds the direction of most light
+    vec3 light; // in the plant's frame
+};
+
+Grown grownOf(uint i, uint plant) {
+    Grown g;
+    g.i = i;
+    g.plant = plant;
+    g.age = particle(i, kParticleAge);
     uint klass = floatBitsToUint(particle(i, kParticleClass));
     uint species = plant % pc.species;
-    bool rowed = klass < kGrowOrganKinds && hasRows(species, klass);
-    uint row = rowed ? stageRow(species, klass, particle(i, kParticleStage)) : 0u;
-    uint id = floatBitsToUint(particle(i, kParticleId));
-    float living = !rowed || alive(row, plant, id, age, particle(i, kParticleShade)) ? 1.0 : 0.0;
+    g.rowed = klass < kGrowOrganKinds && hasRows(species, klass);
+    g.row = g.rowed ? stageRow(species, klass, particle(i, kParticleStage)) : 0u;
+    g.id = floatBitsToUint(particle(i, kParticleId));
+    g.living = !g.rowed || alive(g.row, plant, g.id, g.age, particle(i, kParticleShade)) ? 1.0 : 0.0;
+    g.lit = false;
+    return g;
+}
+
+float grownValue(uint code, inout Grown g) {
+    uint i = g.i, plant = g.plant, row = g.row, id = g.id;
+    float age = g.age;
     if (code >= kGrownLeafColor) {
-        float lifeTime = rowed ? property(row, kLifeTime, plant, id) : 0.0;
+        float lifeTime = g.rowed ? property(row, kLifeTime, plant, id) : 0.0;
         uint shade = age < deriveTimes[plant]                                   ? kLeafYoungShade
                      : lifeTime > 0.0 && age >= (1.0 - kLeafOldAge) * lifeTime ? kLeafOldShade
                                                                                : 0u;
         return float(code - kGrownLeafColor + shade);
     }
     switch (code) {
-    case kGrownLength: return living * particle(i, kParticleElongation);
-    case kGrownWidth: return living * particle(i, kParticleBroadening);
+    case kGrownLength: return g.living * particle(i, kParticleElongation);
+    case kGrownWidth: return g.living * particle(i, kParticleBroadening);
     case kGrownLeafSize: // a leaf unfolds over its first DeriveTime
-        return living * kLeafModelSize * (1.0 + particle(i, kParticleElongation)) * min(age / deriveTimes[plant], 1.0);
+        return g.living * kLeafModelSize * (1.0 + particle(i, kParticleElongation)) *
+               min(age / deriveTimes[plant], 1.0);
     case kGrownPitch: return particle(i, kParticlePitch);
     case kGrownRoll: return particle(i, kParticleRoll);
     case kGrownUnroll: return -particle(i, kParticleRoll);
     case kGrownBend: {
-        if (!rowed) return 0.0;
+        if (!g.rowed) return 0.0;
         float growTime = property(row, kGrowTime, plant, id);
         float grown = growTime > 0.0 ? min(age / growTime, 1.0) : 1.0;
         float strength = max(property(row, kStrength, plant, id), kMinStrength);
@@ -68,15 +88,20 @@ float grownValue(uint code, uint i, uint plant) {
         return clamp(pc.gravity * bend, -kMaxBend, kMaxBend);
     }
     case kGrownLightBend: {
-        if (!rowed) return 0.0;
+        if (!g.rowed) return 0.0;
         float growTime = property(row, kGrowTime, plant, id);
         float grown = growTime > 0.0 ? min(age / growTime, 1.0) : 1.0;
         return clamp(property(row, kPhototropism, plant, id) * grown, -kMaxBend, kMaxBend);
     }
     case kGrownLightX:
     case kGrownLightY:
-    case kGrownLightZ: return lightInPlantFrame(i, plant)[code - kGrownLightX];
-    default: return living;
+    case kGrownLightZ:
+        if (!g.lit) {
+            g.light = lightInPlantFrame(i, plant);
+            g.lit = true;
+        }
+        return g.light[code - kGrownLightX];
+    default: return g.living;
     }
 }
 
@@ -106,9 +131,14 @@ void main() {
     if ((flags & kSpeciesGrowsSegments) != 0u) growSegment(i, plant, species);
     if ((flags & kSpeciesDrawsGrowth) == 0u) return;
     uint count = symbols[i] >> kSymbolBits;
+    Grown g;
+    bool found = false;
     for (uint k = 0u; k < count; ++k) {
         float code = kGrownValue - params[pc.stride * i + k];
         bool named = code < float(kGrownCodes) || (code >= float(kGrownLeafColor) && code < float(kGrownLeafColorEnd));
-        if (code >= 0.0 && named && code == floor(code)) params[pc.stride * i + k] = grownValue(uint(code), i, plant);
+        if (code < 0.0 || !named || code != floor(code)) continue;
+        if (!found) g = grownOf(i, plant);
+        found = true;
+        params[pc.stride * i + k] = grownValue(uint(code), g);
     }
 }

@@ -1,14 +1,19 @@
 // The light grid's voxels and what an organ puts in them (src/grow/light_grid.cpp does the same on the CPU).
 // Needs shared/organ_layout.h, shared/light_layout.h and a push block `pc` of LightGridPush.
 
-// The voxel holding point p, or -1 outside the grid.
-int voxelAt(vec3 p) {
-    vec3 cell = floor((p - pc.origin.xyz) / pc.origin.w);
+// The grid coordinates of the voxel holding point p, whole numbers, outside the grid or not.
+vec3 cellAt(vec3 p) { return floor((p - pc.origin.xyz) / pc.origin.w); }
+
+// The voxel of a cell, or -1 outside the grid.
+int voxelOfCell(vec3 cell) {
     if (any(lessThan(cell, vec3(0.0))) || cell.x >= float(pc.sizeX) || cell.y >= float(pc.sizeY) ||
         cell.z >= float(pc.sizeZ))
         return -1;
     return int((uint(cell.z) * pc.sizeY + uint(cell.y)) * pc.sizeX + uint(cell.x));
 }
+
+// The voxel holding point p, or -1 outside the grid.
+int voxelAt(vec3 p) { return voxelOfCell(cellAt(p)); }
 
 // Where an organ stands for the light: the middle of its segment or blade, its centre, its triangle's centroid.
 vec3 organCentre(OrganInstance o) {

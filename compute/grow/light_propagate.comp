@@ -2,7 +2,8 @@
 // through the leaf area of the voxels on the way (Beer–Lambert, compute/shared/light_layout.h), and the direction
 // most of it comes from. A ray steps a voxel's length at a time from the voxel's centre until it leaves the grid,
 // through the leaf area of the voxels it lands in; the voxel's own does not shade it (the organs in a voxel share
-// its light, as in Palubicki's shadow propagation); a voxel an obstacle fills stops it.
+// its light, as in Palubicki's shadow propagation); a voxel an obstacle fills stops it. Above the highest layer
+// with leaf area or an obstacle a rising ray meets nothing more, and stops.
 #version 450
 #extension GL_GOOGLE_include_directive : require
 #include "compute/shared/light_layout.h"
@@ -16,6 +17,7 @@ layout(set = 0, binding = 3, std430) writeonly buffer Light { vec4 light[]; }; /
 layout(set = 0, binding = 4, std430) readonly buffer Holders { uint holder[]; };
 // Each voxel's holder and splatted area, kept for the next drawing's gather.
 layout(set = 0, binding = 5, std430) writeonly buffer Room { uvec2 room[]; };
+layout(set = 0, binding = 6, std430) readonly buffer Top { uint top; }; // the splat's
 layout(push_constant) uniform Push { LightGridPush pc; };
 
 #include "compute/grow/light_grid.glsl"
@@ -35,13 +37,16 @@ void main() {
     vec3 centre = pc.origin.xyz + (vec3(cell) + 0.5) * side;
     float total = 0.0;
     vec3 most = vec3(0.0);
+    float filled = float(max(top, pc.obstacleTop)); // layers at or above it are empty
     for (uint d = 0u; d < pc.directions; ++d) {
         vec4 from = directions[d].towardAndIntensity;
         if (from.w <= 0.0) continue;
         float depth = 0.0;
         bool blocked = false;
         for (uint step = 1u; step < 4096u; ++step) {
-            int u = voxelAt(centre + from.xyz * (float(step) * side));
+            vec3 cell = cellAt(centre + from.xyz * (float(step) * side));
+            if (from.y > 0.0 && cell.y >= filled) break;
+            int u = voxelOfCell(cell);
             if (u < 0) break;
             if (obstacle[u] != 0u) {
                 blocked = true;

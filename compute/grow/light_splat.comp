@@ -12,6 +12,7 @@ layout(set = 0, binding = 1, std430) readonly buffer Table { OrganTable table; }
 layout(set = 0, binding = 2, std430) readonly buffer ShapeAreas { float shapeArea[]; };
 layout(set = 0, binding = 3, std430) buffer Occupancy { uint occupancy[]; };
 layout(set = 0, binding = 4, std430) buffer Holders { uint holder[]; };
+layout(set = 0, binding = 5, std430) buffer Top { uint top; }; // the layers up to the highest with leaf area
 layout(push_constant) uniform Push { LightGridPush pc; };
 
 #include "compute/grow/light_grid.glsl"
@@ -28,6 +29,8 @@ void main() {
     uint units = uint(clamp(organShadingArea(o, shape), 0.0, 256.0) * kAreaFixedPoint + 0.5);
     if (units == 0u) return;
     atomicAdd(occupancy[v], units);
+    uint layer = (uint(v) / pc.sizeX) % pc.sizeY;
+    if (top <= layer) atomicMax(top, layer + 1u);
     uint plant = o.plant + pc.firstPlant + 1u;
     uint was = atomicCompSwap(holder[v], kVoxelEmpty, plant);
     if (was != kVoxelEmpty && was != plant) atomicExchange(holder[v], kVoxelShared);

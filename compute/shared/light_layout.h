@@ -41,7 +41,11 @@ struct LightGridPush {
     uint firstPlant; // splat and gather: added to each organ's plant, the field's numbering of the batch's plants
     uint count;      // queries: the drawn modules
     uint stride;     // queries: parameters per module of the derived string
+    uint obstacleTop; // propagate: the layers up to the highest an obstacle fills (0: none)
 };
+
+// Light comes from above the horizon only, so a ray that has risen past the highest layer with leaf area or an
+// obstacle (the splat's `top` word, `obstacleTop`) meets nothing more: propagate stops it there.
 
 // cpfg's environment queries (`?E(...)`, Měch and Prusinkiewicz's open L-systems), answered by the grid where one
 // runs, from the light of the last drawing, as light_gather.comp gives organs theirs: after each drawing a module

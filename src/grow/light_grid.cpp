@@ -53,12 +53,18 @@ glm::vec3 LightGridSpec::centre(uint64_t voxel) const {
     return origin + (glm::vec3(float(x), float(y), float(z)) + 0.5f) * side;
 }
 
-int64_t LightGridSpec::voxelAt(glm::vec3 p) const {
-    const glm::vec3 cell = glm::floor((p - origin) / side);
+int64_t LightGridSpec::voxelOfCell(glm::vec3 cell) const {
     if (cell.x < 0.0f || cell.y < 0.0f || cell.z < 0.0f || cell.x >= float(size[0]) || cell.y >= float(size[1]) ||
         cell.z >= float(size[2]))
         return -1;
     return int64_t((uint64_t(cell.z) * size[1] + uint64_t(cell.y)) * size[0] + uint64_t(cell.x));
+}
+
+uint32_t LightGridSpec::layersUpTo(const std::vector<uint32_t>& filled) const {
+    uint32_t layers = 0;
+    for (uint64_t v = 0; v < std::min<uint64_t>(filled.size(), voxels()); ++v)
+        if (filled[v] != 0) layers = std::max(layers, uint32_t((v / size[0]) % size[1]) + 1);
+    return layers;
 }
 
 LightGridSpec lightGridOver(glm::vec3 low, glm::vec3 high, uint32_t plants) {
@@ -157,6 +163,8 @@ void LightGridCpu::splat(const turtle::Interpretation& organs, const std::vector
 void LightGridCpu::propagate() {
     const float side = spec_.side;
     const float perUnit = shared::kLeafExtinction / (shared::kAreaFixedPoint * side * side * side);
+    // Layers at or above it are empty (light_layout.h).
+    const auto filled = float(std::max(spec_.layersUpTo(occupancy_), spec_.layersUpTo(obstacles_)));
     for (uint64_t v = 0; v < spec_.voxels(); ++v) {
         room_[v] = glm::uvec2(holders_[v], occupancy_[v]);
         if (obstacles_[v] != 0) {
@@ -172,7 +180,9 @@ void LightGridCpu::propagate() {
             float depth = 0.0f;
             bool blocked = false;
             for (uint32_t step = 1; step < 4096; ++step) {
-                const int64_t u = spec_.voxelAt(centre + toward * (float(step) * side));
+                const glm::vec3 cell = spec_.cellAt(centre + toward * (float(step) * side));
+                if (toward.y > 0.0f && cell.y >= filled) break;
+                const int64_t u = spec_.voxelOfCell(cell);
                 if (u < 0) break;
                 if (obstacles_[size_t(u)] != 0) {
                     blocked = true;
@@ -239,6 +249,8 @@ GpuLightGrid::GpuLightGrid(const vk::Context& context, const LightGridSpec& spec
     std::vector<uint32_t> mask = obstacles;
     mask.resize(spec.voxels(), 0);
     obstacles_ = vk::deviceBufferWith(context, std::span<const uint32_t>(mask));
+    obstacleTop_ = spec.layersUpTo(mask);
+    top_ = vk::Buffer(context, 4, vk::MemoryUsage::DeviceLocal);
     shapeAreas_ = vk::deviceBufferWith(context, std::span<const float>(shapeAreas));
     occupancy_ = vk::Buffer(context, spec.voxels() * 4, vk::MemoryUsage::DeviceLocal);
     holders_ = vk::Buffer(context, spec.voxels() * 4, vk::MemoryUsage::DeviceLocal);
@@ -258,6 +270,7 @@ shared::LightGridPush GpuLightGrid::push() const {
     p.sizeY = spec_.size[1];
     p.sizeZ = spec_.size[2];
     p.directions = directionCount_;
+    p.obstacleTop = obstacleTop_;
     return p;
 }
 
@@ -265,6 +278,7 @@ void GpuLightGrid::recordClear(VkCommandBuffer cmd) {
     vk::memoryBarrier(cmd, vk::Hazard::AnyToTransfer);
     vkCmdFillBuffer(cmd, occupancy_.handle(), 0, VK_WHOLE_SIZE, 0);
     vkCmdFillBuffer(cmd, holders_.handle(), 0, VK_WHOLE_SIZE, shared::kVoxelEmpty);
+    vkCmdFillBuffer(cmd, top_.handle(), 0, VK_WHOLE_SIZE, 0);
     vk::memoryBarrier(cmd, vk::Hazard::TransferToAny);
 }
 
@@ -273,13 +287,13 @@ void GpuLightGrid::recordSplat(VkCommandBuffer cmd, const turtle::DeviceOrgans& 
     shared::LightGridPush p = push();
     p.firstPlant = firstPlant;
     vk::memoryBarrier(cmd, vk::Hazard::AnyToAny);
-    splat_.dispatch(cmd, {organs.instances, organs.table, shapeAreas_, occupancy_, holders_}, p,
+    splat_.dispatch(cmd, {organs.instances, organs.table, shapeAreas_, occupancy_, holders_, top_}, p,
                     splat_.groupsFor(organs.capacity));
 }
 
 void GpuLightGrid::recordPropagate(VkCommandBuffer cmd) {
     vk::memoryBarrier(cmd, vk::Hazard::AnyToAny);
-    propagate_.dispatch(cmd, {occupancy_, obstacles_, directions_, light_, holders_, room_}, push(),
+    propagate_.dispatch(cmd, {occupancy_, obstacles_, directions_, light_, holders_, room_, top_}, push(),
                         propagate_.groupsFor(spec_.voxels()));
     vk::memoryBarrier(cmd, vk::Hazard::ComputeToCompute);
 }

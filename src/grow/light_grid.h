@@ -34,8 +34,14 @@ struct LightGridSpec {
 
     uint64_t voxels() const { return uint64_t(size[0]) * size[1] * size[2]; }
     glm::vec3 centre(uint64_t voxel) const;
+    // The grid coordinates of the voxel holding p, whole numbers, outside the grid or not.
+    glm::vec3 cellAt(glm::vec3 p) const { return glm::floor((p - origin) / side); }
+    // The voxel of a cell, or -1 outside the grid.
+    int64_t voxelOfCell(glm::vec3 cell) const;
     // The voxel holding p, or -1 outside (compute/grow/light_grid.glsl's voxelAt).
-    int64_t voxelAt(glm::vec3 p) const;
+    int64_t voxelAt(glm::vec3 p) const { return voxelOfCell(cellAt(p)); }
+    // The layers up to the highest where `filled` (per voxel) is not 0.
+    uint32_t layersUpTo(const std::vector<uint32_t>& filled) const;
 };
 
 // Voxels the grid may have per plant, and at least and at most in all: the grid's cost stays proportional to the
@@ -128,6 +134,8 @@ private:
     uint32_t directionCount_;
     vk::ComputePipeline splat_, propagate_, gather_, queries_;
     vk::Buffer directions_, obstacles_, shapeAreas_, occupancy_, holders_, light_, room_;
+    vk::Buffer top_;       // the layers up to the highest with leaf area (the splat's)
+    uint32_t obstacleTop_ = 0; // the layers up to the highest an obstacle fills
     vk::Buffer none_; // bound where the gather has no origins or derived particles
 };
 

@@ -32,6 +32,7 @@
 #include "field/simulation.h"
 #include "turtle/interpretation.h"
 #include "vk/context.h"
+#include "vk/kernel_profile.h"
 
 namespace simeco::app {
 
@@ -53,6 +54,7 @@ struct RunArgs {
     std::string resume; // the state the field starts from; empty: the axioms
     std::optional<float> lightSlice;   // the height of the light grid's layer written as light.png
     std::optional<float> lightSection; // the depth of its vertical layer written as light-section.png
+    bool profile = false;              // print each stage's seconds and each kernel's GPU time at the end
 };
 
 // One line on a terminal, rewritten as the run goes.
@@ -202,6 +204,7 @@ void runRun(RunArgs args) {
     vk::ContextOptions contextOptions;
     contextOptions.device = args.device;
     vk::Context context(contextOptions);
+    if (args.profile) context.enableKernelProfile();
     field::Simulation simulation(args.simulation, &context);
     if (simulation.species().scene) applySceneLight(simulation.species().scene->light, settings);
     if (saved) {
@@ -212,6 +215,7 @@ void runRun(RunArgs args) {
         }
     }
     const double until = args.time > 0 ? args.time : simulation.grownBy();
+    double drawSeconds = 0;
     const uint64_t ticks = std::max<uint64_t>(1, uint64_t(std::ceil(until / args.simulation.dt - 1e-9)));
     if (ticks <= simulation.ticks())
         throw CommandLineError(fmt::format("the saved field is {:g} s old already: ask for a later --time",
@@ -238,7 +242,9 @@ void runRun(RunArgs args) {
         const bool last = k + 1 == ticks;
         if (last || (args.frames > 0 && (k + 1) % args.frames == 0)) {
             // Framed on the grown field, so that the camera stays put while the field grows.
+            const auto drawStart = std::chrono::steady_clock::now();
             draw::Frame frame = renderer.render(field::organParts(organs), framed, settings);
+            drawSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - drawStart).count();
             if (args.frames > 0) draw::writePng(outputs, out / fmt::format("frame-{:05}.png", k + 1), frame);
             if (last) {
                 draw::writeExr(outputs, out / "final.exr", frame);
@@ -261,6 +267,14 @@ void runRun(RunArgs args) {
                 args.simulation.file.c_str(), simulation.standingPlants(), simulation.time(),
                 static_cast<unsigned long long>(ticks - firstTick),
                 static_cast<unsigned long long>(simulation.modules()), seconds, out.string().c_str());
+    if (args.profile) {
+        const field::StageSeconds& s = simulation.stageSeconds();
+        std::fprintf(stderr,
+                     "seconds by stage: derive %.2f, grow %.2f, interpret %.2f, light %.2f, statistics %.2f, "
+                     "draw %.2f\n",
+                     s.derive, s.grow, s.interpret, s.light, s.statistics, drawSeconds);
+        std::fputs(context.kernelProfile()->table().c_str(), stderr);
+    }
 }
 
 } // namespace
@@ -304,6 +318,8 @@ void registerRunCommand(CLI::App& app, CommandContext& ctx) {
                     "also write light-section.png: the light grid's vertical layer at depth Z (z = Z) at the end, "
                     "seen from the front")
         ->check(CLI::Range(-1e6f, 1e6f));
+    cmd->add_flag("--profile", args->profile,
+                  "print the seconds of each stage and the GPU time of every kernel, summed over the run, to stderr");
     cmd->add_option("--resume", args->resume,
                     "go on from a state --save wrote (its scene and options; --time counts from the field's start)")
         ->excludes(scene)

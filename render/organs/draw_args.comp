@@ -37,8 +37,8 @@ void main() {
                                             push.vertexOffset[kind], count > 0u ? table.first[kind] : 0u);
     }
     if (kind == 0u) {
-        volumes.vertexCount = min(volumes.allocated, push.volumeCapacity);
-        volumes.instanceCount = 1u;
+        volumes.vertexCount = kVolumeCorners;
+        volumes.instanceCount = min(volumes.allocated, push.volumeCapacity) / kVolumeVerticesPerTriangle;
         volumes.firstVertex = 0u;
         volumes.firstInstance = 0u;
     }

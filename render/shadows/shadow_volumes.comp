@@ -1,10 +1,12 @@
 #version 460
 // Stencil shadow volumes for the sun (a directional light), built from the instance buffer: each triangle of
 // an organ's shadow hull that faces away from the sun becomes a closed volume of its own — the triangle as the
-// near cap, and its three edges extruded to the point at infinity opposite the sun, where the sides meet, so
-// no far cap is needed. A point whose way to the sun crosses such a triangle lies inside its volume, and the
-// z-fail stencil count of the overlapping volumes is nonzero exactly there (Carmack's reverse; Everitt and
-// Kilgard, "Practical and Robust Stenciled Shadow Volumes for Hardware-Accelerated Rendering", 2002).
+// near cap, its corners extruded away from the sun as the far cap, and a side per edge (draw_layout.h). Where the
+// ground receives the shadows they are extruded to a plane just below it, which bounds the pixels a volume covers
+// to those between the organ and its shadow; else to the point at infinity opposite the sun, where the sides
+// meet. A point whose way to the sun crosses such a triangle lies inside its volume, and the z-fail stencil count
+// of the overlapping volumes is nonzero exactly there (Carmack's reverse; Everitt and Kilgard, "Practical and
+// Robust Stenciled Shadow Volumes for Hardware-Accelerated Rendering", 2002).
 //
 // Closed hulls (stems, spheres) are inscribed in the drawn mesh and cast from their faces turned away from the
 // sun, so no lit surface lies on a near cap. Open surfaces (leaves, discs, polygon triangles) cast from every
@@ -52,6 +54,7 @@ void main() {
     OrganInstance o = instances[table.first[push.kind] + index];
     vec3 away = push.awayFromSun.xyz;
     vec4 infinity = vec4(away, 0.0);
+    bool capped = push.capped != 0u && away.y < 0.0;
 
     for (uint t = 0u; t < push.triangleCount; ++t) {
         OrganVertex va = hullVertex(o, 3u * t);
@@ -91,18 +94,17 @@ void main() {
         if (base + kVolumeVerticesPerTriangle > push.capacity) {
             continue;
         }
-        // Faces wound outwards: the near cap looks towards the sun, each side away from the triangle.
+        // Wound so that (a, c, b) looks towards the sun (shadow_volume.vert makes the faces of it). A triangle
+        // reaching below the plane goes to infinity whole.
         volumeVertices[base + 0u] = vec4(a, 1.0);
-        volumeVertices[base + 1u] = vec4(c, 1.0);
-        volumeVertices[base + 2u] = vec4(b, 1.0);
-        volumeVertices[base + 3u] = vec4(a, 1.0);
-        volumeVertices[base + 4u] = vec4(b, 1.0);
-        volumeVertices[base + 5u] = infinity;
-        volumeVertices[base + 6u] = vec4(b, 1.0);
-        volumeVertices[base + 7u] = vec4(c, 1.0);
-        volumeVertices[base + 8u] = infinity;
-        volumeVertices[base + 9u] = vec4(c, 1.0);
-        volumeVertices[base + 10u] = vec4(a, 1.0);
-        volumeVertices[base + 11u] = infinity;
+        volumeVertices[base + 1u] = vec4(b, 1.0);
+        volumeVertices[base + 2u] = vec4(c, 1.0);
+        bool toPlane = capped && min(a.y, min(b.y, c.y)) > push.capHeight;
+        vec3 corners[3] = vec3[](a, b, c);
+        for (uint k = 0u; k < 3u; ++k) {
+            vec3 p = corners[k];
+            volumeVertices[base + 3u + k] = toPlane ? vec4(p + away * ((p.y - push.capHeight) / -away.y), 1.0)
+                                                    : infinity;
+        }
     }
 }

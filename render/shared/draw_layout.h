@@ -41,9 +41,14 @@ SIMECO_CONST kStyleToon = 1u;
 SIMECO_CONST kDrawWorkgroupSize = 64u;
 SIMECO_CONST kOutlineTile = 8u;
 
-// Each shadow-casting triangle becomes a closed volume of 4 triangles (12 vertices): itself as the near cap
-// and one side per edge, extruded to the point at infinity opposite the sun.
-SIMECO_CONST kVolumeVerticesPerTriangle = 12u;
+// Each shadow-casting triangle becomes a closed volume: itself as the near cap, its corners extruded away from the
+// sun, one side per edge and the extruded corners as the far cap. Where the ground receives the shadows the corners
+// are extruded to a plane just below it (so a volume covers the pixels between an organ and its shadow only);
+// else to the point at infinity opposite the sun, where the sides meet and the far cap vanishes. A volume is
+// stored as its 6 corners (kVolumeVerticesPerTriangle: the near cap's, then the far cap's) and drawn as one
+// instance of 8 triangles (kVolumeCorners, shadow_volume.vert).
+SIMECO_CONST kVolumeVerticesPerTriangle = 6u;
+SIMECO_CONST kVolumeCorners = 24u;
 
 // A vertex of the organ meshes, in organ-local coordinates: x along the heading, y along left, z along up.
 // Stem vertices carry in position.w which ring they belong to (0 bottom, 1 top) and in normal.w 1 for the end
@@ -86,6 +91,7 @@ struct DrawArgsPush {
 // The indirect draw of the shadow volumes, preceded by the counter the volume kernel allocates with.
 struct VolumeDraw {
     uint allocated;  // vertices claimed by the volume kernel (may exceed the capacity: those were dropped)
+    // The rest: VkDrawIndirectCommand of kVolumeCorners vertices, an instance per volume.
     uint pad0;
     uint pad1;
     uint pad2;
@@ -106,8 +112,8 @@ struct ShadowVolumePush {
     int vertexOffset;
     uint capacity;       // vertices in the volume buffer
     uint closedHull;     // 1: a closed hull (casts from the faces turned away from the sun); 0: an open surface
-    uint pad0;
-    uint pad1;
+    uint capped;         // 1: extrude to the plane y = capHeight below the ground; 0: to infinity
+    float capHeight;
 };
 
 // toon_outline.comp: dark lines where depth or plant changes, over the copied frame buffers.

@@ -101,18 +101,20 @@ vk::UniquePipeline createPipeline(VkDevice device, VkPipelineLayout layout, VkRe
         stages.push_back(stage);
     }
 
-    // Organ meshes: position and normal (MeshVertex); volumes: one homogeneous position.
-    VkVertexInputBindingDescription binding{0, volume ? 16u : static_cast<std::uint32_t>(sizeof(shared::MeshVertex)),
-                                            VK_VERTEX_INPUT_RATE_VERTEX};
-    std::array<VkVertexInputAttributeDescription, 2> attributes{{
-        {0, 0, VK_FORMAT_R32G32B32A32_SFLOAT, 0},
-        {1, 0, VK_FORMAT_R32G32B32A32_SFLOAT, 16},
-    }};
+    // Organ meshes: position and normal (MeshVertex) per vertex; volumes: their six homogeneous corners per instance.
+    VkVertexInputBindingDescription binding{
+        0,
+        volume ? std::uint32_t(16 * shared::kVolumeVerticesPerTriangle)
+               : static_cast<std::uint32_t>(sizeof(shared::MeshVertex)),
+        volume ? VK_VERTEX_INPUT_RATE_INSTANCE : VK_VERTEX_INPUT_RATE_VERTEX};
+    std::array<VkVertexInputAttributeDescription, shared::kVolumeVerticesPerTriangle> attributes{};
+    for (std::uint32_t k = 0; k < attributes.size(); ++k)
+        attributes[k] = {k, 0, VK_FORMAT_R32G32B32A32_SFLOAT, 16 * k};
     VkPipelineVertexInputStateCreateInfo vertexInput{};
     vertexInput.sType = VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO;
     vertexInput.vertexBindingDescriptionCount = 1;
     vertexInput.pVertexBindingDescriptions = &binding;
-    vertexInput.vertexAttributeDescriptionCount = volume ? 1u : 2u;
+    vertexInput.vertexAttributeDescriptionCount = volume ? shared::kVolumeVerticesPerTriangle : 2u;
     vertexInput.pVertexAttributeDescriptions = attributes.data();
 
     VkPipelineInputAssemblyStateCreateInfo assembly{};

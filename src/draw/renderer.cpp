@@ -33,6 +33,8 @@ constexpr VkDeviceSize kDrawCommandSize = sizeof(VkDrawIndexedIndirectCommand);
 static_assert(kDrawCommandSize == 20);
 // Open surfaces cast from a copy pushed this fraction of their size away from the sun (see the kernel).
 constexpr float kOpenSurfaceShift = 0.02f;
+// Capped shadow volumes end this fraction of the ground's half side below it.
+constexpr float kVolumeCapDepth = 0.01f;
 // Line half-width of toon outlines per 600 pixels of image height, and what counts as a depth edge.
 constexpr float kOutlinePixelsPer600 = 1.0f;
 constexpr float kOutlineThreshold = 0.02f;
@@ -253,6 +255,11 @@ void Renderer::Resources::recordDrawInputs(VkCommandBuffer cmd, const std::vecto
                          VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
                      VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_UNIFORM_READ_BIT);
     if (shadows) {
+        // Where the ground receives the shadows, below everything drawn above it, the volumes end a little under
+        // it: far enough that their far caps stay behind it in depth, unless the camera looks from below.
+        const float groundHeight = frame.groundPlane.y;
+        const float capHeight = groundHeight - kVolumeCapDepth * frame.groundPlane.w;
+        const bool capped = setup.settings.ground && setup.camera.position.y > groundHeight;
         for (size_t p = 0; p < parts.size(); ++p) {
             for (std::uint32_t kind = 0; kind < kOrganKinds; ++kind) {
                 const shared::OrganTable& counts = setup.partCounts.empty() ? setup.counts : setup.partCounts[p];
@@ -270,6 +277,8 @@ void Renderer::Resources::recordDrawInputs(VkCommandBuffer cmd, const std::vecto
                 push.vertexOffset = hull.vertexOffset;
                 push.capacity = r.volumeCapacity;
                 push.closedHull = mesh.closedHull[kind] ? 1u : 0u;
+                push.capped = capped ? 1u : 0u;
+                push.capHeight = capHeight;
                 r.shadowVolumes.dispatch(cmd,
                                          {*parts[p].instances, *parts[p].table, r.meshes.vertices(), r.meshes.indices(),
                                           r.volumeDraw, r.volumeVertices},

@@ -77,7 +77,6 @@ float grownValue(uint code, inout Grown g) {
                min(age / deriveTimes[plant], 1.0);
     case kGrownPitch: return particle(i, kParticlePitch);
     case kGrownRoll: return particle(i, kParticleRoll);
-    case kGrownUnroll: return -particle(i, kParticleRoll);
     case kGrownBend: {
         if (!g.rowed) return 0.0;
         float growTime = property(row, kGrowTime, plant, id);

@@ -88,14 +88,13 @@ SIMECO_CONST kGrownWidth = 1u;    // its broadening
 SIMECO_CONST kGrownLeafSize = 2u; // the leaf model's size x (1 + its growth), unfolding over its first DeriveTime
 SIMECO_CONST kGrownPitch = 3u;    // its pitch, in radians
 SIMECO_CONST kGrownRoll = 4u;     // its roll, in radians
-SIMECO_CONST kGrownUnroll = 5u;   // minus its roll: the frame turns back after the tilt
-SIMECO_CONST kGrownBend = 6u;     // its tropism elasticity: geotropism and bending under its weight
-SIMECO_CONST kGrownAlive = 7u;    // 1 while it lives, 0 once its LifeTime has passed or it is shed in the shade
-SIMECO_CONST kGrownLightBend = 8u; // its phototropism: how far it turns toward the light (Phototropism x its growth)
-SIMECO_CONST kGrownLightX = 9u;    // the direction of most light at it, in its plant's own frame
-SIMECO_CONST kGrownLightY = 10u;
-SIMECO_CONST kGrownLightZ = 11u;
-SIMECO_CONST kGrownCodes = 12u;
+SIMECO_CONST kGrownBend = 5u;     // its tropism elasticity: geotropism and bending under its weight
+SIMECO_CONST kGrownAlive = 6u;    // 1 while it lives, 0 once its LifeTime has passed or it is shed in the shade
+SIMECO_CONST kGrownLightBend = 7u; // its phototropism: how far it turns toward the light (Phototropism x its growth)
+SIMECO_CONST kGrownLightX = 8u;    // the direction of most light at it, in its plant's own frame
+SIMECO_CONST kGrownLightY = 9u;
+SIMECO_CONST kGrownLightZ = 10u;
+SIMECO_CONST kGrownCodes = 11u;
 // A leaf's colour: code kGrownLeafColor + c names palette colour c while the leaf is mature, c + 1 while it is
 // young (unfolding, its first DeriveTime) and c + 2 once it is old (the last kLeafOldAge of its LifeTime).
 SIMECO_CONST kGrownLeafColor = 16u;

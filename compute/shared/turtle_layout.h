@@ -57,7 +57,9 @@ SIMECO_CONST kTurtleAlive = 45u;         // alive(a): SimEco's growth, scale wha
 SIMECO_CONST kTurtlePhototropism = 46u;  // phototropism(e,x,y,z): SimEco's growth, turn the heading toward the
                                          // direction (x,y,z) by e |H x d| about H x d (d the direction made unit)
 SIMECO_CONST kTurtleQueryEnvironment = 47u; // ?E(...): answered by the light grid where one runs (light_layout.h)
-SIMECO_CONST kTurtleCommands = 48u;
+SIMECO_CONST kTurtleTilt = 48u;          // tilt(p,r): SimEco's growth, rotu(r) rotr(p) rotu(-r) in one module: pitch
+                                         // by p radians about L turned by r about H
+SIMECO_CONST kTurtleCommands = 49u;
 
 // cpfg writes its predefined modules of several characters as separate modules: `@O(d)` is `@` then `O(d)`,
 // `@Gc(n)` is `@`, `G`, `c(n)`, `?P(x,y)` is `?` then `P(x,y)`, `~l(s)` is `~` then `l(s)` (productions can

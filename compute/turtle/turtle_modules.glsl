@@ -100,6 +100,12 @@ TurtleStep commandStep(uint command, uint i, TurtleSpecies sp) {
         break;
     case kTurtlePitchRadians: t = turnStep(0, 2, -paramAt(i, 0u, 0.0)); break;
     case kTurtleRollRadians: t = turnStep(2, 1, paramAt(i, 0u, 0.0)); break;
+    case kTurtleTilt: {
+        float roll = paramAt(i, 1u, 0.0);
+        t = composeSteps(composeSteps(turnStep(2, 1, roll), turnStep(0, 2, -paramAt(i, 0u, 0.0))),
+                         turnStep(2, 1, -roll));
+        break;
+    }
     case kTurtleWidthUp: t.widthColor.xy = addOrSet(i, sp.widthIncrement); break;
     case kTurtleWidthDown: t.widthColor.xy = addOrSet(i, -sp.widthIncrement); break;
     case kTurtleColorUp: t.widthColor.zw = addOrSet(i, sp.colorIncrement); break;

@@ -128,8 +128,6 @@ float grownValue(const TickSettings& ts, uint32_t code, const float* p, uint32_t
         return p[shared::kParticlePitch];
     case shared::kGrownRoll:
         return p[shared::kParticleRoll];
-    case shared::kGrownUnroll:
-        return -p[shared::kParticleRoll];
     case shared::kGrownBend: {
         if (!row) return 0.0f;
         const float growTime = property(ts, row, plant, id, shared::kGrowTime);

@@ -235,9 +235,7 @@ private:
                 out.push_back(module("tropism", {code(shared::kGrownBend)}, loc));
             if (anySet(organ, &ir::EcoStage::lifeTime) || anySet(organ, &ir::EcoStage::shadeTime))
                 out.push_back(module("alive", {code(shared::kGrownAlive)}, loc));
-            out.push_back(module("rotu", {code(shared::kGrownRoll)}, loc));
-            out.push_back(module("rotr", {code(shared::kGrownPitch)}, loc));
-            out.push_back(module("rotu", {code(shared::kGrownUnroll)}, loc));
+            out.push_back(module("tilt", {code(shared::kGrownPitch), code(shared::kGrownRoll)}, loc));
             if (anySet(organ, &ir::EcoStage::phototropism))
                 out.push_back(module("phototropism",
                                      {code(shared::kGrownLightBend), code(shared::kGrownLightX),

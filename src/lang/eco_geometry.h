@@ -30,7 +30,7 @@ namespace simeco::lang {
 // geotropism and weight, turns toward the light by its phototropism, and is shed with the rest of its branch once
 // its LifeTime has passed or it has stood its ShadeTime in deep shade; a leaf's colour follows its age (young,
 // mature, old):
-//   stem S, root R:  ;(colour) !(width) [tropism(bend)] [alive(a)] rotu(roll) rotr(pitch) rotu(-roll)
+//   stem S, root R:  ;(colour) !(width) [tropism(bend)] [alive(a)] tilt(pitch, roll)
 //                    [phototropism(e, light x, y, z)] G(length)
 // `assets`: the models and textures the renderer holds (lang/eco_assets.h): a leaf, flower or fruit of a stage whose
 // Model is among them is drawn with it, others with the built-in blade, blossom or sphere; a stage whose Texture is

@@ -21,6 +21,7 @@ uint32_t plainCommand(std::string_view name) {
         {".", kTurtlePolygonVertex}, {"rotx", kTurtleRotateWorldX}, {"roty", kTurtleRotateWorldY},
         {"rotz", kTurtleRotateWorldZ}, {"rotr", kTurtlePitchRadians}, {"rotu", kTurtleRollRadians},
         {"tropism", kTurtleTropism}, {"alive", kTurtleAlive}, {"phototropism", kTurtlePhototropism},
+        {"tilt", kTurtleTilt},
     };
     auto it = kCommands.find(name);
     return it == kCommands.end() ? kTurtleNone : it->second;

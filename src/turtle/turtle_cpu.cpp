@@ -196,6 +196,11 @@ private:
         case kTurtleRollLevel: rollLevel(f); break;
         case kTurtlePitchRadians: turnToward(f.heading, f.up, -param(i, 0, 0)); break;
         case kTurtleRollRadians: turnToward(f.up, f.left, param(i, 0, 0)); break;
+        case kTurtleTilt:
+            turnToward(f.up, f.left, param(i, 1, 0));
+            turnToward(f.heading, f.up, -param(i, 0, 0));
+            turnToward(f.up, f.left, -param(i, 1, 0));
+            break;
         case kTurtleRotateWorldX: rotateFrame(f, {1, 0, 0}, param(i, 0, 0)); break;
         case kTurtleRotateWorldY: rotateFrame(f, {0, 1, 0}, param(i, 0, 0)); break;
         case kTurtleRotateWorldZ: rotateFrame(f, {0, 0, 1}, param(i, 0, 0)); break;

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include <fmt/format.h>
@@ -13,7 +14,10 @@
 #include "app/render_options.h"
 #include "draw/image_writers.h"
 #include "draw/renderer.h"
+#include "lang/eco_parser.h"
 #include "field/field_parts.h"
+#include "field/light_view.h"
+#include "field/plant_statistics.h"
 #include "field/simulation.h"
 #include "turtle/turtle_gpu.h"
 #include "vk/context.h"
@@ -21,6 +25,10 @@
 namespace simeco::app {
 
 namespace {
+
+bool hasExtension(const std::string& path, const char* ext) {
+    return std::filesystem::path(path).extension() == ext;
+}
 
 struct RenderArgs {
     field::FieldSource source;
@@ -30,10 +38,30 @@ struct RenderArgs {
     std::string camera;
     std::string style = "lit";
     std::string shadows = "volume";
+    std::optional<float> lightSlice;   // the light grid's layer at this height, written beside the image
+    std::optional<float> lightSection; // its vertical layer at this depth, written beside the image
+    bool lightVolume = false;          // the grid's shade drawn among the plants
 };
 
-bool hasExtension(const std::string& path, const char* ext) {
-    return std::filesystem::path(path).extension() == ext;
+// The light grid of the field drawn: a scene's sun, sky and obstacles, else the defaults.
+field::LightVolume fieldLight(const vk::Context& context, const field::Field& field,
+                              const std::vector<const turtle::DeviceOrgans*>& organs, const draw::Bounds& bounds,
+                              const std::string& file) {
+    ir::EcoLight light;
+    std::vector<ir::EcoObstacle> obstacles;
+    if (hasExtension(file, ".eco")) {
+        const ir::EcoScene scene = lang::parseEcoFile(file);
+        light = scene.light;
+        obstacles = scene.obstacles;
+    }
+    return field::lightOfOrgans(context, organs, bounds, field.plants, light, obstacles,
+                                field::leafShapeAreas(field.assets.models));
+}
+
+// The image beside `output` whose name ends in `suffix` in place of the output's extension.
+std::string besideOutput(const std::string& output, const std::string& suffix) {
+    std::filesystem::path p(output);
+    return (p.parent_path() / (p.stem().string() + suffix)).string();
 }
 
 void runRender(const RenderArgs& args) {
@@ -56,9 +84,21 @@ void runRender(const RenderArgs& args) {
     if (extent.organs == 0) throw std::runtime_error(fmt::format("{}: the plants draw nothing", source.file));
 
     draw::Renderer renderer(context, field.assets);
-    draw::Frame frame = renderer.render(field::organParts(organs), extent.bounds, settings);
-    // Both files appear, or neither.
+    const bool light = args.lightSlice || args.lightSection || args.lightVolume;
+    const field::LightVolume volume =
+        light ? fieldLight(context, field, organs, extent.bounds, source.file) : field::LightVolume{};
+    draw::Frame frame =
+        args.lightVolume
+            ? field::renderWithShade(context, renderer, organs, volume, field.plants, extent.bounds, settings)
+            : renderer.render(field::organParts(organs), extent.bounds, settings);
+    // Every file appears, or none.
     draw::OutputBatch outputs;
+    if (args.lightSlice)
+        draw::writePng(outputs, besideOutput(args.output, "-light.png"),
+                       field::lightSliceImage(field::lightSlice(volume, *args.lightSlice)));
+    if (args.lightSection)
+        draw::writePng(outputs, besideOutput(args.output, "-light-section.png"),
+                       field::lightSliceImage(field::lightSection(volume, *args.lightSection)));
     if (exr) draw::writeExr(outputs, args.output, frame);
     else draw::writePng(outputs, args.output, frame);
     if (!args.png.empty()) draw::writePng(outputs, args.png, frame);
@@ -82,6 +122,14 @@ void registerRenderCommand(CLI::App& app, CommandContext& ctx) {
     cmd->add_option("--camera", args->camera, "azimuth,elevation[,distance] in degrees (default: framed on the plants)");
     cmd->add_option("--style", args->style, "lit or toon")->check(CLI::IsMember({"lit", "toon"}));
     cmd->add_option("--shadows", args->shadows, "volume or none")->check(CLI::IsMember({"volume", "none"}));
+    cmd->add_option("--light-slice", args->lightSlice,
+                    "also write OUTPUT-light.png: the light grid's layer at height H, seen from above");
+    cmd->add_option("--light-section", args->lightSection,
+                    "also write OUTPUT-light-section.png: the light grid's vertical layer at depth Z, seen from the "
+                    "front");
+    cmd->add_flag("--light-volume", args->lightVolume,
+                  "draw the light grid's shade among the plants: a sphere in each shaded voxel, larger and darker "
+                  "the deeper its shade (no shadow volumes)");
     cmd->callback([args, &ctx] { ctx.exitCode = runReportingErrors([&] { runRender(*args); }); });
 }
 

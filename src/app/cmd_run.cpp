@@ -54,6 +54,7 @@ struct RunArgs {
     std::string resume; // the state the field starts from; empty: the axioms
     std::optional<float> lightSlice;   // the height of the light grid's layer written as light.png
     std::optional<float> lightSection; // the depth of its vertical layer written as light-section.png
+    bool lightVolume = false;          // light-volume.png: the last frame with the grid's shade drawn in 3D
     bool profile = false;              // print each stage's seconds and each kernel's GPU time at the end
 };
 
@@ -132,31 +133,6 @@ std::string plantsTable(const field::Simulation& simulation, const std::vector<s
     return csv;
 }
 
-// A layer of the light grid as an image (a slice seen from above: x to the right, z down; a section seen from the
-// front: x to the right, up up), each voxel a square of pixels: dark blue where no light comes, through green, to
-// pale yellow for the light in the open.
-draw::Frame lightSliceImage(const field::LightSlice& slice) {
-    const uint32_t scale = std::max(1u, std::min(16u, 1024u / std::max(slice.width, slice.rows)));
-    draw::Frame frame;
-    frame.width = slice.width * scale;
-    frame.height = slice.rows * scale;
-    frame.rgba.resize(frame.pixelCount() * 4);
-    frame.depth.assign(frame.pixelCount(), 0.0f);
-    frame.plant.assign(frame.pixelCount(), draw::Frame::kNoId);
-    frame.organ.assign(frame.pixelCount(), draw::Frame::kNoId);
-    const glm::vec3 ramp[] = {{0.01f, 0.01f, 0.08f}, {0.02f, 0.25f, 0.08f}, {1.0f, 0.95f, 0.55f}};
-    for (uint32_t y = 0; y < frame.height; ++y)
-        for (uint32_t x = 0; x < frame.width; ++x) {
-            const float t = std::clamp(slice.light[size_t(y / scale) * slice.width + x / scale] /
-                                           std::max(slice.open, 1e-6f), 0.0f, 1.0f);
-            const glm::vec3 c =
-                t < 0.5f ? glm::mix(ramp[0], ramp[1], 2.0f * t) : glm::mix(ramp[1], ramp[2], 2.0f * t - 1.0f);
-            float* p = &frame.rgba[frame.index(x, y) * 4];
-            p[0] = c.r, p[1] = c.g, p[2] = c.b, p[3] = 1.0f;
-        }
-    return frame;
-}
-
 void writeText(draw::OutputBatch& outputs, const fs::path& path, const std::string& text) {
     outputs.write(path, [&](const fs::path& temporary) {
         std::ofstream file(temporary, std::ios::binary);
@@ -232,9 +208,10 @@ void runRun(RunArgs args) {
     Progress progress(until, args.simulation.dt);
     const auto start = std::chrono::steady_clock::now();
     const uint64_t firstTick = simulation.ticks();
+    std::vector<const turtle::DeviceOrgans*> organs;
     for (uint64_t k = firstTick; k < ticks; ++k) {
         const field::TickReport report = simulation.tick();
-        const std::vector<const turtle::DeviceOrgans*> organs = simulation.interpretParts();
+        organs = simulation.interpretParts();
         perPlant = simulation.statistics();
         stats += statsLine(simulation, report, perPlant);
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -252,11 +229,19 @@ void runRun(RunArgs args) {
             }
         }
     }
-    if (args.lightSlice)
-        draw::writePng(outputs, out / "light.png", lightSliceImage(simulation.lightSlice(*args.lightSlice)));
-    if (args.lightSection)
-        draw::writePng(outputs, out / "light-section.png",
-                       lightSliceImage(simulation.lightSection(*args.lightSection)));
+    if (args.lightSlice || args.lightSection || args.lightVolume) {
+        const field::LightVolume light = simulation.lightVolume();
+        if (args.lightSlice)
+            draw::writePng(outputs, out / "light.png",
+                           field::lightSliceImage(field::lightSlice(light, *args.lightSlice)));
+        if (args.lightSection)
+            draw::writePng(outputs, out / "light-section.png",
+                           field::lightSliceImage(field::lightSection(light, *args.lightSection)));
+        if (args.lightVolume)
+            draw::writePng(outputs, out / "light-volume.png",
+                           field::renderWithShade(context, renderer, organs, light, simulation.plants() + 1, framed,
+                                                  settings));
+    }
     writeText(outputs, out / "stats.jsonl", stats);
     writeText(outputs, out / "plants.csv", plantsTable(simulation, perPlant));
     if (!args.save.empty())
@@ -314,6 +299,8 @@ void registerRunCommand(CLI::App& app, CommandContext& ctx) {
     cmd->add_option("--light-slice", args->lightSlice,
                     "also write light.png: the light grid's layer at height H at the end, seen from above")
         ->check(CLI::Range(-1e6f, 1e6f));
+    cmd->add_flag("--light-volume", args->lightVolume,
+                  "also write light-volume.png: the last frame with the light grid's shade drawn among the plants");
     cmd->add_option("--light-section", args->lightSection,
                     "also write light-section.png: the light grid's vertical layer at depth Z (z = Z) at the end, "
                     "seen from the front")

@@ -13,7 +13,6 @@
 #include "compute/shared/turtle_layout.h"
 #include "compute/shared/turtle_state_layout.h"
 #include "cpu/derive.h"
-#include "draw/render_settings.h"
 #include "field/field_parts.h"
 #include "field/field_placement.h"
 #include "field/grown_plants.h"
@@ -46,9 +45,6 @@ double secondsSince(Clock::time_point start) { return std::chrono::duration<doub
 // half a binding), the other half of the binding left to plants that grow larger than the one grown before the
 // field.
 constexpr uint64_t kBatchDrawnModules = kBatchModules;
-
-// The sky's light in the light grid, as a share of the sun's: about a clear day's diffuse light.
-constexpr float kSkyShare = 0.3f;
 
 // The random streams of batch b: the field's seed for the first, another for each other, so that plants at the
 // same place in two batches differ.
@@ -120,8 +116,6 @@ struct Simulation::Impl {
     // module's derived one in `origins`), answered from the last drawing's light grid into the derived strings.
     void answerQueriesOnHost(const stream::ModuleString& field, const std::vector<size_t>& drawnStarts,
                              const std::vector<std::vector<uint32_t>>& origins);
-    // The light grid's layer across `axis` (1: a horizontal slice, rows along z; 2: a vertical section, rows down y).
-    LightSlice lightLayer(int axis, float coordinate) const;
     void prepareLight(const draw::Bounds& extent, uint32_t standing);
 
     grow::TickSettings settings(const Batch& b, uint32_t tick) const {
@@ -321,15 +315,7 @@ void Simulation::resume(const SimulationState& state) {
 }
 
 void Simulation::Impl::chooseLight() {
-    const ir::EcoLight light = g.scene ? g.scene->light : ir::EcoLight{};
-    // The sun the renderer draws with where the scene sets none.
-    const glm::vec3 sun = light.sunDirection ? glm::vec3((*light.sunDirection)[0], (*light.sunDirection)[1],
-                                                         (*light.sunDirection)[2])
-                                             : draw::RenderSettings{}.sunDirection;
-    lightFrom = grow::lightDirections(sun, light.sunIntensity.value_or(1.0f),
-                                      kSkyShare * light.skyLight.value_or(1.0f));
-    openLight = 0.0f;
-    for (const shared::LightDirection& d : lightFrom) openLight += d.towardAndIntensity.w;
+    lightFrom = sceneLightDirections(g.scene ? g.scene->light : ir::EcoLight{}, openLight);
 }
 
 void Simulation::Impl::prepareLight(const draw::Bounds& extent, uint32_t standing) {
@@ -524,34 +510,15 @@ std::string Simulation::speciesName(uint32_t plant) const {
     return std::filesystem::path(m.options.file).stem().string();
 }
 
-LightSlice Simulation::lightSlice(float height) const {
-    return impl_->lightLayer(1, height);
-}
-
-LightSlice Simulation::lightSection(float depth) const {
-    return impl_->lightLayer(2, depth);
-}
-
-LightSlice Simulation::Impl::lightLayer(int axis, float coordinate) const {
-    LightSlice slice;
-    if (!lightGpu && !lightCpu) return slice;
-    const grow::LightGridSpec& spec = lightGpu ? lightGpu->spec() : lightCpu->spec();
-    const std::vector<glm::vec4> light =
-        lightGpu ? vk::downloadVector<glm::vec4>(*context, lightGpu->light(), spec.voxels()) : lightCpu->light();
-    const auto k = size_t(axis);
-    const auto layer = uint32_t(std::clamp(std::floor((coordinate - spec.origin[int(axis)]) / spec.side), 0.0f,
-                                           float(spec.size[k] - 1)));
-    slice.at = spec.origin[int(axis)] + (float(layer) + 0.5f) * spec.side;
-    slice.open = openLight;
-    slice.width = spec.size[0];
-    slice.rows = axis == 1 ? spec.size[2] : spec.size[1];
-    auto voxel = [&](uint32_t x, uint32_t y, uint32_t z) {
-        return light[(size_t(z) * spec.size[1] + y) * spec.size[0] + x].w;
-    };
-    for (uint32_t r = 0; r < slice.rows; ++r)
-        for (uint32_t x = 0; x < slice.width; ++x)
-            slice.light.push_back(axis == 1 ? voxel(x, layer, r) : voxel(x, slice.rows - 1 - r, layer));
-    return slice;
+LightVolume Simulation::lightVolume() const {
+    const Impl& m = *impl_;
+    LightVolume volume;
+    if (!m.lightGpu && !m.lightCpu) return volume;
+    volume.spec = m.lightGpu ? m.lightGpu->spec() : m.lightCpu->spec();
+    volume.light = m.lightGpu ? vk::downloadVector<glm::vec4>(*m.context, m.lightGpu->light(), volume.spec.voxels())
+                              : m.lightCpu->light();
+    volume.open = m.openLight;
+    return volume;
 }
 
 draw::Bounds Simulation::grownBounds() const {

@@ -15,6 +15,7 @@
 #include "draw/bounds.h"
 #include "draw/renderer.h"
 #include "field/backend.h"
+#include "field/light_view.h"
 #include "grow/growing_species.h"
 #include "stream/derive_options.h"
 #include "stream/stepped_state.h"
@@ -52,16 +53,6 @@ struct TickReport {
 
 // Wall-clock seconds each stage took, summed since the field began. Every stage's call waits for the device, so on
 // a CPU device this is the device's time and on a GPU it includes the submissions' overhead.
-// One horizontal layer of the light grid (docs/SCENES.md), seen from above: light[z * width + x] at voxel column
-// (x, z), x along the world's x and z along its z; `open` is the light in the open.
-// A layer of the light grid: `rows` of `width` voxels' light, the first row the one an image shows at its top.
-struct LightSlice {
-    uint32_t width = 0, rows = 0;
-    float at = 0; // the layer's centres' height (a slice) or depth (a section)
-    float open = 0;
-    std::vector<float> light;
-};
-
 struct StageSeconds {
     double derive = 0;     // the due plants' derivation steps
     double grow = 0;       // the particles' tick
@@ -108,10 +99,8 @@ public:
     // Where the field will reach when grown, as one plant of each species grows on the CPU (a plant's own random
     // draws may take it a little further): what a camera that stays put while the field grows frames.
     draw::Bounds grownBounds() const;
-    // The light grid's layer at `height` (clamped to the grid), as the last drawing left it; empty before one.
-    LightSlice lightSlice(float height) const;
-    // The light grid's vertical layer at z = `depth` seen from the front (-z): x across, the top layer first.
-    LightSlice lightSection(float depth) const;
+    // The light grid as the last drawing left it (read back from the device); empty before one.
+    LightVolume lightVolume() const;
     const grow::GrowingSpecies& species() const;
     const StageSeconds& stageSeconds() const;
     // The name of a plant's species: its scene plant's, else the grammar file's.

@@ -113,6 +113,22 @@ check "devices lists Vulkan devices ($(head -c 300 "$work/devices.txt"))" $statu
 status=$?
 check "render writes the EXR and the PNG of a field ($(head -c 300 "$work/render.txt"))" $status
 
+# The light grid of the field drawn: a layer seen from above and one from the front beside the image, the shade in it.
+"$simeco" render "$source_dir/grammars/abop/fig1.24d.l" -n 4 --plants 4 --size 160x120 -o "$work/lit.png" \
+  --light-slice 1 --light-section 0 --light-volume >"$work/lit.txt" 2>&1
+python3 - "$work" <<'PY'
+import struct, sys
+def png_size(name):
+    data = open(f"{sys.argv[1]}/{name}", "rb").read(24)
+    assert data[:8] == b"\x89PNG\r\n\x1a\n", f"{name} is a PNG"
+    return struct.unpack(">II", data[16:24])
+assert png_size("lit.png") == (160, 120)
+(slice_w, slice_h), (section_w, section_h) = png_size("lit-light.png"), png_size("lit-light-section.png")
+assert slice_w == section_w and slice_h > 0 and section_h > 0, (slice_w, slice_h, section_w, section_h)
+PY
+check "render --light-slice, --light-section and --light-volume write the grid's views ($(head -c 300 "$work/lit.txt"))" \
+  $?
+
 "$simeco" render "$source_dir/grammars/abop/fig1.24d.l" --size 0x5 -o "$work/bad.png" >/dev/null 2>&1
 code=$?
 [ $code -ne 0 ] && [ ! -e "$work/bad.png" ] && [ -z "$(ls "$work" | grep -i 'bad.*tmp')" ]

@@ -1,0 +1,36 @@
+// cpfg's drawn geometry as its rayshade exporter writes it (`cpfg -ray`, the corpus' geometry/*.ray.xz): the
+// segments, spheres, discs and polygons a model draws, in the order cpfg drew them.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+namespace simeco::test {
+
+// A drawn segment, `F` or `G`: from the turtle's position before the move to after it; the radius at each end
+// (equal unless cpfg tapered it: a `cone`).
+struct RaySegment {
+    glm::vec3 from{0.0f}, to{0.0f};
+    float fromRadius = 0.0f, toRadius = 0.0f;
+};
+
+struct RaySphere {
+    glm::vec3 centre{0.0f};
+    float radius = 0.0f;
+};
+
+struct RayGeometry {
+    std::vector<RaySegment> segments;
+    std::vector<RaySphere> spheres;
+    size_t discs = 0, polygons = 0, triangles = 0, objects = 0; // counted, not compared yet
+    glm::vec3 min{1e30f}, max{-1e30f};                          // of every point read
+    float size() const;                                         // the largest side of the box
+};
+
+// Reads an xz-compressed .ray file; throws std::runtime_error where it cannot.
+RayGeometry readRayGeometry(const std::filesystem::path& xzFile);
+
+} // namespace simeco::test

@@ -1,0 +1,172 @@
+// Conformance with cpfg's drawing: every `exact` model of the corpus interpreted by the reference turtle and its
+// segments compared, one by one in the order drawn, with the geometry cpfg exported for it (geometry/*.ray.xz):
+// the ends within 1e-5 of the plant's size, the radii too. The models that match are listed, so that a change
+// that breaks one fails, and the count of those that do is printed with the first difference of each other.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+#include <glm/geometric.hpp>
+
+#include "compute/shared/organ_layout.h"
+#include "cpu/derive.h"
+#include "lang/load_grammar.h"
+#include "ray_geometry.h"
+#include "turtle/turtle_commands.h"
+#include "turtle/turtle_cpu.h"
+#include "turtle/turtle_settings.h"
+
+namespace simeco::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kCorpus = fs::path(SIMECO_SHARED_DIR) / "corpus" / "cpfg-vlab";
+
+// The ends and radii of a segment may differ by this share of the plant's size.
+constexpr float kTolerance = 1e-5f;
+
+struct ExactModel {
+    std::string folder, file;
+};
+
+std::vector<ExactModel> exactModels() {
+    std::vector<ExactModel> models;
+    std::ifstream in(kCorpus / "MANIFEST.tsv");
+    std::string line;
+    std::getline(in, line); // header
+    while (std::getline(in, line)) {
+        std::vector<std::string> cells;
+        std::stringstream row(line);
+        for (std::string cell; std::getline(row, cell, '\t');) cells.push_back(cell);
+        if (cells.size() >= 5 && cells[4] == "exact") models.push_back({cells[0], cells[1]});
+    }
+    return models;
+}
+
+// The segments simeco's reference turtle draws for the model, as cpfg's exporter writes them: those of squared
+// length above 1e-5 and positive width.
+std::vector<RaySegment> simecoSegments(const fs::path& file) {
+    const ir::Grammar g = lang::loadGrammarFile(file.string());
+    stream::DeriveOptions options;
+    options.homomorphism = true;
+    const stream::ModuleString string = cpu::deriveCpu(g, options).string;
+    const turtle::Interpretation drawn =
+        turtle::interpretCpu(string, turtle::turtleCommands(g.alphabet), {turtle::turtleSettings(g, g.alphabet)});
+    std::vector<RaySegment> segments;
+    for (uint32_t k = 0; k < drawn.count[shared::kOrganStem]; ++k) {
+        const shared::OrganInstance& o = drawn.organs[drawn.first[shared::kOrganStem] + k];
+        const glm::vec3 from(o.position.x, o.position.y, o.position.z);
+        const glm::vec3 to = from + glm::vec3(o.heading.x, o.heading.y, o.heading.z) * o.position.w;
+        if (glm::dot(to - from, to - from) <= 1e-5f || o.heading.w <= 0.0f) continue;
+        segments.push_back({from, to, o.heading.w, o.up.w});
+    }
+    return segments;
+}
+
+// The first difference between cpfg's segments and simeco's, or nothing.
+std::string firstDifference(const RayGeometry& cpfg, const std::vector<RaySegment>& got) {
+    if (cpfg.segments.size() != got.size())
+        return fmt::format("{} segments, cpfg draws {}", got.size(), cpfg.segments.size());
+    const float tolerance = kTolerance * std::max(cpfg.size(), 1e-6f);
+    for (size_t k = 0; k < got.size(); ++k) {
+        const RaySegment &a = cpfg.segments[k], &b = got[k];
+        if (glm::distance(a.from, b.from) > tolerance || glm::distance(a.to, b.to) > tolerance)
+            return fmt::format("segment {}: ({:.4g},{:.4g},{:.4g})-({:.4g},{:.4g},{:.4g}), cpfg's "
+                               "({:.4g},{:.4g},{:.4g})-({:.4g},{:.4g},{:.4g})",
+                               k, b.from.x, b.from.y, b.from.z, b.to.x, b.to.y, b.to.z, a.from.x, a.from.y, a.from.z,
+                               a.to.x, a.to.y, a.to.z);
+        if (std::abs(a.fromRadius - b.fromRadius) > tolerance || std::abs(a.toRadius - b.toRadius) > tolerance)
+            return fmt::format("segment {}: radius {:.4g} to {:.4g}, cpfg's {:.4g} to {:.4g}", k, b.fromRadius,
+                               b.toRadius, a.fromRadius, a.toRadius);
+    }
+    return {};
+}
+
+// The exact models whose every segment matches cpfg's today: a change that breaks one of them fails here.
+const std::set<std::string> kMatching = {
+    "01-Introduction/01-quadratic-Koch",
+    "01-Introduction/02-snowflake-exercise",
+    "01-Introduction/03-snowflake",
+    "01-Introduction/04-compound",
+    "01-Introduction/05-compound-homo",
+    "01-Introduction/06-compound-param",
+    "01-Introduction/07-fractal-ferns",
+    "01-Introduction/08-continuous-time",
+    "01-Introduction/09-continuous-decomp",
+    "01-Introduction/10-recursive",
+    "01-Introduction/11-alternating-exercise",
+    "01-Introduction/12-alternating",
+    "02-Mod-vis-3D/05-monopodial",
+    "02-Mod-vis-3D/06-comp-leaf-perspective",
+    "02-Mod-vis-3D/09-monopodial-spiral/09-monopodial-maple",
+    "02-Mod-vis-3D/09-monopodial-spiral",
+    "03-inverse-modeling/02-fern-leaf",
+    "03-inverse-modeling/06-phyllotaxis-ridley",
+    "04-Signaling/01-hormone-up",
+    "04-Signaling/02-hormone-down",
+    "04-Signaling/03-signal-down",
+    "04-Signaling/04-florigen",
+    "04-Signaling/05-florigen-param",
+    "04-Signaling/06-florigen+auxin",
+    "04-Signaling/07-acrotonic-2-signals",
+    "04-Signaling/08-basipetal-2-signals",
+    "04-Signaling/21-insect-schematic",
+    "05-Quantitative-info-flow/01-pipe-model",
+    "05-Quantitative-info-flow/03-Borcher-Honda",
+    "05-Quantitative-info-flow/ShootRoot",
+    "07-Open/05-phyllotaxis-Vogel",
+};
+
+// Runs in a scratch folder: models may write files (fopen) relative to the working folder.
+class CpfgGeometry : public ::testing::Test {
+protected:
+    void SetUp() override {
+        char pattern[] = "/tmp/simeco-geometry-XXXXXX";
+        ASSERT_NE(mkdtemp(pattern), nullptr);
+        scratch_ = pattern;
+        previous_ = fs::current_path();
+        fs::current_path(scratch_);
+    }
+    void TearDown() override {
+        fs::current_path(previous_);
+        fs::remove_all(scratch_);
+    }
+    fs::path scratch_, previous_;
+};
+
+TEST_F(CpfgGeometry, SegmentsMatchCpfgsDrawing) {
+    const std::vector<ExactModel> models = exactModels();
+    ASSERT_EQ(models.size(), 44u) << "the corpus manifest was not found or is incomplete at " << kCorpus;
+    std::vector<std::string> matching, differing;
+    for (const ExactModel& model : models) {
+        std::string name = model.folder;
+        std::replace(name.begin(), name.end(), '/', '_');
+        const RayGeometry cpfg = readRayGeometry(kCorpus / "geometry" / (name + ".ray.xz"));
+        std::string difference;
+        try {
+            difference = firstDifference(cpfg, simecoSegments(kCorpus / "models" / model.folder / model.file));
+        } catch (const std::exception& e) {
+            difference = std::string("not drawn: ") + e.what();
+        }
+        if (difference.empty()) matching.push_back(model.folder);
+        else differing.push_back(model.folder + ": " + difference);
+    }
+    for (const std::string& d : differing) std::printf("differs from cpfg: %s\n", d.c_str());
+    std::printf("exact models drawn as cpfg draws their segments: %zu of %zu\n", matching.size(), models.size());
+    for (const std::string& m : matching) std::printf("  %s\n", m.c_str());
+    for (const std::string& m : kMatching)
+        EXPECT_NE(std::find(matching.begin(), matching.end(), m), matching.end()) << m << " no longer matches cpfg";
+}
+
+} // namespace
+} // namespace simeco::test

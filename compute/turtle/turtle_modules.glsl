@@ -92,8 +92,9 @@ TurtleStep commandStep(uint command, uint i, TurtleSpecies sp) {
     case kTurtleTurnRight: t = turnStep(0, 1, -angle); break;
     case kTurtlePitchDown: t = turnStep(0, 2, -angle); break;
     case kTurtlePitchUp: t = turnStep(0, 2, angle); break;
-    case kTurtleRollLeft: t = turnStep(2, 1, angle); break;
-    case kTurtleRollRight: t = turnStep(2, 1, -angle); break;
+    // cpfg's roll: its up is ours reversed (turtle_cpu.cpp).
+    case kTurtleRollLeft: t = turnStep(2, 1, -angle); break;
+    case kTurtleRollRight: t = turnStep(2, 1, angle); break;
     case kTurtleTurnAround:
         t.heading.x = -1.0;
         t.left.y = -1.0;

@@ -187,8 +187,10 @@ private:
         case kTurtleTurnRight: turnToward(f.heading, f.left, -angle(i)); break;
         case kTurtlePitchDown: turnToward(f.heading, f.up, -angle(i)); break;
         case kTurtlePitchUp: turnToward(f.heading, f.up, angle(i)); break;
-        case kTurtleRollLeft: turnToward(f.up, f.left, angle(i)); break;
-        case kTurtleRollRight: turnToward(f.up, f.left, -angle(i)); break;
+        // cpfg's up is ours reversed (L x H where ours is H x L): its roll left `\` turns its up toward left, so
+        // ours turns away from it.
+        case kTurtleRollLeft: turnToward(f.up, f.left, -angle(i)); break;
+        case kTurtleRollRight: turnToward(f.up, f.left, angle(i)); break;
         case kTurtleTurnAround:
             f.heading = -f.heading;
             f.left = -f.left;

@@ -11,8 +11,8 @@ SIMECO_SHARED_BEGIN
 SIMECO_CONST kTurtleNone = 0u;          // draws nothing, changes nothing (plain letters, `%`, queries)
 SIMECO_CONST kTurtleBranchOpen = 1u;    // [
 SIMECO_CONST kTurtleBranchClose = 2u;   // ]
-SIMECO_CONST kTurtleDraw = 3u;          // F(l), G(l): move and draw a stem segment
-SIMECO_CONST kTurtleMove = 4u;          // f(l), g(l): move without drawing
+SIMECO_CONST kTurtleDraw = 3u;          // F(l): move and draw a stem segment (inside a polygon, also a vertex)
+SIMECO_CONST kTurtleMove = 4u;          // f(l): move without drawing (inside a polygon, a vertex)
 SIMECO_CONST kTurtleTurnLeft = 5u;      // +(a): about U, heading toward left
 SIMECO_CONST kTurtleTurnRight = 6u;     // -(a)
 SIMECO_CONST kTurtlePitchDown = 7u;     // &(a): about L, heading toward -U
@@ -59,7 +59,17 @@ SIMECO_CONST kTurtlePhototropism = 46u;  // phototropism(e,x,y,z): SimEco's grow
 SIMECO_CONST kTurtleQueryEnvironment = 47u; // ?E(...): answered by the light grid where one runs (light_layout.h)
 SIMECO_CONST kTurtleTilt = 48u;          // tilt(p,r): SimEco's growth, rotu(r) rotr(p) rotu(-r) in one module: pitch
                                          // by p radians about L turned by r about H
-SIMECO_CONST kTurtleCommands = 49u;
+SIMECO_CONST kTurtleDrawNoVertex = 49u;  // G(l): as F, but no vertex of a polygon
+SIMECO_CONST kTurtleMoveNoVertex = 50u;  // g(l): as f, but no vertex of a polygon
+SIMECO_CONST kTurtleCommands = 51u;
+
+// F and G draw a segment; f and g move without one. Inside a polygon F, f and `.` add vertices, G and g none, and
+// F and G still draw their segments, as cpfg draws them.
+SIMECO_FN bool turtleDraws(uint command) { return command == kTurtleDraw || command == kTurtleDrawNoVertex; }
+SIMECO_FN bool turtleMovesOnly(uint command) { return command == kTurtleMove || command == kTurtleMoveNoVertex; }
+SIMECO_FN bool turtleAddsVertex(uint command) {
+    return command == kTurtleDraw || command == kTurtleMove || command == kTurtlePolygonVertex;
+}
 
 // cpfg writes its predefined modules of several characters as separate modules: `@O(d)` is `@` then `O(d)`,
 // `@Gc(n)` is `@`, `G`, `c(n)`, `?P(x,y)` is `?` then `P(x,y)`, `~l(s)` is `~` then `l(s)` (productions can

@@ -62,7 +62,7 @@ struct TurtleSpecies {
 
 // Per-module marks that the searches up the tree stop at (TurtlePush hitMask and stopMask).
 SIMECO_CONST kMarkNonlinear = 1u;      // resolved by levels, not composed
-SIMECO_CONST kMarkStem = 2u;           // draws a stem segment (F outside polygons)
+SIMECO_CONST kMarkStem = 2u;           // draws a stem segment (F, G)
 SIMECO_CONST kMarkStemBreak = 4u;      // the next segment does not continue the last one: `[`, f, @M
 SIMECO_CONST kMarkCylinderStart = 8u;  // @Gs, `{(n)`
 SIMECO_CONST kMarkCylinderPoint = 16u; // @Gc, @Ge, `}(n)`

@@ -32,7 +32,7 @@ void main() {
     }
     uint command = commands[i];
     uint kind = kNoOrgan, organs = 1u;
-    if (command == kTurtleDraw && (marks[i] & kMarkStem) != 0u) kind = kOrganStem;
+    if (turtleDraws(command) && (marks[i] & kMarkStem) != 0u) kind = kOrganStem;
     else if (command == kTurtleSphere) kind = kOrganSphere;
     else if (command == kTurtleDisc || command == kTurtleDiscFacing) kind = kOrganDisc;
     else if (command == kTurtleSurface) kind = kOrganLeaf;
@@ -48,4 +48,6 @@ void main() {
     }
     kinds[i] = kind;
     for (uint k = 0u; k < kOrganKinds; ++k) flags[k * pc.count + i] = k == kind ? organs : 0u;
+    // An F inside a polygon draws its segment and is a vertex too: it may close a triangle besides.
+    if (kind == kOrganStem && triangleFirst[i] != kNoModule) flags[kOrganTriangle * pc.count + i] = 1u;
 }

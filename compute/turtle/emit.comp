@@ -40,6 +40,14 @@ vec3 perpendicularUp(vec3 heading, TurtleState s) {
 
 const uint kNoOrgan = 0xFFFFFFFFu;
 
+// The fan triangle vertex i closes: the polygon's first vertex, the one before i, and i (after it moved).
+OrganInstance triangleOf(OrganInstance o, uint i, TurtleState after) {
+    o.position = vec4(states[triangleFirst[i]].position.xyz, 0);
+    o.heading = vec4(states[trianglePrevious[i]].position.xyz, 0);
+    o.up = vec4(after.position.xyz, 0);
+    return o;
+}
+
 void growPlantBounds(uint plant, OrganInstance o) {
     Box b = organBox(o);
     for (uint axis = 0u; axis < 3u; ++axis) {
@@ -113,9 +121,7 @@ void main() {
     o.color = palettes[species * kPaletteEntries + uint(clamp(int(floor(colorIndex + 0.5)), 0, int(kPaletteEntries) - 1))];
 
     if (kind == kOrganTriangle) {
-        o.position = vec4(states[triangleFirst[i]].position.xyz, 0);
-        o.heading = vec4(states[trianglePrevious[i]].position.xyz, 0);
-        o.up = vec4(after.position.xyz, 0);
+        o = triangleOf(o, i, after);
     } else if (command == kTurtleCylinderPoint) {
         emitTube(o, i, offsets[kind * pc.count + i], after);
         return;
@@ -145,4 +151,15 @@ void main() {
     slots[i] = slot;
     lastSlots[i] = slot;
     growPlantBounds(plant, o);
+    // An F inside a polygon closes the polygon's triangle too (classify.comp counted it).
+    if (kind == kOrganStem && triangleFirst[i] != kNoModule) {
+        OrganInstance t = triangleOf(o, i, after);
+        t.kind = kOrganTriangle;
+        t.previousHeading = vec4(0);
+        t.nextHeading = vec4(0);
+        uint triangleSlot = offsets[kOrganTriangle * pc.count + i];
+        if (triangleSlot >= pc.organCapacity) return;
+        instances[triangleSlot] = t;
+        growPlantBounds(plant, t);
+    }
 }

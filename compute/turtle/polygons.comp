@@ -1,6 +1,6 @@
 // Turtle, pass 2: one invocation per polygon `{` walks to its `}` (polygons follow the string, not the
-// branches: cpfg keeps them on a stack of their own). Segments inside a polygon draw no stem; each vertex of
-// this polygon (f, F, `.` at its own nesting level) from the third on closes a fan triangle with the first
+// branches: cpfg keeps them on a stack of their own). Segments inside a polygon still draw their stems; each
+// vertex of this polygon (f, F, `.` at its own nesting level) from the third on closes a fan triangle with the first
 // and the previous vertex, which this pass records. A polygon's modules are walked by one invocation; the
 // polygons of a field are walked in parallel.
 #version 450
@@ -30,11 +30,9 @@ void main() {
             --nested;
             continue;
         }
-        atomicAnd(marks[j], ~kMarkStem);
         if (command == kTurtlePolygonBegin) {
             ++nested;
-        } else if (nested == 0u &&
-                   (command == kTurtleDraw || command == kTurtleMove || command == kTurtlePolygonVertex)) {
+        } else if (nested == 0u && turtleAddsVertex(command)) {
             if (vertices >= 2u) {
                 triangleFirst[j] = first;
                 trianglePrevious[j] = previous;

@@ -45,8 +45,9 @@ uint setUpModule(uint i) {
     uint mark = 0u;
     bool nonlinear = isNonlinear(command, sp);
     if (nonlinear) mark |= kMarkNonlinear;
-    if (command == kTurtleDraw) mark |= kMarkStem;
-    if (command == kTurtleBranchOpen || command == kTurtleMove || command == kTurtleSetPosition) mark |= kMarkStemBreak;
+    if (turtleDraws(command)) mark |= kMarkStem;
+    if (command == kTurtleBranchOpen || turtleMovesOnly(command) || command == kTurtleSetPosition)
+        mark |= kMarkStemBreak;
     if (command == kTurtleCylinderStart) mark |= kMarkCylinderStart | kMarkTubeBreak;
     if (command == kTurtleCylinderPoint) mark |= kMarkCylinderPoint;
     if (command == kTurtleBranchOpen) mark |= kMarkTubeBreak;

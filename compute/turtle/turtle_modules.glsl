@@ -73,7 +73,8 @@ bool isNonlinear(uint command, TurtleSpecies sp) {
     case kTurtleRotateWorldY:
     case kTurtleRotateWorldZ:
     case kTurtlePhototropism: return true;
-    case kTurtleDraw: return sp.tropism.w != 0.0; // tropism bends the heading after each segment
+    case kTurtleDraw:
+    case kTurtleDrawNoVertex: return sp.tropism.w != 0.0; // tropism bends the heading after each segment
     default: return false;
     }
 }
@@ -87,7 +88,9 @@ TurtleStep commandStep(uint command, uint i, TurtleSpecies sp) {
     float angle = paramAt(i, 0u, sp.angleDegrees) * kDegrees;
     switch (command) {
     case kTurtleDraw:
-    case kTurtleMove: t.scaledTranslation.x = paramAt(i, 0u, sp.step); break;
+    case kTurtleDrawNoVertex:
+    case kTurtleMove:
+    case kTurtleMoveNoVertex: t.scaledTranslation.x = paramAt(i, 0u, sp.step); break;
     case kTurtleTurnLeft: t = turnStep(0, 1, angle); break;
     case kTurtleTurnRight: t = turnStep(0, 1, -angle); break;
     case kTurtlePitchDown: t = turnStep(0, 2, -angle); break;
@@ -139,6 +142,7 @@ TurtleState applyNonlinear(TurtleState s, uint command, uint i, TurtleSpecies sp
     Frame f = frameOf(s);
     switch (command) {
     case kTurtleDraw:
+    case kTurtleDrawNoVertex:
         s = applyStep(s, commandStep(command, i, sp));
         f = frameOf(s);
         bend(f, sp.tropism.xyz, s.position.w);

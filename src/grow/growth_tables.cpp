@@ -118,7 +118,7 @@ GrowthTables growthTables(const std::vector<ir::Grammar>& species, const std::ve
             words[shared::kSpeciesSegmentStep] =
                 std::bit_cast<uint32_t>(turtle::turtleSettings(species[s], species[s].alphabet).step);
             for (uint32_t sym = 0; sym < t.symbols; ++sym)
-                if (commands.plain[sym] == shared::kTurtleDraw || commands.plain[sym] == shared::kTurtleMove)
+                if (shared::turtleDraws(commands.plain[sym]) || shared::turtleMovesOnly(commands.plain[sym]))
                     classes[sym] |= shared::kGrowSegment;
             continue;
         }

@@ -13,13 +13,15 @@ namespace {
 
 uint32_t plainCommand(std::string_view name) {
     static const std::unordered_map<std::string_view, uint32_t> kCommands = {
-        {"[", kTurtleBranchOpen}, {"]", kTurtleBranchClose}, {"F", kTurtleDraw},         {"G", kTurtleDraw},
-        {"f", kTurtleMove},       {"g", kTurtleMove},        {"+", kTurtleTurnLeft},     {"-", kTurtleTurnRight},
-        {"&", kTurtlePitchDown},  {"^", kTurtlePitchUp},     {"\\", kTurtleRollLeft},    {"/", kTurtleRollRight},
-        {"|", kTurtleTurnAround}, {"$", kTurtleRollLevel},   {"#", kTurtleWidthUp},      {"!", kTurtleWidthDown},
-        {";", kTurtleColorUp},    {",", kTurtleColorDown},   {"{", kTurtlePolygonBegin}, {"}", kTurtlePolygonEnd},
-        {".", kTurtlePolygonVertex}, {"rotx", kTurtleRotateWorldX}, {"roty", kTurtleRotateWorldY},
-        {"rotz", kTurtleRotateWorldZ}, {"rotr", kTurtlePitchRadians}, {"rotu", kTurtleRollRadians},
+        {"[", kTurtleBranchOpen},     {"]", kTurtleBranchClose},   {"F", kTurtleDraw},
+        {"G", kTurtleDrawNoVertex},   {"f", kTurtleMove},          {"g", kTurtleMoveNoVertex},
+        {"+", kTurtleTurnLeft},       {"-", kTurtleTurnRight},     {"&", kTurtlePitchDown},
+        {"^", kTurtlePitchUp},        {"\\", kTurtleRollLeft},     {"/", kTurtleRollRight},
+        {"|", kTurtleTurnAround},     {"$", kTurtleRollLevel},     {"#", kTurtleWidthUp},
+        {"!", kTurtleWidthDown},      {";", kTurtleColorUp},       {",", kTurtleColorDown},
+        {"{", kTurtlePolygonBegin},   {"}", kTurtlePolygonEnd},    {".", kTurtlePolygonVertex},
+        {"rotx", kTurtleRotateWorldX}, {"roty", kTurtleRotateWorldY}, {"rotz", kTurtleRotateWorldZ},
+        {"rotr", kTurtlePitchRadians}, {"rotu", kTurtleRollRadians},
         {"tropism", kTurtleTropism}, {"alive", kTurtleAlive}, {"phototropism", kTurtlePhototropism},
         {"tilt", kTurtleTilt},
     };

@@ -169,20 +169,23 @@ private:
         st.anchorWidth = st.width;
     }
 
-    void move(TurtleState& st, size_t i, bool draw) {
+    void move(TurtleState& st, size_t i, uint32_t command) {
+        const bool draw = turtleDraws(command);
         float length = param(i, 0, t_.step) * st.scale;
-        if (draw && polygons_.empty()) drawStem(st, i, length);
-        if (!draw) st.lastStem = -1;
+        if (draw) drawStem(st, i, length);
+        else st.lastStem = -1;
         st.position += st.frame.heading * length;
         if (draw) bend(st.frame, t_.tropism, st.elasticity);
-        if (!polygons_.empty()) polygonVertex(i, st);
+        if (!polygons_.empty() && turtleAddsVertex(command)) polygonVertex(i, st);
     }
 
     void apply(TurtleState& st, uint32_t command, size_t i) {
         Frame& f = st.frame;
         switch (command) {
-        case kTurtleDraw: move(st, i, true); break;
-        case kTurtleMove: move(st, i, false); break;
+        case kTurtleDraw:
+        case kTurtleDrawNoVertex:
+        case kTurtleMove:
+        case kTurtleMoveNoVertex: move(st, i, command); break;
         case kTurtleTurnLeft: turnToward(f.heading, f.left, angle(i)); break;
         case kTurtleTurnRight: turnToward(f.heading, f.left, -angle(i)); break;
         case kTurtlePitchDown: turnToward(f.heading, f.up, -angle(i)); break;

@@ -105,6 +105,26 @@ TEST(TurtleCpu, PolygonsBecomeTriangleFans) {
     expectNear(xyz(t.up), {-1, 0, 0});
 }
 
+TEST(TurtleCpu, InsideAPolygonSegmentsAreStillDrawnAndOnlyFfAndDotAddVertices) {
+    // As cpfg: F draws its segment and adds a vertex; G draws and adds none; g moves and adds none.
+    turtle::Interpretation r = interpret(lsystem("{.F+(90)G+(90)F+(90)g+(90)F}", "", 0));
+    EXPECT_EQ(r.count[shared::kOrganStem], 4u);
+    // Vertices: the `.` at (0,0), F's at (0,1), (-1,0) and (0,0) after g: two triangles.
+    ASSERT_EQ(r.count[shared::kOrganTriangle], 2u);
+    const shared::OrganInstance& t = r.organs[r.first[shared::kOrganTriangle]];
+    expectNear(xyz(t.position), {0, 0, 0});
+    expectNear(xyz(t.heading), {0, 1, 0});
+    expectNear(xyz(t.up), {-1, 0, 0});
+}
+
+TEST(TurtleCpu, RollsAsCpfgWhoseUpIsOursReversed) {
+    // \(90) rolls left: cpfg's up (-z at the start) turns toward left (-x), so left turns toward +z; then + turns
+    // the heading toward left.
+    turtle::Interpretation r = interpret(lsystem("\\(90)+(90)F", "", 0));
+    ASSERT_EQ(r.count[shared::kOrganStem], 1u);
+    expectNear(xyz(r.organs[0].heading), {0, 0, 1});
+}
+
 TEST(TurtleCpu, PlantsStandInAGridSpacedByTheWidestPlant) {
     turtle::Interpretation r = interpret(lsystem("+(90)F(4)", "", 0), 4);
     ASSERT_EQ(r.plantOrigins.size(), 4u);

@@ -58,6 +58,10 @@ struct TurtleSpecies {
     float elasticity;
     float elasticityIncrement;
     vec4 tropism; // xyz: unit direction; w: 1 when segments may bend (elasticity can be non-zero)
+    uint taperedLines; // 1: a segment narrows to the width set before the command that ends it (cpfg's)
+    uint pad0;
+    uint pad1;
+    uint pad2;
 };
 
 // Per-module marks that the searches up the tree stop at (TurtlePush hitMask and stopMask).
@@ -69,6 +73,7 @@ SIMECO_CONST kMarkCylinderPoint = 16u; // @Gc, @Ge, `}(n)`
 SIMECO_CONST kMarkTube = 32u;          // a cylinder point that drew a tube segment
 SIMECO_CONST kMarkTubeBreak = 64u;     // `[`, @Gs: the next tube segment does not continue the last one
 SIMECO_CONST kMarkPolygon = 128u;      // `{`: a polygon's first module
+SIMECO_CONST kMarkBranchClose = 256u;  // `]`: with kMarkStemBreak, where a tapering segment's end stops narrowing
 
 // A cylinder point `@Gc(n)` draws the tube from the last one as n segments (at most this many) along the
 // Hermite curve whose tangents are the turtle's headings at the two points, each as long as the chord.
@@ -140,7 +145,7 @@ struct OrganMergePush {
 static_assert(sizeof(OrganMergePush) == 56);
 static_assert(sizeof(TurtleState) == 64);
 static_assert(sizeof(TurtleStep) == 112);
-static_assert(sizeof(TurtleSpecies) == 48);
+static_assert(sizeof(TurtleSpecies) == 64);
 static_assert(sizeof(TurtlePush) == 64);
 #endif
 SIMECO_SHARED_END

@@ -30,6 +30,7 @@ layout(set = 0, binding = 20, std430) writeonly buffer LastSlots { uint lastSlot
 #include "compute/turtle/turtle_math.glsl"
 #include "compute/turtle/turtle_modules.glsl"
 #include "compute/turtle/organ_bounds.glsl"
+#include "compute/turtle/plant_bounds.glsl"
 
 // An up vector for a segment along `heading`: the turtle's up with its heading component removed.
 vec3 perpendicularUp(vec3 heading, TurtleState s) {
@@ -46,14 +47,6 @@ OrganInstance triangleOf(OrganInstance o, uint i, TurtleState after) {
     o.heading = vec4(states[trianglePrevious[i]].position.xyz, 0);
     o.up = vec4(after.position.xyz, 0);
     return o;
-}
-
-void growPlantBounds(uint plant, OrganInstance o) {
-    Box b = organBox(o);
-    for (uint axis = 0u; axis < 3u; ++axis) {
-        atomicMin(plantBounds[plant * 4u + axis], boundsKey(b.lo[axis]));
-        atomicMax(plantBounds[(pc.plants + plant) * 4u + axis], boundsKey(b.hi[axis]));
-    }
 }
 
 // A tube from the last control point along the curve the headings there and here describe (tubeCurve), in

@@ -52,6 +52,7 @@ uint setUpModule(uint i) {
     if (command == kTurtleCylinderPoint) mark |= kMarkCylinderPoint;
     if (command == kTurtleBranchOpen) mark |= kMarkTubeBreak;
     if (command == kTurtlePolygonBegin) mark |= kMarkPolygon;
+    if (command == kTurtleBranchClose) mark |= kMarkBranchClose;
 
     commands[i] = command;
     parents[i] = parent;

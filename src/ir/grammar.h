@@ -114,6 +114,9 @@ struct ViewSettings {
     std::array<float, 3> tropismDirection = {0.0f, -1.0f, 0.0f};
     float initialElasticity = 0.0f;
     float elasticityIncrement = 0.0f;
+    // cpfg's `tapered lines: on` (its default, and so in .l files unless the view says off): a segment narrows
+    // from its width to the width set before the command that ends it (a branch, the next segment or move).
+    bool taperedLines = false;
     // `;` colour indices to linear RGB (a model's colour map); empty: simeco's default palette.
     std::vector<std::array<float, 3>> palette;
     // Per palette entry (where shorter, -1 for the rest): the texture layer its colour tints, or -1 for none.

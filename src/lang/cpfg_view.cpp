@@ -214,6 +214,7 @@ ir::FunctionCurve parseFunctionCurve(const std::vector<std::string>& lines, size
 
 CpfgView readCpfgView(const std::string& path) {
     CpfgView out;
+    out.view.taperedLines = true;
     std::vector<std::string> lines = splitLines(readSourceFile(path));
     std::filesystem::path dir = std::filesystem::path(path).parent_path();
     for (size_t i = 0; i < lines.size(); ++i) {
@@ -257,6 +258,8 @@ CpfgView readCpfgView(const std::string& path) {
             viewNumber(value, path, i, "color increment", out.view.colorIncrement);
         } else if (field(line, "initial color", value)) {
             viewNumber(firstWord(value), path, i, "initial color", out.view.initialColor);
+        } else if (field(line, "tapered lines", value)) {
+            out.view.taperedLines = firstWord(value) != "off";
         } else if (field(line, "tropism direction", value)) {
             readVector(value, path, i, "tropism direction", out.view.tropismDirection);
         } else if (field(line, "initial elasticity", value)) {

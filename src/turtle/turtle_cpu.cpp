@@ -35,7 +35,15 @@ struct TurtleState {
     glm::vec3 anchorHeading{0.0f, 1.0f, 0.0f};
     float anchorWidth = 0.0f;
     int64_t lastTube = -1;
+    // The last segment drawn while its end narrows (cpfg's tapered lines): until the next command that ends it.
+    int64_t tapering = -1;
 };
+
+// Commands after which a tapering segment's end keeps the width it has (taperEnds in the turtle kernels).
+bool endsTaper(uint32_t command) {
+    return command == kTurtleBranchOpen || command == kTurtleBranchClose || turtleDraws(command) ||
+           turtleMovesOnly(command) || command == kTurtleSetPosition;
+}
 
 shared::vec4 v4(glm::vec3 v, float w) { return {v.x, v.y, v.z, w}; }
 
@@ -68,6 +76,7 @@ public:
         std::vector<TurtleState> stack;
         for (size_t i = begin; i < end; ++i) {
             uint32_t command = commands_.commandAt(s_, begin, end, i);
+            if (endsTaper(command)) endTaper(state);
             if (command == kTurtleBranchOpen) {
                 stack.push_back(state);
                 state.lastStem = -1;
@@ -82,6 +91,7 @@ public:
             }
             visit(i, command, state);
         }
+        endTaper(state);
     }
 
 private:
@@ -109,6 +119,13 @@ private:
         return organs_.back();
     }
 
+    // cpfg's tapered lines: a segment narrows from the width it was drawn with to the width set before the command
+    // that ends it (a branch, the next segment or move, the plant's end).
+    void endTaper(TurtleState& st) {
+        if (st.tapering >= 0) organs_[size_t(st.tapering)].up.w = 0.5f * st.width * st.scale;
+        st.tapering = -1;
+    }
+
     void polygonVertex(size_t module, const TurtleState& st) {
         std::vector<glm::vec3>& polygon = polygons_.back();
         polygon.push_back(st.position);
@@ -126,6 +143,7 @@ private:
         o.heading = v4(st.frame.heading, radius);
         o.up = v4(st.frame.up, radius);
         int64_t index = int64_t(organs_.size()) - 1;
+        if (t_.taperedLines) st.tapering = index;
         if (st.lastStem >= 0) {
             o.previousHeading = v4(v3(organs_[size_t(st.lastStem)].heading), 0);
             organs_[size_t(st.lastStem)].nextHeading = v4(st.frame.heading, 0);

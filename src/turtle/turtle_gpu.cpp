@@ -63,6 +63,7 @@ TurtleSpecies speciesOf(const turtle::TurtleSettings& t, bool elasticityCommands
     s.elasticityIncrement = t.elasticityIncrement;
     bool mayBend = t.elasticity != 0.0f || elasticityCommands;
     s.tropism = {t.tropism.x, t.tropism.y, t.tropism.z, mayBend ? 1.0f : 0.0f};
+    s.taperedLines = t.taperedLines ? 1u : 0u;
     return s;
 }
 
@@ -97,8 +98,9 @@ struct GpuTurtle::Impl {
     gpu::GpuScan scan;
     gpu::BracketTree brackets;
     vk::ComputePipeline setup, polygons, chunkSteps, jumpSteps, chunkSearch, jumpSearch, searchFinish, jumpLevels,
-        levelCount, levelLayout, levelScatter, resolveLevel, states, classify, emit, links, field, place, passSizes,
-        listGroups;
+        levelCount, levelLayout, levelScatter, resolveLevel, states, classify, emit, links, taper, field, place,
+        passSizes, listGroups;
+    bool tapers = false; // some species narrows its segments (TurtleSettings::taperedLines)
     // For strings counted only on the device: the workgroups of the bracket tree's dispatches, as a recorded
     // derivation step sizes them (made on the first such recording).
     std::optional<vk::ComputePipeline> stepSizes;
@@ -118,6 +120,7 @@ struct GpuTurtle::Impl {
         vk::Buffer states;
         vk::Buffer triangleFirst, trianglePrevious;
         vk::Buffer stemBelow, tubeBelow, cylinderAnchors, cylinderStarts;
+        vk::Buffer taperBelow; // the segment whose end may still narrow: a search over every command that ends it
         vk::Buffer stepTargets, searchTargets, searchChunk;
         vk::Buffer searchJumps[2];
         vk::Buffer levels[2];
@@ -171,6 +174,7 @@ struct GpuTurtle::Impl {
           classify(vk::ComputePipeline::embedded(c, "turtle/classify")),
           emit(vk::ComputePipeline::embedded(c, "turtle/emit")),
           links(vk::ComputePipeline::embedded(c, "turtle/links")),
+          taper(vk::ComputePipeline::embedded(c, "turtle/taper")),
           field(vk::ComputePipeline::embedded(c, "turtle/field")),
           place(vk::ComputePipeline::embedded(c, "turtle/place")),
           passSizes(vk::ComputePipeline::embedded(c, "turtle/pass_sizes")),
@@ -182,6 +186,7 @@ struct GpuTurtle::Impl {
         std::vector<shared::vec4> colors;
         for (const turtle::TurtleSettings& t : species) {
             table.push_back(speciesOf(t, elastic));
+            tapers = tapers || t.taperedLines;
             std::vector<float> s = t.surfaceScale;
             std::vector<std::uint32_t> k = t.surfaceShape;
             s.resize(commands.symbols, 1.0f);
@@ -549,6 +554,8 @@ void GpuTurtle::Impl::recordComposition(VkCommandBuffer cmd, const Run& run) {
                       {}, run, r);
     }
     if (run.marked & kMarkStem) recordSearch(cmd, run, kGateStems, kMarkStem, kMarkStemBreak, b.stemBelow);
+    if ((run.marked & kMarkStem) && tapers)
+        recordSearch(cmd, run, kGateStems, kMarkStem, kMarkStemBreak | kMarkBranchClose, b.taperBelow);
     if (run.marked & (kMarkCylinderStart | kMarkCylinderPoint)) {
         recordSearch(cmd, run, kGateCylinders, kMarkCylinderStart | kMarkCylinderPoint, 0, b.cylinderAnchors);
         recordSearch(cmd, run, kGateCylinders, kMarkCylinderStart, 0, b.cylinderStarts);
@@ -633,6 +640,13 @@ void GpuTurtle::Impl::recordOrgans(VkCommandBuffer cmd, const Run& run, std::uin
                  {b.commands, b.marks, b.kinds, b.slots, b.stemBelow, b.tubeBelow, organs.instances, b.lastSlots,
                   status},
                  run.push, run, kGateModules, Over::Modules);
+    if ((run.marked & kMarkStem) && tapers) {
+        vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
+        dispatchPass(cmd, taper,
+                     {run.starts, speciesTable, b.commands, b.marks, b.kinds, b.plantOf, b.states, b.slots,
+                      b.taperBelow, organs.instances, plantBounds, status},
+                     run.push, run, kGateStems, Over::Modules);
+    }
     field.dispatch(cmd, {b.offsets, scan.totalBuffer(), plantBounds, organs.table, organs.field, status}, run.push, 1);
     vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
     place.dispatch(cmd, {scan.totalBuffer(), organs.field, organs.instances, organs.table, placements}, run.push,
@@ -671,7 +685,7 @@ void GpuTurtle::Impl::reserve(std::uint64_t n, std::uint64_t plants) {
     Scratch& b = scratch;
     for (vk::Buffer* one : {&b.commands, &b.parents, &b.plantOf, &b.marks, &b.kinds, &b.slots, &b.lastSlots,
                             &b.pointers[0], &b.pointers[1], &b.triangleFirst, &b.trianglePrevious, &b.stemBelow,
-                            &b.tubeBelow, &b.cylinderAnchors, &b.cylinderStarts, &b.stepTargets, &b.searchTargets,
+                            &b.taperBelow, &b.tubeBelow, &b.cylinderAnchors, &b.cylinderStarts, &b.stepTargets, &b.searchTargets,
                             &b.searchChunk, &b.searchJumps[0], &b.searchJumps[1], &b.order})
         *one = deviceBuffer(capacity, 4);
     b.steps[0] = deviceBuffer(capacity, sizeof(TurtleStep));

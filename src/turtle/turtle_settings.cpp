@@ -82,6 +82,7 @@ TurtleSettings turtleSettings(const ir::Grammar& grammar, const ir::Alphabet& al
     t.tropism = glm::length(tropism) > 0 ? glm::normalize(tropism) : glm::vec3(0, -1, 0);
     t.elasticity = v.initialElasticity;
     t.elasticityIncrement = v.elasticityIncrement;
+    t.taperedLines = v.taperedLines;
     if (v.palette.empty()) {
         t.palette = defaultPalette();
     } else {

@@ -25,6 +25,7 @@ struct TurtleSettings {
     glm::vec3 tropism{0.0f, -1.0f, 0.0f}; // unit
     float elasticity = 0.0f;
     float elasticityIncrement = 0.0f;
+    bool taperedLines = false; // ir::ViewSettings::taperedLines
     std::vector<glm::vec4> palette;       // kPaletteSize linear RGBA colours
     // Per symbol id, for `~` and that symbol: the surface's scale and leaf shape (kLeaf*).
     std::vector<float> surfaceScale;

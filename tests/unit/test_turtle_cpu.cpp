@@ -117,6 +117,29 @@ TEST(TurtleCpu, InsideAPolygonSegmentsAreStillDrawnAndOnlyFfAndDotAddVertices) {
     expectNear(xyz(t.up), {-1, 0, 0});
 }
 
+TEST(TurtleCpu, ATaperedSegmentNarrowsToTheWidthSetBeforeWhatEndsIt) {
+    // Width 1, increments of 1: `#` draws the first segment 2 wide; `!` sets 1 before the branch ends it. The
+    // branch's segment widens to the 2 set before its `]`; the last keeps the 1 restored after the branch.
+    ir::Grammar g = grammarFromText(lsystem("#F!;[+F#]F", "", 0));
+    g.view.taperedLines = true;
+    stream::DeriveOptions options;
+    options.homomorphism = true;
+    const stream::DeriveResult derived = cpu::deriveCpu(g, options);
+    const turtle::TurtleCommands commands = turtle::turtleCommands(g.alphabet);
+    turtle::Interpretation r = turtle::interpretCpu(derived.string, commands, {turtle::turtleSettings(g, g.alphabet)});
+    ASSERT_EQ(r.count[shared::kOrganStem], 3u);
+    EXPECT_FLOAT_EQ(r.organs[0].heading.w, 1.0f);
+    EXPECT_FLOAT_EQ(r.organs[0].up.w, 0.5f);
+    EXPECT_FLOAT_EQ(r.organs[1].heading.w, 0.5f);
+    EXPECT_FLOAT_EQ(r.organs[1].up.w, 1.0f);
+    EXPECT_FLOAT_EQ(r.organs[2].heading.w, 0.5f);
+    EXPECT_FLOAT_EQ(r.organs[2].up.w, 0.5f);
+    // Untapered, each segment keeps its width.
+    g.view.taperedLines = false;
+    r = turtle::interpretCpu(derived.string, commands, {turtle::turtleSettings(g, g.alphabet)});
+    EXPECT_FLOAT_EQ(r.organs[0].up.w, 1.0f);
+}
+
 TEST(TurtleCpu, RollsAsCpfgWhoseUpIsOursReversed) {
     // \(90) rolls left: cpfg's up (-z at the start) turns toward left (-x), so left turns toward +z; then + turns
     // the heading toward left.

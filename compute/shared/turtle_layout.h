@@ -20,7 +20,8 @@ SIMECO_CONST kTurtlePitchUp = 8u;       // ^(a)
 SIMECO_CONST kTurtleRollLeft = 9u;      // \(a): about H
 SIMECO_CONST kTurtleRollRight = 10u;    // /(a)
 SIMECO_CONST kTurtleTurnAround = 11u;   // |: 180 degrees about U
-SIMECO_CONST kTurtleRollLevel = 12u;    // $, @v: roll so that L is horizontal (U closest to up)
+SIMECO_CONST kTurtleRollLevel = 12u;    // $: roll so that L is horizontal, U closest to up (not in cpfg .l files,
+                                        // where it ends a sub-L-system call: TurtleSpecies::dollarRolls)
 SIMECO_CONST kTurtleWidthUp = 13u;      // #(w): add the width increment, or set w
 SIMECO_CONST kTurtleWidthDown = 14u;    // !(w): subtract the width increment, or set w
 SIMECO_CONST kTurtleColorUp = 15u;      // ;(c): add the colour increment, or set c
@@ -61,7 +62,10 @@ SIMECO_CONST kTurtleTilt = 48u;          // tilt(p,r): SimEco's growth, rotu(r) 
                                          // by p radians about L turned by r about H
 SIMECO_CONST kTurtleDrawNoVertex = 49u;  // G(l): as F, but no vertex of a polygon
 SIMECO_CONST kTurtleMoveNoVertex = 50u;  // g(l): as f, but no vertex of a polygon
-SIMECO_CONST kTurtleCommands = 51u;
+SIMECO_CONST kTurtleRollUpright = 51u;   // @v: cpfg's roll so that H and its U share a vertical plane, its U
+                                        // closest to up (ours, its reverse, closest to down)
+SIMECO_CONST kTurtleElasticityStep = 52u; // _(e): cpfg's, the elasticity increased by the view's increment, or set
+SIMECO_CONST kTurtleCommands = 53u;
 
 // F and G draw a segment; f and g move without one. Inside a polygon F, f and `.` add vertices, G and g none, and
 // F and G still draw their segments, as cpfg draws them.

@@ -59,10 +59,14 @@ struct TurtleSpecies {
     float elasticityIncrement;
     vec4 tropism; // xyz: unit direction; w: 1 when segments may bend (elasticity can be non-zero)
     uint taperedLines; // 1: a segment narrows to the width set before the command that ends it (cpfg's)
-    uint pad0;
-    uint pad1;
+    uint dollarRolls;  // 1: `$` rolls the turtle level; 0: it leaves the turtle alone (cpfg's .l files)
+    uint tropismRule;  // kTropism*
     uint pad2;
 };
+
+// How segments bend toward the tropism (ir::TropismRule).
+SIMECO_CONST kTropismTorque = 0u;
+SIMECO_CONST kTropismCpfgDirection = 1u;
 
 // Per-module marks that the searches up the tree stop at (TurtlePush hitMask and stopMask).
 SIMECO_CONST kMarkNonlinear = 1u;      // resolved by levels, not composed

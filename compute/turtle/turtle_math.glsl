@@ -35,6 +35,20 @@ void rollLevel(inout Frame f) {
     f.up = cross(f.heading, f.left);
 }
 
+void rollUpright(inout Frame f) {
+    vec3 l = cross(f.heading, vec3(0, 1, 0));
+    float n = length(l);
+    if (n < 1e-6) return;
+    f.left = l / n;
+    f.up = cross(f.heading, f.left);
+}
+
+void bendAsCpfgDirection(inout Frame f, vec3 t, float elasticity) {
+    if (elasticity == 0.0) return;
+    turnToward(f.heading, f.up, asin(clamp(elasticity * dot(t, f.up), -1.0, 1.0)));
+    turnToward(f.heading, f.left, asin(clamp(elasticity * dot(t, f.left), -1.0, 1.0)));
+}
+
 void bend(inout Frame f, vec3 t, float elasticity) {
     vec3 axis = cross(f.heading, t);
     float n = length(axis);

@@ -66,7 +66,8 @@ TurtleState initialState(TurtleSpecies sp) {
 // Whether a command needs the absolute state before it (and so cannot be a step).
 bool isNonlinear(uint command, TurtleSpecies sp) {
     switch (command) {
-    case kTurtleRollLevel:
+    case kTurtleRollLevel: return sp.dollarRolls != 0u;
+    case kTurtleRollUpright:
     case kTurtleSetPosition:
     case kTurtleSetHeading:
     case kTurtleRotateWorldX:
@@ -75,6 +76,8 @@ bool isNonlinear(uint command, TurtleSpecies sp) {
     case kTurtlePhototropism: return true;
     case kTurtleDraw:
     case kTurtleDrawNoVertex: return sp.tropism.w != 0.0; // tropism bends the heading after each segment
+    case kTurtleMove:
+    case kTurtleMoveNoVertex: return sp.tropism.w != 0.0 && sp.tropismRule == kTropismCpfgDirection;
     default: return false;
     }
 }
@@ -132,6 +135,10 @@ TurtleStep commandStep(uint command, uint i, TurtleSpecies sp) {
     case kTurtleTropism:
         if (hasParam(i)) t.scaleElasticity.zw = vec2(0.0, paramAt(i, 0u, 0.0));
         break;
+    case kTurtleElasticityStep:
+        if (hasParam(i)) t.scaleElasticity.zw = vec2(0.0, paramAt(i, 0u, 0.0));
+        else t.scaleElasticity.w = sp.elasticityIncrement;
+        break;
     default: break;
     }
     return t;
@@ -143,11 +150,15 @@ TurtleState applyNonlinear(TurtleState s, uint command, uint i, TurtleSpecies sp
     switch (command) {
     case kTurtleDraw:
     case kTurtleDrawNoVertex:
+    case kTurtleMove:
+    case kTurtleMoveNoVertex:
         s = applyStep(s, commandStep(command, i, sp));
         f = frameOf(s);
-        bend(f, sp.tropism.xyz, s.position.w);
+        if (sp.tropismRule == kTropismCpfgDirection) bendAsCpfgDirection(f, sp.tropism.xyz, s.position.w);
+        else bend(f, sp.tropism.xyz, s.position.w);
         break;
-    case kTurtleRollLevel: rollLevel(f); break;
+    case kTurtleRollLevel: rollLevel(f); break; // only where `$` rolls (isNonlinear)
+    case kTurtleRollUpright: rollUpright(f); break;
     case kTurtlePhototropism: {
         vec3 d = vec3(paramAt(i, 1u, 0.0), paramAt(i, 2u, 0.0), paramAt(i, 3u, 0.0));
         if (length(d) > 0.0) bend(f, normalize(d), paramAt(i, 0u, 0.0));

@@ -103,6 +103,15 @@ struct FunctionCurve {
 };
 
 // Turtle settings a grammar brings with it (view file, directives); interpreted by later stages.
+// How segments bend toward the tropism direction (ViewSettings::tropismDirection, by the elasticity).
+enum class TropismRule {
+    // After each drawn segment, about H x T by elasticity x |H x T| (ABOP's; the quick grammars' and the growth's).
+    Torque,
+    // cpfg's `tropism direction:` form: after every move (F G f g) the heading turns toward T's component along
+    // up, then toward its component along left, each by the arcsine of the elasticity times that component.
+    CpfgDirection,
+};
+
 struct ViewSettings {
     float angleIncrement = 45.0f;
     float stepSize = 1.0f;
@@ -114,9 +123,13 @@ struct ViewSettings {
     std::array<float, 3> tropismDirection = {0.0f, -1.0f, 0.0f};
     float initialElasticity = 0.0f;
     float elasticityIncrement = 0.0f;
+    TropismRule tropismRule = TropismRule::Torque;
     // cpfg's `tapered lines: on` (its default, and so in .l files unless the view says off): a segment narrows
     // from its width to the width set before the command that ends it (a branch, the next segment or move).
     bool taperedLines = false;
+    // `$` rolls the turtle so that its left is horizontal (the quick grammars', ABOP's); in cpfg's .l files it ends
+    // a sub-L-system call and leaves the turtle alone (cpfg rolls upright with `@v`).
+    bool dollarRolls = true;
     // `;` colour indices to linear RGB (a model's colour map); empty: simeco's default palette.
     std::vector<std::array<float, 3>> palette;
     // Per palette entry (where shorter, -1 for the rest): the texture layer its colour tints, or -1 for none.

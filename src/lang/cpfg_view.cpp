@@ -262,12 +262,15 @@ CpfgView readCpfgView(const std::string& path) {
             out.view.taperedLines = firstWord(value) != "off";
         } else if (field(line, "tropism direction", value)) {
             readVector(value, path, i, "tropism direction", out.view.tropismDirection);
+            out.view.tropismRule = ir::TropismRule::CpfgDirection;
         } else if (field(line, "initial elasticity", value)) {
             viewNumber(value, path, i, "initial elasticity", out.view.initialElasticity);
+            out.view.tropismRule = ir::TropismRule::CpfgDirection;
         } else if (field(line, "elasticity increment", value)) {
             viewNumber(value, path, i, "elasticity increment", out.view.elasticityIncrement);
         } else if (field(line, "tropism", value)) {
             readTropism(value, path, i, out.view);
+            out.view.tropismRule = ir::TropismRule::Torque;
         } else if (field(line, "surface", value)) {
             std::istringstream in(value);
             ir::ViewSettings::Surface surface;

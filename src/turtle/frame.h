@@ -2,6 +2,7 @@
 // compute them (compute/turtle/turtle_lib.glsl mirrors each function), so CPU and GPU agree closely.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 
 #include <glm/geometric.hpp>
@@ -45,6 +46,23 @@ inline void rollLevel(Frame& f) {
     if (n < 1e-6f) return; // heading vertical: every roll is level
     f.left = l / n;
     f.up = glm::cross(f.heading, f.left);
+}
+
+// cpfg's `@v`: the same plane, with cpfg's up (ours reversed) closest to the world's up.
+inline void rollUpright(Frame& f) {
+    glm::vec3 l = glm::cross(f.heading, glm::vec3(0, 1, 0));
+    float n = glm::length(l);
+    if (n < 1e-6f) return;
+    f.left = l / n;
+    f.up = glm::cross(f.heading, f.left);
+}
+
+// cpfg's `tropism direction:` bend after a move: the heading turns toward t's component along up, then toward its
+// component along left, each by the arcsine of the elasticity times that component.
+inline void bendAsCpfgDirection(Frame& f, glm::vec3 t, float elasticity) {
+    if (elasticity == 0.0f) return;
+    turnToward(f.heading, f.up, std::asin(std::clamp(elasticity * glm::dot(t, f.up), -1.0f, 1.0f)));
+    turnToward(f.heading, f.left, std::asin(std::clamp(elasticity * glm::dot(t, f.left), -1.0f, 1.0f)));
 }
 
 // Tropism after a drawn segment: the heading bends toward t by elasticity * |H x t| about H x t.

@@ -21,7 +21,7 @@ uint32_t plainCommand(std::string_view name) {
         {"!", kTurtleWidthDown},      {";", kTurtleColorUp},       {",", kTurtleColorDown},
         {"{", kTurtlePolygonBegin},   {"}", kTurtlePolygonEnd},    {".", kTurtlePolygonVertex},
         {"rotx", kTurtleRotateWorldX}, {"roty", kTurtleRotateWorldY}, {"rotz", kTurtleRotateWorldZ},
-        {"rotr", kTurtlePitchRadians}, {"rotu", kTurtleRollRadians},
+        {"rotr", kTurtlePitchRadians}, {"rotu", kTurtleRollRadians}, {"_", kTurtleElasticityStep},
         {"tropism", kTurtleTropism}, {"alive", kTurtleAlive}, {"phototropism", kTurtlePhototropism},
         {"tilt", kTurtleTilt},
     };
@@ -32,7 +32,7 @@ uint32_t plainCommand(std::string_view name) {
 uint32_t atCommand(std::string_view name) {
     static const std::unordered_map<std::string_view, uint32_t> kCommands = {
         {"O", kTurtleSphere},       {"c", kTurtleDisc},          {"o", kTurtleDiscFacing},
-        {"M", kTurtleSetPosition},  {"R", kTurtleSetHeading},    {"v", kTurtleRollLevel},
+        {"M", kTurtleSetPosition},  {"R", kTurtleSetHeading},    {"v", kTurtleRollUpright},
         {"D", kTurtleScaleSet},     {"T", kTurtleElasticityUp},  {"!", kTurtleIgnored},
         {"#", kTurtleIgnored},      {";", kTurtleIgnored},       {",", kTurtleIgnored},
         {"L", kTurtleIgnored},      {"I", kTurtleIgnored},

@@ -193,7 +193,8 @@ private:
         if (draw) drawStem(st, i, length);
         else st.lastStem = -1;
         st.position += st.frame.heading * length;
-        if (draw) bend(st.frame, t_.tropism, st.elasticity);
+        if (t_.tropismRule == ir::TropismRule::CpfgDirection) bendAsCpfgDirection(st.frame, t_.tropism, st.elasticity);
+        else if (draw) bend(st.frame, t_.tropism, st.elasticity);
         if (!polygons_.empty() && turtleAddsVertex(command)) polygonVertex(i, st);
     }
 
@@ -216,7 +217,10 @@ private:
             f.heading = -f.heading;
             f.left = -f.left;
             break;
-        case kTurtleRollLevel: rollLevel(f); break;
+        case kTurtleRollLevel:
+            if (t_.dollarRolls) rollLevel(f);
+            break;
+        case kTurtleRollUpright: rollUpright(f); break;
         case kTurtlePitchRadians: turnToward(f.heading, f.up, -param(i, 0, 0)); break;
         case kTurtleRollRadians: turnToward(f.up, f.left, param(i, 0, 0)); break;
         case kTurtleTilt:
@@ -239,6 +243,9 @@ private:
         case kTurtleElasticityUp: st.elasticity += param(i, 1, t_.elasticityIncrement); break;
         case kTurtleElasticityDown: st.elasticity -= param(i, 1, t_.elasticityIncrement); break;
         case kTurtleTropism: st.elasticity = param(i, 0, st.elasticity); break;
+        case kTurtleElasticityStep:
+            st.elasticity = hasParam(i) ? param(i, 0, 0) : st.elasticity + t_.elasticityIncrement;
+            break;
         case kTurtlePhototropism: {
             const glm::vec3 d(param(i, 1, 0), param(i, 2, 0), param(i, 3, 0));
             if (glm::length(d) > 0.0f) bend(f, glm::normalize(d), param(i, 0, 0));

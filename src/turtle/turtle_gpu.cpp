@@ -36,7 +36,7 @@ VkDeviceSize bytes(std::uint64_t count, std::uint64_t size) { return std::max<Vk
 bool hasElasticityCommands(const turtle::TurtleCommands& c) {
     auto elastic = [](std::uint32_t command) {
         return command == kTurtleElasticitySet || command == kTurtleElasticityUp || command == kTurtleElasticityDown ||
-               command == kTurtleTropism;
+               command == kTurtleTropism || command == kTurtleElasticityStep;
     };
     if (std::any_of(c.plain.begin(), c.plain.end(), elastic)) return true;
     if (c.at == turtle::kNoSymbol) return false;
@@ -64,6 +64,8 @@ TurtleSpecies speciesOf(const turtle::TurtleSettings& t, bool elasticityCommands
     bool mayBend = t.elasticity != 0.0f || elasticityCommands;
     s.tropism = {t.tropism.x, t.tropism.y, t.tropism.z, mayBend ? 1.0f : 0.0f};
     s.taperedLines = t.taperedLines ? 1u : 0u;
+    s.dollarRolls = t.dollarRolls ? 1u : 0u;
+    s.tropismRule = t.tropismRule == ir::TropismRule::CpfgDirection ? kTropismCpfgDirection : kTropismTorque;
     return s;
 }
 

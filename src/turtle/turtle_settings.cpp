@@ -83,6 +83,8 @@ TurtleSettings turtleSettings(const ir::Grammar& grammar, const ir::Alphabet& al
     t.elasticity = v.initialElasticity;
     t.elasticityIncrement = v.elasticityIncrement;
     t.taperedLines = v.taperedLines;
+    t.tropismRule = v.tropismRule;
+    t.dollarRolls = v.dollarRolls;
     if (v.palette.empty()) {
         t.palette = defaultPalette();
     } else {

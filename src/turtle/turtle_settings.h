@@ -25,7 +25,9 @@ struct TurtleSettings {
     glm::vec3 tropism{0.0f, -1.0f, 0.0f}; // unit
     float elasticity = 0.0f;
     float elasticityIncrement = 0.0f;
+    ir::TropismRule tropismRule = ir::TropismRule::Torque;
     bool taperedLines = false; // ir::ViewSettings::taperedLines
+    bool dollarRolls = true;   // ir::ViewSettings::dollarRolls
     std::vector<glm::vec4> palette;       // kPaletteSize linear RGBA colours
     // Per symbol id, for `~` and that symbol: the surface's scale and leaf shape (kLeaf*).
     std::vector<float> surfaceScale;

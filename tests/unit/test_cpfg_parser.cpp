@@ -66,13 +66,14 @@ TEST(CpfgParser, ViewFileGivesAngleAndFunctions) {
     fs::remove_all(dir);
 }
 
-TEST(CpfgParser, LinesAreTaperedUnlessTheViewSaysOff) {
+TEST(CpfgParser, LinesAreTaperedUnlessTheViewSaysOffAndDollarLeavesTheTurtleAlone) {
     namespace fs = std::filesystem;
     fs::path dir = fs::temp_directory_path() / ("simeco-taper-" + std::to_string(::getpid()));
     fs::create_directories(dir);
     std::ofstream(dir / "m.l") << "Lsystem: 1\nAxiom: F\nendlsystem\n";
     // cpfg's default, without a view file and with one that does not say.
     EXPECT_TRUE(simeco::lang::loadGrammarFile((dir / "m.l").string()).view.taperedLines);
+    EXPECT_FALSE(simeco::lang::loadGrammarFile((dir / "m.l").string()).view.dollarRolls);
     std::ofstream(dir / "m.v") << "angle increment: 30\n";
     EXPECT_TRUE(simeco::lang::loadGrammarFile((dir / "m.l").string()).view.taperedLines);
     std::ofstream(dir / "m.v") << "angle increment: 30\ntapered lines: off\n";

@@ -148,6 +148,47 @@ TEST(TurtleCpu, RollsAsCpfgWhoseUpIsOursReversed) {
     expectNear(xyz(r.organs[0].heading), {0, 0, 1});
 }
 
+TEST(TurtleCpu, DollarRollsLevelOutsideCpfgAndAtVRollsCpfgsUpUpright) {
+    // Pitched down to the horizontal (heading -z, our up +y) and rolled 30 degrees, then rolled back level before
+    // turning left. cpfg's @v keeps its own up (ours reversed) closest to up: left is +x.
+    auto heading = [](const std::string& axiom, bool dollarRolls) {
+        ir::Grammar g = grammarFromText(lsystem(axiom, "", 0));
+        g.view.dollarRolls = dollarRolls;
+        stream::DeriveOptions options;
+        options.homomorphism = true;
+        turtle::Interpretation r = turtle::interpretCpu(cpu::deriveCpu(g, options).string,
+                                                        turtle::turtleCommands(g.alphabet),
+                                                        {turtle::turtleSettings(g, g.alphabet)});
+        return r.count[shared::kOrganStem] == 1 ? xyz(r.organs[0].heading) : glm::vec3(0.0f);
+    };
+    expectNear(heading("&(90)/(30)@v+(90)F", false), {1, 0, 0});
+    // The quick grammars' `$`: our up closest to up, so left is -x.
+    expectNear(heading("&(90)/(30)$+(90)F", true), {-1, 0, 0});
+    // In a cpfg .l file `$` ends a sub-L-system call: the turtle stays rolled, and turns out of the horizontal.
+    expectNear(heading("&(90)/(30)$+(90)F", false), {-0.8660254f, -0.5f, 0});
+}
+
+TEST(TurtleCpu, CpfgsTropismDirectionBendsAfterEveryMoveByTheArcsine) {
+    // The view's old form: tropism toward -x, elasticity 0 raised to 0.5 by `_`. After the move f the heading turns
+    // toward left (-x) by asin(0.5 x T.L) = 30 degrees, so F draws along it.
+    ir::Grammar g = grammarFromText(lsystem("_fF", "", 0));
+    g.view.tropismRule = ir::TropismRule::CpfgDirection;
+    g.view.tropismDirection = {-1, 0, 0};
+    g.view.initialElasticity = 0.0f;
+    g.view.elasticityIncrement = 0.5f;
+    stream::DeriveOptions options;
+    options.homomorphism = true;
+    const stream::DeriveResult derived = cpu::deriveCpu(g, options);
+    const turtle::TurtleCommands commands = turtle::turtleCommands(g.alphabet);
+    turtle::Interpretation r = turtle::interpretCpu(derived.string, commands, {turtle::turtleSettings(g, g.alphabet)});
+    ASSERT_EQ(r.count[shared::kOrganStem], 1u);
+    expectNear(xyz(r.organs[0].heading), {-0.5f, std::sqrt(3.0f) / 2, 0});
+    // ABOP's torque bends only after drawn segments: F still goes straight up.
+    g.view.tropismRule = ir::TropismRule::Torque;
+    r = turtle::interpretCpu(derived.string, commands, {turtle::turtleSettings(g, g.alphabet)});
+    expectNear(xyz(r.organs[0].heading), {0, 1, 0});
+}
+
 TEST(TurtleCpu, PlantsStandInAGridSpacedByTheWidestPlant) {
     turtle::Interpretation r = interpret(lsystem("+(90)F(4)", "", 0), 4);
     ASSERT_EQ(r.plantOrigins.size(), 4u);

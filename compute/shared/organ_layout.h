@@ -34,6 +34,12 @@ SIMECO_CONST kBlossomRose = 8u; // a cup of rounded petals in three rings (Rosa)
 SIMECO_CONST kSurfaceLastShape = kBlossomRose; // models are shapes kSurfaceLastShape + 1 + k
 // OrganInstance.shape for kOrganDisc: faces the viewer (@o) rather than lying in the heading-left plane (@c).
 SIMECO_CONST kDiscFacesViewer = 1u;
+// OrganInstance.shape for kOrganStem, how its line is drawn (ir::LineStyle): a shaded cylinder; a flat band facing
+// the viewer, its radii in world units; or a flat line facing the viewer, its radii in pixels. Only the picture
+// changes: the organ's radii are its width in world units for every other use (bounds, light, mesh export).
+SIMECO_CONST kLineCylinder = 0u;
+SIMECO_CONST kLinePolygon = 1u;
+SIMECO_CONST kLinePixel = 2u;
 
 // OrganInstance.color.w: kColorUntextured for an organ drawn in its colour, kColorFirstTexture + k for one whose
 // colour tints texture layer k (a SimEco stage's Texture; ir::DrawAssets).

@@ -61,7 +61,7 @@ struct TurtleSpecies {
     uint taperedLines; // 1: a segment narrows to the width set before the command that ends it (cpfg's)
     uint dollarRolls;  // 1: `$` rolls the turtle level; 0: it leaves the turtle alone (cpfg's .l files)
     uint tropismRule;  // kTropism*
-    uint pad2;
+    uint lineStyle;    // kLine*: how its F and G segments are drawn
 };
 
 // How segments bend toward the tropism (ir::TropismRule).

@@ -123,6 +123,7 @@ void main() {
         o.position = vec4(before.position.xyz, paramAt(i, 0u, sp.step) * scale);
         o.heading = vec4(before.heading.xyz, radius);
         o.up = vec4(before.up.xyz, radius);
+        o.shape = sp.lineStyle;
     } else if (kind == kOrganSphere || kind == kOrganDisc) {
         float radius = 0.5 * paramAt(i, 0u, before.heading.w) * scale;
         o.position = vec4(before.position.xyz, 0);
@@ -148,6 +149,7 @@ void main() {
     if (kind == kOrganStem && triangleFirst[i] != kNoModule) {
         OrganInstance t = triangleOf(o, i, after);
         t.kind = kOrganTriangle;
+        t.shape = 0u;
         t.previousHeading = vec4(0);
         t.nextHeading = vec4(0);
         uint triangleSlot = offsets[kOrganTriangle * pc.count + i];

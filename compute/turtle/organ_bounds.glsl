@@ -30,7 +30,7 @@ Box organBox(OrganInstance o) {
     Box b = Box(vec3(1e30), vec3(-1e30));
     vec3 p = o.position.xyz, h = o.heading.xyz;
     if (o.kind == kOrganStem) {
-        float r = max(o.heading.w, o.up.w);
+        float r = o.shape == kLinePixel ? 0.0 : max(o.heading.w, o.up.w); // a pixel line's width is the picture's
         addPoint(b, p, r);
         addPoint(b, p + h * o.position.w, r);
     } else if (o.kind == kOrganLeaf) {

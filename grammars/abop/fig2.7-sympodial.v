@@ -1,2 +1,2 @@
 angle increment: 45
-initial line width: 1
+initial line width: 1 pixels

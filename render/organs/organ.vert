@@ -57,7 +57,8 @@ void main() {
         outTexture = -1;
     } else {
         OrganInstance o = instances[gl_InstanceIndex];
-        OrganVertex v = organVertex(o, push.kind, inPosition, inNormal, frame.cameraRight.xyz, frame.cameraUp.xyz);
+        OrganVertex v = organVertex(o, push.kind, inPosition, inNormal, frame.cameraRight.xyz, frame.cameraUp.xyz,
+                                    frame.cameraPosition);
         world = v.position;
         outNormal = v.normal;
         outAlbedo = o.color.rgb;

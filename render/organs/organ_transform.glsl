@@ -1,6 +1,7 @@
 // From an organ mesh vertex (organ-local, see MeshVertex) to the world, for every organ kind. organ.vert draws
 // with it and shadow_volumes.comp casts with it, so a shadow's caster is exactly the geometry on screen.
-// src/export/organ_geometry.cpp does the same on the CPU for mesh files: change both together.
+// src/export/organ_geometry.cpp does the same on the CPU for mesh files: change both together (but for cpfg's flat
+// lines and bands, which the mesh files keep as cylinders, as cpfg's own exporter writes them).
 //
 // Frame: H = heading, U = up, L = cross(U, H) (left); local x runs along H, y along L, z along U.
 
@@ -29,7 +30,11 @@ vec3 stemRingPoint(vec3 ringCentre, vec3 offset, vec3 heading, vec3 otherHeading
     return ringCentre + offset + along * heading;
 }
 
-OrganVertex organVertex(OrganInstance o, uint kind, vec4 local, vec4 localNormal, vec3 cameraRight, vec3 cameraUp) {
+// `camera`: xyz the camera's position, w the world's size of a pixel at unit distance along the view, for cpfg's
+// flat lines and bands. The shadow volumes pass zero: a band casts the shadow of the cylinder of its width (pixel
+// lines cast none).
+OrganVertex organVertex(OrganInstance o, uint kind, vec4 local, vec4 localNormal, vec3 cameraRight, vec3 cameraUp,
+                        vec4 camera) {
     OrganVertex v;
     v.present = true;
     vec3 H = o.heading.xyz;
@@ -42,10 +47,28 @@ OrganVertex organVertex(OrganInstance o, uint kind, vec4 local, vec4 localNormal
         float radiusTop = o.up.w;
         vec3 radial = local.y * L + local.z * U;  // unit on the rings, zero at the cap centres
         vec3 ringCentre = o.position.xyz + (top ? segmentLength : 0.0) * H;
+        vec3 towardsCamera = camera.xyz - ringCentre;
+        bool drawnFlat = o.shape != kLineCylinder && camera.w > 0.0;
+        if (drawnFlat) {
+            // cpfg's lines and polygons: flat, across the segment as the viewer sees it; a pixel line's radii are
+            // pixels, as wide at any distance (at least one pixel across).
+            vec3 across = cross(H, towardsCamera);
+            across = dot(across, across) > 1e-12 ? normalize(across) : L;
+            radial = local.y * across;
+            if (o.shape == kLinePixel) {
+                float depth = max(dot(-towardsCamera, cross(cameraUp, cameraRight)), 0.0);
+                float pixel = camera.w * depth;
+                radiusBottom = max(radiusBottom, 0.5) * pixel;
+                radiusTop = max(radiusTop, 0.5) * pixel;
+            }
+        }
         vec3 planeNormal;
         v.position = stemRingPoint(ringCentre, (top ? radiusTop : radiusBottom) * radial, H,
                                    top ? o.nextHeading.xyz : o.previousHeading.xyz, planeNormal);
-        if (localNormal.w > 0.5) {
+        if (drawnFlat) {
+            // Flat shaded: facing the viewer across the whole width.
+            v.normal = towardsCamera - H * dot(towardsCamera, H);
+        } else if (localNormal.w > 0.5) {
             v.normal = top ? planeNormal : -planeNormal;
         } else {
             // The side of a cone: the radial direction tilted by the taper.

@@ -42,7 +42,7 @@ layout(push_constant) uniform Push {
 
 OrganVertex hullVertex(OrganInstance o, uint corner) {
     MeshVertex m = meshVertices[uint(int(meshIndices[push.firstIndex + corner]) + push.vertexOffset)];
-    return organVertex(o, push.kind, m.position, m.normal, push.cameraRight.xyz, push.cameraUp.xyz);
+    return organVertex(o, push.kind, m.position, m.normal, push.cameraRight.xyz, push.cameraUp.xyz, vec4(0.0));
 }
 
 void main() {
@@ -52,6 +52,10 @@ void main() {
         return;
     }
     OrganInstance o = instances[table.first[push.kind] + index];
+    // cpfg's pixel lines cast no shadow: their width is the picture's, not the world's.
+    if (push.kind == kOrganStem && o.shape == kLinePixel) {
+        return;
+    }
     vec3 away = push.awayFromSun.xyz;
     vec4 infinity = vec4(away, 0.0);
     bool capped = push.capped != 0u && away.y < 0.0;

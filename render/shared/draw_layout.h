@@ -63,7 +63,7 @@ struct MeshVertex {
 // The per-frame uniform block of the organ shaders (std140).
 struct DrawFrame {
     mat4 viewProj;
-    vec4 cameraPosition;  // xyz
+    vec4 cameraPosition;  // xyz; w: the world's size of a pixel at unit distance along the view (pixel lines)
     vec4 cameraRight;     // xyz: the image's x axis in the world, for discs that face the viewer
     vec4 cameraUp;        // xyz: the image's y axis (upwards) in the world
     vec4 sunDirection;    // xyz: unit vector towards the sun

@@ -211,7 +211,9 @@ FrameSetup Renderer::prepareView(const Bounds& bounds, const RenderSettings& set
 
     shared::DrawFrame& frame = setup.constants;
     std::memcpy(&frame.viewProj, glm::value_ptr(setup.camera.viewProj), sizeof(frame.viewProj));
-    frame.cameraPosition = vec4Of(setup.camera.position, 1.0f);
+    // A pixel at unit distance: the image's height spans 2 / |P[1][1]| there.
+    frame.cameraPosition = vec4Of(setup.camera.position,
+                                  2.0f / (std::abs(setup.camera.projection[1][1]) * float(settings.height)));
     frame.cameraRight = vec4Of(setup.camera.right);
     frame.cameraUp = vec4Of(setup.camera.up);
     frame.sunDirection = vec4Of(setup.towardsSun);

@@ -112,6 +112,13 @@ enum class TropismRule {
     CpfgDirection,
 };
 
+// How segments (F, G) are drawn: cpfg's `line style` (and the style word of `initial line width`).
+enum class LineStyle {
+    Cylinder, // shaded cylinders, widths in world units (the quick grammars' and the scenes')
+    Polygon,  // flat bands facing the viewer, widths in world units (cpfg's `initial line width: x` alone)
+    Pixel,    // flat lines facing the viewer, widths in pixels (cpfg's default, `p`, `pixels`)
+};
+
 struct ViewSettings {
     float angleIncrement = 45.0f;
     float stepSize = 1.0f;
@@ -124,6 +131,7 @@ struct ViewSettings {
     float initialElasticity = 0.0f;
     float elasticityIncrement = 0.0f;
     TropismRule tropismRule = TropismRule::Torque;
+    LineStyle lineStyle = LineStyle::Cylinder;
     // cpfg's `tapered lines: on` (its default, and so in .l files unless the view says off): a segment narrows
     // from its width to the width set before the command that ends it (a branch, the next segment or move).
     bool taperedLines = false;

@@ -129,6 +129,25 @@ std::string firstWord(const std::string& text) {
     return word;
 }
 
+// The style word after `initial line width: x`: pixels (`p`, `pixel`, `pixels`), shaded cylinders (`s`,
+// `shaded`), else cpfg's polygons in world units.
+ir::LineStyle lineWidthStyle(const std::string& value) {
+    std::istringstream in(value);
+    std::string number, style;
+    in >> number >> style;
+    if (style == "p" || style == "pixel" || style == "pixels") return ir::LineStyle::Pixel;
+    if (style == "s" || style == "shaded") return ir::LineStyle::Cylinder;
+    return ir::LineStyle::Polygon;
+}
+
+// `line style: pixel | polygon | cylinder` (cpfg's `wireframe` draws lines, as `pixel`); another word keeps `was`.
+ir::LineStyle lineStyleNamed(const std::string& word, ir::LineStyle was) {
+    if (word == "pixel" || word == "wireframe") return ir::LineStyle::Pixel;
+    if (word == "polygon") return ir::LineStyle::Polygon;
+    if (word == "cylinder") return ir::LineStyle::Cylinder;
+    return was;
+}
+
 // `x,y,z` or `x y z`.
 void readVector(std::string text, const std::string& file, size_t line, const char* what, std::array<float, 3>& v) {
     for (char& c : text)
@@ -215,6 +234,7 @@ ir::FunctionCurve parseFunctionCurve(const std::vector<std::string>& lines, size
 CpfgView readCpfgView(const std::string& path) {
     CpfgView out;
     out.view.taperedLines = true;
+    out.view.lineStyle = ir::LineStyle::Pixel;
     std::vector<std::string> lines = splitLines(readSourceFile(path));
     std::filesystem::path dir = std::filesystem::path(path).parent_path();
     for (size_t i = 0; i < lines.size(); ++i) {
@@ -252,6 +272,9 @@ CpfgView readCpfgView(const std::string& path) {
             out.view.present = true;
         } else if (field(line, "initial line width", value)) {
             viewNumber(value, path, i, "initial line width", out.view.lineWidth);
+            out.view.lineStyle = lineWidthStyle(value);
+        } else if (field(line, "line style", value)) {
+            out.view.lineStyle = lineStyleNamed(firstWord(value), out.view.lineStyle);
         } else if (field(line, "line width increment", value)) {
             viewNumber(value, path, i, "line width increment", out.view.widthIncrement);
         } else if (field(line, "color increment", value)) {

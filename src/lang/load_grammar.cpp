@@ -41,7 +41,8 @@ namespace {
 
 ir::Grammar loadCpfgModel(const std::string& path) {
     CpfgView view;
-    view.view.taperedLines = true; // cpfg's default, with a view file or without
+    view.view.taperedLines = true; // cpfg's defaults, with a view file or without
+    view.view.lineStyle = ir::LineStyle::Pixel;
     std::string viewPath = findViewFile(path);
     if (!viewPath.empty()) view = readCpfgView(viewPath);
     ir::Grammar g = parseCpfg(preprocessFile(path, view.macros), std::move(view.functions));

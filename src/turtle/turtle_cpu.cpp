@@ -142,6 +142,7 @@ private:
         o.position = v4(st.position, length);
         o.heading = v4(st.frame.heading, radius);
         o.up = v4(st.frame.up, radius);
+        o.shape = lineStyleCode(t_.lineStyle);
         int64_t index = int64_t(organs_.size()) - 1;
         if (t_.taperedLines) st.tapering = index;
         if (st.lastStem >= 0) {
@@ -352,7 +353,8 @@ Bounds organBounds(const OrganInstance& o) {
     glm::vec3 p = v3(o.position), h = v3(o.heading);
     switch (o.kind) {
     case kOrganStem: {
-        float r = std::max(o.heading.w, o.up.w);
+        // A pixel line's width is the picture's: the frame holds its ends.
+        float r = o.shape == kLinePixel ? 0.0f : std::max(o.heading.w, o.up.w);
         b.add(p, r);
         b.add(p + h * o.position.w, r);
         break;

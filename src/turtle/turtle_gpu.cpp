@@ -66,6 +66,7 @@ TurtleSpecies speciesOf(const turtle::TurtleSettings& t, bool elasticityCommands
     s.taperedLines = t.taperedLines ? 1u : 0u;
     s.dollarRolls = t.dollarRolls ? 1u : 0u;
     s.tropismRule = t.tropismRule == ir::TropismRule::CpfgDirection ? kTropismCpfgDirection : kTropismTorque;
+    s.lineStyle = turtle::lineStyleCode(t.lineStyle);
     return s;
 }
 

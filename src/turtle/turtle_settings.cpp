@@ -29,6 +29,14 @@ glm::vec4 TurtleSettings::color(float index) const {
     return palette[size_t(i)];
 }
 
+uint32_t lineStyleCode(ir::LineStyle style) {
+    switch (style) {
+    case ir::LineStyle::Polygon: return shared::kLinePolygon;
+    case ir::LineStyle::Pixel: return shared::kLinePixel;
+    default: return shared::kLineCylinder;
+    }
+}
+
 std::vector<glm::vec4> defaultPalette() {
     std::vector<glm::vec4> p(kPaletteSize);
     const glm::vec4 named[] = {
@@ -84,6 +92,7 @@ TurtleSettings turtleSettings(const ir::Grammar& grammar, const ir::Alphabet& al
     t.elasticityIncrement = v.elasticityIncrement;
     t.taperedLines = v.taperedLines;
     t.tropismRule = v.tropismRule;
+    t.lineStyle = v.lineStyle;
     t.dollarRolls = v.dollarRolls;
     if (v.palette.empty()) {
         t.palette = defaultPalette();

@@ -26,6 +26,7 @@ struct TurtleSettings {
     float elasticity = 0.0f;
     float elasticityIncrement = 0.0f;
     ir::TropismRule tropismRule = ir::TropismRule::Torque;
+    ir::LineStyle lineStyle = ir::LineStyle::Cylinder;
     bool taperedLines = false; // ir::ViewSettings::taperedLines
     bool dollarRolls = true;   // ir::ViewSettings::dollarRolls
     std::vector<glm::vec4> palette;       // kPaletteSize linear RGBA colours
@@ -38,6 +39,9 @@ struct TurtleSettings {
 
 // `grammar` supplies the view settings; `alphabet` the symbols (the species' shared alphabet).
 TurtleSettings turtleSettings(const ir::Grammar& grammar, const ir::Alphabet& alphabet);
+
+// The stem organs' shape code of a line style (kLine*, compute/shared/organ_layout.h).
+uint32_t lineStyleCode(ir::LineStyle style);
 
 // simeco's palette for models without a colour map: 0 black, then bark, greens, flower and fruit colours,
 // then a ramp of hues.

@@ -3,8 +3,13 @@
 // spans where the projected segments lie.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <algorithm>
+#include <filesystem>
+#include <fstream>
 #include <set>
+#include <string>
 
 #include "cpu/derive.h"
 #include "draw/renderer.h"
@@ -70,6 +75,52 @@ TEST_F(FieldRender, PlantsShowWithTheirIdsWhereTheTurtlePutThem) {
     EXPECT_NEAR(box.maxX, maxX, margin);
     EXPECT_NEAR(box.minY, minY, margin);
     EXPECT_NEAR(box.maxY, maxY, margin);
+}
+
+// ABOP's figure 2.6 tree without a view file is in cpfg's default pixel lines: a slender tree whose trunk, 10 pixels
+// wide, is a small share of its height; with a view that sets the width alone (world units) its trunk is 10 units
+// wide, as tall as the tree.
+TEST_F(FieldRender, ATreeWithoutAViewIsDrawnInPixelLines) {
+    namespace fs = std::filesystem;
+    const fs::path copy = fs::temp_directory_path() / ("simeco-pixel-lines-" + std::to_string(::getpid()));
+    fs::create_directories(copy);
+    fs::copy_file(fs::path(SIMECO_SOURCE_DIR) / "grammars/abop/fig2.6-monopodial.l", copy / "tree.l",
+                  fs::copy_options::overwrite_existing);
+    auto trunkShare = [&](const std::string& name) {
+        ir::Grammar g = lang::loadGrammarFile((copy / "tree.l").string());
+        stream::DeriveOptions options;
+        options.homomorphism = true;
+        stream::ModuleString string = cpu::deriveCpu(g, options).string;
+        turtle::Interpretation interp = turtle::interpretCpu(string, turtle::turtleCommands(g.alphabet),
+                                                             {turtle::turtleSettings(g, g.alphabet)});
+        test::TestScene scene = test::uploadScene(context(), interp.organs);
+        draw::RenderSettings settings;
+        settings.width = 240;
+        settings.height = 240;
+        settings.shadows = draw::Shadows::None;
+        settings.ground = false;
+        draw::Renderer renderer(context());
+        // Framed as simeco frames the field: on the turtle's bounds, which hold a pixel line's ends only.
+        const draw::Bounds bounds{interp.bounds.min, interp.bounds.max};
+        draw::Frame frame = renderer.render(scene.instances, scene.table, bounds, settings);
+        test::maybeSavePreview(frame, name);
+        // The trunk's first segment (the string's first F, module 1): its widest row against the tree's height.
+        test::PixelBox tree = test::organPixels(frame);
+        int widest = 0;
+        for (uint32_t y = 0; y < frame.height; ++y) {
+            int row = 0;
+            for (uint32_t x = 0; x < frame.width; ++x) row += frame.organ[frame.index(x, y)] == 1u ? 1 : 0;
+            widest = std::max(widest, row);
+        }
+        return float(widest) / float(tree.maxY - tree.minY + 1);
+    };
+    const float pixelLines = trunkShare("fig2.6_pixel_lines");
+    std::ofstream(copy / "tree.v") << "angle increment: 45\ninitial line width: 1\n";
+    const float worldWidths = trunkShare("fig2.6_world_widths");
+    fs::remove_all(copy);
+    EXPECT_GT(pixelLines, 0.0f);
+    EXPECT_LT(pixelLines, 0.08f);
+    EXPECT_GT(worldWidths, 0.5f);
 }
 
 // A field too large for one interpretation is interpreted in batches of plants copied out of its derived string,

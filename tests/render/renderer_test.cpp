@@ -4,6 +4,7 @@
 #include <cmath>
 #include <memory>
 #include <set>
+#include <string>
 #include <stdexcept>
 #include <utility>
 
@@ -11,6 +12,7 @@
 #include <glm/trigonometric.hpp>
 #include <gtest/gtest.h>
 
+#include "compute/shared/organ_layout.h"
 #include "draw/renderer.h"
 #include "gpu_fixture.h"
 #include "test_scene.h"
@@ -68,6 +70,41 @@ TEST_F(RendererTest, VerticalStemIsFramedWhereItsBoundsProject) {
     glm::vec2 base = projectToPixel(camera, {0, 0, 0}, frame.width, frame.height);
     glm::vec2 top = projectToPixel(camera, {0, 1, 0}, frame.width, frame.height);
     EXPECT_NEAR(0.5f * (stem.minX + stem.maxX + 1), 0.5f * (base.x + top.x), 1.5f);
+}
+
+// The widest row of an organ's pixels.
+int widestRow(const Frame& frame, std::uint32_t organ) {
+    int widest = 0;
+    for (std::uint32_t y = 0; y < frame.height; ++y) {
+        int row = 0;
+        for (std::uint32_t x = 0; x < frame.width; ++x) row += frame.organ[frame.index(x, y)] == organ ? 1 : 0;
+        widest = std::max(widest, row);
+    }
+    return widest;
+}
+
+TEST_F(RendererTest, CpfgsPixelLinesKeepTheirWidthInPixelsAndItsBandsTheirsInTheWorld) {
+    // A vertical segment of radius 2 beside a taller one that sets the framing: as a cylinder or a flat band the
+    // radius is world units (a fifth of the segment's length), as a pixel line 2 pixels at any framing.
+    auto drawn = [&](std::uint32_t style, float frameHeight) {
+        shared::OrganInstance line = makeStem({0, 0, 0}, {0, 1, 0}, {0, 0, 1}, 10.0f, 2.0f, 0, 7);
+        line.shape = style;
+        shared::OrganInstance mast = makeStem({30, 0, 0}, {0, 1, 0}, {0, 0, 1}, frameHeight, 0.01f, 0, 8);
+        TestScene scene = uploadScene(context(), {line, mast});
+        Frame frame = renderer().render(scene.instances, scene.table, scene.bounds, smallSettings(320, 240));
+        maybeSavePreview(frame, "line_style_" + std::to_string(style) + "_" + std::to_string(int(frameHeight)));
+        return widestRow(frame, 7);
+    };
+    const int pixelNear = drawn(shared::kLinePixel, 20.0f), pixelFar = drawn(shared::kLinePixel, 80.0f);
+    EXPECT_GE(pixelNear, 3);
+    EXPECT_LE(pixelNear, 6);
+    EXPECT_LE(std::abs(pixelNear - pixelFar), 1);
+    // World units: 4 wide against a frame about 20 or 80 high.
+    const int bandNear = drawn(shared::kLinePolygon, 20.0f), bandFar = drawn(shared::kLinePolygon, 80.0f);
+    const int cylinderNear = drawn(shared::kLineCylinder, 20.0f);
+    EXPECT_GT(bandNear, 2 * pixelNear);
+    EXPECT_GT(bandNear, 2 * bandFar);
+    EXPECT_NEAR(cylinderNear, bandNear, 2);
 }
 
 TEST_F(RendererTest, SphereAppearsWhereTheCameraProjectsItWithItsFrontDepth) {

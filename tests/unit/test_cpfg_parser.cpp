@@ -81,4 +81,28 @@ TEST(CpfgParser, LinesAreTaperedUnlessTheViewSaysOffAndDollarLeavesTheTurtleAlon
     fs::remove_all(dir);
 }
 
+TEST(CpfgParser, LineStyleFollowsTheViewAsCpfgReadsIt) {
+    namespace fs = std::filesystem;
+    using simeco::ir::LineStyle;
+    fs::path dir = fs::temp_directory_path() / ("simeco-line-style-" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    std::ofstream(dir / "m.l") << "Lsystem: 1\nAxiom: F\nendlsystem\n";
+    auto styleWith = [&](const std::string& view) {
+        if (view.empty()) fs::remove(dir / "m.v");
+        else std::ofstream(dir / "m.v") << view;
+        return simeco::lang::loadGrammarFile((dir / "m.l").string()).view.lineStyle;
+    };
+    EXPECT_EQ(styleWith(""), LineStyle::Pixel); // cpfg's default
+    EXPECT_EQ(styleWith("angle increment: 30\n"), LineStyle::Pixel);
+    EXPECT_EQ(styleWith("initial line width: 2\n"), LineStyle::Polygon);
+    EXPECT_EQ(styleWith("initial line width: 0.5 /* world space units */\n"), LineStyle::Polygon);
+    EXPECT_EQ(styleWith("initial line width: 2 pixels\n"), LineStyle::Pixel);
+    EXPECT_EQ(styleWith("initial line width: 2 p\n"), LineStyle::Pixel);
+    EXPECT_EQ(styleWith("initial line width: 2 s\n"), LineStyle::Cylinder);
+    // The last word read wins.
+    EXPECT_EQ(styleWith("initial line width: 2 pixels\nline style: cylinder\n"), LineStyle::Cylinder);
+    EXPECT_EQ(styleWith("line style: polygon\ninitial line width: 2 pixels\n"), LineStyle::Pixel);
+    fs::remove_all(dir);
+}
+
 } // namespace

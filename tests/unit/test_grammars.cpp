@@ -171,11 +171,13 @@ TEST(ShippedGrammars, Figure1_31aEarlyStepsAsWorkedByHand) {
 
 TEST(ShippedGrammars, MonopodialTreeOfFigure2_6) {
     // Apices A, B, C double every step (A -> A + B, B -> 2 C, C -> 2 B) and each rewritten apex adds 7
-    // modules: 1 + 7 (2^10 - 1) = 7162; every apex rewrite leaves one ! and one F: 1023 of each.
+    // modules, a B or C one more for its `@` `v` (all but the trunk's 10): 1 + 7 (2^10 - 1) + 1013 = 8175; every
+    // apex rewrite leaves one ! and one F: 1023 of each.
     Derived d;
     ASSERT_NO_FATAL_FAILURE(derive("abop/fig2.6-monopodial.l", d));
     EXPECT_EQ(d.grammar.derivationLength, 10);
-    EXPECT_EQ(d.modules(), 7162u);
+    EXPECT_EQ(d.modules(), 8175u);
+    EXPECT_EQ(d.count("v"), 1013u);
     EXPECT_EQ(d.count("A"), 1u);
     EXPECT_EQ(d.count("B") + d.count("C"), 1023u);
     EXPECT_EQ(d.count("F"), 1023u);
@@ -194,14 +196,14 @@ TEST(ShippedGrammars, MonopodialTreeOfFigure2_6) {
 }
 
 TEST(ShippedGrammars, SympodialTreeOfFigure2_7) {
-    // A -> 11 modules with 2 B; B -> 12 modules with 2 B: 11 + 11 (2 + 4 + ... + 2^9) = 11253.
+    // A -> 11 modules with 2 B; B -> 14 modules with 2 B (two `@` `v`): 11 + 13 (2 + 4 + ... + 2^9) = 13297.
     Derived d;
     ASSERT_NO_FATAL_FAILURE(derive("abop/fig2.7-sympodial.l", d));
     EXPECT_EQ(d.grammar.derivationLength, 10);
-    EXPECT_EQ(d.modules(), 11253u);
+    EXPECT_EQ(d.modules(), 13297u);
     EXPECT_EQ(d.count("B"), 1024u);
     EXPECT_EQ(d.count("F"), 1023u);
-    EXPECT_EQ(d.count("$"), 2044u);
+    EXPECT_EQ(d.count("v"), 2044u);
     EXPECT_EQ(d.count("["), 2046u);
 }
 

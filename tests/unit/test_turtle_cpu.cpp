@@ -18,8 +18,11 @@ using namespace simeco;
 using simeco::testing::grammarFromText;
 using simeco::testing::lsystem;
 
+// Segments drawn as cylinders, whose bounds hold their radii (cpfg's default, a model without a view, draws pixel
+// lines: PixelLinesAreBoundedByTheirEnds).
 turtle::Interpretation interpret(const std::string& text, uint32_t plants = 1, const turtle::FieldOptions& field = {}) {
     ir::Grammar g = grammarFromText(text);
+    g.view.lineStyle = ir::LineStyle::Cylinder;
     stream::DeriveOptions options;
     options.plants = plants;
     options.homomorphism = true;
@@ -69,6 +72,22 @@ TEST(TurtleCpu, TurnsLeftTowardMinusXAndJoinsSegments) {
     expectNear(xyz(b.nextHeading), {0, 0, 0});
     expectNear(r.bounds.max, {0.5f, 1.5f, 0.5f});
     expectNear(r.bounds.min, {-2.5f, -0.5f, -0.5f});
+}
+
+TEST(TurtleCpu, PixelLinesAreBoundedByTheirEnds) {
+    // cpfg's default line style, that of a model without a view: a line's width is the picture's, not the world's.
+    ir::Grammar g = grammarFromText(lsystem("F+(90)F(2)", "", 0));
+    ASSERT_EQ(g.view.lineStyle, ir::LineStyle::Pixel);
+    stream::DeriveOptions options;
+    options.homomorphism = true;
+    const stream::ModuleString string = cpu::deriveCpu(g, options).string;
+    turtle::Interpretation r =
+        turtle::interpretCpu(string, turtle::turtleCommands(g.alphabet), {turtle::turtleSettings(g, g.alphabet)});
+    ASSERT_EQ(r.count[shared::kOrganStem], 2u);
+    EXPECT_EQ(r.organs[0].shape, shared::kLinePixel);
+    EXPECT_FLOAT_EQ(r.organs[0].heading.w, 0.5f);
+    expectNear(r.bounds.max, {0, 1, 0});
+    expectNear(r.bounds.min, {-2, 0, 0});
 }
 
 TEST(TurtleCpu, BranchesRestoreTheStateAndDoNotContinueTheParent) {

@@ -1,7 +1,8 @@
 // Conformance with cpfg's drawing: every `exact` model of the corpus interpreted by the reference turtle and its
-// segments compared, one by one in the order drawn, with the geometry cpfg exported for it (geometry/*.ray.xz):
-// the ends within 1e-5 of the plant's size, the radii too. The models that match are listed, so that a change
-// that breaks one fails, and the count of those that do is printed with the first difference of each other.
+// segments and spheres compared, one by one in the order drawn, with the geometry cpfg exported for it
+// (geometry/*.ray.xz): the ends and radii within 1e-5 of the plant's size, the spheres' centres within 1e-4. The
+// models that match are listed, so that a change that breaks one fails, and the count of those that do is printed
+// with the first difference of each other.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -32,8 +33,11 @@ namespace fs = std::filesystem;
 
 const fs::path kCorpus = fs::path(SIMECO_SHARED_DIR) / "corpus" / "cpfg-vlab";
 
-// The ends and radii of a segment may differ by this share of the plant's size.
+// The ends and radii of a segment, and a sphere's radius, may differ by this share of the plant's size.
 constexpr float kTolerance = 1e-5f;
+// A sphere's centre by this share: it may end hundreds of rolls from the root (the phyllotaxis of Ridley, whose
+// spheres stand after up to 300 rolls of 137.51 degrees), which simeco's floats and cpfg's doubles round apart.
+constexpr float kCentreTolerance = 1e-4f;
 
 struct ExactModel {
     std::string folder, file;
@@ -53,31 +57,52 @@ std::vector<ExactModel> exactModels() {
     return models;
 }
 
-// The segments simeco's reference turtle draws for the model, as cpfg's exporter writes them: those of squared
-// length above 1e-5 and positive width.
-std::vector<RaySegment> simecoSegments(const fs::path& file) {
+// What simeco's reference turtle draws for the model, as cpfg's exporter writes it: the segments of squared length
+// above 1e-5 and positive width, and the spheres.
+struct Drawn {
+    std::vector<RaySegment> segments;
+    std::vector<RaySphere> spheres;
+};
+
+Drawn simecoDrawing(const fs::path& file) {
     const ir::Grammar g = lang::loadGrammarFile(file.string());
     stream::DeriveOptions options;
     options.homomorphism = true;
     const stream::ModuleString string = cpu::deriveCpu(g, options).string;
     const turtle::Interpretation drawn =
         turtle::interpretCpu(string, turtle::turtleCommands(g.alphabet), {turtle::turtleSettings(g, g.alphabet)});
-    std::vector<RaySegment> segments;
+    Drawn out;
     for (uint32_t k = 0; k < drawn.count[shared::kOrganStem]; ++k) {
         const shared::OrganInstance& o = drawn.organs[drawn.first[shared::kOrganStem] + k];
         const glm::vec3 from(o.position.x, o.position.y, o.position.z);
         const glm::vec3 to = from + glm::vec3(o.heading.x, o.heading.y, o.heading.z) * o.position.w;
         if (glm::dot(to - from, to - from) <= 1e-5f || o.heading.w <= 0.0f) continue;
-        segments.push_back({from, to, o.heading.w, o.up.w});
+        out.segments.push_back({from, to, o.heading.w, o.up.w});
     }
-    return segments;
+    for (uint32_t k = 0; k < drawn.count[shared::kOrganSphere]; ++k) {
+        const shared::OrganInstance& o = drawn.organs[drawn.first[shared::kOrganSphere] + k];
+        out.spheres.push_back({glm::vec3(o.position.x, o.position.y, o.position.z), o.heading.w});
+    }
+    return out;
 }
 
-// The first difference between cpfg's segments and simeco's, or nothing.
-std::string firstDifference(const RayGeometry& cpfg, const std::vector<RaySegment>& got) {
+// The first difference between cpfg's segments and spheres and simeco's, or nothing.
+std::string firstDifference(const RayGeometry& cpfg, const Drawn& drawn) {
+    const std::vector<RaySegment>& got = drawn.segments;
     if (cpfg.segments.size() != got.size())
         return fmt::format("{} segments, cpfg draws {}", got.size(), cpfg.segments.size());
     const float tolerance = kTolerance * std::max(cpfg.size(), 1e-6f);
+    if (cpfg.spheres.size() != drawn.spheres.size())
+        return fmt::format("{} spheres, cpfg draws {}", drawn.spheres.size(), cpfg.spheres.size());
+    for (size_t k = 0; k < drawn.spheres.size(); ++k) {
+        const RaySphere &a = cpfg.spheres[k], &b = drawn.spheres[k];
+        if (glm::distance(a.centre, b.centre) > kCentreTolerance / kTolerance * tolerance ||
+            std::abs(a.radius - b.radius) > tolerance)
+            return fmt::format("sphere {}: radius {:.4g} at ({:.4g},{:.4g},{:.4g}), cpfg's {:.4g} at "
+                               "({:.4g},{:.4g},{:.4g})",
+                               k, b.radius, b.centre.x, b.centre.y, b.centre.z, a.radius, a.centre.x, a.centre.y,
+                               a.centre.z);
+    }
     for (size_t k = 0; k < got.size(); ++k) {
         const RaySegment &a = cpfg.segments[k], &b = got[k];
         if (glm::distance(a.from, b.from) > tolerance || glm::distance(a.to, b.to) > tolerance)
@@ -156,7 +181,7 @@ protected:
     fs::path scratch_, previous_;
 };
 
-TEST_F(CpfgGeometry, SegmentsMatchCpfgsDrawing) {
+TEST_F(CpfgGeometry, SegmentsAndSpheresMatchCpfgsDrawing) {
     const std::vector<ExactModel> models = exactModels();
     ASSERT_EQ(models.size(), 44u) << "the corpus manifest was not found or is incomplete at " << kCorpus;
     std::vector<std::string> matching, differing;
@@ -166,7 +191,7 @@ TEST_F(CpfgGeometry, SegmentsMatchCpfgsDrawing) {
         const RayGeometry cpfg = readRayGeometry(kCorpus / "geometry" / (name + ".ray.xz"));
         std::string difference;
         try {
-            difference = firstDifference(cpfg, simecoSegments(kCorpus / "models" / model.folder / model.file));
+            difference = firstDifference(cpfg, simecoDrawing(kCorpus / "models" / model.folder / model.file));
         } catch (const std::exception& e) {
             difference = std::string("not drawn: ") + e.what();
         }
@@ -174,7 +199,8 @@ TEST_F(CpfgGeometry, SegmentsMatchCpfgsDrawing) {
         else differing.push_back(model.folder + ": " + difference);
     }
     for (const std::string& d : differing) std::printf("differs from cpfg: %s\n", d.c_str());
-    std::printf("exact models drawn as cpfg draws their segments: %zu of %zu\n", matching.size(), models.size());
+    std::printf("exact models drawn as cpfg draws their segments and spheres: %zu of %zu\n", matching.size(),
+                models.size());
     for (const std::string& m : matching) std::printf("  %s\n", m.c_str());
     for (const std::string& m : kMatching)
         EXPECT_NE(std::find(matching.begin(), matching.end(), m), matching.end()) << m << " no longer matches cpfg";

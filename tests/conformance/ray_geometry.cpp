@@ -95,14 +95,14 @@ RayGeometry readRayGeometry(const std::filesystem::path& xzFile) {
             s.toRadius = keyword == "cone" ? number() : s.fromRadius;
             s.to = point();
             g.segments.push_back(s);
-        } else if (keyword == "sphere") {
+        } else if (keyword == "sphere" || keyword == "disc") {
             ++i;
             RaySphere s;
             s.radius = number();
             s.centre = point();
-            g.spheres.push_back(s);
+            (keyword == "sphere" ? g.spheres : g.discs).push_back(s);
+            skipNumbers(); // a disc's normal
         } else {
-            if (keyword == "disc") ++g.discs;
             if (keyword == "poly") ++g.polygons;
             if (keyword == "triangle" || keyword == "triangleuv") ++g.triangles;
             if (keyword == "transform") ++g.objects;

@@ -22,10 +22,14 @@ struct RaySphere {
     float radius = 0.0f;
 };
 
+// A disc (`@c`, `@o`): its centre and radius (its normal, for `@o` turned to cpfg's viewer, is not kept).
+using RayDisc = RaySphere;
+
 struct RayGeometry {
     std::vector<RaySegment> segments;
     std::vector<RaySphere> spheres;
-    size_t discs = 0, polygons = 0, triangles = 0, objects = 0; // counted, not compared yet
+    std::vector<RayDisc> discs;
+    size_t polygons = 0, triangles = 0, objects = 0; // counted, not compared yet
     glm::vec3 min{1e30f}, max{-1e30f};                          // of every point read
     float size() const;                                         // the largest side of the box
 };

@@ -1,6 +1,6 @@
 // Conformance with cpfg's drawing: every `exact` model of the corpus interpreted by the reference turtle and its
-// segments and spheres compared, one by one in the order drawn, with the geometry cpfg exported for it
-// (geometry/*.ray.xz): the ends and radii within 1e-5 of the plant's size, the spheres' centres within 1e-4. The
+// segments, spheres and discs compared, one by one in the order drawn, with the geometry cpfg exported for it
+// (geometry/*.ray.xz): the ends and radii within 1e-5 of the plant's size, the spheres' and discs' centres within 1e-4. The
 // models that match are listed, so that a change that breaks one fails, and the count of those that do is printed
 // with the first difference of each other.
 #include <gtest/gtest.h>
@@ -13,6 +13,7 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include <fmt/format.h>
@@ -35,7 +36,7 @@ const fs::path kCorpus = fs::path(SIMECO_SHARED_DIR) / "corpus" / "cpfg-vlab";
 
 // The ends and radii of a segment, and a sphere's radius, may differ by this share of the plant's size.
 constexpr float kTolerance = 1e-5f;
-// A sphere's centre by this share: it may end hundreds of rolls from the root (the phyllotaxis of Ridley, whose
+// A sphere's or disc's centre by this share: it may end hundreds of rolls from the root (the phyllotaxis of Ridley, whose
 // spheres stand after up to 300 rolls of 137.51 degrees), which simeco's floats and cpfg's doubles round apart.
 constexpr float kCentreTolerance = 1e-4f;
 
@@ -62,6 +63,7 @@ std::vector<ExactModel> exactModels() {
 struct Drawn {
     std::vector<RaySegment> segments;
     std::vector<RaySphere> spheres;
+    std::vector<RayDisc> discs;
 };
 
 Drawn simecoDrawing(const fs::path& file) {
@@ -79,10 +81,12 @@ Drawn simecoDrawing(const fs::path& file) {
         if (glm::dot(to - from, to - from) <= 1e-5f || o.heading.w <= 0.0f) continue;
         out.segments.push_back({from, to, o.heading.w, o.up.w});
     }
-    for (uint32_t k = 0; k < drawn.count[shared::kOrganSphere]; ++k) {
-        const shared::OrganInstance& o = drawn.organs[drawn.first[shared::kOrganSphere] + k];
-        out.spheres.push_back({glm::vec3(o.position.x, o.position.y, o.position.z), o.heading.w});
-    }
+    for (uint32_t kind : {shared::kOrganSphere, shared::kOrganDisc})
+        for (uint32_t k = 0; k < drawn.count[kind]; ++k) {
+            const shared::OrganInstance& o = drawn.organs[drawn.first[kind] + k];
+            (kind == shared::kOrganSphere ? out.spheres : out.discs)
+                .push_back({glm::vec3(o.position.x, o.position.y, o.position.z), o.heading.w});
+        }
     return out;
 }
 
@@ -92,16 +96,18 @@ std::string firstDifference(const RayGeometry& cpfg, const Drawn& drawn) {
     if (cpfg.segments.size() != got.size())
         return fmt::format("{} segments, cpfg draws {}", got.size(), cpfg.segments.size());
     const float tolerance = kTolerance * std::max(cpfg.size(), 1e-6f);
-    if (cpfg.spheres.size() != drawn.spheres.size())
-        return fmt::format("{} spheres, cpfg draws {}", drawn.spheres.size(), cpfg.spheres.size());
-    for (size_t k = 0; k < drawn.spheres.size(); ++k) {
-        const RaySphere &a = cpfg.spheres[k], &b = drawn.spheres[k];
-        if (glm::distance(a.centre, b.centre) > kCentreTolerance / kTolerance * tolerance ||
-            std::abs(a.radius - b.radius) > tolerance)
-            return fmt::format("sphere {}: radius {:.4g} at ({:.4g},{:.4g},{:.4g}), cpfg's {:.4g} at "
-                               "({:.4g},{:.4g},{:.4g})",
-                               k, b.radius, b.centre.x, b.centre.y, b.centre.z, a.radius, a.centre.x, a.centre.y,
-                               a.centre.z);
+    for (const auto& [name, want, have] : {std::tuple("sphere", &cpfg.spheres, &drawn.spheres),
+                                            std::tuple("disc", &cpfg.discs, &drawn.discs)}) {
+        if (want->size() != have->size()) return fmt::format("{} {}s, cpfg draws {}", have->size(), name, want->size());
+        for (size_t k = 0; k < have->size(); ++k) {
+            const RaySphere &a = (*want)[k], &b = (*have)[k];
+            if (glm::distance(a.centre, b.centre) > kCentreTolerance / kTolerance * tolerance ||
+                std::abs(a.radius - b.radius) > tolerance)
+                return fmt::format("{} {}: radius {:.4g} at ({:.4g},{:.4g},{:.4g}), cpfg's {:.4g} at "
+                                   "({:.4g},{:.4g},{:.4g})",
+                                   name, k, b.radius, b.centre.x, b.centre.y, b.centre.z, a.radius, a.centre.x,
+                                   a.centre.y, a.centre.z);
+        }
     }
     for (size_t k = 0; k < got.size(); ++k) {
         const RaySegment &a = cpfg.segments[k], &b = got[k];
@@ -181,7 +187,7 @@ protected:
     fs::path scratch_, previous_;
 };
 
-TEST_F(CpfgGeometry, SegmentsAndSpheresMatchCpfgsDrawing) {
+TEST_F(CpfgGeometry, SegmentsSpheresAndDiscsMatchCpfgsDrawing) {
     const std::vector<ExactModel> models = exactModels();
     ASSERT_EQ(models.size(), 44u) << "the corpus manifest was not found or is incomplete at " << kCorpus;
     std::vector<std::string> matching, differing;
@@ -199,7 +205,7 @@ TEST_F(CpfgGeometry, SegmentsAndSpheresMatchCpfgsDrawing) {
         else differing.push_back(model.folder + ": " + difference);
     }
     for (const std::string& d : differing) std::printf("differs from cpfg: %s\n", d.c_str());
-    std::printf("exact models drawn as cpfg draws their segments and spheres: %zu of %zu\n", matching.size(),
+    std::printf("exact models drawn as cpfg draws their segments, spheres and discs: %zu of %zu\n", matching.size(),
                 models.size());
     for (const std::string& m : matching) std::printf("  %s\n", m.c_str());
     for (const std::string& m : kMatching)

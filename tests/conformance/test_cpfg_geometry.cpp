@@ -1,8 +1,8 @@
 // Conformance with cpfg's drawing: every `exact` model of the corpus interpreted by the reference turtle and its
 // segments, spheres and discs compared, one by one in the order drawn, with the geometry cpfg exported for it
-// (geometry/*.ray.xz): the ends and radii within 1e-5 of the plant's size, the spheres' and discs' centres within 1e-4. The
-// models that match are listed, so that a change that breaks one fails, and the count of those that do is printed
-// with the first difference of each other.
+// (geometry/*.ray.xz): the ends and radii within 1e-5 of the plant's size, the spheres' and discs' centres within
+// 1e-4. The models that match are listed, so that a change that breaks one fails, and the count of those that do is
+// printed with the first difference of each other.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -34,10 +34,11 @@ namespace fs = std::filesystem;
 
 const fs::path kCorpus = fs::path(SIMECO_SHARED_DIR) / "corpus" / "cpfg-vlab";
 
-// The ends and radii of a segment, and a sphere's radius, may differ by this share of the plant's size.
+// The ends and radii of a segment, and a sphere's or disc's radius, may differ by this share of the plant's size.
 constexpr float kTolerance = 1e-5f;
-// A sphere's or disc's centre by this share: it may end hundreds of rolls from the root (the phyllotaxis of Ridley, whose
-// spheres stand after up to 300 rolls of 137.51 degrees), which simeco's floats and cpfg's doubles round apart.
+// A sphere's or disc's centre by this share: it may end hundreds of rolls from the root (the phyllotaxis of
+// Ridley, whose spheres stand after up to 300 rolls of 137.51 degrees), which simeco's floats and cpfg's doubles
+// round apart.
 constexpr float kCentreTolerance = 1e-4f;
 
 struct ExactModel {

@@ -10,33 +10,13 @@
 #include <fstream>
 #include <sstream>
 
+#include "corpus.h"
 #include "cpu/derive.h"
 #include "lang/load_grammar.h"
 
 namespace {
 
 namespace fs = std::filesystem;
-
-const fs::path kCorpus = fs::path(SIMECO_SHARED_DIR) / "corpus" / "cpfg-vlab";
-
-struct CorpusModel {
-    std::string folder, file, features, compare;
-};
-
-std::vector<CorpusModel> readManifest() {
-    std::vector<CorpusModel> models;
-    std::ifstream in(kCorpus / "MANIFEST.tsv");
-    std::string line;
-    std::getline(in, line); // header
-    while (std::getline(in, line)) {
-        std::vector<std::string> cells;
-        std::stringstream row(line);
-        for (std::string cell; std::getline(row, cell, '\t');) cells.push_back(cell);
-        if (cells.size() < 5) continue;
-        models.push_back({cells[0], cells[1], cells[3], cells[4]});
-    }
-    return models;
-}
 
 // A module of a cpfg string: one character (or a UTF-8 sequence) and its parameters.
 struct ParsedModule {
@@ -65,22 +45,10 @@ std::vector<ParsedModule> parseCpfgString(const std::string& s) {
     return out;
 }
 
-// Runs in a scratch directory: models may write files (fopen) relative to the working directory.
-class CorpusTest : public ::testing::Test {
-protected:
-    void SetUp() override {
-        char pattern[] = "/tmp/simeco-corpus-XXXXXX";
-        ASSERT_NE(mkdtemp(pattern), nullptr);
-        scratch_ = pattern;
-        previous_ = fs::current_path();
-        fs::current_path(scratch_);
-    }
-    void TearDown() override {
-        fs::current_path(previous_);
-        fs::remove_all(scratch_);
-    }
-    fs::path scratch_, previous_;
-};
+using CorpusTest = simeco::test::ScratchFolderTest;
+using simeco::test::CorpusModel;
+using simeco::test::kCorpus;
+using simeco::test::readManifest;
 
 std::string describeDifference(const std::vector<ParsedModule>& want, const std::vector<ParsedModule>& got) {
     if (want.size() != got.size())

@@ -9,9 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <set>
-#include <sstream>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -20,6 +18,7 @@
 #include <glm/geometric.hpp>
 
 #include "compute/shared/organ_layout.h"
+#include "corpus.h"
 #include "cpu/derive.h"
 #include "lang/load_grammar.h"
 #include "ray_geometry.h"
@@ -32,32 +31,12 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kCorpus = fs::path(SIMECO_SHARED_DIR) / "corpus" / "cpfg-vlab";
-
 // The ends and radii of a segment, and a sphere's or disc's radius, may differ by this share of the plant's size.
 constexpr float kTolerance = 1e-5f;
 // A sphere's or disc's centre by this share: it may end hundreds of rolls from the root (the phyllotaxis of
 // Ridley, whose spheres stand after up to 300 rolls of 137.51 degrees), which simeco's floats and cpfg's doubles
 // round apart.
 constexpr float kCentreTolerance = 1e-4f;
-
-struct ExactModel {
-    std::string folder, file;
-};
-
-std::vector<ExactModel> exactModels() {
-    std::vector<ExactModel> models;
-    std::ifstream in(kCorpus / "MANIFEST.tsv");
-    std::string line;
-    std::getline(in, line); // header
-    while (std::getline(in, line)) {
-        std::vector<std::string> cells;
-        std::stringstream row(line);
-        for (std::string cell; std::getline(row, cell, '\t');) cells.push_back(cell);
-        if (cells.size() >= 5 && cells[4] == "exact") models.push_back({cells[0], cells[1]});
-    }
-    return models;
-}
 
 // What simeco's reference turtle draws for the model, as cpfg's exporter writes it: the segments of squared length
 // above 1e-5 and positive width, and the spheres.
@@ -171,28 +150,14 @@ const std::set<std::string> kMatching = {
     "07-Open/05-phyllotaxis-Vogel",
 };
 
-// Runs in a scratch folder: models may write files (fopen) relative to the working folder.
-class CpfgGeometry : public ::testing::Test {
-protected:
-    void SetUp() override {
-        char pattern[] = "/tmp/simeco-geometry-XXXXXX";
-        ASSERT_NE(mkdtemp(pattern), nullptr);
-        scratch_ = pattern;
-        previous_ = fs::current_path();
-        fs::current_path(scratch_);
-    }
-    void TearDown() override {
-        fs::current_path(previous_);
-        fs::remove_all(scratch_);
-    }
-    fs::path scratch_, previous_;
-};
+using CpfgGeometry = ScratchFolderTest;
 
 TEST_F(CpfgGeometry, SegmentsSpheresAndDiscsMatchCpfgsDrawing) {
-    const std::vector<ExactModel> models = exactModels();
+    std::vector<CorpusModel> models = readManifest();
+    std::erase_if(models, [](const CorpusModel& m) { return m.compare != "exact"; });
     ASSERT_EQ(models.size(), 44u) << "the corpus manifest was not found or is incomplete at " << kCorpus;
     std::vector<std::string> matching, differing;
-    for (const ExactModel& model : models) {
+    for (const CorpusModel& model : models) {
         std::string name = model.folder;
         std::replace(name.begin(), name.end(), '/', '_');
         const RayGeometry cpfg = readRayGeometry(kCorpus / "geometry" / (name + ".ray.xz"));

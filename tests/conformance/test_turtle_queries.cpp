@@ -9,6 +9,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "corpus.h"
 #include "lang/load_grammar.h"
 #include "stream/module_string.h"
 #include "turtle/turtle_commands.h"
@@ -18,7 +19,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kCorpus = fs::path(SIMECO_SHARED_DIR) / "corpus" / "cpfg-vlab";
+using simeco::test::kCorpus;
 
 // Splits a cpfg string into the alphabet's modules, taking the longest name that matches at each place.
 simeco::stream::ModuleString readString(const std::string& text, const simeco::ir::Alphabet& alphabet) {

@@ -18,17 +18,23 @@ using namespace simeco;
 using simeco::testing::grammarFromText;
 using simeco::testing::lsystem;
 
-// Segments drawn as cylinders, whose bounds hold their radii (cpfg's default, a model without a view, draws pixel
-// lines: PixelLinesAreBoundedByTheirEnds).
-turtle::Interpretation interpret(const std::string& text, uint32_t plants = 1, const turtle::FieldOptions& field = {}) {
-    ir::Grammar g = grammarFromText(text);
-    g.view.lineStyle = ir::LineStyle::Cylinder;
+// The reference turtle's organs for a grammar's string, derived under its homomorphism.
+turtle::Interpretation interpretGrammar(const ir::Grammar& g, uint32_t plants = 1,
+                                        const turtle::FieldOptions& field = {}) {
     stream::DeriveOptions options;
     options.plants = plants;
     options.homomorphism = true;
     stream::DeriveResult r = cpu::deriveCpu(g, options);
     return turtle::interpretCpu(r.string, turtle::turtleCommands(g.alphabet), {turtle::turtleSettings(g, g.alphabet)},
                                 field);
+}
+
+// The same with segments drawn as cylinders, whose bounds hold their radii (cpfg's default, a model without a view,
+// draws pixel lines: PixelLinesAreBoundedByTheirEnds).
+turtle::Interpretation interpret(const std::string& text, uint32_t plants = 1, const turtle::FieldOptions& field = {}) {
+    ir::Grammar g = grammarFromText(text);
+    g.view.lineStyle = ir::LineStyle::Cylinder;
+    return interpretGrammar(g, plants, field);
 }
 
 glm::vec3 xyz(const shared::vec4& v) { return {v.x, v.y, v.z}; }
@@ -78,11 +84,7 @@ TEST(TurtleCpu, PixelLinesAreBoundedByTheirEnds) {
     // cpfg's default line style, that of a model without a view: a line's width is the picture's, not the world's.
     ir::Grammar g = grammarFromText(lsystem("F+(90)F(2)", "", 0));
     ASSERT_EQ(g.view.lineStyle, ir::LineStyle::Pixel);
-    stream::DeriveOptions options;
-    options.homomorphism = true;
-    const stream::ModuleString string = cpu::deriveCpu(g, options).string;
-    turtle::Interpretation r =
-        turtle::interpretCpu(string, turtle::turtleCommands(g.alphabet), {turtle::turtleSettings(g, g.alphabet)});
+    turtle::Interpretation r = interpretGrammar(g);
     ASSERT_EQ(r.count[shared::kOrganStem], 2u);
     EXPECT_EQ(r.organs[0].shape, shared::kLinePixel);
     EXPECT_FLOAT_EQ(r.organs[0].heading.w, 0.5f);
@@ -141,11 +143,7 @@ TEST(TurtleCpu, ATaperedSegmentNarrowsToTheWidthSetBeforeWhatEndsIt) {
     // branch's segment widens to the 2 set before its `]`; the last keeps the 1 restored after the branch.
     ir::Grammar g = grammarFromText(lsystem("#F!;[+F#]F", "", 0));
     g.view.taperedLines = true;
-    stream::DeriveOptions options;
-    options.homomorphism = true;
-    const stream::DeriveResult derived = cpu::deriveCpu(g, options);
-    const turtle::TurtleCommands commands = turtle::turtleCommands(g.alphabet);
-    turtle::Interpretation r = turtle::interpretCpu(derived.string, commands, {turtle::turtleSettings(g, g.alphabet)});
+    turtle::Interpretation r = interpretGrammar(g);
     ASSERT_EQ(r.count[shared::kOrganStem], 3u);
     EXPECT_FLOAT_EQ(r.organs[0].heading.w, 1.0f);
     EXPECT_FLOAT_EQ(r.organs[0].up.w, 0.5f);
@@ -155,7 +153,7 @@ TEST(TurtleCpu, ATaperedSegmentNarrowsToTheWidthSetBeforeWhatEndsIt) {
     EXPECT_FLOAT_EQ(r.organs[2].up.w, 0.5f);
     // Untapered, each segment keeps its width.
     g.view.taperedLines = false;
-    r = turtle::interpretCpu(derived.string, commands, {turtle::turtleSettings(g, g.alphabet)});
+    r = interpretGrammar(g);
     EXPECT_FLOAT_EQ(r.organs[0].up.w, 1.0f);
 }
 
@@ -173,11 +171,7 @@ TEST(TurtleCpu, DollarRollsLevelOutsideCpfgAndAtVRollsCpfgsUpUpright) {
     auto heading = [](const std::string& axiom, bool dollarRolls) {
         ir::Grammar g = grammarFromText(lsystem(axiom, "", 0));
         g.view.dollarRolls = dollarRolls;
-        stream::DeriveOptions options;
-        options.homomorphism = true;
-        turtle::Interpretation r = turtle::interpretCpu(cpu::deriveCpu(g, options).string,
-                                                        turtle::turtleCommands(g.alphabet),
-                                                        {turtle::turtleSettings(g, g.alphabet)});
+        turtle::Interpretation r = interpretGrammar(g);
         return r.count[shared::kOrganStem] == 1 ? xyz(r.organs[0].heading) : glm::vec3(0.0f);
     };
     expectNear(heading("&(90)/(30)@v+(90)F", false), {1, 0, 0});
@@ -195,16 +189,12 @@ TEST(TurtleCpu, CpfgsTropismDirectionBendsAfterEveryMoveByTheArcsine) {
     g.view.tropismDirection = {-1, 0, 0};
     g.view.initialElasticity = 0.0f;
     g.view.elasticityIncrement = 0.5f;
-    stream::DeriveOptions options;
-    options.homomorphism = true;
-    const stream::DeriveResult derived = cpu::deriveCpu(g, options);
-    const turtle::TurtleCommands commands = turtle::turtleCommands(g.alphabet);
-    turtle::Interpretation r = turtle::interpretCpu(derived.string, commands, {turtle::turtleSettings(g, g.alphabet)});
+    turtle::Interpretation r = interpretGrammar(g);
     ASSERT_EQ(r.count[shared::kOrganStem], 1u);
     expectNear(xyz(r.organs[0].heading), {-0.5f, std::sqrt(3.0f) / 2, 0});
     // ABOP's torque bends only after drawn segments: F still goes straight up.
     g.view.tropismRule = ir::TropismRule::Torque;
-    r = turtle::interpretCpu(derived.string, commands, {turtle::turtleSettings(g, g.alphabet)});
+    r = interpretGrammar(g);
     expectNear(xyz(r.organs[0].heading), {0, 1, 0});
 }
 

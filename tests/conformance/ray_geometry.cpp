@@ -102,8 +102,13 @@ RayGeometry readRayGeometry(const std::filesystem::path& xzFile) {
             s.centre = point();
             (keyword == "sphere" ? g.spheres : g.discs).push_back(s);
             skipNumbers(); // a disc's normal
+        } else if (keyword == "poly") {
+            ++i;
+            std::vector<glm::vec3> vertices;
+            while (i + 2 < w.size() && isNumber(w[i])) vertices.push_back(point());
+            for (size_t k = 1; k + 1 < vertices.size(); ++k)
+                g.polygonFans.push_back({{vertices[0], vertices[k], vertices[k + 1]}});
         } else {
-            if (keyword == "poly") ++g.polygons;
             if (keyword == "triangle" || keyword == "triangleuv") ++g.triangles;
             if (keyword == "transform") ++g.objects;
             if (i < w.size() && !isNumber(w[i])) ++i; // a surface or a name

@@ -25,11 +25,17 @@ struct RaySphere {
 // A disc (`@c`, `@o`): its centre and radius (its normal, for `@o` turned to cpfg's viewer, is not kept).
 using RayDisc = RaySphere;
 
+// A polygon `{ ... }` as a fan of triangles from its first vertex, as simeco draws it.
+struct RayTriangle {
+    glm::vec3 corners[3];
+};
+
 struct RayGeometry {
     std::vector<RaySegment> segments;
     std::vector<RaySphere> spheres;
     std::vector<RayDisc> discs;
-    size_t polygons = 0, triangles = 0, objects = 0; // counted, not compared yet
+    std::vector<RayTriangle> polygonFans;
+    size_t triangles = 0, objects = 0; // counted, not compared yet
     glm::vec3 min{1e30f}, max{-1e30f};                          // of every point read
     float size() const;                                         // the largest side of the box
 };

@@ -1,8 +1,8 @@
 // Conformance with cpfg's drawing: every `exact` model of the corpus interpreted by the reference turtle and its
-// segments, spheres and discs compared, one by one in the order drawn, with the geometry cpfg exported for it
-// (geometry/*.ray.xz): the ends and radii within 1e-5 of the plant's size, the spheres' and discs' centres within
-// 1e-4. The models that match are listed, so that a change that breaks one fails, and the count of those that do is
-// printed with the first difference of each other.
+// segments, spheres, discs and polygons compared, one by one in the order drawn, with the geometry cpfg exported
+// for it (geometry/*.ray.xz): the ends and radii within 1e-5 of the plant's size, the spheres' and discs' centres
+// within 1e-4. The models that match are listed, so that a change that breaks one fails, and the count of those
+// that do is printed with the first difference of each other.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -44,6 +44,7 @@ struct Drawn {
     std::vector<RaySegment> segments;
     std::vector<RaySphere> spheres;
     std::vector<RayDisc> discs;
+    std::vector<RayTriangle> polygonFans;
 };
 
 Drawn simecoDrawing(const fs::path& file) {
@@ -67,6 +68,12 @@ Drawn simecoDrawing(const fs::path& file) {
             (kind == shared::kOrganSphere ? out.spheres : out.discs)
                 .push_back({glm::vec3(o.position.x, o.position.y, o.position.z), o.heading.w});
         }
+    for (uint32_t k = 0; k < drawn.count[shared::kOrganTriangle]; ++k) {
+        const shared::OrganInstance& o = drawn.organs[drawn.first[shared::kOrganTriangle] + k];
+        out.polygonFans.push_back({{glm::vec3(o.position.x, o.position.y, o.position.z),
+                                    glm::vec3(o.heading.x, o.heading.y, o.heading.z),
+                                    glm::vec3(o.up.x, o.up.y, o.up.z)}});
+    }
     return out;
 }
 
@@ -89,6 +96,13 @@ std::string firstDifference(const RayGeometry& cpfg, const Drawn& drawn) {
                                    a.centre.y, a.centre.z);
         }
     }
+    if (cpfg.polygonFans.size() != drawn.polygonFans.size())
+        return fmt::format("{} polygon triangles, cpfg's polygons make {}", drawn.polygonFans.size(),
+                           cpfg.polygonFans.size());
+    for (size_t k = 0; k < drawn.polygonFans.size(); ++k)
+        for (int c = 0; c < 3; ++c)
+            if (glm::distance(cpfg.polygonFans[k].corners[c], drawn.polygonFans[k].corners[c]) > tolerance)
+                return fmt::format("polygon triangle {}: corner {} differs", k, c);
     for (size_t k = 0; k < got.size(); ++k) {
         const RaySegment &a = cpfg.segments[k], &b = got[k];
         if (glm::distance(a.from, b.from) > tolerance || glm::distance(a.to, b.to) > tolerance)
@@ -152,11 +166,12 @@ const std::set<std::string> kMatching = {
 
 using CpfgGeometry = ScratchFolderTest;
 
-TEST_F(CpfgGeometry, SegmentsSpheresAndDiscsMatchCpfgsDrawing) {
+TEST_F(CpfgGeometry, SegmentsSpheresDiscsAndPolygonsMatchCpfgsDrawing) {
     std::vector<CorpusModel> models = readManifest();
     std::erase_if(models, [](const CorpusModel& m) { return m.compare != "exact"; });
     ASSERT_EQ(models.size(), 44u) << "the corpus manifest was not found or is incomplete at " << kCorpus;
     std::vector<std::string> matching, differing;
+    size_t segments = 0, spheres = 0, discs = 0, triangles = 0; // compared in the models that match
     for (const CorpusModel& model : models) {
         std::string name = model.folder;
         std::replace(name.begin(), name.end(), '/', '_');
@@ -167,12 +182,23 @@ TEST_F(CpfgGeometry, SegmentsSpheresAndDiscsMatchCpfgsDrawing) {
         } catch (const std::exception& e) {
             difference = std::string("not drawn: ") + e.what();
         }
-        if (difference.empty()) matching.push_back(model.folder);
-        else differing.push_back(model.folder + ": " + difference);
+        if (difference.empty()) {
+            matching.push_back(model.folder);
+            segments += cpfg.segments.size(), spheres += cpfg.spheres.size(), discs += cpfg.discs.size();
+            triangles += cpfg.polygonFans.size();
+        } else {
+            differing.push_back(model.folder + ": " + difference);
+        }
     }
     for (const std::string& d : differing) std::printf("differs from cpfg: %s\n", d.c_str());
-    std::printf("exact models drawn as cpfg draws their segments, spheres and discs: %zu of %zu\n", matching.size(),
-                models.size());
+    std::printf("exact models drawn as cpfg draws their segments, spheres, discs and polygons: %zu of %zu (%zu "
+                "segments, %zu spheres, %zu discs, %zu polygon triangles)\n",
+                matching.size(), models.size(), segments, spheres, discs, triangles);
+    // Every kind was compared somewhere.
+    EXPECT_GT(segments, 0u);
+    EXPECT_GT(spheres, 0u);
+    EXPECT_GT(discs, 0u);
+    EXPECT_GT(triangles, 0u);
     for (const std::string& m : matching) std::printf("  %s\n", m.c_str());
     for (const std::string& m : kMatching)
         EXPECT_NE(std::find(matching.begin(), matching.end(), m), matching.end()) << m << " no longer matches cpfg";

@@ -38,9 +38,10 @@ struct RenderArgs {
     std::string camera;
     std::string style = "lit";
     std::string shadows = "volume";
-    std::optional<float> lightSlice;   // the light grid's layer at this height, written beside the image
-    std::optional<float> lightSection; // its vertical layer at this depth, written beside the image
-    bool lightVolume = false;          // the grid's shade drawn among the plants
+    std::optional<float> lightSlice;     // the light grid's layer at this height, written beside the image
+    std::optional<float> lightSection;   // its vertical layer at this depth, written beside the image
+    bool lightVolume = false;            // the grid's shade drawn among the plants
+    std::optional<float> occupancySlice; // the grid's holders at this height, written beside the image
 };
 
 // The light grid of the field drawn: a scene's sun, sky and obstacles, else the defaults.
@@ -84,7 +85,7 @@ void runRender(const RenderArgs& args) {
     if (extent.organs == 0) throw std::runtime_error(fmt::format("{}: the plants draw nothing", source.file));
 
     draw::Renderer renderer(context, field.assets);
-    const bool light = args.lightSlice || args.lightSection || args.lightVolume;
+    const bool light = args.lightSlice || args.lightSection || args.lightVolume || args.occupancySlice;
     const field::LightVolume volume =
         light ? fieldLight(context, field, organs, extent.bounds, source.file) : field::LightVolume{};
     draw::Frame frame =
@@ -99,6 +100,9 @@ void runRender(const RenderArgs& args) {
     if (args.lightSection)
         draw::writePng(outputs, besideOutput(args.output, "-light-section.png"),
                        field::lightSliceImage(field::lightSection(volume, *args.lightSection)));
+    if (args.occupancySlice)
+        draw::writePng(outputs, besideOutput(args.output, "-occupancy.png"),
+                       field::occupancySliceImage(field::occupancySlice(volume, *args.occupancySlice)));
     if (exr) draw::writeExr(outputs, args.output, frame);
     else draw::writePng(outputs, args.output, frame);
     if (!args.png.empty()) draw::writePng(outputs, args.png, frame);
@@ -127,6 +131,9 @@ void registerRenderCommand(CLI::App& app, CommandContext& ctx) {
     cmd->add_option("--light-section", args->lightSection,
                     "also write OUTPUT-light-section.png: the light grid's vertical layer at depth Z, seen from the "
                     "front");
+    cmd->add_option("--occupancy-slice", args->occupancySlice,
+                    "also write OUTPUT-occupancy.png: which plant holds each voxel of the light grid's layer at "
+                    "height H, seen from above");
     cmd->add_flag("--light-volume", args->lightVolume,
                   "draw the light grid's shade among the plants: a sphere in each shaded voxel, larger and darker "
                   "the deeper its shade (no shadow volumes)");

@@ -52,10 +52,11 @@ struct RunArgs {
     std::string device;
     std::string save;   // where the state is written at the end; empty: nowhere
     std::string resume; // the state the field starts from; empty: the axioms
-    std::optional<float> lightSlice;   // the height of the light grid's layer written as light.png
-    std::optional<float> lightSection; // the depth of its vertical layer written as light-section.png
-    bool lightVolume = false;          // light-volume.png: the last frame with the grid's shade drawn in 3D
-    bool profile = false;              // print each stage's seconds and each kernel's GPU time at the end
+    std::optional<float> lightSlice;     // the height of the light grid's layer written as light.png
+    std::optional<float> lightSection;   // the depth of its vertical layer written as light-section.png
+    bool lightVolume = false;            // light-volume.png: the last frame with the grid's shade drawn in 3D
+    std::optional<float> occupancySlice; // the height of the layer of the grid's holders written as occupancy.png
+    bool profile = false;                // print each stage's seconds and each kernel's GPU time at the end
 };
 
 // One line on a terminal, rewritten as the run goes.
@@ -229,7 +230,7 @@ void runRun(RunArgs args) {
             }
         }
     }
-    if (args.lightSlice || args.lightSection || args.lightVolume) {
+    if (args.lightSlice || args.lightSection || args.lightVolume || args.occupancySlice) {
         const field::LightVolume light = simulation.lightVolume();
         if (args.lightSlice)
             draw::writePng(outputs, out / "light.png",
@@ -237,6 +238,9 @@ void runRun(RunArgs args) {
         if (args.lightSection)
             draw::writePng(outputs, out / "light-section.png",
                            field::lightSliceImage(field::lightSection(light, *args.lightSection)));
+        if (args.occupancySlice)
+            draw::writePng(outputs, out / "occupancy.png",
+                           field::occupancySliceImage(field::occupancySlice(light, *args.occupancySlice)));
         if (args.lightVolume)
             draw::writePng(outputs, out / "light-volume.png",
                            field::renderWithShade(context, renderer, organs, light, simulation.plants() + 1, framed,
@@ -299,6 +303,9 @@ void registerRunCommand(CLI::App& app, CommandContext& ctx) {
     cmd->add_option("--light-slice", args->lightSlice,
                     "also write light.png: the light grid's layer at height H at the end, seen from above")
         ->check(CLI::Range(-1e6f, 1e6f));
+    cmd->add_option("--occupancy-slice", args->occupancySlice,
+                    "also write occupancy.png: which plant holds each voxel of the light grid's layer at height H at "
+                    "the end, seen from above");
     cmd->add_flag("--light-volume", args->lightVolume,
                   "also write light-volume.png: the last frame with the light grid's shade drawn among the plants");
     cmd->add_option("--light-section", args->lightSection,

@@ -6,6 +6,7 @@
 #include <glm/common.hpp>
 #include <glm/vec3.hpp>
 
+#include "compute/shared/light_layout.h"
 #include "draw/render_settings.h"
 #include "field/obstacles.h"
 #include "field/simulation.h"
@@ -31,25 +32,61 @@ constexpr float kShadeRadius = 0.3f;
 
 float shareOfOpen(float light, float open) { return light / std::max(open, 1e-6f); }
 
-// The layer across `axis` (1: a horizontal slice, rows along z; 2: a vertical section, rows down y).
-LightSlice lightLayer(const LightVolume& volume, int axis, float coordinate) {
-    LightSlice slice;
-    const grow::LightGridSpec& spec = volume.spec;
-    if (volume.light.empty()) return slice;
+// The voxels of the layer across `axis` (1: a horizontal slice, rows along z; 2: a vertical section, rows down y),
+// row by row as an image shows them; its size and its centres' coordinate into `width`, `rows` and `at`.
+std::vector<uint64_t> layerVoxels(const grow::LightGridSpec& spec, int axis, float coordinate, uint32_t& width,
+                                  uint32_t& rows, float& at) {
     const auto k = size_t(axis);
     const auto layer = uint32_t(
         std::clamp(std::floor((coordinate - spec.origin[axis]) / spec.side), 0.0f, float(spec.size[k] - 1)));
-    slice.at = spec.origin[axis] + (float(layer) + 0.5f) * spec.side;
-    slice.open = volume.open;
-    slice.width = spec.size[0];
-    slice.rows = axis == 1 ? spec.size[2] : spec.size[1];
+    at = spec.origin[axis] + (float(layer) + 0.5f) * spec.side;
+    width = spec.size[0];
+    rows = axis == 1 ? spec.size[2] : spec.size[1];
     auto voxel = [&](uint32_t x, uint32_t y, uint32_t z) {
-        return volume.light[(size_t(z) * spec.size[1] + y) * spec.size[0] + x].w;
+        return (uint64_t(z) * spec.size[1] + y) * spec.size[0] + x;
     };
-    for (uint32_t r = 0; r < slice.rows; ++r)
-        for (uint32_t x = 0; x < slice.width; ++x)
-            slice.light.push_back(axis == 1 ? voxel(x, layer, r) : voxel(x, slice.rows - 1 - r, layer));
+    std::vector<uint64_t> voxels;
+    for (uint32_t r = 0; r < rows; ++r)
+        for (uint32_t x = 0; x < width; ++x)
+            voxels.push_back(axis == 1 ? voxel(x, layer, r) : voxel(x, rows - 1 - r, layer));
+    return voxels;
+}
+
+LightSlice lightLayer(const LightVolume& volume, int axis, float coordinate) {
+    LightSlice slice;
+    if (volume.light.empty()) return slice;
+    slice.open = volume.open;
+    for (uint64_t v : layerVoxels(volume.spec, axis, coordinate, slice.width, slice.rows, slice.at))
+        slice.light.push_back(volume.light[v].w);
     return slice;
+}
+
+// An image of a layer's values, each voxel a square of pixels of the colour `colourOf` gives its value.
+template <typename Value, typename Colour>
+draw::Frame layerImage(uint32_t width, uint32_t rows, const std::vector<Value>& values, Colour colourOf) {
+    const uint32_t scale = std::max(1u, std::min(16u, 1024u / std::max({width, rows, 1u})));
+    draw::Frame frame;
+    frame.width = width * scale;
+    frame.height = rows * scale;
+    frame.rgba.resize(frame.pixelCount() * 4);
+    frame.depth.assign(frame.pixelCount(), 0.0f);
+    frame.plant.assign(frame.pixelCount(), draw::Frame::kNoId);
+    frame.organ.assign(frame.pixelCount(), draw::Frame::kNoId);
+    for (uint32_t y = 0; y < frame.height; ++y)
+        for (uint32_t x = 0; x < frame.width; ++x) {
+            const glm::vec3 c = colourOf(values[size_t(y / scale) * width + x / scale]);
+            float* p = &frame.rgba[frame.index(x, y) * 4];
+            p[0] = c.r, p[1] = c.g, p[2] = c.b, p[3] = 1.0f;
+        }
+    return frame;
+}
+
+// A plant's colour in the occupancy view: hues spread by the golden angle, so that neighbours differ.
+glm::vec3 plantColour(uint32_t plant) {
+    const float hue = std::fmod(float(plant) * 0.618034f, 1.0f) * 6.0f;
+    const glm::vec3 rgb = glm::clamp(glm::abs(glm::mod(hue + glm::vec3(0.0f, 4.0f, 2.0f), 6.0f) - 3.0f) - 1.0f, 0.0f,
+                                     1.0f);
+    return glm::mix(glm::vec3(0.15f), rgb, 0.75f);
 }
 
 } // namespace
@@ -59,22 +96,24 @@ LightSlice lightSlice(const LightVolume& volume, float height) { return lightLay
 LightSlice lightSection(const LightVolume& volume, float depth) { return lightLayer(volume, 2, depth); }
 
 draw::Frame lightSliceImage(const LightSlice& slice) {
-    const uint32_t scale = std::max(1u, std::min(16u, 1024u / std::max({slice.width, slice.rows, 1u})));
-    draw::Frame frame;
-    frame.width = slice.width * scale;
-    frame.height = slice.rows * scale;
-    frame.rgba.resize(frame.pixelCount() * 4);
-    frame.depth.assign(frame.pixelCount(), 0.0f);
-    frame.plant.assign(frame.pixelCount(), draw::Frame::kNoId);
-    frame.organ.assign(frame.pixelCount(), draw::Frame::kNoId);
-    for (uint32_t y = 0; y < frame.height; ++y)
-        for (uint32_t x = 0; x < frame.width; ++x) {
-            const glm::vec3 c = lightColour(shareOfOpen(slice.light[size_t(y / scale) * slice.width + x / scale],
-                                                        slice.open));
-            float* p = &frame.rgba[frame.index(x, y) * 4];
-            p[0] = c.r, p[1] = c.g, p[2] = c.b, p[3] = 1.0f;
-        }
-    return frame;
+    return layerImage(slice.width, slice.rows, slice.light,
+                      [&](float light) { return lightColour(shareOfOpen(light, slice.open)); });
+}
+
+OccupancySlice occupancySlice(const LightVolume& volume, float height) {
+    OccupancySlice slice;
+    if (volume.holders.empty()) return slice;
+    for (uint64_t v : layerVoxels(volume.spec, 1, height, slice.width, slice.rows, slice.at))
+        slice.holders.push_back(volume.holders[v]);
+    return slice;
+}
+
+draw::Frame occupancySliceImage(const OccupancySlice& slice) {
+    return layerImage(slice.width, slice.rows, slice.holders, [](uint32_t holder) {
+        if (holder == shared::kVoxelEmpty) return glm::vec3(0.85f, 0.83f, 0.78f);
+        if (holder == shared::kVoxelShared) return glm::vec3(0.08f);
+        return plantColour(holder - 1);
+    });
 }
 
 turtle::Interpretation shadeOrgans(const LightVolume& volume, uint32_t plant) {
@@ -140,6 +179,7 @@ LightVolume lightOfOrgans(const vk::Context& context, const std::vector<const tu
         grid.recordPropagate(cmd);
     });
     volume.light = vk::downloadVector<glm::vec4>(context, grid.light(), volume.spec.voxels());
+    volume.holders = vk::downloadVector<uint32_t>(context, grid.holders(), volume.spec.voxels());
     return volume;
 }
 

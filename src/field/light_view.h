@@ -22,11 +22,13 @@ class Context;
 namespace simeco::field {
 
 // The light of every voxel of a grid (xyz: the direction most of it comes from; w: its amount), and the light in
-// the open, which a voxel nothing shades receives.
+// the open, which a voxel nothing shades receives; and which plant holds each voxel (compute/shared/light_layout.h:
+// plant + 1, kVoxelShared or kVoxelEmpty), the space the plants compete for.
 struct LightVolume {
     grow::LightGridSpec spec;
     std::vector<glm::vec4> light;
     float open = 0;
+    std::vector<uint32_t> holders;
 };
 
 // One layer of the light grid: `rows` of `width` voxels' light, the first row the one an image shows at its top.
@@ -45,6 +47,18 @@ LightSlice lightSection(const LightVolume& volume, float depth);
 // A layer as an image, each voxel a square of pixels: dark blue where no light comes, through green, to pale
 // yellow for the light in the open.
 draw::Frame lightSliceImage(const LightSlice& slice);
+
+// One horizontal layer of which plant holds each voxel, as a lightSlice lays it out.
+struct OccupancySlice {
+    uint32_t width = 0, rows = 0;
+    float at = 0;
+    std::vector<uint32_t> holders;
+};
+OccupancySlice occupancySlice(const LightVolume& volume, float height);
+
+// The layer as an image: each plant's voxels in a colour of its own, those several plants share dark grey, the
+// empty ones pale.
+draw::Frame occupancySliceImage(const OccupancySlice& slice);
 
 // Light below this share of the open's counts as shade in the 3D view; lighter voxels are left out.
 inline constexpr float kShadeShown = 0.9f;

@@ -517,6 +517,8 @@ LightVolume Simulation::lightVolume() const {
     volume.spec = m.lightGpu ? m.lightGpu->spec() : m.lightCpu->spec();
     volume.light = m.lightGpu ? vk::downloadVector<glm::vec4>(*m.context, m.lightGpu->light(), volume.spec.voxels())
                               : m.lightCpu->light();
+    volume.holders = m.lightGpu ? vk::downloadVector<uint32_t>(*m.context, m.lightGpu->holders(), volume.spec.voxels())
+                                : m.lightCpu->holders();
     volume.open = m.openLight;
     return volume;
 }

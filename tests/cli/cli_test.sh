@@ -115,7 +115,7 @@ check "render writes the EXR and the PNG of a field ($(head -c 300 "$work/render
 
 # The light grid of the field drawn: a layer seen from above and one from the front beside the image, the shade in it.
 "$simeco" render "$source_dir/grammars/abop/fig1.24d.l" -n 4 --plants 4 --size 160x120 -o "$work/lit.png" \
-  --light-slice 1 --light-section 0 --light-volume >"$work/lit.txt" 2>&1
+  --light-slice 1 --light-section 0 --light-volume --occupancy-slice 1 >"$work/lit.txt" 2>&1
 python3 - "$work" <<'PY'
 import struct, sys
 def png_size(name):
@@ -125,6 +125,7 @@ def png_size(name):
 assert png_size("lit.png") == (160, 120)
 (slice_w, slice_h), (section_w, section_h) = png_size("lit-light.png"), png_size("lit-light-section.png")
 assert slice_w == section_w and slice_h > 0 and section_h > 0, (slice_w, slice_h, section_w, section_h)
+assert png_size("lit-occupancy.png") == (slice_w, slice_h)
 PY
 check "render --light-slice, --light-section and --light-volume write the grid's views ($(head -c 300 "$work/lit.txt"))" \
   $?

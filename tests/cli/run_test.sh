@@ -121,9 +121,11 @@ check "a truncated state is refused and nothing written (code $code: $(head -c 2
 check "a scene and a state to resume are refused together" $?
 
 # The meadow: its populations where the scene puts them, the bushes of a cpfg grammar among them.
-# Its light grid: a layer of it written as light.png, a vertical one as light-section.png, and the leaves' light at
+# Its light grid: a layer of it written as light.png, a vertical one as light-section.png, its holders as
+# occupancy.png, the shade in 3D as light-volume.png, and the leaves' light at
 # most the open's (SunIntensity 1.1 and 0.3 of SkyLight 1.0) per unit of leaf area.
 "$simeco" run "$source_dir/scenes/meadow.eco" --time 4 --size 96x72 --light-slice 1 --light-section 0 --light-volume \
+  --occupancy-slice 1 \
   --out "$work/meadow" >"$work/meadow.txt" 2>&1
 python3 - "$work/meadow" <<'PY'
 import csv, struct, sys
@@ -135,6 +137,7 @@ def png_size(name):
 (slice_w, slice_h), (section_w, section_h) = png_size("light.png"), png_size("light-section.png")
 assert slice_w == section_w and section_h < slice_h, (slice_w, slice_h, section_w, section_h)
 assert png_size("light-volume.png") == png_size("final.png") == (96, 72)
+assert png_size("occupancy.png") == (slice_w, slice_h)
 rows = list(csv.DictReader(open(f"{sys.argv[1]}/plants.csv")))
 leafy = [r for r in rows if float(r["leaf_area"]) > 0]
 assert leafy and all(0 < float(r["light"]) <= 1.4 * float(r["leaf_area"]) + 1e-3 for r in leafy)

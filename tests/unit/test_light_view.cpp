@@ -4,8 +4,10 @@
 #include <set>
 #include <vector>
 
+#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
+#include "compute/shared/light_layout.h"
 #include "compute/shared/organ_layout.h"
 #include "field/light_view.h"
 
@@ -66,6 +68,31 @@ TEST(LightView, ALayersImageIsDarkWhereNoLightComesAndBrightInTheOpen) {
     };
     EXPECT_LT(brightness(0), 0.2f);
     EXPECT_GT(brightness(image.width - 1), 2.0f);
+}
+
+TEST(LightView, OccupancyShowsEachPlantsVoxelsInItsOwnColourAndSharedOnesDark) {
+    field::LightVolume volume = numberedVolume();
+    // Layer 2 (heights 4 to 6): plant 0 holds column x = 0, plant 1 x = 1, several plants x = 2; the rest empty.
+    volume.holders.assign(volume.spec.voxels(), shared::kVoxelEmpty);
+    for (uint32_t z = 0; z < 5; ++z)
+        for (uint32_t x = 0; x < 3; ++x)
+            volume.holders[(z * 4 + 2) * 3 + x] = x == 2 ? shared::kVoxelShared : x + 1;
+    const field::OccupancySlice slice = field::occupancySlice(volume, 5.0f);
+    ASSERT_EQ(slice.width, 3u);
+    ASSERT_EQ(slice.rows, 5u);
+    EXPECT_EQ(slice.holders[0], 1u);
+    EXPECT_EQ(slice.holders[4 * 3 + 2], shared::kVoxelShared);
+    const draw::Frame image = field::occupancySliceImage(slice);
+    const uint32_t scale = image.width / 3;
+    auto colour = [&](uint32_t x) {
+        const float* p = &image.rgba[image.index(x * scale, 0) * 4];
+        return glm::vec3(p[0], p[1], p[2]);
+    };
+    EXPECT_GT(glm::distance(colour(0), colour(1)), 0.2f); // two plants, two colours
+    EXPECT_LT(colour(2).r + colour(2).g + colour(2).b, 0.5f); // shared: dark
+    // An empty layer is pale.
+    const draw::Frame empty = field::occupancySliceImage(field::occupancySlice(volume, 1.0f));
+    EXPECT_GT(empty.rgba[0] + empty.rgba[1] + empty.rgba[2], 2.0f);
 }
 
 TEST(LightView, ShadeIsDrawnWhereTheLightIsLowTheDeeperTheLarger) {

@@ -231,10 +231,16 @@ ir::FunctionCurve parseFunctionCurve(const std::vector<std::string>& lines, size
     return f;
 }
 
+ir::ViewSettings cpfgDefaultView() {
+    ir::ViewSettings view;
+    view.taperedLines = true;
+    view.lineStyle = ir::LineStyle::Pixel;
+    view.dollarRolls = false;
+    return view;
+}
+
 CpfgView readCpfgView(const std::string& path) {
     CpfgView out;
-    out.view.taperedLines = true;
-    out.view.lineStyle = ir::LineStyle::Pixel;
     std::vector<std::string> lines = splitLines(readSourceFile(path));
     std::filesystem::path dir = std::filesystem::path(path).parent_path();
     for (size_t i = 0; i < lines.size(); ++i) {

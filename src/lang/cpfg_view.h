@@ -9,8 +9,12 @@
 
 namespace simeco::lang {
 
+// cpfg's drawing defaults, with a view file or without: tapered lines, pixel lines, and `$` the end of a
+// sub-L-system call rather than a roll.
+ir::ViewSettings cpfgDefaultView();
+
 struct CpfgView {
-    ir::ViewSettings view;
+    ir::ViewSettings view = cpfgDefaultView();
     std::vector<ir::FunctionCurve> functions; // func(id, x) ids are 1-based in this order
     std::vector<ir::ContourCurve> curves;     // curveX(id, t) ids are 1-based in this order
     PredefinedMacros macros;                  // NAME=id for functions read from a function set

@@ -41,13 +41,10 @@ namespace {
 
 ir::Grammar loadCpfgModel(const std::string& path) {
     CpfgView view;
-    view.view.taperedLines = true; // cpfg's defaults, with a view file or without
-    view.view.lineStyle = ir::LineStyle::Pixel;
     std::string viewPath = findViewFile(path);
     if (!viewPath.empty()) view = readCpfgView(viewPath);
     ir::Grammar g = parseCpfg(preprocessFile(path, view.macros), std::move(view.functions));
     g.view = view.view;
-    g.view.dollarRolls = false;
     g.curves = std::move(view.curves);
     // A model is coloured by its colour map (`cpfg -m`) or, without one, by its materials (`cpfg -M`).
     if (std::string map = findModelFile(path, ".map"); !map.empty()) g.view.palette = readColorMap(map);

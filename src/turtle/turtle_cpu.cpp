@@ -39,7 +39,7 @@ struct TurtleState {
     int64_t tapering = -1;
 };
 
-// Commands after which a tapering segment's end keeps the width it has (taperEnds in the turtle kernels).
+// Commands after which a tapering segment's end keeps the width it has (kEndsTaper in compute/turtle/taper.comp).
 bool endsTaper(uint32_t command) {
     return command == kTurtleBranchOpen || command == kTurtleBranchClose || turtleDraws(command) ||
            turtleMovesOnly(command) || command == kTurtleSetPosition;

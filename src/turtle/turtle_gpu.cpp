@@ -688,7 +688,8 @@ void GpuTurtle::Impl::reserve(std::uint64_t n, std::uint64_t plants) {
     Scratch& b = scratch;
     for (vk::Buffer* one : {&b.commands, &b.parents, &b.plantOf, &b.marks, &b.kinds, &b.slots, &b.lastSlots,
                             &b.pointers[0], &b.pointers[1], &b.triangleFirst, &b.trianglePrevious, &b.stemBelow,
-                            &b.taperBelow, &b.tubeBelow, &b.cylinderAnchors, &b.cylinderStarts, &b.stepTargets, &b.searchTargets,
+                            &b.taperBelow, &b.tubeBelow, &b.cylinderAnchors, &b.cylinderStarts, &b.stepTargets,
+                            &b.searchTargets,
                             &b.searchChunk, &b.searchJumps[0], &b.searchJumps[1], &b.order})
         *one = deviceBuffer(capacity, 4);
     b.steps[0] = deviceBuffer(capacity, sizeof(TurtleStep));

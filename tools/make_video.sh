@@ -1,18 +1,27 @@
 #!/usr/bin/env bash
-# Turns a `simeco run --frames N` folder's frames (frame-00001.png, ...) into a time-lapse: an MP4 (H.264) or an
-# animated GIF, chosen by the output's extension.
-# Usage: tools/make_video.sh RUN_DIR OUT.mp4|OUT.gif [FRAMES_PER_SECOND]
+# Turns frames into a time-lapse: an MP4 (H.264) or an animated GIF, chosen by the output's extension. The frames
+# are a `simeco run --frames N` folder's (RUN_DIR/frame-00001.png, ...) or a `simeco render --frames N -o OUT.png`
+# animation's (OUT-00001.png, ...: give OUT, the output without its extension).
+# Usage: tools/make_video.sh RUN_DIR|OUT OUT.mp4|OUT.gif [FRAMES_PER_SECOND]
 # Needs ffmpeg (Debian package ffmpeg, installed here with apt-get when missing).
 set -euo pipefail
 if [ $# -lt 2 ] || [ $# -gt 3 ]; then
-  echo "usage: $0 RUN_DIR OUT.mp4|OUT.gif [FRAMES_PER_SECOND]" >&2
+  echo "usage: $0 RUN_DIR|OUT OUT.mp4|OUT.gif [FRAMES_PER_SECOND]" >&2
   exit 2
 fi
-dir=$1
+source=$1
 out=$2
 fps=${3:-12}
-frames=$(find "$dir" -maxdepth 1 -name 'frame-*.png' | sort)
-[ -n "$frames" ] || { echo "$0: no frame-*.png in $dir (run simeco run with --frames N)" >&2; exit 2; }
+if [ -d "$source" ]; then
+  frames=$(find "$source" -maxdepth 1 -name 'frame-*.png' | sort)
+else
+  frames=$(find "$(dirname "$source")" -maxdepth 1 -name "$(basename "$source")-[0-9]*.png" | sort)
+fi
+[ -n "$frames" ] || {
+  echo "$0: no frames: neither $source/frame-*.png (simeco run --frames N)" \
+    "nor $source-00001.png ... (simeco render --frames N)" >&2
+  exit 2
+}
 case "$out" in
   *.mp4 | *.gif) ;;
   *) echo "$0: $out: the video is written as .mp4 or .gif" >&2; exit 2 ;;

@@ -105,13 +105,17 @@ float grownValue(uint code, inout Grown g) {
 }
 
 // A grammar's segment (not the letter of an `@` command) as long as the part of its first DeriveTime it has
-// lived; a segment without a length gets the turtle's step.
+// lived; a segment without a length gets the turtle's step. A sphere or disc's radius likewise.
 void growSegment(uint i, uint plant, uint species) {
     uint sym = symbols[i] & kSymbolMask;
-    if ((classes[species * pc.symbols + sym] & kGrowSegment) == 0u) return;
-    if (i > plantStart[plant] && (symbols[i - 1u] & kSymbolMask) == pc.atSymbol) return;
+    bool afterAt = i > plantStart[plant] && (symbols[i - 1u] & kSymbolMask) == pc.atSymbol;
+    if ((classes[species * pc.symbols + sym] & (afterAt ? kGrowRadius : kGrowSegment)) == 0u) return;
     float grown = min(particle(i, kParticleAge) / deriveTimes[plant], 1.0);
     if (grown >= 1.0) return;
+    if (afterAt) { // a radius it has, or the line width's, which it keeps
+        if ((symbols[i] >> kSymbolBits) > 0u) params[pc.stride * i] *= grown;
+        return;
+    }
     if ((symbols[i] >> kSymbolBits) > 0u) {
         params[pc.stride * i] *= grown;
     } else {

@@ -25,7 +25,8 @@ SIMECO_SHARED_BEGIN
 SIMECO_CONST kGrowWorkgroupSize = 128u;
 
 // Module classes (per species and symbol): the six SimEco organ kinds (ir::EcoOrganKind's order), then every
-// other module as kGrowPlainClass + its symbol (with kGrowSegment where a grammar's segment grows).
+// other module as kGrowPlainClass + its symbol (with kGrowSegment or kGrowRadius where a grammar's segment or round
+// organ grows).
 SIMECO_CONST kGrowOrganKinds = 6u;
 SIMECO_CONST kGrowApex = 0u;
 SIMECO_CONST kGrowStem = 1u;
@@ -47,9 +48,11 @@ SIMECO_CONST kGrowNoRow = 0xFFFFFFFFu;
 // The species' drawn modules carry kGrownValue codes (SimEco's homomorphism).
 SIMECO_CONST kSpeciesDrawsGrowth = 1u;
 // A cpfg or quick grammar's species: each drawn segment (F f G g, its class marked kGrowSegment) grows to its
-// length over the first DeriveTime of its particle.
+// length over the first DeriveTime of its particle, and so does the radius of each sphere or disc `@O(r)`,
+// `@c(r)`, `@o(r)` (the letter after `@` marked kGrowRadius), as the thesis's clouds grow their spheres.
 SIMECO_CONST kSpeciesGrowsSegments = 2u;
 SIMECO_CONST kGrowSegment = 0x80000000u;
+SIMECO_CONST kGrowRadius = 0x40000000u;
 
 // A stage row: the stage number, then each property's min and max (padded to a multiple of four floats); rows of an
 // organ sorted by stage.

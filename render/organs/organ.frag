@@ -1,6 +1,7 @@
 #version 460
-// Lighting of organs and ground: the sun (Lambert) plus a sky/ground hemisphere ambient, or the toon style's
-// colour bands. Surfaces are lit from the side the camera sees, since leaves and discs are single sheets.
+// Lighting of organs and ground: the sun (Lambert) plus a sky/ground hemisphere ambient, the toon and outline
+// styles' colour bands, or the paper-cut style's two tones. Surfaces are lit from the side the camera sees, since
+// leaves and discs are single sheets.
 #extension GL_GOOGLE_include_directive : require
 
 #include "render/shared/draw_layout.h"
@@ -39,8 +40,17 @@ void main() {
         normal = -normal;
     }
     float sun = max(dot(normal, frame.sunDirection.xyz), 0.0);
+    if (frame.options.x == kStylePaperCut) {
+        // A paper cut is flat: the organ's colour where the sun reaches it, the paper behind where it does not.
+        // (The renderer draws this style without shadow volumes, in one full pass.)
+        bool cut = sun < uintBitsToFloat(frame.options.z);
+        outColor = vec4(cut ? frame.background.rgb : albedo, 1.0);
+        outPlant = inPlant;
+        outOrgan = inOrgan;
+        return;
+    }
     float skyWeight = 0.5 + 0.5 * normal.y;  // world up is +y
-    if (frame.options.x == kStyleToon) {
+    if (frame.options.x == kStyleToon || frame.options.x == kStyleOutline) {
         float bands = float(max(frame.options.y, 1u));
         sun = min(floor(sun * bands + 0.5), bands) / bands;
         skyWeight = skyWeight > 0.5 ? 1.0 : 0.5;

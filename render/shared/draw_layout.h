@@ -36,6 +36,8 @@ SIMECO_CONST kPassSun = 2u;
 // DrawFrame.options.x
 SIMECO_CONST kStyleLit = 0u;
 SIMECO_CONST kStyleToon = 1u;
+SIMECO_CONST kStyleOutline = 2u;  // toon bands; the outline kernel draws the lines
+SIMECO_CONST kStylePaperCut = 3u;
 
 // Local size of the renderer's 1D kernels and the 2D tile of the outline kernel.
 SIMECO_CONST kDrawWorkgroupSize = 64u;
@@ -72,7 +74,8 @@ struct DrawFrame {
     vec4 groundBounce;    // rgb: ambient light from below
     vec4 groundColor;     // rgb: albedo of the ground plane
     vec4 groundPlane;     // xyz: centre of the ground square; w: half its side
-    uvec4 options;        // x: style (kStyle*); y: toon colour bands
+    vec4 background;      // rgb: what shows where nothing is drawn (and through a paper cut)
+    uvec4 options;        // x: style (kStyle*); y: toon colour bands; z: paper-cut threshold (float bits)
 };
 
 struct DrawPush {
@@ -131,7 +134,7 @@ struct OutlinePush {
 
 #ifdef __cplusplus
 static_assert(sizeof(MeshVertex) == 32);
-static_assert(sizeof(DrawFrame) == 64 + 10 * 16);
+static_assert(sizeof(DrawFrame) == 64 + 11 * 16);
 static_assert(sizeof(DrawPush) == 8);
 static_assert(sizeof(DrawArgsPush) == 64);
 static_assert(sizeof(VolumeDraw) == 32);

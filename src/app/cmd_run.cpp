@@ -45,10 +45,7 @@ struct RunArgs {
     double time = 0;     // 0: until every plant has grown
     uint32_t frames = 0; // a frame every N ticks; 0: the last only
     std::string out = "run";
-    std::string size = "960x720";
-    std::string camera;
-    std::string style = "lit";
-    std::string shadows = "volume";
+    PictureOptions picture;
     std::string device;
     std::string save;   // where the state is written at the end; empty: nowhere
     std::string resume; // the state the field starts from; empty: the axioms
@@ -174,15 +171,17 @@ void runRun(RunArgs args) {
         args.simulation.sceneText = kDefaultSceneText;
         if (args.simulation.plants == 0) args.simulation.plants = kDefaultScenePlants;
     }
+    if (!args.simulation.colormap.empty() && fs::path(args.simulation.file).extension() == ".eco")
+        throw CommandLineError("--colormap: a scene's colours are its stages' own; a colour map replaces a grammar's");
     // A scene's text goes into a saved state, so that the state stands alone.
     if (!args.save.empty() && args.simulation.sceneText.empty() && fs::path(args.simulation.file).extension() == ".eco")
         args.simulation.sceneText = lang::readSourceFile(args.simulation.file);
-    draw::RenderSettings settings = renderSettings(args.size, args.camera, args.style, args.shadows);
     vk::ContextOptions contextOptions;
     contextOptions.device = args.device;
     vk::Context context(contextOptions);
     if (args.profile) context.enableKernelProfile();
     field::Simulation simulation(args.simulation, &context);
+    draw::RenderSettings settings = renderSettings(args.picture, simulation.species().species.front().view);
     if (simulation.species().scene) applySceneLight(simulation.species().scene->light, settings);
     if (saved) {
         try {
@@ -291,10 +290,8 @@ void registerRunCommand(CLI::App& app, CommandContext& ctx) {
     CLI::Option* spacing =
         cmd->add_option("--spacing", s.spacing, "distance between plants of a field (default: from a grown plant)")
             ->check(CLI::Range(0.0f, 1e6f));
-    cmd->add_option("--size", args->size, "image size WIDTHxHEIGHT (default 960x720)");
-    cmd->add_option("--camera", args->camera, "azimuth,elevation[,distance] in degrees (default: framed on the field)");
-    cmd->add_option("--style", args->style, "lit or toon")->check(CLI::IsMember({"lit", "toon"}));
-    cmd->add_option("--shadows", args->shadows, "volume or none")->check(CLI::IsMember({"volume", "none"}));
+    addPictureOptions(*cmd, args->picture, "field");
+    addColormapOption(*cmd, s.colormap);
     addBackendOption(*cmd, s.backend, "derivation, growth and turtle: gpu (compute kernels) or cpu (references)");
     cmd->add_option("--max-modules", s.maxModules, "module budget (default: sized to this machine's memory)");
     addTimeLimitOption(*cmd, s.maxSeconds);

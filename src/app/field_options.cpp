@@ -12,6 +12,13 @@ CLI::Option* addBackendOption(CLI::App& cmd, field::Backend& backend, const std:
     return cmd.add_option_function<std::string>("--backend", read, description)->check(CLI::IsMember({"cpu", "gpu"}));
 }
 
+CLI::Option* addColormapOption(CLI::App& cmd, std::string& path) {
+    return cmd
+        .add_option("--colormap", path,
+                    "a cpfg colour map (.map, 256 RGB colours) for a grammar's `;` colour indices in place of its own")
+        ->check(CLI::ExistingFile);
+}
+
 CLI::Option* addTimeLimitOption(CLI::App& cmd, double& seconds) {
     return cmd
         .add_option("--max-seconds", seconds,

@@ -12,6 +12,9 @@ namespace simeco::app {
 void addFieldOptions(CLI::App& cmd, field::FieldSource& source);
 
 // Adds `--backend gpu|cpu`, read into `backend`.
+// --colormap FILE: a cpfg colour map (.map) for a grammar's `;` colour indices in place of its own.
+CLI::Option* addColormapOption(CLI::App& cmd, std::string& path);
+
 CLI::Option* addBackendOption(CLI::App& cmd, field::Backend& backend, const std::string& description);
 
 // Adds `--max-seconds S`, the derivation's time limit (stream::DeriveOptions::maxSeconds), read into `seconds`.

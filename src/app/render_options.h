@@ -1,17 +1,35 @@
-// The image options the commands that render share (`render`, `run`): size, camera, style and shadows, as typed.
+// The image options the commands that render share (`render`, `run`): size, camera, style, shadows, ground and
+// background, as typed.
 #pragma once
 
 #include <string>
 
+#include <CLI/CLI.hpp>
+
 #include "draw/render_settings.h"
 #include "ir/eco_field.h"
+#include "ir/grammar.h"
 
 namespace simeco::app {
 
-// Throws CommandLineError for a size other than WIDTHxHEIGHT (each 1 to 16384) or a camera other than
-// azimuth,elevation[,distance] with the elevation within (-90, 90); an empty camera frames the plants.
-draw::RenderSettings renderSettings(const std::string& size, const std::string& camera, const std::string& style,
-                                    const std::string& shadows);
+// Empty style, shadows, ground and background take the model's view file (its `render style:`, `shadows:`,
+// `ground:`, `background:` lines), else the defaults.
+struct PictureOptions {
+    std::string size = "960x720";
+    std::string camera;
+    std::string style;
+    std::string shadows;
+    std::string ground;
+    std::string background;
+};
+
+// --size, --camera, --style, --shadows, --ground and --background; `framed` says what the default camera frames.
+void addPictureOptions(CLI::App& cmd, PictureOptions& options, const std::string& framed);
+
+// Throws CommandLineError for a size other than WIDTHxHEIGHT (each 1 to 16384), a camera other than
+// azimuth,elevation[,distance] with the elevation within (-90, 90), or a background that names the colour map of
+// a model without one. `view` is the first species' (an empty camera frames the plants).
+draw::RenderSettings renderSettings(const PictureOptions& options, const ir::ViewSettings& view);
 
 // A scene's sun, sky and ground (ir::EcoLight) in the settings: what it leaves unset stays as it is.
 void applySceneLight(const ir::EcoLight& light, draw::RenderSettings& settings);

@@ -7,7 +7,12 @@
 
 #include <glm/vec3.hpp>
 
+#include "ir/picture_look.h"
+
 namespace simeco::draw {
+
+// The `paper` background: a warm off-white, linear.
+inline constexpr glm::vec3 kPaperColor{0.83f, 0.77f, 0.62f};
 
 struct Camera {
     float azimuthDegrees = 30.0f;   // around +y, from +z towards +x
@@ -18,10 +23,8 @@ struct Camera {
     float fovYDegrees = 35.0f;       // vertical field of view of the perspective projection
 };
 
-enum class Style {
-    Lit,  // Lambert sun and hemisphere sky light
-    Toon, // the same light in colour bands, with dark outlines
-};
+// Lit, toon, outline or paper-cut (ir/picture_look.h).
+using Style = ir::PictureStyle;
 
 enum class Shadows {
     Volume, // stencil shadow volumes of the sun
@@ -45,6 +48,8 @@ struct RenderSettings {
     float groundSize = 0.0f; // the side of the ground square, centred under the scene; 0: 5 times its radius
     std::uint32_t toonBands = 3;
     glm::vec3 outlineColor{0.02f, 0.02f, 0.02f};
+    // Paper-cut: where the sun's cosine on a surface falls below this, the paper shows through.
+    float paperCutThreshold = 0.02f;
     // Shadow volume vertices take 16 bytes each; a scene needing more than this (or than the device binds in one
     // storage buffer) draws the volumes that fit.
     std::uint64_t maxShadowVolumeBytes = 256ull << 20;

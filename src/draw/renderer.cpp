@@ -1,6 +1,7 @@
 #include "draw/renderer.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstring>
 #include <deque>
@@ -38,6 +39,21 @@ constexpr float kVolumeCapDepth = 0.01f;
 // Line half-width of toon outlines per 600 pixels of image height, and what counts as a depth edge.
 constexpr float kOutlinePixelsPer600 = 1.0f;
 constexpr float kOutlineThreshold = 0.02f;
+
+std::uint32_t styleCode(Style style) {
+    switch (style) {
+    case Style::Lit: return shared::kStyleLit;
+    case Style::Toon: return shared::kStyleToon;
+    case Style::Outline: return shared::kStyleOutline;
+    case Style::PaperCut: return shared::kStylePaperCut;
+    }
+    return shared::kStyleLit;
+}
+
+// The styles the outline kernel draws over: ink lines, or a paper cut's cuts.
+bool hasOutlines(Style style) {
+    return style == Style::Outline || style == Style::PaperCut;
+}
 
 shared::vec4 vec4Of(glm::vec3 v, float w = 0.0f) {
     return {v.x, v.y, v.z, w};
@@ -204,6 +220,8 @@ FrameSetup Renderer::prepareView(const Bounds& bounds, const RenderSettings& set
     Resources& r = *resources_;
     FrameSetup setup;
     setup.settings = settings;
+    // A paper cut has no shadows: what the sun does not reach is cut out already.
+    if (settings.style == Style::PaperCut) setup.settings.shadows = Shadows::None;
     setup.towardsSun = settings.sunDirection / sunLength;
     setup.camera = frameCamera(bounds, settings);
     Bounds box = framedBounds(bounds);
@@ -224,7 +242,9 @@ FrameSetup Renderer::prepareView(const Bounds& bounds, const RenderSettings& set
     glm::vec3 centre = box.centre();
     frame.groundPlane = {centre.x, box.min.y, centre.z,
                          settings.groundSize > 0.0f ? 0.5f * settings.groundSize : 2.5f * radius};
-    frame.options = {settings.style == Style::Toon ? shared::kStyleToon : shared::kStyleLit, settings.toonBands, 0, 0};
+    frame.background = vec4Of(settings.background);
+    frame.options = {styleCode(settings.style), settings.toonBands,
+                     std::bit_cast<std::uint32_t>(settings.paperCutThreshold), 0};
     ++r.framesPrepared;
     while (!r.retired.empty() && r.retired.front().first + kFramesInFlight < r.framesPrepared) r.retired.pop_front();
     return setup;
@@ -374,11 +394,14 @@ void Renderer::Resources::recordOutlines(VkCommandBuffer cmd, const RenderTarget
     const RenderSettings& settings = setup.settings;
     const CameraView& camera = setup.camera;
     shared::OutlinePush outline{};
-    outline.lineColor = vec4Of(settings.outlineColor, 1.0f);
+    // A paper cut's edges are cuts: the paper shows along them.
+    outline.lineColor = vec4Of(settings.style == Style::PaperCut ? settings.background : settings.outlineColor, 1.0f);
     outline.width = into.width();
     outline.height = into.height();
+    // Cuts are wider than ink lines, so that the paper shows between the pieces.
+    const float widthScale = settings.style == Style::PaperCut ? 2.0f : 1.0f;
     outline.radius = static_cast<std::uint32_t>(
-        std::max(1.0f, std::round(kOutlinePixelsPer600 * static_cast<float>(into.height()) / 600.0f)));
+        std::max(1.0f, std::round(widthScale * kOutlinePixelsPer600 * static_cast<float>(into.height()) / 600.0f)));
     outline.threshold = kOutlineThreshold;
     outline.nearPlane = camera.nearPlane;
     outline.farPlane = camera.farPlane;
@@ -406,7 +429,7 @@ void Renderer::record(VkCommandBuffer cmd, const RenderTarget& target, const std
     memoryDependency(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
                      VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_HOST_BIT,
                      VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_HOST_READ_BIT);
-    if (setup.settings.style == Style::Toon) r.recordOutlines(cmd, target, setup);
+    if (hasOutlines(setup.settings.style)) r.recordOutlines(cmd, target, setup);
 }
 
 Frame Renderer::readBack(const RenderTarget& target, const FrameSetup& setup) const {
@@ -414,7 +437,7 @@ Frame Renderer::readBack(const RenderTarget& target, const FrameSetup& setup) co
     result.width = target.width();
     result.height = target.height();
     std::size_t pixels = result.pixelCount();
-    const vk::Buffer& color = setup.settings.style == Style::Toon ? target.outlined() : target.color();
+    const vk::Buffer& color = hasOutlines(setup.settings.style) ? target.outlined() : target.color();
     result.rgba.resize(4 * pixels);
     std::memcpy(result.rgba.data(), color.mapped(), result.rgba.size() * sizeof(float));
     result.plant.resize(pixels);

@@ -8,6 +8,7 @@
 #include "cpu/derive.h"
 #include "gpu/derive_gpu.h"
 #include "ir/species.h"
+#include "lang/color_map.h"
 #include "lang/load_grammar.h"
 #include "turtle/finite_organs.h"
 #include "turtle/organ_merge.h"
@@ -40,6 +41,7 @@ Field& Field::operator=(Field&&) noexcept = default;
 Field deriveField(const FieldSource& source, const vk::Context* context) {
     Field field;
     field.species = loadSpecies(source.file, &field.assets);
+    if (!source.colormap.empty()) lang::useColorMap(field.species, source.colormap);
     stream::DeriveOptions options;
     options.steps = source.steps;
     options.seed = source.seed;

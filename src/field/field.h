@@ -39,6 +39,7 @@ struct FieldSource {
     uint64_t maxModules = 0;
     double maxSeconds = stream::kDefaultMaxSeconds;
     std::string device;
+    std::string colormap; // a cpfg colour map (.map) in place of the grammars' own; empty: theirs
 
     bool onDevice() const { return backend == Backend::Gpu; }
 };

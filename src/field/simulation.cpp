@@ -26,6 +26,7 @@
 #include "grow/tick_gpu.h"
 #include "ir/source_loc.h"
 #include "ir/species.h"
+#include "lang/color_map.h"
 #include "lang/eco_parser.h"
 #include "turtle/organ_merge.h"
 #include "turtle/turtle_commands.h"
@@ -193,6 +194,7 @@ Simulation::Simulation(const SimulationOptions& options, const vk::Context* cont
         warnings = scene.warnings;
         m.g = grow::growingSpecies(std::move(scene), &warnings);
     }
+    if (!options.colormap.empty()) lang::useColorMap(m.g.species, options.colormap);
     m.seed = options.seed >= 0 ? uint32_t(options.seed) : m.g.species.front().seed;
     FieldLayout layout;
     if (hasPopulations(m.g)) {
@@ -573,6 +575,11 @@ uint64_t Simulation::modules() const {
 }
 double Simulation::grownBy() const {
     return latestGrowth(impl_->g.species, impl_->tables, impl_->deriveTimes, impl_->derive.steps);
+}
+void Simulation::setTickSeconds(float dt) {
+    if (impl_->ticks > 0) throw std::logic_error("a field's ticks keep their length once it has ticked");
+    if (!(dt > 0) || !std::isfinite(dt)) throw std::invalid_argument("the tick's dt must be positive");
+    impl_->options.dt = dt;
 }
 const grow::GrowingSpecies& Simulation::species() const {
     return impl_->g;

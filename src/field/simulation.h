@@ -41,6 +41,7 @@ struct SimulationOptions {
     double maxSeconds = stream::kDefaultMaxSeconds;
     uint64_t maxPartBytes = 0; // of the organs' parts (turtle::OrganMerge); 0: one buffer binding's
     Backend backend = Backend::Gpu;
+    std::string colormap; // a cpfg colour map (.map) in place of the grammars' own; empty: theirs
 };
 
 // What a tick did.
@@ -96,6 +97,9 @@ public:
     uint64_t modules() const;
     // When every plant has derived its steps and every organ's growth has ended, at the latest.
     double grownBy() const;
+    // Before the first tick: ticks of `dt` simulated seconds (an animation's, once it knows how long the field
+    // grows). Throws std::logic_error after it.
+    void setTickSeconds(float dt);
     // Where the field will reach when grown, as one plant of each species grows on the CPU (a plant's own random
     // draws may take it a little further): what a camera that stays put while the field grows frames.
     draw::Bounds grownBounds() const;

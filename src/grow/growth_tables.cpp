@@ -117,9 +117,14 @@ GrowthTables growthTables(const std::vector<ir::Grammar>& species, const std::ve
             words[shared::kSpeciesFlags] = shared::kSpeciesGrowsSegments;
             words[shared::kSpeciesSegmentStep] =
                 std::bit_cast<uint32_t>(turtle::turtleSettings(species[s], species[s].alphabet).step);
-            for (uint32_t sym = 0; sym < t.symbols; ++sym)
+            for (uint32_t sym = 0; sym < t.symbols; ++sym) {
                 if (shared::turtleDraws(commands.plain[sym]) || shared::turtleMovesOnly(commands.plain[sym]))
                     classes[sym] |= shared::kGrowSegment;
+                const uint32_t afterAt = commands.afterAt[sym];
+                if (afterAt == shared::kTurtleSphere || afterAt == shared::kTurtleDisc ||
+                    afterAt == shared::kTurtleDiscFacing)
+                    classes[sym] |= shared::kGrowRadius;
+            }
             continue;
         }
         words[shared::kSpeciesFlags] = shared::kSpeciesDrawsGrowth;

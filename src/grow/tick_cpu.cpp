@@ -218,12 +218,17 @@ void growSizesCpu(const TickSettings& ts, const std::vector<float>& deriveTimes,
         if (words[shared::kSpeciesFlags] & shared::kSpeciesGrowsSegments)
             for (size_t i = drawn.plantStart[plant]; i < drawn.plantStart[plant + 1]; ++i) {
                 // A segment (not the letter of an `@` command) as long as the part of its first DeriveTime it
-                // has lived; one without a length gets the turtle's step.
-                if (!(t.classes[size_t(species) * t.symbols + drawn.sym[i]] & shared::kGrowSegment)) continue;
-                if (i > drawn.plantStart[plant] && drawn.sym[i - 1] == t.atSymbol) continue;
+                // has lived; one without a length gets the turtle's step. A sphere or disc's radius likewise.
+                const uint32_t klass = t.classes[size_t(species) * t.symbols + drawn.sym[i]];
+                const bool afterAt = i > drawn.plantStart[plant] && drawn.sym[i - 1] == t.atSymbol;
+                if (!(klass & (afterAt ? shared::kGrowRadius : shared::kGrowSegment))) continue;
                 const float grown = std::min(drawn.particles[i].value[shared::kParticleAge] / deriveTimes[plant], 1.0f);
                 if (grown >= 1.0f) continue;
                 float& length = drawn.params[i * size_t(drawn.stride)];
+                if (afterAt) { // a radius it has, or the line width's, which it keeps
+                    if (drawn.paramCount[i] > 0) length *= grown;
+                    continue;
+                }
                 if (drawn.paramCount[i] > 0) {
                     length *= grown;
                 } else {

@@ -15,6 +15,7 @@
 #include "ir/expr.h"
 #include "ir/contour_curve.h"
 #include "ir/function_curve.h"
+#include "ir/picture_look.h"
 
 namespace simeco::ir {
 
@@ -149,6 +150,7 @@ struct ViewSettings {
         std::optional<uint32_t> shape; // the leaf shape that draws it, where a model names it (else its name's)
     };
     std::vector<Surface> surfaces;
+    PictureLook look; // simeco's own lines: the picture's style, ground and background
     bool present = false;
 };
 

@@ -30,4 +30,33 @@ std::vector<std::array<float, 3>> readColorMap(const std::string& path) {
     return palette;
 }
 
+void useColorMap(std::vector<ir::Grammar>& species, const std::string& path) {
+    const std::vector<std::array<float, 3>> palette = readColorMap(path);
+    for (ir::Grammar& g : species) {
+        g.view.palette = palette;
+        g.view.paletteTextures.clear();
+    }
+}
+
+std::optional<ir::Background> backgroundNamed(std::string_view name) {
+    ir::Background b;
+    if (name == "sky") return b;
+    if (name == "paper" || name == "colormap") {
+        b.kind = name == "paper" ? ir::Background::Kind::Paper : ir::Background::Kind::Colormap;
+        return b;
+    }
+    if (name.size() != 7 || name[0] != '#') return std::nullopt;
+    unsigned rgb = 0;
+    for (char c : name.substr(1)) {
+        int digit = c >= '0' && c <= '9' ? c - '0' : c >= 'a' && c <= 'f' ? c - 'a' + 10 : -1;
+        if (c >= 'A' && c <= 'F') digit = c - 'A' + 10;
+        if (digit < 0) return std::nullopt;
+        rgb = rgb * 16 + static_cast<unsigned>(digit);
+    }
+    b.kind = ir::Background::Kind::Color;
+    for (int c = 0; c < 3; ++c)
+        b.color[size_t(c)] = srgbToLinear(static_cast<float>((rgb >> (16 - 8 * c)) & 0xFFu) / 255.0f);
+    return b;
+}
+
 } // namespace simeco::lang

@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include "lang/color_map.h"
 #include "lang/cpfg_contour.h"
 #include "lang/source_text.h"
 
@@ -239,6 +240,20 @@ ir::ViewSettings cpfgDefaultView() {
     return view;
 }
 
+namespace {
+
+// A value of one of simeco's own picture lines that is none of those it may take.
+[[noreturn]] void lookError(const std::string& file, const std::string& line, size_t index, const char* key,
+                            const char* expected) {
+    const size_t colon = line.find(':');
+    const size_t value = line.find_first_not_of(" \t", colon + 1);
+    const size_t column = value == std::string::npos ? colon + 2 : value + 1;
+    throw ir::InputError({file, static_cast<int>(index + 1), static_cast<int>(column)},
+                         fmt::format("{}: expected {}", key, expected));
+}
+
+} // namespace
+
 CpfgView readCpfgView(const std::string& path) {
     CpfgView out;
     std::vector<std::string> lines = splitLines(readSourceFile(path));
@@ -300,6 +315,29 @@ CpfgView readCpfgView(const std::string& path) {
         } else if (field(line, "tropism", value)) {
             readTropism(value, path, i, out.view);
             out.view.tropismRule = ir::TropismRule::Torque;
+        } else if (field(line, "viewpoint", value)) {
+            std::array<float, 3> point{0, 0, 1};
+            readVector(value, path, i, "viewpoint", point);
+            out.view.look.viewpoint = point;
+        } else if (field(line, "view reference point", value)) {
+            std::array<float, 3> point{};
+            readVector(value, path, i, "view reference point", point);
+            out.view.look.viewReferencePoint = point;
+        } else if (field(line, "render style", value)) {
+            out.view.look.style = ir::pictureStyleNamed(firstWord(value));
+            if (!out.view.look.style) lookError(path, lines[i], i, "render style", "lit, toon, outline or paper-cut");
+        } else if (field(line, "shadows", value)) {
+            const std::string word = firstWord(value);
+            if (word != "volume" && word != "none") lookError(path, lines[i], i, "shadows", "volume or none");
+            out.view.look.shadows = word == "volume";
+        } else if (field(line, "ground", value)) {
+            const std::string word = firstWord(value);
+            if (word != "on" && word != "off") lookError(path, lines[i], i, "ground", "on or off");
+            out.view.look.ground = word == "on";
+        } else if (field(line, "background", value)) {
+            out.view.look.background = backgroundNamed(firstWord(value));
+            if (!out.view.look.background)
+                lookError(path, lines[i], i, "background", "sky, paper, colormap or a colour #rrggbb");
         } else if (field(line, "surface", value)) {
             std::istringstream in(value);
             ir::ViewSettings::Surface surface;

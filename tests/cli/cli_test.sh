@@ -130,6 +130,66 @@ PY
 ok=$?
 check "render writes the light grid's views ($(head -c 300 "$work/lit.txt"))" $ok
 
+# A cloud of the library in another palette, cut from paper; the palette's entry 0 is the background.
+"$simeco" render "$source_dir/grammars/clouds/head-c1a.l" --size 80x60 --style paper-cut \
+  --colormap "$source_dir/grammars/clouds/palettes/gold-on-red.map" -o "$work/cut.png" >"$work/cut.txt" 2>&1
+[ -s "$work/cut.png" ]
+check "render draws a cloud in a colour map given on the command line ($(head -c 300 "$work/cut.txt"))" $?
+
+# The cloud's growth in four frames: more of it drawn in each, every one framed alike.
+"$simeco" render "$source_dir/grammars/clouds/head-c1a.l" --frames 4 --size 80x60 -o "$work/grow.png" \
+  >"$work/grow.txt" 2>&1
+python3 - "$work" <<'PY'
+import struct, sys, zlib
+def pixels(name):
+    """The RGB rows of an 8-bit RGB or RGBA PNG, unfiltered."""
+    data = open(f"{sys.argv[1]}/{name}", "rb").read()
+    width, height, depth, kind = struct.unpack(">IIBB", data[16:26])
+    assert depth == 8 and kind in (2, 6), (depth, kind)
+    at, idat = 8, b""
+    while at < len(data):
+        size, = struct.unpack(">I", data[at:at + 4])
+        if data[at + 4:at + 8] == b"IDAT":
+            idat += data[at + 8:at + 8 + size]
+        at += 12 + size
+    raw, bpp = zlib.decompress(idat), 3 if kind == 2 else 4
+    stride, rows, previous, at = width * bpp, [], bytearray(width * bpp), 0
+    for _ in range(height):
+        kind_of_filter, line = raw[at], bytearray(raw[at + 1:at + 1 + stride])
+        at += 1 + stride
+        for x in range(stride):
+            a = line[x - bpp] if x >= bpp else 0
+            b, c = previous[x], previous[x - bpp] if x >= bpp else 0
+            p = [0, a, b, (a + b) // 2][kind_of_filter] if kind_of_filter < 4 else \
+                min((a, b, c), key=lambda v: abs(a + b - c - v))
+            line[x] = (line[x] + p) & 255
+        rows.append([tuple(line[x * bpp:x * bpp + 3]) for x in range(width)])
+        previous = line
+    return rows
+drawn = []
+for k in range(1, 5):
+    rows = pixels(f"grow-{k:05}.png")
+    background = rows[0][0]
+    drawn.append(sum(p != background for row in rows for p in row))
+assert drawn[0] < drawn[3] and drawn == sorted(drawn) and drawn[3] > 80 * 60 // 20, drawn
+PY
+status=$?
+[ $status -eq 0 ] && [ ! -e "$work/grow-00005.png" ] && grep -q "in 4 frames" "$work/grow.txt"
+check "render --frames draws the growth, more in each frame ($(head -c 300 "$work/grow.txt"))" $?
+
+"$simeco" render "$source_dir/grammars/abop/fig1.24d.l" --background colormap -o "$work/nomap.png" \
+  >/dev/null 2>"$work/err.txt"
+code=$?
+[ $code -eq 2 ] && [ ! -e "$work/nomap.png" ] && grep -q "no colour map" "$work/err.txt"
+check "a colour map's background for a model without one is bad input (code $code)" $?
+
+printf 'render style: sketchy\n' >"$work/algae.v"
+"$simeco" render "$work/algae.l" -o "$work/sketchy.png" >/dev/null 2>"$work/err.txt"
+code=$?
+rm "$work/algae.v"
+[ $code -eq 2 ] && [ ! -e "$work/sketchy.png" ] && grep -q "algae.v:1:15: error: render style" "$work/err.txt"
+check "a view file's unknown render style is reported at its line and column (code $code)" $?
+
 "$simeco" render "$source_dir/grammars/abop/fig1.24d.l" --size 0x5 -o "$work/bad.png" >/dev/null 2>&1
 code=$?
 [ $code -ne 0 ] && [ ! -e "$work/bad.png" ] && [ -z "$(ls "$work" | grep -i 'bad.*tmp')" ]

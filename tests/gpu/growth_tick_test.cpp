@@ -2,9 +2,12 @@
 // garden of three SimEco species derived step by step whenever each plant's DeriveTime is due, every particle
 // ticked between, the drawn strings' sizes from the particles; and the same garden with organs that die and
 // stems that bend under their weight.
+#include <unistd.h>
+
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -157,6 +160,29 @@ TEST_F(GrowthTickTest, TheDeviceGrowsAGrammarsSegmentsAsTheReference) {
     // Some drawn segment is shorter than the step: it was growing when the field was drawn.
     bool growing = false;
     for (size_t i = 0; i < drawn.size(); ++i) growing |= drawn.paramCount[i] == 1 && drawn.paramsOf(i)[0] < 1.0f;
+    EXPECT_TRUE(growing);
+}
+
+TEST_F(GrowthTickTest, TheDeviceGrowsAGrammarsSpheresAndDiscsAsTheReference) {
+    // Every step a segment, a sphere `@O` and a disc `@c`: their radii grow over their first DeriveTime, as the
+    // cloud grammars' spheres do.
+    const std::filesystem::path file =
+        std::filesystem::temp_directory_path() / ("simeco-spheres-" + std::to_string(::getpid()) + ".l");
+    std::ofstream(file) << "Lsystem: 1\nderivation length: 9\nAxiom: A\nA --> F(1)[@O(0.5)]@c(0.3)A\nendlsystem\n";
+    const grow::GrowingSpecies g = grow::loadGrowingSpecies(file.string());
+    std::filesystem::remove(file);
+    const stream::ModuleString drawn = growOnBoth(g);
+    const ir::SymbolId sphere = *g.species[0].alphabet.find("O");
+    bool growing = false;
+    size_t spheres = 0;
+    for (size_t i = 0; i < drawn.size(); ++i) {
+        if (drawn.sym[i] != sphere) continue;
+        ++spheres;
+        ASSERT_EQ(drawn.paramCount[i], 1);
+        EXPECT_LE(drawn.paramsOf(i)[0], 0.5f);
+        growing |= drawn.paramsOf(i)[0] < 0.5f;
+    }
+    EXPECT_GT(spheres, 9u);
     EXPECT_TRUE(growing);
 }
 

@@ -263,29 +263,35 @@ TEST_F(RendererTest, EmptySceneShowsGroundAndSky) {
     }
 }
 
-TEST_F(RendererTest, ToonStyleOutlinesOrgansInDarkLines) {
+TEST_F(RendererTest, OutlineStyleInksTheSilhouetteOverTheToonStylesBands) {
     TestScene scene = uploadScene(context(), {makeSphere({0, 0.5f, 0}, 0.5f, 0, 9)});
     draw::RenderSettings s = smallSettings();
     Frame lit = renderer().render(scene.instances, scene.table, scene.bounds, s);
     s.style = draw::Style::Toon;
     Frame toon = renderer().render(scene.instances, scene.table, scene.bounds, s);
-    maybeSavePreview(toon, "toon_sphere");
+    s.style = draw::Style::Outline;
+    Frame outline = renderer().render(scene.instances, scene.table, scene.bounds, s);
+    maybeSavePreview(outline, "outline_sphere");
     EXPECT_EQ(toon.organ, lit.organ);
-    // Along the middle row, the sphere's outermost pixels carry the line colour in toon style only.
+    EXPECT_EQ(outline.organ, lit.organ);
+    // Along the middle row, the sphere's outermost pixels carry the line colour in the outline style only.
     std::uint32_t y = (static_cast<std::uint32_t>(organPixels(lit, 9).minY) + organPixels(lit, 9).maxY) / 2;
     std::uint32_t left = 0;
-    while (left < toon.width && toon.organ[toon.index(left, y)] != 9) {
+    while (left < outline.width && outline.organ[outline.index(left, y)] != 9) {
         ++left;
     }
-    ASSERT_LT(left, toon.width);
-    EXPECT_LT(luminance(toon, left, y), 0.05f);
+    ASSERT_LT(left, outline.width);
+    EXPECT_LT(luminance(outline, left, y), 0.05f);
+    EXPECT_GT(luminance(toon, left, y), 0.05f);
     EXPECT_GT(luminance(lit, left, y), 0.05f);
-    // Inside, colours come in bands: few distinct values across the row.
-    std::set<float> shades;
-    for (std::uint32_t x = left + 3; x < toon.width && toon.organ[toon.index(x + 3, y)] == 9; ++x) {
-        shades.insert(luminance(toon, x, y));
+    // Inside, colours come in bands in both: few distinct values across the row, where lit has many.
+    for (const Frame* banded : {&toon, &outline}) {
+        std::set<float> shades;
+        for (std::uint32_t x = left + 3; x < banded->width && banded->organ[banded->index(x + 3, y)] == 9; ++x) {
+            shades.insert(luminance(*banded, x, y));
+        }
+        EXPECT_LE(shades.size(), 6u);
     }
-    EXPECT_LE(shades.size(), 6u);
 }
 
 TEST_F(RendererTest, RejectsZeroSize) {
@@ -382,16 +388,16 @@ std::vector<OrganInstance> samplePlant() {
     return organs;
 }
 
-TEST_F(RendererTest, SmallPlantShowsEveryOrganInBothStyles) {
+TEST_F(RendererTest, SmallPlantShowsEveryOrganInEveryStyle) {
     std::vector<OrganInstance> organs = samplePlant();
     TestScene scene = uploadScene(context(), organs);
-    for (draw::Style style : {draw::Style::Lit, draw::Style::Toon}) {
+    for (draw::Style style : {draw::Style::Lit, draw::Style::Toon, draw::Style::Outline, draw::Style::PaperCut}) {
         draw::RenderSettings s;
         s.width = 320;
         s.height = 320;
         s.style = style;
         Frame frame = renderer().render(scene.instances, scene.table, scene.bounds, s);
-        maybeSavePreview(frame, style == draw::Style::Lit ? "plant_lit" : "plant_toon");
+        maybeSavePreview(frame, "plant_style_" + std::to_string(static_cast<int>(style)));
         std::set<std::uint32_t> seen(frame.organ.begin(), frame.organ.end());
         for (const OrganInstance& o : organs) {
             EXPECT_TRUE(seen.count(o.module)) << "organ " << o.module << " (kind " << o.kind << ") not visible";

@@ -89,10 +89,13 @@ draw::Bounds organBounds(const std::vector<OrganInstance>& organs) {
         glm::vec3 p = xyz(o.position);
         glm::vec3 h = xyz(o.heading);
         switch (o.kind) {
-        case shared::kOrganStem:
-            add(p, std::max(o.heading.w, o.up.w));
-            add(p + o.position.w * h, std::max(o.heading.w, o.up.w));
+        case shared::kOrganStem: {
+            // A pixel line's width is the picture's, as the field's bounds count it: the frame holds its ends.
+            const float radius = o.shape == shared::kLinePixel ? 0.0f : std::max(o.heading.w, o.up.w);
+            add(p, radius);
+            add(p + o.position.w * h, radius);
             break;
+        }
         case shared::kOrganLeaf:
             add(p, o.heading.w);
             add(p + o.position.w * h, o.heading.w);

@@ -50,7 +50,8 @@ OrganInstance makeDisc(glm::vec3 centre, glm::vec3 heading, glm::vec3 up, float 
                        std::uint32_t module);
 OrganInstance makeTriangle(glm::vec3 a, glm::vec3 b, glm::vec3 c, std::uint32_t plant, std::uint32_t module);
 
-// A box around everything the organs draw (generous: stems and leaves count their radius or width all round).
+// A box around everything the organs draw (generous: stems and leaves count their radius or width all round, but
+// for pixel lines, whose width is the picture's).
 draw::Bounds organBounds(const std::vector<OrganInstance>& organs);
 
 struct TestScene {

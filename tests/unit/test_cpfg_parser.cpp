@@ -1,6 +1,13 @@
 // The cpfg reader: sections, contexts, conditions and statement blocks land in the IR where they belong.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
+#include <array>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
 #include "grammar_text.h"
 
 namespace {
@@ -102,6 +109,57 @@ TEST(CpfgParser, LineStyleFollowsTheViewAsCpfgReadsIt) {
     // The last word read wins.
     EXPECT_EQ(styleWith("initial line width: 2 pixels\nline style: cylinder\n"), LineStyle::Cylinder);
     EXPECT_EQ(styleWith("line style: polygon\ninitial line width: 2 pixels\n"), LineStyle::Pixel);
+    fs::remove_all(dir);
+}
+
+TEST(CpfgParser, ViewLinesSayHowThePictureLooks) {
+    namespace fs = std::filesystem;
+    using simeco::ir::Background;
+    fs::path dir = fs::temp_directory_path() / ("simeco-look-" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    std::ofstream(dir / "m.l") << "Lsystem: 1\nAxiom: F\nendlsystem\n";
+    auto lookWith = [&](const std::string& view) {
+        std::ofstream(dir / "m.v") << view;
+        return simeco::lang::loadGrammarFile((dir / "m.l").string()).view.look;
+    };
+    simeco::ir::PictureLook none = lookWith("angle increment: 30\n");
+    EXPECT_FALSE(none.style || none.shadows || none.ground || none.background || none.viewpoint ||
+                 none.viewReferencePoint);
+
+    simeco::ir::PictureLook look = lookWith("render style: paper-cut\nground: off\nbackground: #ff0000\n"
+                                            "viewpoint: 0,0,-1\nview reference point: 1, 2, 3\nshadows: none\n");
+    EXPECT_EQ(look.style, simeco::ir::PictureStyle::PaperCut);
+    EXPECT_EQ(look.shadows, false);
+    EXPECT_EQ(lookWith("shadows: volume\n").shadows, true);
+    EXPECT_EQ(look.ground, false);
+    ASSERT_TRUE(look.background);
+    EXPECT_EQ(look.background->kind, Background::Kind::Color);
+    EXPECT_FLOAT_EQ(look.background->color[0], 1.0f); // sRGB ff is linear 1; 00 is 0
+    EXPECT_FLOAT_EQ(look.background->color[1], 0.0f);
+    EXPECT_EQ(look.viewpoint, (std::array<float, 3>{0, 0, -1}));
+    EXPECT_EQ(look.viewReferencePoint, (std::array<float, 3>{1, 2, 3}));
+    EXPECT_EQ(lookWith("background: paper\n").background->kind, Background::Kind::Paper);
+    EXPECT_EQ(lookWith("background: colormap\n").background->kind, Background::Kind::Colormap);
+    EXPECT_EQ(lookWith("render style: outline\n").style, simeco::ir::PictureStyle::Outline);
+
+    // A value none of those a line takes: the error points at it.
+    struct Bad {
+        std::string view;
+        int line, col;
+    };
+    for (const Bad& bad : {Bad{"render style: sketchy\n", 1, 15}, Bad{"angle increment: 9\nground:  maybe\n", 2, 10},
+                           Bad{"background: #12345\n", 1, 13}, Bad{"shadows: soft\n", 1, 10}}) {
+        SCOPED_TRACE(bad.view);
+        std::ofstream(dir / "m.v") << bad.view;
+        try {
+            simeco::lang::loadGrammarFile((dir / "m.l").string());
+            ADD_FAILURE() << "no error";
+        } catch (const simeco::ir::InputError& e) {
+            EXPECT_EQ(e.loc().file, (dir / "m.v").string());
+            EXPECT_EQ(e.loc().line, bad.line);
+            EXPECT_EQ(e.loc().col, bad.col);
+        }
+    }
     fs::remove_all(dir);
 }
 

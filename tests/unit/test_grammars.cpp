@@ -48,12 +48,11 @@ struct Derived {
     }
 };
 
-// Loads grammars/<relative> (failing when the file or its view file is missing) and derives it.
+// Loads grammars/<relative> (failing when the file or the view file it finds is missing) and derives it.
 void derive(const std::string& relative, Derived& out, int steps = -1, int64_t seed = -1) {
     std::string path = kGrammarDir + relative;
     ASSERT_TRUE(std::filesystem::is_regular_file(path)) << path << " is missing";
-    std::string view = path.substr(0, path.size() - 2) + ".v";
-    ASSERT_TRUE(std::filesystem::is_regular_file(view)) << view << " is missing";
+    ASSERT_FALSE(lang::findViewFile(path).empty()) << path << " has no view file";
     out.grammar = lang::loadGrammarFile(path);
     stream::DeriveOptions options;
     options.steps = steps;
@@ -300,15 +299,41 @@ TEST(ShippedGrammars, EveryCpfgModelLoadsWithItsViewFile) {
             if (entry.path().extension() != ".l") continue;
             SCOPED_TRACE(entry.path().string());
             ++found;
-            std::filesystem::path view = entry.path();
-            view.replace_extension(".v");
-            EXPECT_TRUE(std::filesystem::is_regular_file(view));
+            EXPECT_FALSE(lang::findViewFile(entry.path().string()).empty());
             ir::Grammar g = lang::loadGrammarFile(entry.path().string());
             EXPECT_TRUE(g.view.present);
             EXPECT_GT(g.derivationLength, 0);
         }
     }
-    EXPECT_EQ(found, 16u); // figures 1.24 a-f, 1.27, 1.31 a-e, 2.6, 2.7, 2.8 and the clouds
+    // Figures 1.24 a-f, 1.27, 1.31 a-e, 2.6, 2.7, 2.8; the clouds' example and the library's 28 parts.
+    EXPECT_EQ(found, 15u + 29u);
+}
+
+// Every part of the cloud library derives to something drawn, and looks as the library's view says: outlined, on
+// the colour map's background, without a ground or cast shadows, seen from the front as cpfg shows it.
+TEST(ShippedGrammars, TheCloudLibrarysPartsDeriveAndShareItsLook) {
+    size_t parts = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(kGrammarDir + "clouds")) {
+        if (entry.path().extension() != ".l") continue;
+        const std::string name = entry.path().filename().string();
+        SCOPED_TRACE(name);
+        ++parts;
+        Derived d;
+        ASSERT_NO_FATAL_FAILURE(derive("clouds/" + name, d, -1, 1));
+        EXPECT_EQ(d.result.steps, d.grammar.derivationLength);
+        EXPECT_EQ(d.count("["), d.count("]"));
+        // Spheres (`@O`) or generalized cylinders (`@Gc`): something of the cloud is drawn.
+        EXPECT_GT(d.count("@"), 0u);
+        const ir::PictureLook& look = d.grammar.view.look;
+        EXPECT_EQ(look.style, ir::PictureStyle::Outline);
+        EXPECT_EQ(look.ground, false);
+        EXPECT_EQ(look.shadows, false);
+        ASSERT_TRUE(look.background);
+        EXPECT_EQ(look.background->kind, ir::Background::Kind::Colormap);
+        EXPECT_EQ(look.viewpoint, (std::array<float, 3>{0, 0, 1}));
+        ASSERT_EQ(d.grammar.view.palette.size(), 256u); // clouds.map
+    }
+    EXPECT_EQ(parts, 29u);
 }
 
 } // namespace

@@ -211,13 +211,13 @@ TEST(GrowthLife, ShootsTurnAgainstGravityAndBendUnderTheirWeight) {
     EXPECT_LT(height("Geotropism = -0.3;", " Gravity = vector(0.0, 9.81, 0.0);\n"), free - 0.5f);
 }
 
-TEST(GrowthLife, AGrammarsSegmentsGrowOverTheirFirstDeriveTime) {
-    // A cpfg grammar: each step adds a segment of length 2, a segment of the turtle's step (1) and the letter of
-    // an `@` command, which is not a segment.
+TEST(GrowthLife, AGrammarsSegmentsAndSpheresGrowOverTheirFirstDeriveTime) {
+    // A cpfg grammar: each step adds a segment of length 2, a segment of the turtle's step (1), the letter of
+    // an `@` command, which is not a segment, and a sphere of radius 3.
     const std::filesystem::path file = std::filesystem::temp_directory_path() / "simeco-segments-test.l";
     {
         std::ofstream out(file);
-        out << "Lsystem: 1\nderivation length: 3\nAxiom: A\nA --> F(2)F@GsA\nendlsystem\n";
+        out << "Lsystem: 1\nderivation length: 3\nAxiom: A\nA --> F(2)F@Gs@O(3)A\nendlsystem\n";
     }
     const grow::GrowingSpecies g = grow::loadGrowingSpecies(file.string());
     std::filesystem::remove(file);
@@ -229,20 +229,22 @@ TEST(GrowthLife, AGrammarsSegmentsGrowOverTheirFirstDeriveTime) {
     const std::vector<float> deriveTimes = {3.0f};
     grow::TickSettings ts{&tables, 1, 1.0f, 0, 1};
     ASSERT_EQ(derivation.advance({1}), 1u);
-    // F(2) F @ G s A: each tick a third more of both segments; the G after `@` untouched.
+    // F(2) F @ G s @ O(3) A: each tick a third more of both segments and of the sphere's radius; the G after `@`
+    // untouched.
     const std::vector<float> want = {2.0f / 3, 4.0f / 3, 2.0f, 2.0f};
     for (uint32_t tick = 0; tick < want.size(); ++tick) {
         ts.tick = tick;
         grow::tickCpu(ts, derivation.current());
         stream::ModuleString drawn = derivation.drawn();
         grow::growSizesCpu(ts, deriveTimes, drawn);
-        ASSERT_EQ(drawn.size(), 6u);
+        ASSERT_EQ(drawn.size(), 8u);
         EXPECT_FLOAT_EQ(drawn.paramsOf(0)[0], want[tick]) << tick;
         EXPECT_EQ(drawn.paramCount[1], want[tick] < 2.0f ? 1 : 0) << tick;
         if (want[tick] < 2.0f) {
             EXPECT_FLOAT_EQ(drawn.paramsOf(1)[0], want[tick] / 2) << tick;
         }
         EXPECT_EQ(drawn.paramCount[3], 0) << tick;
+        EXPECT_FLOAT_EQ(drawn.paramsOf(6)[0], 1.5f * want[tick]) << tick;
         // The derived string keeps its full lengths.
         EXPECT_FLOAT_EQ(derivation.current().paramsOf(0)[0], 2.0f);
     }

@@ -1,2 +1,0 @@
-angle increment: 45
-initial line width: 1

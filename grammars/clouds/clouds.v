@@ -6,3 +6,4 @@ background: colormap
 viewpoint: 0,0,1
 view reference point: 0,0,0
 shadows: none
+projection: parallel

@@ -58,7 +58,7 @@ void main() {
     } else {
         OrganInstance o = instances[gl_InstanceIndex];
         OrganVertex v = organVertex(o, push.kind, inPosition, inNormal, frame.cameraRight.xyz, frame.cameraUp.xyz,
-                                    frame.cameraPosition);
+                                    frame.cameraPosition, frame.options.w != 0u);
         world = v.position;
         outNormal = v.normal;
         outAlbedo = o.color.rgb;

@@ -30,11 +30,11 @@ vec3 stemRingPoint(vec3 ringCentre, vec3 offset, vec3 heading, vec3 otherHeading
     return ringCentre + offset + along * heading;
 }
 
-// `camera`: xyz the camera's position, w the world's size of a pixel at unit distance along the view, for cpfg's
-// flat lines and bands. The shadow volumes pass zero: a band casts the shadow of the cylinder of its width (pixel
-// lines cast none).
+// `camera`: xyz the camera's position, w the world's size of a pixel at unit distance along the view (with a
+// `parallel` projection: at any distance), for cpfg's flat lines and bands. The shadow volumes pass zero: a band
+// casts the shadow of the cylinder of its width (pixel lines cast none).
 OrganVertex organVertex(OrganInstance o, uint kind, vec4 local, vec4 localNormal, vec3 cameraRight, vec3 cameraUp,
-                        vec4 camera) {
+                        vec4 camera, bool parallel) {
     OrganVertex v;
     v.present = true;
     vec3 H = o.heading.xyz;
@@ -48,6 +48,10 @@ OrganVertex organVertex(OrganInstance o, uint kind, vec4 local, vec4 localNormal
         vec3 radial = local.y * L + local.z * U;  // unit on the rings, zero at the cap centres
         vec3 ringCentre = o.position.xyz + (top ? segmentLength : 0.0) * H;
         vec3 towardsCamera = camera.xyz - ringCentre;
+        if (parallel) { // seen in parallel, every point looks along the view's axis
+            vec3 backwards = cross(cameraRight, cameraUp);
+            towardsCamera = backwards * max(dot(towardsCamera, backwards), 0.0);
+        }
         bool drawnFlat = o.shape != kLineCylinder && camera.w > 0.0;
         if (drawnFlat) {
             // cpfg's lines and polygons: flat, across the segment as the viewer sees it; a pixel line's radii are
@@ -57,7 +61,7 @@ OrganVertex organVertex(OrganInstance o, uint kind, vec4 local, vec4 localNormal
             radial = local.y * across;
             if (o.shape == kLinePixel) {
                 float depth = max(dot(-towardsCamera, cross(cameraUp, cameraRight)), 0.0);
-                float pixel = camera.w * depth;
+                float pixel = parallel ? camera.w : camera.w * depth;
                 radiusBottom = max(radiusBottom, 0.5) * pixel;
                 radiusTop = max(radiusTop, 0.5) * pixel;
             }

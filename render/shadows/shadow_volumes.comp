@@ -42,7 +42,8 @@ layout(push_constant) uniform Push {
 
 OrganVertex hullVertex(OrganInstance o, uint corner) {
     MeshVertex m = meshVertices[uint(int(meshIndices[push.firstIndex + corner]) + push.vertexOffset)];
-    return organVertex(o, push.kind, m.position, m.normal, push.cameraRight.xyz, push.cameraUp.xyz, vec4(0.0));
+    return organVertex(o, push.kind, m.position, m.normal, push.cameraRight.xyz, push.cameraUp.xyz, vec4(0.0),
+                       false);
 }
 
 void main() {

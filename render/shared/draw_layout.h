@@ -75,7 +75,8 @@ struct DrawFrame {
     vec4 groundColor;     // rgb: albedo of the ground plane
     vec4 groundPlane;     // xyz: centre of the ground square; w: half its side
     vec4 background;      // rgb: what shows where nothing is drawn (and through a paper cut)
-    uvec4 options;        // x: style (kStyle*); y: toon colour bands; z: paper-cut threshold (float bits)
+    // x: style (kStyle*); y: toon colour bands; z: paper-cut threshold (float bits); w: 1 for a parallel projection
+    uvec4 options;
 };
 
 struct DrawPush {
@@ -128,7 +129,7 @@ struct OutlinePush {
     float threshold;  // relative change of the depth's second difference that makes an edge
     float nearPlane;
     float farPlane;
-    uint pad0;
+    uint parallel;    // 1: a parallel projection, whose depth is affine across any plane already
     uint pad1;
 };
 

@@ -1,8 +1,8 @@
 #version 460
 // Toon outlines over the frame copied to buffers: a pixel turns to the line colour where the plant changes
 // next to an organ, or where the depth of an organ bends sharply (a fold or an organ in front of another).
-// Depth is compared as 1/z, which is affine across any plane on screen, so its second difference vanishes on
-// flat and gently curved surfaces and spikes at creases and occlusion edges.
+// Depth is compared as 1/z (as z in a parallel projection), which is affine across any plane on screen, so its
+// second difference vanishes on flat and gently curved surfaces and spikes at creases and occlusion edges.
 #extension GL_GOOGLE_include_directive : require
 
 #include "render/shared/draw_layout.h"
@@ -27,10 +27,12 @@ layout(push_constant) uniform Push {
 
 const uint kNoId = 0xFFFFFFFFu;
 
-// 1/z up to a constant factor, from a depth value of a [0, 1] perspective projection.
+// A measure of depth that is affine across any plane on screen: 1/z up to a constant factor from a depth value of a
+// [0, 1] perspective projection, or the distance z itself from a parallel one's.
 float inverseDepth(uint pixel) {
     float f = push.farPlane;
     float n = push.nearPlane;
+    if (push.parallel != 0u) return n + depth[pixel] * (f - n);
     return (f / (f - n) - depth[pixel]) * (f - n) / (f * n);
 }
 

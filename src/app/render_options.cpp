@@ -17,6 +17,9 @@ void addPictureOptions(CLI::App& cmd, PictureOptions& options, const std::string
     cmd.add_option("--size", options.size, "image size WIDTHxHEIGHT (default 960x720)");
     cmd.add_option("--camera", options.camera,
                    fmt::format("azimuth,elevation[,distance] in degrees (default: framed on the {})", framed));
+    cmd.add_option("--projection", options.projection,
+                   "perspective or parallel (default: the view file's `projection:`, else perspective)")
+        ->check(CLI::IsMember({"perspective", "parallel"}));
     cmd.add_option("--style", options.style,
                    "lit, toon (colour bands), outline (bands and ink outlines) or paper-cut (flat colour, cut where "
                    "the sun does not reach and along every edge) (default: the view file's, else lit)")
@@ -87,6 +90,12 @@ draw::RenderSettings renderSettings(const PictureOptions& options, const ir::Vie
     }
     const ir::PictureLook& look = view.look;
     if (!s.camera && (look.viewpoint || look.viewReferencePoint)) s.camera = viewCamera(look);
+    const bool parallel =
+        !options.projection.empty() ? options.projection == "parallel" : look.parallel.value_or(false);
+    if (parallel) {
+        if (!s.camera) s.camera = draw::Camera{};
+        s.camera->parallel = true;
+    }
     if (!options.style.empty()) s.style = *ir::pictureStyleNamed(options.style);
     else if (look.style) s.style = *look.style;
     if (!options.shadows.empty())

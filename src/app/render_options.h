@@ -12,18 +12,20 @@
 
 namespace simeco::app {
 
-// Empty style, shadows, ground and background take the model's view file (its `render style:`, `shadows:`,
-// `ground:`, `background:` lines), else the defaults.
+// Empty projection, style, shadows, ground and background take the model's view file (cpfg's `projection:`, and
+// simeco's `render style:`, `shadows:`, `ground:`, `background:` lines), else the defaults.
 struct PictureOptions {
     std::string size = "960x720";
     std::string camera;
+    std::string projection;
     std::string style;
     std::string shadows;
     std::string ground;
     std::string background;
 };
 
-// --size, --camera, --style, --shadows, --ground and --background; `framed` says what the default camera frames.
+// --size, --camera, --projection, --style, --shadows, --ground and --background; `framed` says what the default
+// camera frames.
 void addPictureOptions(CLI::App& cmd, PictureOptions& options, const std::string& framed);
 
 // Throws CommandLineError for a size other than WIDTHxHEIGHT (each 1 to 16384), a camera other than

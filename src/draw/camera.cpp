@@ -76,7 +76,22 @@ CameraView cameraView(const Camera& camera, const Bounds& bounds, float aspect) 
     v.nearPlane = std::max(distance - 2.0f * radius, 0.02f * distance);
     v.farPlane = distance + 8.0f * radius;
     v.view = glm::lookAtRH(v.position, v.target, v.up);
-    v.projection = glm::perspectiveRH_ZO(fovY, aspect, v.nearPlane, v.farPlane);
+    v.parallel = camera.parallel;
+    if (v.parallel) {
+        // The view volume's half height holds every corner of the box across the view, with the same margin.
+        float half = 0.0f;
+        for (int corner = 0; corner < 8; ++corner) {
+            glm::vec3 c((corner & 1) ? box.max.x : box.min.x, (corner & 2) ? box.max.y : box.min.y,
+                        (corner & 4) ? box.max.z : box.min.z);
+            glm::vec3 offset = c - v.target;
+            half = std::max({half, std::abs(glm::dot(offset, v.up)), std::abs(glm::dot(offset, v.right)) / aspect});
+        }
+        v.halfHeight = std::max(half, 1e-6f * std::max(radius, 1.0f)) / kFrameFill;
+        v.projection = glm::orthoRH_ZO(-v.halfHeight * aspect, v.halfHeight * aspect, -v.halfHeight, v.halfHeight,
+                                       v.nearPlane, v.farPlane);
+    } else {
+        v.projection = glm::perspectiveRH_ZO(fovY, aspect, v.nearPlane, v.farPlane);
+    }
     v.projection[1][1] = -v.projection[1][1]; // Vulkan's image y runs downwards
     v.viewProj = v.projection * v.view;
     return v;

@@ -20,6 +20,8 @@ struct CameraView {
     glm::mat4 viewProj{1.0f};
     float nearPlane = 0.1f;
     float farPlane = 100.0f;
+    bool parallel = false;  // an orthographic projection
+    float halfHeight = 0.0f; // of a parallel projection's view volume, in world units
 };
 
 // Where pixels see `bounds` (a box of at least a small size even when empty or flat) for an image of the

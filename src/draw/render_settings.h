@@ -21,6 +21,9 @@ struct Camera {
     float distance = 0.0f;
     std::optional<glm::vec3> target; // what the camera looks at; default: the centre of the bounds
     float fovYDegrees = 35.0f;       // vertical field of view of the perspective projection
+    // A parallel (orthographic) projection, as cpfg's `projection: parallel`: framed on the bounds whatever the
+    // distance, which only places the camera.
+    bool parallel = false;
 };
 
 // Lit, toon, outline or paper-cut (ir/picture_look.h).

@@ -229,7 +229,7 @@ FrameSetup Renderer::prepareView(const Bounds& bounds, const RenderSettings& set
 
     shared::DrawFrame& frame = setup.constants;
     std::memcpy(&frame.viewProj, glm::value_ptr(setup.camera.viewProj), sizeof(frame.viewProj));
-    // A pixel at unit distance: the image's height spans 2 / |P[1][1]| there.
+    // A pixel at unit distance: the image's height spans 2 / |P[1][1]| there (at any distance, in parallel).
     frame.cameraPosition = vec4Of(setup.camera.position,
                                   2.0f / (std::abs(setup.camera.projection[1][1]) * float(settings.height)));
     frame.cameraRight = vec4Of(setup.camera.right);
@@ -244,7 +244,7 @@ FrameSetup Renderer::prepareView(const Bounds& bounds, const RenderSettings& set
                          settings.groundSize > 0.0f ? 0.5f * settings.groundSize : 2.5f * radius};
     frame.background = vec4Of(settings.background);
     frame.options = {styleCode(settings.style), settings.toonBands,
-                     std::bit_cast<std::uint32_t>(settings.paperCutThreshold), 0};
+                     std::bit_cast<std::uint32_t>(settings.paperCutThreshold), setup.camera.parallel ? 1u : 0u};
     ++r.framesPrepared;
     while (!r.retired.empty() && r.retired.front().first + kFramesInFlight < r.framesPrepared) r.retired.pop_front();
     return setup;
@@ -405,6 +405,7 @@ void Renderer::Resources::recordOutlines(VkCommandBuffer cmd, const RenderTarget
     outline.threshold = kOutlineThreshold;
     outline.nearPlane = camera.nearPlane;
     outline.farPlane = camera.farPlane;
+    outline.parallel = camera.parallel ? 1u : 0u;
     std::uint64_t pixels = std::uint64_t{into.width()} * into.height();
     r.toonOutline.dispatch(cmd, {into.color(), into.depth(), into.plant(), into.outlined()}, outline,
                            r.toonOutline.groupsFor(pixels));
@@ -451,7 +452,8 @@ Frame Renderer::readBack(const RenderTarget& target, const FrameSetup& setup) co
     float f = setup.camera.farPlane;
     for (std::size_t i = 0; i < pixels; ++i) {
         float d = depth[i];
-        result.depth[i] = d >= 1.0f ? std::numeric_limits<float>::infinity() : f * n / (f - d * (f - n));
+        if (d >= 1.0f) result.depth[i] = std::numeric_limits<float>::infinity();
+        else result.depth[i] = setup.camera.parallel ? n + d * (f - n) : f * n / (f - d * (f - n));
     }
     return result;
 }

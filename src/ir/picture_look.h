@@ -35,6 +35,7 @@ struct PictureLook {
     // default: 0,0,1 and the origin); the camera looks from the one towards the other, framed on the plants.
     std::optional<std::array<float, 3>> viewpoint;
     std::optional<std::array<float, 3>> viewReferencePoint;
+    std::optional<bool> parallel; // cpfg's `projection: parallel` (else perspective)
     std::optional<PictureStyle> style;
     std::optional<bool> shadows; // the sun's shadow volumes
     std::optional<bool> ground;

@@ -323,6 +323,11 @@ CpfgView readCpfgView(const std::string& path) {
             std::array<float, 3> point{};
             readVector(value, path, i, "view reference point", point);
             out.view.look.viewReferencePoint = point;
+        } else if (field(line, "projection", value)) {
+            const std::string word = firstWord(value);
+            if (word != "parallel" && word != "perspective")
+                lookError(path, lines[i], i, "projection", "parallel or perspective");
+            out.view.look.parallel = word == "parallel";
         } else if (field(line, "render style", value)) {
             out.view.look.style = ir::pictureStyleNamed(firstWord(value));
             if (!out.view.look.style) lookError(path, lines[i], i, "render style", "lit, toon, outline or paper-cut");

@@ -86,19 +86,26 @@ int widestRow(const Frame& frame, std::uint32_t organ) {
 TEST_F(RendererTest, CpfgsPixelLinesKeepTheirWidthInPixelsAndItsBandsTheirsInTheWorld) {
     // A vertical segment of radius 2 beside a taller one that sets the framing: as a cylinder or a flat band the
     // radius is world units (a fifth of the segment's length), as a pixel line 2 pixels at any framing.
-    auto drawn = [&](std::uint32_t style, float frameHeight) {
+    auto drawn = [&](std::uint32_t style, float frameHeight, bool parallel = false) {
         shared::OrganInstance line = makeStem({0, 0, 0}, {0, 1, 0}, {0, 0, 1}, 10.0f, 2.0f, 0, 7);
         line.shape = style;
         shared::OrganInstance mast = makeStem({30, 0, 0}, {0, 1, 0}, {0, 0, 1}, frameHeight, 0.01f, 0, 8);
         TestScene scene = uploadScene(context(), {line, mast});
-        Frame frame = renderer().render(scene.instances, scene.table, scene.bounds, smallSettings(320, 240));
-        maybeSavePreview(frame, "line_style_" + std::to_string(style) + "_" + std::to_string(int(frameHeight)));
+        draw::RenderSettings s = smallSettings(320, 240);
+        s.camera = draw::Camera{};
+        s.camera->parallel = parallel;
+        Frame frame = renderer().render(scene.instances, scene.table, scene.bounds, s);
+        maybeSavePreview(frame, "line_style_" + std::to_string(style) + "_" + std::to_string(int(frameHeight)) +
+                                    (parallel ? "_parallel" : ""));
         return widestRow(frame, 7);
     };
     const int pixelNear = drawn(shared::kLinePixel, 20.0f), pixelFar = drawn(shared::kLinePixel, 80.0f);
     EXPECT_GE(pixelNear, 3);
     EXPECT_LE(pixelNear, 6);
     EXPECT_LE(std::abs(pixelNear - pixelFar), 1);
+    // So in a parallel projection too, where a pixel has one size at every depth.
+    EXPECT_LE(std::abs(drawn(shared::kLinePixel, 20.0f, true) - pixelNear), 1);
+    EXPECT_LE(std::abs(drawn(shared::kLinePixel, 80.0f, true) - pixelNear), 1);
     // World units: 4 wide against a frame about 20 or 80 high.
     const int bandNear = drawn(shared::kLinePolygon, 20.0f), bandFar = drawn(shared::kLinePolygon, 80.0f);
     const int cylinderNear = drawn(shared::kLineCylinder, 20.0f);
@@ -107,39 +114,68 @@ TEST_F(RendererTest, CpfgsPixelLinesKeepTheirWidthInPixelsAndItsBandsTheirsInThe
     EXPECT_NEAR(cylinderNear, bandNear, 2);
 }
 
-TEST_F(RendererTest, SphereAppearsWhereTheCameraProjectsItWithItsFrontDepth) {
+TEST_F(RendererTest, SphereAppearsWhereTheCameraProjectsItWithItsFrontDepthInEitherProjection) {
     glm::vec3 centre(2.0f, 1.0f, -1.0f);
     float radius = 0.3f;
     TestScene scene = uploadScene(
         context(), {makeSphere(centre, radius, 3, 42), makeStem({0, 0, 0}, {0, 1, 0}, {0, 0, 1}, 1.5f, 0.05f, 0, 1)});
-    draw::RenderSettings s = smallSettings(200, 150);
-    draw::Camera camera;
-    camera.azimuthDegrees = -40.0f;
-    camera.elevationDegrees = 25.0f;
-    camera.distance = 6.0f;
-    camera.target = glm::vec3(1.0f, 0.5f, 0.0f);
-    s.camera = camera;
-    Frame frame = renderer().render(scene.instances, scene.table, scene.bounds, s);
-    maybeSavePreview(frame, "sphere_projected");
+    for (bool parallel : {false, true}) {
+        SCOPED_TRACE(parallel ? "parallel" : "perspective");
+        draw::RenderSettings s = smallSettings(200, 150);
+        draw::Camera camera;
+        camera.azimuthDegrees = -40.0f;
+        camera.elevationDegrees = 25.0f;
+        camera.distance = 6.0f;
+        camera.target = glm::vec3(1.0f, 0.5f, 0.0f);
+        camera.parallel = parallel;
+        s.camera = camera;
+        Frame frame = renderer().render(scene.instances, scene.table, scene.bounds, s);
+        maybeSavePreview(frame, parallel ? "sphere_projected_parallel" : "sphere_projected");
 
-    draw::CameraView view = draw::frameCamera(scene.bounds, s);
-    glm::vec2 p = projectToPixel(view, centre, frame.width, frame.height);
-    auto x = static_cast<std::uint32_t>(p.x);
-    auto y = static_cast<std::uint32_t>(p.y);
-    ASSERT_LT(x, frame.width);
-    ASSERT_LT(y, frame.height);
-    EXPECT_EQ(frame.organ[frame.index(x, y)], 42u);
-    EXPECT_EQ(frame.plant[frame.index(x, y)], 3u);
-    // The surface seen is the near side of the sphere (back faces are culled, not front faces).
-    glm::vec3 forward = glm::normalize(view.target - view.position);
-    float centreDepth = glm::dot(centre - view.position, forward);
-    EXPECT_NEAR(frame.depth[frame.index(x, y)], centreDepth - radius, 0.03f);
-    // Its silhouette is centred on the projected centre, about as wide as the projected diameter.
-    PixelBox sphere = organPixels(frame, 42);
-    EXPECT_NEAR(0.5f * (sphere.minX + sphere.maxX + 1), p.x, 1.5f);
-    EXPECT_NEAR(0.5f * (sphere.minY + sphere.maxY + 1), p.y, 1.5f);
-    glm::vec2 edge = projectToPixel(view, centre + radius * view.right, frame.width, frame.height);
-    EXPECT_NEAR(static_cast<float>(sphere.maxX - sphere.minX + 1), 2.0f * (edge.x - p.x), 2.5f);
+        draw::CameraView view = draw::frameCamera(scene.bounds, s);
+        EXPECT_EQ(view.parallel, parallel);
+        glm::vec2 p = projectToPixel(view, centre, frame.width, frame.height);
+        auto x = static_cast<std::uint32_t>(p.x);
+        auto y = static_cast<std::uint32_t>(p.y);
+        ASSERT_LT(x, frame.width);
+        ASSERT_LT(y, frame.height);
+        EXPECT_EQ(frame.organ[frame.index(x, y)], 42u);
+        EXPECT_EQ(frame.plant[frame.index(x, y)], 3u);
+        // The surface seen is the near side of the sphere (back faces are culled, not front faces).
+        glm::vec3 forward = glm::normalize(view.target - view.position);
+        float centreDepth = glm::dot(centre - view.position, forward);
+        EXPECT_NEAR(frame.depth[frame.index(x, y)], centreDepth - radius, 0.03f);
+        // Its silhouette is centred on the projected centre, about as wide as the projected diameter.
+        PixelBox sphere = organPixels(frame, 42);
+        EXPECT_NEAR(0.5f * (sphere.minX + sphere.maxX + 1), p.x, 1.5f);
+        EXPECT_NEAR(0.5f * (sphere.minY + sphere.maxY + 1), p.y, 1.5f);
+        glm::vec2 edge = projectToPixel(view, centre + radius * view.right, frame.width, frame.height);
+        EXPECT_NEAR(static_cast<float>(sphere.maxX - sphere.minX + 1), 2.0f * (edge.x - p.x), 2.5f);
+    }
+}
+
+TEST_F(RendererTest, AParallelProjectionDrawsEqualSpheresAtAnyDepthAlike) {
+    // Two equal spheres side by side, one far behind the other as the camera looks from +z: in perspective the
+    // near one is larger, in parallel they are the same size.
+    TestScene scene = uploadScene(
+        context(), {makeSphere({-1.0f, 0.5f, 2.0f}, 0.5f, 0, 1), makeSphere({1.0f, 0.5f, -6.0f}, 0.5f, 0, 2)});
+    auto widths = [&](bool parallel) {
+        draw::RenderSettings s = smallSettings(240, 120);
+        draw::Camera camera;
+        camera.azimuthDegrees = 0.0f;
+        camera.elevationDegrees = 0.0f;
+        camera.parallel = parallel;
+        s.camera = camera;
+        s.ground = false;
+        Frame frame = renderer().render(scene.instances, scene.table, scene.bounds, s);
+        maybeSavePreview(frame, parallel ? "two_spheres_parallel" : "two_spheres_perspective");
+        return std::pair<int, int>{widestRow(frame, 1), widestRow(frame, 2)};
+    };
+    const auto [nearPerspective, farPerspective] = widths(false);
+    const auto [nearParallel, farParallel] = widths(true);
+    EXPECT_GT(nearPerspective, farPerspective * 5 / 4);
+    EXPECT_GT(farParallel, 4);
+    EXPECT_LE(std::abs(nearParallel - farParallel), 1);
 }
 
 TEST_F(RendererTest, IdsAreThoseOfTheInstancesDrawnThereAndBackgroundHasNone) {

@@ -124,13 +124,15 @@ TEST(CpfgParser, ViewLinesSayHowThePictureLooks) {
     };
     simeco::ir::PictureLook none = lookWith("angle increment: 30\n");
     EXPECT_FALSE(none.style || none.shadows || none.ground || none.background || none.viewpoint ||
-                 none.viewReferencePoint);
+                 none.viewReferencePoint || none.parallel);
 
     simeco::ir::PictureLook look = lookWith("render style: paper-cut\nground: off\nbackground: #ff0000\n"
                                             "viewpoint: 0,0,-1\nview reference point: 1, 2, 3\nshadows: none\n");
     EXPECT_EQ(look.style, simeco::ir::PictureStyle::PaperCut);
     EXPECT_EQ(look.shadows, false);
     EXPECT_EQ(lookWith("shadows: volume\n").shadows, true);
+    EXPECT_EQ(lookWith("projection: parallel\n").parallel, true);
+    EXPECT_EQ(lookWith("projection: perspective\n").parallel, false);
     EXPECT_EQ(look.ground, false);
     ASSERT_TRUE(look.background);
     EXPECT_EQ(look.background->kind, Background::Kind::Color);
@@ -148,7 +150,8 @@ TEST(CpfgParser, ViewLinesSayHowThePictureLooks) {
         int line, col;
     };
     for (const Bad& bad : {Bad{"render style: sketchy\n", 1, 15}, Bad{"angle increment: 9\nground:  maybe\n", 2, 10},
-                           Bad{"background: #12345\n", 1, 13}, Bad{"shadows: soft\n", 1, 10}}) {
+                           Bad{"background: #12345\n", 1, 13}, Bad{"shadows: soft\n", 1, 10},
+                           Bad{"projection: fisheye\n", 1, 13}}) {
         SCOPED_TRACE(bad.view);
         std::ofstream(dir / "m.v") << bad.view;
         try {

@@ -310,7 +310,7 @@ TEST(ShippedGrammars, EveryCpfgModelLoadsWithItsViewFile) {
 }
 
 // Every part of the cloud library derives to something drawn, and looks as the library's view says: outlined, on
-// the colour map's background, without a ground or cast shadows, seen from the front as cpfg shows it.
+// the colour map's background, without a ground or cast shadows, seen from the front in parallel as cpfg shows it.
 TEST(ShippedGrammars, TheCloudLibrarysPartsDeriveAndShareItsLook) {
     size_t parts = 0;
     for (const auto& entry : std::filesystem::directory_iterator(kGrammarDir + "clouds")) {
@@ -331,6 +331,7 @@ TEST(ShippedGrammars, TheCloudLibrarysPartsDeriveAndShareItsLook) {
         ASSERT_TRUE(look.background);
         EXPECT_EQ(look.background->kind, ir::Background::Kind::Colormap);
         EXPECT_EQ(look.viewpoint, (std::array<float, 3>{0, 0, 1}));
+        EXPECT_EQ(look.parallel, true);
         ASSERT_EQ(d.grammar.view.palette.size(), 256u); // clouds.map
     }
     EXPECT_EQ(parts, 29u);

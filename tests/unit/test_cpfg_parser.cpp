@@ -9,6 +9,7 @@
 #include <string>
 
 #include "grammar_text.h"
+#include "temporary_folder.h"
 
 namespace {
 
@@ -73,32 +74,29 @@ TEST(CpfgParser, ViewFileGivesAngleAndFunctions) {
     fs::remove_all(dir);
 }
 
-TEST(CpfgParser, LinesAreTaperedUnlessTheViewSaysOffAndDollarLeavesTheTurtleAlone) {
-    namespace fs = std::filesystem;
-    fs::path dir = fs::temp_directory_path() / ("simeco-taper-" + std::to_string(::getpid()));
-    fs::create_directories(dir);
-    std::ofstream(dir / "m.l") << "Lsystem: 1\nAxiom: F\nendlsystem\n";
+// A one-segment model in a folder of its own, read with the view file a test writes beside it.
+class CpfgView : public simeco::testing::TemporaryFolderTest {
+protected:
+    // The view a model reads with `view` as its view file (none when empty).
+    simeco::ir::ViewSettings viewWith(const std::string& view) {
+        std::ofstream(dir_ / "m.l") << "Lsystem: 1\nAxiom: F\nendlsystem\n";
+        if (view.empty()) std::filesystem::remove(dir_ / "m.v");
+        else std::ofstream(dir_ / "m.v") << view;
+        return simeco::lang::loadGrammarFile((dir_ / "m.l").string()).view;
+    }
+};
+
+TEST_F(CpfgView, LinesAreTaperedUnlessTheViewSaysOffAndDollarLeavesTheTurtleAlone) {
     // cpfg's default, without a view file and with one that does not say.
-    EXPECT_TRUE(simeco::lang::loadGrammarFile((dir / "m.l").string()).view.taperedLines);
-    EXPECT_FALSE(simeco::lang::loadGrammarFile((dir / "m.l").string()).view.dollarRolls);
-    std::ofstream(dir / "m.v") << "angle increment: 30\n";
-    EXPECT_TRUE(simeco::lang::loadGrammarFile((dir / "m.l").string()).view.taperedLines);
-    std::ofstream(dir / "m.v") << "angle increment: 30\ntapered lines: off\n";
-    EXPECT_FALSE(simeco::lang::loadGrammarFile((dir / "m.l").string()).view.taperedLines);
-    fs::remove_all(dir);
+    EXPECT_TRUE(viewWith("").taperedLines);
+    EXPECT_FALSE(viewWith("").dollarRolls);
+    EXPECT_TRUE(viewWith("angle increment: 30\n").taperedLines);
+    EXPECT_FALSE(viewWith("angle increment: 30\ntapered lines: off\n").taperedLines);
 }
 
-TEST(CpfgParser, LineStyleFollowsTheViewAsCpfgReadsIt) {
-    namespace fs = std::filesystem;
+TEST_F(CpfgView, LineStyleFollowsTheViewAsCpfgReadsIt) {
     using simeco::ir::LineStyle;
-    fs::path dir = fs::temp_directory_path() / ("simeco-line-style-" + std::to_string(::getpid()));
-    fs::create_directories(dir);
-    std::ofstream(dir / "m.l") << "Lsystem: 1\nAxiom: F\nendlsystem\n";
-    auto styleWith = [&](const std::string& view) {
-        if (view.empty()) fs::remove(dir / "m.v");
-        else std::ofstream(dir / "m.v") << view;
-        return simeco::lang::loadGrammarFile((dir / "m.l").string()).view.lineStyle;
-    };
+    auto styleWith = [&](const std::string& view) { return viewWith(view).lineStyle; };
     EXPECT_EQ(styleWith(""), LineStyle::Pixel); // cpfg's default
     EXPECT_EQ(styleWith("angle increment: 30\n"), LineStyle::Pixel);
     EXPECT_EQ(styleWith("initial line width: 2\n"), LineStyle::Polygon);
@@ -109,19 +107,11 @@ TEST(CpfgParser, LineStyleFollowsTheViewAsCpfgReadsIt) {
     // The last word read wins.
     EXPECT_EQ(styleWith("initial line width: 2 pixels\nline style: cylinder\n"), LineStyle::Cylinder);
     EXPECT_EQ(styleWith("line style: polygon\ninitial line width: 2 pixels\n"), LineStyle::Pixel);
-    fs::remove_all(dir);
 }
 
-TEST(CpfgParser, ViewLinesSayHowThePictureLooks) {
-    namespace fs = std::filesystem;
+TEST_F(CpfgView, ViewLinesSayHowThePictureLooks) {
     using simeco::ir::Background;
-    fs::path dir = fs::temp_directory_path() / ("simeco-look-" + std::to_string(::getpid()));
-    fs::create_directories(dir);
-    std::ofstream(dir / "m.l") << "Lsystem: 1\nAxiom: F\nendlsystem\n";
-    auto lookWith = [&](const std::string& view) {
-        std::ofstream(dir / "m.v") << view;
-        return simeco::lang::loadGrammarFile((dir / "m.l").string()).view.look;
-    };
+    auto lookWith = [&](const std::string& view) { return viewWith(view).look; };
     simeco::ir::PictureLook none = lookWith("angle increment: 30\n");
     EXPECT_FALSE(none.style || none.shadows || none.ground || none.background || none.viewpoint ||
                  none.viewReferencePoint || none.parallel);
@@ -153,17 +143,15 @@ TEST(CpfgParser, ViewLinesSayHowThePictureLooks) {
                            Bad{"background: #12345\n", 1, 13}, Bad{"shadows: soft\n", 1, 10},
                            Bad{"projection: fisheye\n", 1, 13}}) {
         SCOPED_TRACE(bad.view);
-        std::ofstream(dir / "m.v") << bad.view;
         try {
-            simeco::lang::loadGrammarFile((dir / "m.l").string());
+            viewWith(bad.view);
             ADD_FAILURE() << "no error";
         } catch (const simeco::ir::InputError& e) {
-            EXPECT_EQ(e.loc().file, (dir / "m.v").string());
+            EXPECT_EQ(e.loc().file, (dir_ / "m.v").string());
             EXPECT_EQ(e.loc().line, bad.line);
             EXPECT_EQ(e.loc().col, bad.col);
         }
     }
-    fs::remove_all(dir);
 }
 
 } // namespace

@@ -1,5 +1,5 @@
-// The image options the commands that render share (`render`, `run`): size, camera, style, shadows, ground and
-// background, as typed.
+// The image options the commands that render share (`render`, `run`): size, camera, projection, style, shadows,
+// ground and background, as typed.
 #pragma once
 
 #include <string>

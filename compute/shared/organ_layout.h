@@ -32,6 +32,7 @@ SIMECO_CONST kBlossomStar = 6u; // five spreading obovate petals around a yellow
 SIMECO_CONST kBlossomHead = 7u; // a dome of small four-lobed florets, yellow at its centre (Lantana)
 SIMECO_CONST kBlossomRose = 8u; // a cup of rounded petals in three rings (Rosa)
 SIMECO_CONST kSurfaceLastShape = kBlossomRose; // models are shapes kSurfaceLastShape + 1 + k
+SIMECO_CONST_FLOAT kLeafAroundBase = 1.0f;
 // OrganInstance.shape for kOrganDisc: faces the viewer (@o) rather than lying in the heading-left plane (@c).
 SIMECO_CONST kDiscFacesViewer = 1u;
 // OrganInstance.shape for kOrganStem, how its line is drawn (ir::LineStyle): a shaded cylinder; a flat band facing
@@ -54,6 +55,8 @@ struct OrganInstance {
     vec4 color;    // linear RGB and alpha
     // Stem joints: the heading of the segment below (xyz, zero at a branch's first segment) and of the segment
     // continuing this one (zero at a tip); the ends are cut on the bisecting planes, so a bent stem is closed.
+    // A leaf's previousHeading.w: kLeafAroundBase where its surface reaches around its base (a cpfg surface, from
+    // its contact point), else zero: it lies along its heading within half its width of it (a blade, a model).
     vec4 previousHeading;
     vec4 nextHeading;
     uint plant;    // plant index in the field

@@ -28,7 +28,7 @@ SIMECO_CONST kPaletteEntries = 256u;
 
 // The turtle after a module: its frame (heading, left, up), position and scalars.
 struct TurtleState {
-    vec4 heading;  // w: width
+    vec4 heading;  // w: width, in world units (`!` and `#` apply the scale of their time, as cpfg)
     vec4 left;     // w: colour index
     vec4 up;       // w: scale
     vec4 position; // w: elasticity
@@ -36,12 +36,13 @@ struct TurtleState {
 
 // A module's effect relative to the state before it: the frame turns by the rotation whose columns are
 // heading, left and up (in the turtle's own coordinates); the position moves by translation + scale *
-// scaledTranslation (turtle coordinates, the scale before the module); each scalar x becomes a x + b.
+// scaledTranslation (turtle coordinates, the scale before the module); each scalar x becomes a x + b, the width
+// a x + b + c times the scale before the module (c in translation.w).
 struct TurtleStep {
     vec4 heading;           // xyz: the rotation's first column
     vec4 left;              // xyz: second column
     vec4 up;                // xyz: third column
-    vec4 translation;       // xyz
+    vec4 translation;       // xyz; w: the width's share of the scale
     vec4 scaledTranslation; // xyz
     vec4 widthColor;        // width a, b; colour a, b
     vec4 scaleElasticity;   // scale a, b; elasticity a, b
@@ -62,11 +63,24 @@ struct TurtleSpecies {
     uint dollarRolls;  // 1: `$` rolls the turtle level; 0: it leaves the turtle alone (cpfg's .l files)
     uint tropismRule;  // kTropism*
     uint lineStyle;    // kLine*: how its F and G segments are drawn
+    // Where its `~` surfaces start in the command table: kSurfaceWords per symbol, the end point a surface moves
+    // the turtle to per unit of its first scale (float bits, in heading, left and up) and how it draws (kSurface*).
+    uint surfaces;
+    float initialScale; // the scale before any `@D` (cpfg's `initial scale:`)
+    uint pad1;
+    uint pad2;
 };
+SIMECO_CONST kSurfaceWords = 4u;
+// How `~` draws a surface: not at all (an id a cpfg view does not define), along the heading (a built-in blade or
+// blossom, a model), or around its base (a cpfg surface from its contact point).
+SIMECO_CONST kSurfaceNone = 0u;
+SIMECO_CONST kSurfaceAlongHeading = 1u;
+SIMECO_CONST kSurfaceAroundBase = 2u;
 
 // How segments bend toward the tropism (ir::TropismRule).
 SIMECO_CONST kTropismTorque = 0u;
 SIMECO_CONST kTropismCpfgDirection = 1u;
+SIMECO_CONST kTropismCpfgTropism = 2u;
 
 // Per-module marks that the searches up the tree stop at (TurtlePush hitMask and stopMask).
 SIMECO_CONST kMarkNonlinear = 1u;      // resolved by levels, not composed
@@ -149,7 +163,7 @@ struct OrganMergePush {
 static_assert(sizeof(OrganMergePush) == 56);
 static_assert(sizeof(TurtleState) == 64);
 static_assert(sizeof(TurtleStep) == 112);
-static_assert(sizeof(TurtleSpecies) == 64);
+static_assert(sizeof(TurtleSpecies) == 80);
 static_assert(sizeof(TurtlePush) == 64);
 #endif
 SIMECO_SHARED_END

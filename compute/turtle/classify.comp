@@ -35,7 +35,9 @@ void main() {
     if (turtleDraws(command) && (marks[i] & kMarkStem) != 0u) kind = kOrganStem;
     else if (command == kTurtleSphere) kind = kOrganSphere;
     else if (command == kTurtleDisc || command == kTurtleDiscFacing) kind = kOrganDisc;
-    else if (command == kTurtleSurface) kind = kOrganLeaf;
+    else if (command == kTurtleSurface) {
+        if (surfaceDrawn(speciesTable[speciesOf(plantOf(i))], symbolAt(i))) kind = kOrganLeaf;
+    }
     else if (triangleFirst[i] != kNoModule) kind = kOrganTriangle;
     else if (command == kTurtleCylinderPoint && cylinderStarts[i] != kNoModule) {
         // A tube from the last control point, once a cylinder has started on the path to this module.

@@ -57,7 +57,7 @@ void emitTube(OrganInstance o, uint i, uint slot, TurtleState after) {
     TurtleState anchor = states[cylinderAnchors[i]];
     vec3 chord = after.position.xyz - anchor.position.xyz;
     float len = length(chord);
-    float r0 = 0.5 * anchor.heading.w * after.up.w, r1 = 0.5 * after.heading.w * after.up.w;
+    float r0 = 0.5 * anchor.heading.w, r1 = 0.5 * after.heading.w;
     vec3 from = anchor.position.xyz;
     vec3 previous = vec3(0);
     for (uint k = 0u; k < segments; ++k) {
@@ -119,24 +119,30 @@ void main() {
         emitTube(o, i, offsets[kind * pc.count + i], after);
         return;
     } else if (kind == kOrganStem) {
-        float radius = 0.5 * before.heading.w * scale;
+        float radius = 0.5 * before.heading.w;
+        Frame f = frameOf(before);
+        // cpfg's `tropism:` lines bend the heading before the segment is drawn (turtle_modules.glsl).
+        if (sp.tropismRule == kTropismCpfgTropism) bendAsCpfgTropism(f, sp.tropism.xyz, before.position.w);
         o.position = vec4(before.position.xyz, paramAt(i, 0u, sp.step) * scale);
-        o.heading = vec4(before.heading.xyz, radius);
-        o.up = vec4(before.up.xyz, radius);
+        o.heading = vec4(f.heading, radius);
+        o.up = vec4(f.up, radius);
         o.shape = sp.lineStyle;
     } else if (kind == kOrganSphere || kind == kOrganDisc) {
-        float radius = 0.5 * paramAt(i, 0u, before.heading.w) * scale;
+        float radius = 0.5 * (hasParam(i) ? paramAt(i, 0u, 0.0) * scale : before.heading.w);
         o.position = vec4(before.position.xyz, 0);
         o.heading = vec4(before.heading.xyz, radius);
         o.up = vec4(before.up.xyz, radius);
         o.shape = command == kTurtleDiscFacing ? kDiscFacesViewer : 0u;
-    } else { // leaf
+    } else { // leaf: `~id(s)` or `~id(sx, sy, sz)`, scaled across, along and out of it (turtle_cpu.cpp)
         uint sym = symbolAt(i);
-        float len = surfaceScales[species * pc.symbols + sym] * paramAt(i, 0u, 1.0) * scale;
-        o.position = vec4(before.position.xyz, len);
-        o.heading = vec4(before.heading.xyz, len);
-        o.up = vec4(before.up.xyz, 0);
+        float surfaceScale = surfaceScales[species * pc.symbols + sym] * scale;
+        float first = paramAt(i, 0u, 1.0);
+        bool three = paramCountAt(i) >= 3u;
+        o.position = vec4(before.position.xyz, (three ? paramAt(i, 1u, 1.0) : first) * surfaceScale);
+        o.heading = vec4(before.heading.xyz, first * surfaceScale);
+        o.up = vec4(before.up.xyz, (three ? paramAt(i, 2u, 1.0) : first) * surfaceScale);
         o.shape = surfaceShapes[species * pc.symbols + sym];
+        o.previousHeading.w = surfaceDrawing(sp, sym) == kSurfaceAroundBase ? kLeafAroundBase : 0.0;
     }
 
     uint slot = offsets[kind * pc.count + i];

@@ -33,6 +33,8 @@ Box organBox(OrganInstance o) {
         float r = o.shape == kLinePixel ? 0.0 : max(o.heading.w, o.up.w); // a pixel line's width is the picture's
         addPoint(b, p, r);
         addPoint(b, p + h * o.position.w, r);
+    } else if (o.kind == kOrganLeaf && o.previousHeading.w == kLeafAroundBase) { // at most its largest scale away
+        addPoint(b, p, max(o.position.w, max(o.heading.w, o.up.w)));
     } else if (o.kind == kOrganLeaf) {
         addPoint(b, p, 0.5 * o.heading.w);
         addPoint(b, p + h * o.position.w, 0.5 * o.heading.w);

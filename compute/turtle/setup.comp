@@ -46,7 +46,10 @@ uint setUpModule(uint i) {
     bool nonlinear = isNonlinear(command, sp);
     if (nonlinear) mark |= kMarkNonlinear;
     if (turtleDraws(command)) mark |= kMarkStem;
-    if (command == kTurtleBranchOpen || turtleMovesOnly(command) || command == kTurtleSetPosition)
+    // A surface that moves the turtle ends the stem like a move (turtle_cpu.cpp).
+    bool surfaceMoves = command == kTurtleSurface && surfaceDrawn(sp, symbolAt(i)) &&
+                        surfaceEnd(sp, symbolAt(i)) != vec3(0.0);
+    if (command == kTurtleBranchOpen || turtleMovesOnly(command) || command == kTurtleSetPosition || surfaceMoves)
         mark |= kMarkStemBreak;
     if (command == kTurtleCylinderStart) mark |= kMarkCylinderStart | kMarkTubeBreak;
     if (command == kTurtleCylinderPoint) mark |= kMarkCylinderPoint;

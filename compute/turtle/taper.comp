@@ -37,7 +37,7 @@ void endTaper(uint k) {
     uint slot = slots[segment];
     if (slot >= pc.organCapacity) return; // not written: the organs outgrew their buffer
     TurtleState s = states[k];
-    instances[slot].up.w = 0.5 * s.heading.w * s.up.w;
+    instances[slot].up.w = 0.5 * s.heading.w;
     growPlantBounds(plantOfModule[segment], instances[slot]);
 }
 

@@ -49,6 +49,13 @@ void bendAsCpfgDirection(inout Frame f, vec3 t, float elasticity) {
     turnToward(f.heading, f.left, asin(clamp(elasticity * dot(t, f.left), -1.0, 1.0)));
 }
 
+void bendAsCpfgTropism(inout Frame f, vec3 t, float elasticity) {
+    vec3 axis = cross(f.heading, t);
+    float n = length(axis);
+    if (elasticity == 0.0 || n < 1e-6) return;
+    rotateFrame(f, axis / n, sign(elasticity) * min(abs(elasticity) * n, 1.0));
+}
+
 void bend(inout Frame f, vec3 t, float elasticity) {
     vec3 axis = cross(f.heading, t);
     float n = length(axis);
@@ -125,9 +132,13 @@ TurtleStep composeSteps(TurtleStep first, TurtleStep second) {
     t.heading = vec4(r * second.heading.xyz, 0);
     t.left = vec4(r * second.left.xyz, 0);
     t.up = vec4(r * second.up.xyz, 0);
-    t.translation = vec4(first.translation.xyz + r * (second.translation.xyz + scaleB * second.scaledTranslation.xyz), 0);
+    // translation.w: the width's share of the scale before the step (width -> a width + b + c scale).
+    float widthScaled = second.widthColor.x * first.translation.w + second.translation.w * scaleA;
+    float widthOffset = second.translation.w * scaleB;
+    t.translation = vec4(first.translation.xyz + r * (second.translation.xyz + scaleB * second.scaledTranslation.xyz),
+                         widthScaled);
     t.scaledTranslation = vec4(first.scaledTranslation.xyz + scaleA * (r * second.scaledTranslation.xyz), 0);
-    t.widthColor = vec4(thenAffine(first.widthColor.xy, second.widthColor.xy),
+    t.widthColor = vec4(thenAffine(first.widthColor.xy, second.widthColor.xy) + vec2(0.0, widthOffset),
                         thenAffine(first.widthColor.zw, second.widthColor.zw));
     t.scaleElasticity = vec4(thenAffine(first.scaleElasticity.xy, second.scaleElasticity.xy),
                              thenAffine(first.scaleElasticity.zw, second.scaleElasticity.zw));
@@ -142,7 +153,7 @@ TurtleState applyStep(TurtleState s, TurtleStep t) {
     r.heading.xyz = frame * t.heading.xyz;
     r.left.xyz = frame * t.left.xyz;
     r.up.xyz = frame * t.up.xyz;
-    r.heading.w = t.widthColor.x * s.heading.w + t.widthColor.y;
+    r.heading.w = t.widthColor.x * s.heading.w + t.widthColor.y + t.translation.w * scale;
     r.left.w = t.widthColor.z * s.left.w + t.widthColor.w;
     r.up.w = t.scaleElasticity.x * scale + t.scaleElasticity.y;
     r.position.w = t.scaleElasticity.z * s.position.w + t.scaleElasticity.w;

@@ -54,11 +54,19 @@ uint commandAt(uint i, uint begin, uint end) {
     return plainCommand(sym);
 }
 
+// A `~` surface of the species: whether it draws, and where it leaves the turtle per unit of its first scale.
+uint surfaceDrawing(TurtleSpecies sp, uint sym) { return commandTable[sp.surfaces + kSurfaceWords * sym + 3u]; }
+bool surfaceDrawn(TurtleSpecies sp, uint sym) { return surfaceDrawing(sp, sym) != kSurfaceNone; }
+vec3 surfaceEnd(TurtleSpecies sp, uint sym) {
+    uint at = sp.surfaces + kSurfaceWords * sym;
+    return uintBitsToFloat(uvec3(commandTable[at], commandTable[at + 1u], commandTable[at + 2u]));
+}
+
 TurtleState initialState(TurtleSpecies sp) {
     TurtleState s;
     s.heading = vec4(0, 1, 0, sp.width);
     s.left = vec4(-1, 0, 0, sp.initialColor);
-    s.up = vec4(0, 0, 1, 1.0);
+    s.up = vec4(0, 0, 1, sp.initialScale);
     s.position = vec4(0, 0, 0, sp.elasticity);
     return s;
 }
@@ -75,9 +83,9 @@ bool isNonlinear(uint command, TurtleSpecies sp) {
     case kTurtleRotateWorldZ:
     case kTurtlePhototropism: return true;
     case kTurtleDraw:
-    case kTurtleDrawNoVertex: return sp.tropism.w != 0.0; // tropism bends the heading after each segment
+    case kTurtleDrawNoVertex: return sp.tropism.w != 0.0; // tropism bends the heading before or after each segment
     case kTurtleMove:
-    case kTurtleMoveNoVertex: return sp.tropism.w != 0.0 && sp.tropismRule == kTropismCpfgDirection;
+    case kTurtleMoveNoVertex: return sp.tropism.w != 0.0 && sp.tropismRule != kTropismTorque;
     default: return false;
     }
 }
@@ -94,6 +102,9 @@ TurtleStep commandStep(uint command, uint i, TurtleSpecies sp) {
     case kTurtleDrawNoVertex:
     case kTurtleMove:
     case kTurtleMoveNoVertex: t.scaledTranslation.x = paramAt(i, 0u, sp.step); break;
+    case kTurtleSurface:
+        if (surfaceDrawn(sp, symbolAt(i))) t.scaledTranslation.xyz = paramAt(i, 0u, 1.0) * surfaceEnd(sp, symbolAt(i));
+        break;
     case kTurtleTurnLeft: t = turnStep(0, 1, angle); break;
     case kTurtleTurnRight: t = turnStep(0, 1, -angle); break;
     case kTurtlePitchDown: t = turnStep(0, 2, -angle); break;
@@ -113,8 +124,15 @@ TurtleStep commandStep(uint command, uint i, TurtleSpecies sp) {
                          turnStep(2, 1, -roll));
         break;
     }
-    case kTurtleWidthUp: t.widthColor.xy = addOrSet(i, sp.widthIncrement); break;
-    case kTurtleWidthDown: t.widthColor.xy = addOrSet(i, -sp.widthIncrement); break;
+    // A width is set in the scale before the command: width -> a width + (translation.w) scale.
+    case kTurtleWidthUp:
+        t.widthColor.xy = vec2(hasParam(i) ? 0.0 : 1.0, 0.0);
+        t.translation.w = hasParam(i) ? paramAt(i, 0u, 0.0) : sp.widthIncrement;
+        break;
+    case kTurtleWidthDown:
+        t.widthColor.xy = vec2(hasParam(i) ? 0.0 : 1.0, 0.0);
+        t.translation.w = hasParam(i) ? paramAt(i, 0u, 0.0) : -sp.widthIncrement;
+        break;
     case kTurtleColorUp: t.widthColor.zw = addOrSet(i, sp.colorIncrement); break;
     case kTurtleColorDown: t.widthColor.zw = addOrSet(i, -sp.colorIncrement); break;
     case kTurtleScaleSet:
@@ -152,10 +170,14 @@ TurtleState applyNonlinear(TurtleState s, uint command, uint i, TurtleSpecies sp
     case kTurtleDrawNoVertex:
     case kTurtleMove:
     case kTurtleMoveNoVertex:
+        if (sp.tropismRule == kTropismCpfgTropism) { // bends before the move
+            bendAsCpfgTropism(f, sp.tropism.xyz, s.position.w);
+            setFrame(s, f);
+        }
         s = applyStep(s, commandStep(command, i, sp));
         f = frameOf(s);
         if (sp.tropismRule == kTropismCpfgDirection) bendAsCpfgDirection(f, sp.tropism.xyz, s.position.w);
-        else bend(f, sp.tropism.xyz, s.position.w);
+        else if (sp.tropismRule == kTropismTorque) bend(f, sp.tropism.xyz, s.position.w);
         break;
     case kTurtleRollLevel: rollLevel(f); break; // only where `$` rolls (isNonlinear)
     case kTurtleRollUpright: rollUpright(f); break;

@@ -93,14 +93,15 @@ OrganVertex organVertex(OrganInstance o, uint kind, vec4 local, vec4 localNormal
         v.normal = cross(axisA, axisB);
     } else if (kind == kOrganLeaf) {
         // The leaf mesh holds every shape (the built-in blades, flat, then any leaf models); a vertex of another
-        // shape collapses onto the base, so its triangles have no area and draw nothing. Length along H, width
-        // across and out of the blade.
+        // shape collapses onto the base, so its triangles have no area and draw nothing. Scaled by its length
+        // along H, its width across (L) and its thickness out of the blade (U); normals by the inverse.
         v.present = uint(localNormal.w + 0.5) == o.shape;
         v.position = o.position.xyz;
         if (v.present) {
-            v.position += local.x * o.position.w * H + o.heading.w * (local.y * L + local.z * U);
+            v.position += local.x * o.position.w * H + local.y * o.heading.w * L + local.z * o.up.w * U;
         }
-        v.normal = localNormal.x * H + localNormal.y * L + localNormal.z * U;
+        vec3 inverse = 1.0 / max(vec3(o.position.w, o.heading.w, o.up.w), vec3(1e-20));
+        v.normal = localNormal.x * inverse.x * H + localNormal.y * inverse.y * L + localNormal.z * inverse.z * U;
     } else {
         // kOrganTriangle: the mesh is three vertices numbered by local.x.
         vec3 a = o.position.xyz;

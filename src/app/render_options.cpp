@@ -107,6 +107,7 @@ draw::RenderSettings renderSettings(const PictureOptions& options, const ir::Vie
     if (!options.background.empty())
         s.background = backgroundColor(*lang::backgroundNamed(options.background), view, s.background);
     else if (look.background) s.background = backgroundColor(*look.background, view, s.background);
+    if (look.sunDirection) s.sunDirection = {(*look.sunDirection)[0], (*look.sunDirection)[1], (*look.sunDirection)[2]};
     return s;
 }
 

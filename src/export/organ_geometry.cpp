@@ -113,10 +113,14 @@ PlacedVertex placeVertex(const OrganInstance& o, std::uint32_t kind, const MeshV
         v.present = static_cast<std::uint32_t>(local.normal.w + 0.5f) == leafShape(o);
         v.position = xyz(o.position);
         if (v.present) {
-            v.position += local.position.x * o.position.w * H +
-                          o.heading.w * (local.position.y * L + local.position.z * U);
+            v.position += local.position.x * o.position.w * H + local.position.y * o.heading.w * L +
+                          local.position.z * o.up.w * U;
         }
-        v.normal = unitOr(local.normal.x * H + local.normal.y * L + local.normal.z * U, glm::vec3(0, 1, 0));
+        // Normals scale by the inverse of the positions' scales.
+        const glm::vec3 inverse = 1.0f / glm::max(glm::vec3(o.position.w, o.heading.w, o.up.w), glm::vec3(1e-20f));
+        v.normal = unitOr(local.normal.x * inverse.x * H + local.normal.y * inverse.y * L +
+                              local.normal.z * inverse.z * U,
+                          glm::vec3(0, 1, 0));
     } else {
         // kOrganTriangle: the mesh is three vertices numbered by local.x.
         glm::vec3 a = xyz(o.position);
@@ -269,7 +273,7 @@ InstanceTransform instanceTransform(const OrganInstance& o) {
     float r = o.heading.w;
     switch (o.kind) {
     case kOrganLeaf:
-        t.scale = {o.position.w, o.heading.w, 1.0f};
+        t.scale = {o.position.w, o.heading.w, o.up.w};
         break;
     default:
         t.scale = {r, r, r};

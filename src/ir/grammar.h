@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <unordered_map>
@@ -15,6 +16,7 @@
 #include "ir/expr.h"
 #include "ir/contour_curve.h"
 #include "ir/function_curve.h"
+#include "ir/leaf_model.h"
 #include "ir/picture_look.h"
 
 namespace simeco::ir {
@@ -111,6 +113,8 @@ enum class TropismRule {
     // cpfg's `tropism direction:` form: after every move (F G f g) the heading turns toward T's component along
     // up, then toward its component along left, each by the arcsine of the elasticity times that component.
     CpfgDirection,
+    // cpfg's `tropism:` lines: before every move (F G f g), about H x T by elasticity x |H x T|, at most a radian.
+    CpfgTropism,
 };
 
 // How segments (F, G) are drawn: cpfg's `line style` (and the style word of `initial line width`).
@@ -130,6 +134,7 @@ struct ViewSettings {
     // Tropism: after each drawn segment the heading bends toward `tropismDirection` by elasticity * |H x T|.
     std::array<float, 3> tropismDirection = {0.0f, -1.0f, 0.0f};
     float initialElasticity = 0.0f;
+    float initialScale = 1.0f; // cpfg's `initial scale:`, the turtle's scale before any `@D` (lengths and `!` widths)
     float elasticityIncrement = 0.0f;
     TropismRule tropismRule = TropismRule::Torque;
     LineStyle lineStyle = LineStyle::Cylinder;
@@ -148,8 +153,13 @@ struct ViewSettings {
         std::string name, file;
         float scale = 1.0f;
         std::optional<uint32_t> shape; // the leaf shape that draws it, where a model names it (else its name's)
+        // cpfg's `.s` surface read from `file` (at `scale`, which it already holds); null where none was read.
+        std::shared_ptr<const SurfaceModel> model;
     };
     std::vector<Surface> surfaces;
+    // Whether `~` of a name the view defines no surface for draws a built-in blade chosen by the name (simeco's
+    // and the quick grammars' way) or nothing, as cpfg does in .l files.
+    bool undefinedSurfacesDrawn = true;
     PictureLook look; // simeco's own lines: the picture's style, ground and background
     bool present = false;
 };

@@ -40,6 +40,8 @@ struct PictureLook {
     std::optional<bool> shadows; // the sun's shadow volumes
     std::optional<bool> ground;
     std::optional<Background> background;
+    // cpfg's first directional `light: V: x,y,z` (or `light direction:`): toward the light, which the sun becomes.
+    std::optional<std::array<float, 3>> sunDirection;
 };
 
 } // namespace simeco::ir

@@ -1,5 +1,6 @@
 #include "lang/cpfg_view.h"
 
+#include <algorithm>
 #include <array>
 #include <cctype>
 #include <cmath>
@@ -13,6 +14,7 @@
 
 #include "lang/color_map.h"
 #include "lang/cpfg_contour.h"
+#include "lang/cpfg_surface.h"
 #include "lang/source_text.h"
 
 namespace simeco::lang {
@@ -163,7 +165,9 @@ void readVector(std::string text, const std::string& file, size_t line, const ch
     v = read;
 }
 
-// The newer form `tropism: T: x y z A: angle E: elasticity S: step`; simeco keeps one tropism.
+// `tropism: T: x,y,z [I: intensity] [A: degrees] [E: elasticity] [S: step]`. cpfg turns the heading toward the sum
+// of its tropism lines' directions, each times its intensity, elasticity and the cosine of its angle A (a line's
+// sine part, diatropism, is not drawn); `view` holds the sum so far as a direction and its length as elasticity.
 void readTropism(const std::string& text, const std::string& file, size_t line, ir::ViewSettings& view) {
     // The text after `key` up to the next `X:` key.
     auto after = [&](const char* key) -> std::string {
@@ -175,9 +179,25 @@ void readTropism(const std::string& text, const std::string& file, size_t line, 
             ++end;
         return text.substr(at + 2, end - at - 2);
     };
-    if (std::string t = after("T:"); !t.empty()) readVector(t, file, line, "tropism direction", view.tropismDirection);
-    if (std::string e = after("E:"); !e.empty()) viewNumber(e, file, line, "tropism elasticity", view.initialElasticity);
+    std::array<float, 3> direction = view.tropismDirection;
+    float intensity = 1.0f, degrees = 0.0f, elasticity = 0.0f;
+    if (std::string t = after("T:"); !t.empty()) readVector(t, file, line, "tropism direction", direction);
+    if (std::string i = after("I:"); !i.empty()) viewNumber(i, file, line, "tropism intensity", intensity);
+    if (std::string a = after("A:"); !a.empty()) viewNumber(a, file, line, "tropism angle", degrees);
+    if (std::string e = after("E:"); !e.empty()) viewNumber(e, file, line, "tropism elasticity", elasticity);
     if (std::string s = after("S:"); !s.empty()) viewNumber(s, file, line, "elasticity step", view.elasticityIncrement);
+    const float length = std::hypot(direction[0], direction[1], direction[2]);
+    if (!(length > 0.0f)) throw ir::InputError({file, static_cast<int>(line + 1), 1}, "a tropism's T is not zero");
+    const float weight = std::clamp(intensity, -1.0f, 1.0f) * elasticity *
+                         static_cast<float>(std::cos(degrees * 3.14159265358979 / 180.0)) / length;
+    std::array<float, 3> sum{};
+    for (int k = 0; k < 3; ++k) sum[k] = weight * direction[k];
+    if (view.tropismRule == ir::TropismRule::CpfgTropism) // an earlier tropism line's share
+        for (int k = 0; k < 3; ++k) sum[k] += view.initialElasticity * view.tropismDirection[k];
+    const float total = std::hypot(sum[0], sum[1], sum[2]);
+    for (int k = 0; k < 3; ++k) view.tropismDirection[k] = total > 0.0f ? sum[k] / total : direction[k] / length;
+    view.initialElasticity = total;
+    view.tropismRule = ir::TropismRule::CpfgTropism;
 }
 
 } // namespace
@@ -237,6 +257,7 @@ ir::ViewSettings cpfgDefaultView() {
     view.taperedLines = true;
     view.lineStyle = ir::LineStyle::Pixel;
     view.dollarRolls = false;
+    view.undefinedSurfacesDrawn = false;
     return view;
 }
 
@@ -310,11 +331,25 @@ CpfgView readCpfgView(const std::string& path) {
         } else if (field(line, "initial elasticity", value)) {
             viewNumber(value, path, i, "initial elasticity", out.view.initialElasticity);
             out.view.tropismRule = ir::TropismRule::CpfgDirection;
+        } else if (field(line, "light", value) || field(line, "light direction", value)) {
+            // The first directional light, `light: V: x,y,z ...` or the older `light direction: x,y,z`.
+            const size_t v = value.find("V:");
+            const bool older = value.find(':') == std::string::npos;
+            if (!out.view.look.sunDirection && (older || v != std::string::npos)) {
+                std::string vector = older ? value : value.substr(v + 2);
+                if (const size_t next = vector.find_first_of("AODSTC"); next != std::string::npos) vector.resize(next);
+                std::array<float, 3> d{};
+                readVector(vector, path, i, "light direction", d);
+                const float length = std::hypot(d[0], d[1], d[2]);
+                if (length > 0.0f) out.view.look.sunDirection = std::array{d[0] / length, d[1] / length, d[2] / length};
+            }
+        } else if (field(line, "initial scale", value)) {
+            viewNumber(value, path, i, "initial scale", out.view.initialScale);
+            if (out.view.initialScale == 0.0f) out.view.initialScale = 1.0f; // as cpfg: a scale of 0 is taken as 1
         } else if (field(line, "elasticity increment", value)) {
             viewNumber(value, path, i, "elasticity increment", out.view.elasticityIncrement);
         } else if (field(line, "tropism", value)) {
             readTropism(value, path, i, out.view);
-            out.view.tropismRule = ir::TropismRule::Torque;
         } else if (field(line, "viewpoint", value)) {
             std::array<float, 3> point{0, 0, 1};
             readVector(value, path, i, "viewpoint", point);
@@ -344,11 +379,19 @@ CpfgView readCpfgView(const std::string& path) {
             if (!out.view.look.background)
                 lookError(path, lines[i], i, "background", "sky, paper, colormap or a colour #rrggbb");
         } else if (field(line, "surface", value)) {
+            // `surface: id file.s size [s-steps t-steps [texture]]`, or `id file.s size texture`.
             std::istringstream in(value);
             ir::ViewSettings::Surface surface;
             in >> surface.name >> surface.file;
-            if (!(in >> surface.scale)) surface.scale = 1.0f;
-            if (!surface.name.empty()) out.view.surfaces.push_back(surface);
+            if (!(in >> surface.scale) || !(surface.scale > 0.0f)) surface.scale = 1.0f;
+            int sSteps = 0, tSteps = 0;
+            if (!(in >> sSteps >> tSteps)) sSteps = tSteps = 0;
+            if (surface.name.empty()) continue;
+            if (std::filesystem::path(surface.file).extension() == ".s")
+                surface.model = std::make_shared<const ir::SurfaceModel>(
+                    readCpfgSurface(namedFile(dir, surface.file, path, lines[i], i, "surface"), surface.scale,
+                                    sSteps, tSteps));
+            out.view.surfaces.push_back(surface);
         }
     }
     return out;

@@ -49,9 +49,9 @@ public:
         g_.homomorphism.maxDepth = 1;
         // The leaf surface takes its shape from the plant's name (a rose's leaves are compound, an oxalis's
         // cordate: turtle::surfaceShapeOf).
-        g_.view.surfaces.push_back({"leaf", plant_.name, 1.0f, std::nullopt});
+        g_.view.surfaces.push_back({"leaf", plant_.name, 1.0f, std::nullopt, nullptr});
         // So does its flowers' blossom (turtle::surfaceShapeOf: Lantana's flower head, a rose's).
-        g_.view.surfaces.push_back({"blossom", plant_.name, 1.0f, std::nullopt});
+        g_.view.surfaces.push_back({"blossom", plant_.name, 1.0f, std::nullopt, nullptr});
     }
 
 private:
@@ -149,7 +149,7 @@ private:
         const std::string name = "leafModel" + std::to_string(it->second);
         const bool known = std::any_of(g_.view.surfaces.begin(), g_.view.surfaces.end(),
                                        [&](const ir::ViewSettings::Surface& s) { return s.name == name; });
-        if (!known) g_.view.surfaces.push_back({name, **model, 1.0f, it->second});
+        if (!known) g_.view.surfaces.push_back({name, **model, 1.0f, it->second, nullptr});
         return name;
     }
 
@@ -230,11 +230,12 @@ private:
         switch (kind) {
         case EcoOrganKind::Stem:
         case EcoOrganKind::Root:
+            // Shed before the width is set, which takes the scale of its time: a shed stem is no width and no length.
+            if (anySet(organ, &ir::EcoStage::lifeTime) || anySet(organ, &ir::EcoStage::shadeTime))
+                out.push_back(module("alive", {code(shared::kGrownAlive)}, loc));
             out.push_back(module("!", {code(shared::kGrownWidth)}, loc));
             if (anySet(organ, &ir::EcoStage::geotropism) || anySet(organ, &ir::EcoStage::weightFactor))
                 out.push_back(module("tropism", {code(shared::kGrownBend)}, loc));
-            if (anySet(organ, &ir::EcoStage::lifeTime) || anySet(organ, &ir::EcoStage::shadeTime))
-                out.push_back(module("alive", {code(shared::kGrownAlive)}, loc));
             out.push_back(module("tilt", {code(shared::kGrownPitch), code(shared::kGrownRoll)}, loc));
             if (anySet(organ, &ir::EcoStage::phototropism))
                 out.push_back(module("phototropism",

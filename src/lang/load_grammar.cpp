@@ -4,6 +4,8 @@
 
 #include <fmt/format.h>
 
+#include "compute/shared/organ_layout.h"
+
 #include "lang/color_map.h"
 #include "lang/cpfg_parser.h"
 #include "lang/cpfg_preprocessor.h"
@@ -52,6 +54,15 @@ ir::Grammar loadCpfgModel(const std::string& path) {
     return g;
 }
 
+// The `.s` surfaces a model's view read become models the renderer draws, and their shapes.
+void addSurfaceModels(ir::Grammar& g, ir::DrawAssets& assets) {
+    for (ir::ViewSettings::Surface& surface : g.view.surfaces) {
+        if (!surface.model || surface.shape) continue;
+        surface.shape = shared::kSurfaceLastShape + 1 + static_cast<uint32_t>(assets.models.size());
+        assets.models.push_back(surface.model->mesh);
+    }
+}
+
 } // namespace
 
 ir::Grammar loadScenePlantGrammar(const ir::EcoScene& scene, const ir::EcoPlant& plant,
@@ -87,6 +98,8 @@ std::vector<ir::Grammar> loadSpecies(const std::string& path, std::vector<ir::Ec
         throw ir::InputError({path, 0, 0},
                              fmt::format("unknown grammar file type '{}' (expected .l, .lsys or .eco)", ext));
     }
+    if (assets)
+        for (ir::Grammar& g : species) addSurfaceModels(g, *assets);
     return species;
 }
 

@@ -65,6 +65,14 @@ inline void bendAsCpfgDirection(Frame& f, glm::vec3 t, float elasticity) {
     turnToward(f.heading, f.left, std::asin(std::clamp(elasticity * glm::dot(t, f.left), -1.0f, 1.0f)));
 }
 
+// cpfg's `tropism:` lines, before every move: as `bend`, by at most a radian (a negative elasticity turns away).
+inline void bendAsCpfgTropism(Frame& f, glm::vec3 t, float elasticity) {
+    glm::vec3 axis = glm::cross(f.heading, t);
+    float n = glm::length(axis);
+    if (elasticity == 0.0f || n < 1e-6f) return;
+    rotateFrame(f, axis / n, std::copysign(std::min(std::abs(elasticity) * n, 1.0f), elasticity));
+}
+
 // Tropism after a drawn segment: the heading bends toward t by elasticity * |H x t| about H x t.
 inline void bend(Frame& f, glm::vec3 t, float elasticity) {
     glm::vec3 axis = glm::cross(f.heading, t);

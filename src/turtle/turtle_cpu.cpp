@@ -23,7 +23,7 @@ constexpr float kDegrees = 3.14159265358979f / 180.0f;
 struct TurtleState {
     Frame frame;
     glm::vec3 position{0.0f};
-    float width = 1.0f;
+    float width = 1.0f; // in world units: `!` and `#` apply the scale when they set it
     float color = 1.0f;
     float scale = 1.0f;
     float elasticity = 0.0f;
@@ -73,6 +73,7 @@ public:
         state.width = t_.width;
         state.color = t_.initialColor;
         state.elasticity = t_.elasticity;
+        state.scale = t_.initialScale;
         std::vector<TurtleState> stack;
         for (size_t i = begin; i < end; ++i) {
             uint32_t command = commands_.commandAt(s_, begin, end, i);
@@ -122,7 +123,7 @@ private:
     // cpfg's tapered lines: a segment narrows from the width it was drawn with to the width set before the command
     // that ends it (a branch, the next segment or move, the plant's end).
     void endTaper(TurtleState& st) {
-        if (st.tapering >= 0) organs_[size_t(st.tapering)].up.w = 0.5f * st.width * st.scale;
+        if (st.tapering >= 0) organs_[size_t(st.tapering)].up.w = 0.5f * st.width;
         st.tapering = -1;
     }
 
@@ -137,7 +138,7 @@ private:
     }
 
     void drawStem(TurtleState& st, size_t module, float length) {
-        float radius = 0.5f * st.width * st.scale;
+        float radius = 0.5f * st.width;
         OrganInstance& o = emit(kOrganStem, module, st);
         o.position = v4(st.position, length);
         o.heading = v4(st.frame.heading, radius);
@@ -160,7 +161,7 @@ private:
         float length = glm::length(chord);
         if (length > kTubeEpsilon * (1.0f + glm::length(st.anchor))) {
             uint32_t segments = tubeSegments(param(module, 0, 1.0f));
-            float r0 = 0.5f * st.anchorWidth * st.scale, r1 = 0.5f * st.width * st.scale;
+            float r0 = 0.5f * st.anchorWidth, r1 = 0.5f * st.width;
             glm::vec3 from = st.anchor;
             for (uint32_t k = 0; k < segments; ++k) {
                 float t0 = float(k) / float(segments), t1 = float(k + 1) / float(segments);
@@ -190,12 +191,13 @@ private:
 
     void move(TurtleState& st, size_t i, uint32_t command) {
         const bool draw = turtleDraws(command);
+        if (t_.tropismRule == ir::TropismRule::CpfgTropism) bendAsCpfgTropism(st.frame, t_.tropism, st.elasticity);
         float length = param(i, 0, t_.step) * st.scale;
         if (draw) drawStem(st, i, length);
         else st.lastStem = -1;
         st.position += st.frame.heading * length;
         if (t_.tropismRule == ir::TropismRule::CpfgDirection) bendAsCpfgDirection(st.frame, t_.tropism, st.elasticity);
-        else if (draw) bend(st.frame, t_.tropism, st.elasticity);
+        else if (draw && t_.tropismRule == ir::TropismRule::Torque) bend(st.frame, t_.tropism, st.elasticity);
         if (!polygons_.empty() && turtleAddsVertex(command)) polygonVertex(i, st);
     }
 
@@ -232,8 +234,13 @@ private:
         case kTurtleRotateWorldX: rotateFrame(f, {1, 0, 0}, param(i, 0, 0)); break;
         case kTurtleRotateWorldY: rotateFrame(f, {0, 1, 0}, param(i, 0, 0)); break;
         case kTurtleRotateWorldZ: rotateFrame(f, {0, 0, 1}, param(i, 0, 0)); break;
-        case kTurtleWidthUp: st.width = hasParam(i) ? param(i, 0, 0) : st.width + t_.widthIncrement; break;
-        case kTurtleWidthDown: st.width = hasParam(i) ? param(i, 0, 0) : st.width - t_.widthIncrement; break;
+        // As in cpfg, a width is set in the scale of its time: `@D` scales the widths `!` and `#` set after it.
+        case kTurtleWidthUp:
+            st.width = hasParam(i) ? param(i, 0, 0) * st.scale : st.width + t_.widthIncrement * st.scale;
+            break;
+        case kTurtleWidthDown:
+            st.width = hasParam(i) ? param(i, 0, 0) * st.scale : st.width - t_.widthIncrement * st.scale;
+            break;
         case kTurtleColorUp: st.color = hasParam(i) ? param(i, 0, 0) : st.color + t_.colorIncrement; break;
         case kTurtleColorDown: st.color = hasParam(i) ? param(i, 0, 0) : st.color - t_.colorIncrement; break;
         case kTurtleScaleSet: st.scale = param(i, 0, st.scale); break;
@@ -266,7 +273,7 @@ private:
         case kTurtleSphere:
         case kTurtleDisc:
         case kTurtleDiscFacing: {
-            float radius = 0.5f * param(i, 0, st.width) * st.scale;
+            float radius = 0.5f * (hasParam(i) ? param(i, 0, 0) * st.scale : st.width);
             uint32_t kind = command == kTurtleSphere ? kOrganSphere : kOrganDisc;
             OrganInstance& o = emit(kind, i, st);
             o.position = v4(st.position, 0);
@@ -276,12 +283,24 @@ private:
             break;
         }
         case kTurtleSurface: {
-            float length = t_.surfaceScale[s_.sym[i]] * param(i, 0, 1.0f) * st.scale;
+            // `~id(s)` scales the surface by s, `~id(sx, sy, sz)` across, along and out of it (cpfg's order: left,
+            // heading, up); then the turtle moves to the surface's end point, scaled by the first.
+            const uint32_t id = s_.sym[i];
+            if (t_.surfaceDrawn[id] == kSurfaceNone) break;
+            const float first = param(i, 0, 1.0f);
+            const bool three = s_.paramCount[i] >= 3;
+            const float scale = t_.surfaceScale[id] * st.scale;
             OrganInstance& o = emit(kOrganLeaf, i, st);
-            o.position = v4(st.position, length);
-            o.heading = v4(f.heading, length);
-            o.up = v4(f.up, 0);
-            o.shape = t_.surfaceShape[s_.sym[i]];
+            o.position = v4(st.position, (three ? param(i, 1, 1.0f) : first) * scale);
+            o.heading = v4(f.heading, first * scale);
+            o.up = v4(f.up, (three ? param(i, 2, 1.0f) : first) * scale);
+            o.shape = t_.surfaceShape[id];
+            o.previousHeading.w = t_.surfaceDrawn[id] == kSurfaceAroundBase ? kLeafAroundBase : 0.0f;
+            const glm::vec3 end = t_.surfaceEnd[id];
+            if (end != glm::vec3(0.0f)) {
+                st.position += first * scale * (end.x * f.heading + end.y * f.left + end.z * f.up);
+                st.lastStem = -1;
+            }
             break;
         }
         case kTurtlePolygonBegin: // `{(type)` starts a generalized cylinder, `{` a polygon
@@ -360,6 +379,10 @@ Bounds organBounds(const OrganInstance& o) {
         break;
     }
     case kOrganLeaf:
+        if (o.previousHeading.w == kLeafAroundBase) { // at most its largest scale from its base
+            b.add(p, std::max({o.position.w, o.heading.w, o.up.w}));
+            break;
+        }
         b.add(p, 0.5f * o.heading.w);
         b.add(p + h * o.position.w, 0.5f * o.heading.w);
         break;

@@ -44,10 +44,26 @@ bool hasElasticityCommands(const turtle::TurtleCommands& c) {
            std::any_of(c.pairs.begin(), c.pairs.end(), elastic);
 }
 
-std::vector<std::uint32_t> commandTableOf(const turtle::TurtleCommands& c) {
+// The commands of every symbol, then each species' surfaces (TurtleSpecies::surfaces), whose start in the table
+// it records in `species`.
+std::vector<std::uint32_t> commandTableOf(const turtle::TurtleCommands& c,
+                                          const std::vector<turtle::TurtleSettings>& settings,
+                                          std::vector<TurtleSpecies>& species) {
     std::vector<std::uint32_t> table;
     for (const auto* row : {&c.plain, &c.afterAt, &c.afterQuery, &c.pairPrefix, &c.pairs})
         table.insert(table.end(), row->begin(), row->end());
+    for (size_t k = 0; k < settings.size(); ++k) {
+        const turtle::TurtleSettings& t = settings[k];
+        species[k].surfaces = static_cast<std::uint32_t>(table.size());
+        for (std::uint32_t s = 0; s < c.symbols; ++s) {
+            const bool known = s < t.surfaceDrawn.size();
+            const std::uint32_t drawn = known ? t.surfaceDrawn[s] : kSurfaceNone;
+            // The end point per unit of the first scale, the surface's own scale (its reach) applied.
+            const glm::vec3 end = known ? t.surfaceEnd[s] * t.surfaceScale[s] : glm::vec3(0.0f);
+            table.insert(table.end(), {std::bit_cast<std::uint32_t>(end.x), std::bit_cast<std::uint32_t>(end.y),
+                                       std::bit_cast<std::uint32_t>(end.z), drawn});
+        }
+    }
     return table;
 }
 
@@ -61,11 +77,14 @@ TurtleSpecies speciesOf(const turtle::TurtleSettings& t, bool elasticityCommands
     s.initialColor = t.initialColor;
     s.elasticity = t.elasticity;
     s.elasticityIncrement = t.elasticityIncrement;
+    s.initialScale = t.initialScale;
     bool mayBend = t.elasticity != 0.0f || elasticityCommands;
     s.tropism = {t.tropism.x, t.tropism.y, t.tropism.z, mayBend ? 1.0f : 0.0f};
     s.taperedLines = t.taperedLines ? 1u : 0u;
     s.dollarRolls = t.dollarRolls ? 1u : 0u;
-    s.tropismRule = t.tropismRule == ir::TropismRule::CpfgDirection ? kTropismCpfgDirection : kTropismTorque;
+    s.tropismRule = t.tropismRule == ir::TropismRule::CpfgDirection ? kTropismCpfgDirection
+                    : t.tropismRule == ir::TropismRule::CpfgTropism ? kTropismCpfgTropism
+                                                                     : kTropismTorque;
     s.lineStyle = turtle::lineStyleCode(t.lineStyle);
     return s;
 }
@@ -201,7 +220,7 @@ struct GpuTurtle::Impl {
                 colors.push_back({v.r, v.g, v.b, v.a});
             }
         }
-        std::vector<std::uint32_t> commandWords = commandTableOf(commands);
+        std::vector<std::uint32_t> commandWords = commandTableOf(commands, species, table);
         commandTable = vk::deviceBufferWith(c, std::span<const std::uint32_t>(commandWords));
         speciesTable = vk::deviceBufferWith(c, std::span<const TurtleSpecies>(table));
         palettes = vk::deviceBufferWith(c, std::span<const shared::vec4>(colors));

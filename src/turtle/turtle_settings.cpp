@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 
 #include "compute/shared/organ_layout.h"
+#include "compute/shared/turtle_state_layout.h"
 
 namespace simeco::turtle {
 
@@ -90,6 +91,7 @@ TurtleSettings turtleSettings(const ir::Grammar& grammar, const ir::Alphabet& al
     t.tropism = glm::length(tropism) > 0 ? glm::normalize(tropism) : glm::vec3(0, -1, 0);
     t.elasticity = v.initialElasticity;
     t.elasticityIncrement = v.elasticityIncrement;
+    t.initialScale = v.initialScale;
     t.taperedLines = v.taperedLines;
     t.tropismRule = v.tropismRule;
     t.lineStyle = v.lineStyle;
@@ -104,16 +106,28 @@ TurtleSettings turtleSettings(const ir::Grammar& grammar, const ir::Alphabet& al
             t.palette[i] = glm::vec4(v.palette[i][0], v.palette[i][1], v.palette[i][2], w);
         }
     }
-    // Any symbol can follow `~` as a surface id: scale 1 and a shape from its name unless the view names it.
+    // Any symbol can follow `~` as a surface id: scale 1 and a shape from its name unless the view names it (or,
+    // in cpfg's way, nothing drawn unless it does).
     t.surfaceScale.assign(alphabet.size(), 1.0f);
     t.surfaceShape.assign(alphabet.size(), shared::kLeafOvate);
+    t.surfaceEnd.assign(alphabet.size(), glm::vec3(0.0f));
+    t.surfaceDrawn.assign(alphabet.size(),
+                          v.undefinedSurfacesDrawn ? shared::kSurfaceAlongHeading : shared::kSurfaceNone);
     for (size_t s = 0; s < alphabet.size(); ++s) {
         const std::string& id = alphabet.name(ir::SymbolId(s));
         t.surfaceShape[s] = surfaceShapeOf(id);
         for (const ir::ViewSettings::Surface& surface : v.surfaces) {
             if (surface.name != id) continue;
-            t.surfaceScale[s] = surface.scale;
             t.surfaceShape[s] = surface.shape ? *surface.shape : surfaceShapeOf(surface.file + " " + id);
+            if (surface.model) { // its triangles are in units of its reach
+                const std::array<float, 3>& e = surface.model->endPoint;
+                t.surfaceScale[s] = surface.model->reach;
+                t.surfaceEnd[s] = glm::vec3(e[0], e[1], e[2]) / surface.model->reach;
+                t.surfaceDrawn[s] = shared::kSurfaceAroundBase;
+            } else {
+                t.surfaceScale[s] = surface.scale;
+                t.surfaceDrawn[s] = shared::kSurfaceAlongHeading;
+            }
         }
     }
     return t;

@@ -25,14 +25,18 @@ struct TurtleSettings {
     glm::vec3 tropism{0.0f, -1.0f, 0.0f}; // unit
     float elasticity = 0.0f;
     float elasticityIncrement = 0.0f;
+    float initialScale = 1.0f;
     ir::TropismRule tropismRule = ir::TropismRule::Torque;
     ir::LineStyle lineStyle = ir::LineStyle::Cylinder;
     bool taperedLines = false; // ir::ViewSettings::taperedLines
     bool dollarRolls = true;   // ir::ViewSettings::dollarRolls
     std::vector<glm::vec4> palette;       // kPaletteSize linear RGBA colours
-    // Per symbol id, for `~` and that symbol: the surface's scale and leaf shape (kLeaf*).
+    // Per symbol id, for `~` and that symbol: the surface's scale and leaf shape (kLeaf*), how it draws (kSurface*)
+    // and where it leaves the turtle (per unit of its first scale, in the turtle's heading, left and up).
     std::vector<float> surfaceScale;
     std::vector<uint32_t> surfaceShape;
+    std::vector<glm::vec3> surfaceEnd;
+    std::vector<uint32_t> surfaceDrawn;
 
     glm::vec4 color(float index) const;
 };

@@ -3,6 +3,7 @@
 #include <lzma.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <iterator>
@@ -10,6 +11,9 @@
 #include <stdexcept>
 
 #include <glm/common.hpp>
+#include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
+#include <glm/trigonometric.hpp>
 
 namespace simeco::test {
 
@@ -65,6 +69,20 @@ float RayGeometry::size() const {
     return std::max({side.x, side.y, side.z, 0.0f});
 }
 
+// rayshade's `rotate x y z degrees`: the right-handed rotation about the axis, as cpfg writes a turtle frame that
+// turns about a single axis.
+glm::mat3 rayRotation(glm::vec3 axis, float degrees) {
+    const float a = glm::radians(degrees), c = std::cos(a), s = std::sin(a);
+    axis = glm::normalize(axis);
+    glm::mat3 m(0.0f);
+    for (int col = 0; col < 3; ++col) {
+        glm::vec3 e(0.0f);
+        e[col] = 1.0f;
+        m[col] = e * c + glm::cross(axis, e) * s + axis * glm::dot(axis, e) * (1.0f - c);
+    }
+    return m;
+}
+
 RayGeometry readRayGeometry(const std::filesystem::path& xzFile) {
     const std::vector<std::string> w = words(decompressXz(xzFile));
     RayGeometry g;
@@ -73,9 +91,12 @@ RayGeometry readRayGeometry(const std::filesystem::path& xzFile) {
         if (i >= w.size() || !isNumber(w[i])) throw std::runtime_error(xzFile.string() + ": a number expected");
         return std::strtof(w[i++].c_str(), nullptr);
     };
-    auto point = [&]() {
+    auto vector = [&]() {
         const float x = number(), y = number(), z = number();
-        const glm::vec3 p(x, y, z);
+        return glm::vec3(x, y, z);
+    };
+    auto point = [&]() {
+        const glm::vec3 p = vector();
         g.min = glm::min(g.min, p);
         g.max = glm::max(g.max, p);
         return p;
@@ -83,11 +104,34 @@ RayGeometry readRayGeometry(const std::filesystem::path& xzFile) {
     auto skipNumbers = [&]() {
         while (i < w.size() && isNumber(w[i])) ++i;
     };
-    // Everything before `grid` is the header: the camera, the screen, the lights.
-    while (i < w.size() && w[i] != "grid") ++i;
+    // A triangle's corners, each followed by its normal (and texture coordinates for `triangleuv`).
+    auto triangle = [&]() {
+        if (i < w.size() && !isNumber(w[i])) ++i; // a surface
+        size_t numbers = 0;
+        while (i + numbers < w.size() && isNumber(w[i + numbers])) ++numbers;
+        const size_t perCorner = numbers / 3, end = i + numbers;
+        RayTriangle t;
+        for (glm::vec3& corner : t.corners) {
+            const size_t next = i + perCorner;
+            corner = vector();
+            i = next;
+        }
+        i = end;
+        return t;
+    };
+    // Everything before the first `name` is the header: the camera, the screen, the lights.
+    while (i < w.size() && w[i] != "name") ++i;
     while (i < w.size()) {
         const std::string keyword = w[i++];
-        if (keyword == "cylinder" || keyword == "cone") {
+        if (keyword == "name" && i < w.size() && w[i] != "cpfg.ray") {
+            // A surface's definition: its triangles until `end`.
+            std::vector<RayTriangle>& mesh = g.surfaceMeshes[w[i++]];
+            while (i < w.size() && w[i] != "end") {
+                const std::string word = w[i++];
+                if (word == "triangle" || word == "triangleuv") mesh.push_back(triangle());
+            }
+            ++i;
+        } else if (keyword == "cylinder" || keyword == "cone") {
             ++i; // the surface
             RaySegment s;
             s.fromRadius = number();
@@ -108,9 +152,29 @@ RayGeometry readRayGeometry(const std::filesystem::path& xzFile) {
             while (i + 2 < w.size() && isNumber(w[i])) vertices.push_back(point());
             for (size_t k = 1; k + 1 < vertices.size(); ++k)
                 g.polygonFans.push_back({{vertices[0], vertices[k], vertices[k + 1]}});
+        } else if (keyword == "object" && i + 1 < w.size() && w[i + 1] == "scale") {
+            // `object id scale sx sy sz [transform L H U | rotate axis degrees] [translate P]`
+            RaySurface s;
+            s.id = w[i];
+            i += 2;
+            s.scale = vector();
+            glm::mat3 frame(1.0f);
+            if (i < w.size() && w[i] == "transform") {
+                ++i;
+                for (int row = 0; row < 3; ++row) frame[row] = vector();
+            } else if (i < w.size() && w[i] == "rotate") {
+                ++i;
+                const glm::vec3 axis = vector();
+                frame = rayRotation(axis, number());
+            }
+            s.left = frame[0], s.heading = frame[1], s.up = frame[2];
+            if (i < w.size() && w[i] == "translate") {
+                ++i;
+                s.position = point();
+            }
+            g.surfaces.push_back(s);
         } else {
             if (keyword == "triangle" || keyword == "triangleuv") ++g.triangles;
-            if (keyword == "transform") ++g.objects;
             if (i < w.size() && !isNumber(w[i])) ++i; // a surface or a name
             skipNumbers();
         }

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -30,14 +31,26 @@ struct RayTriangle {
     glm::vec3 corners[3];
 };
 
+// A `~` surface placed by the turtle: its id, its scales across, along and out of it, the turtle's frame (cpfg's
+// left, heading and up) and position.
+struct RaySurface {
+    std::string id;
+    glm::vec3 scale{1.0f};
+    glm::vec3 left{1, 0, 0}, heading{0, 1, 0}, up{0, 0, 1};
+    glm::vec3 position{0.0f};
+};
+
 struct RayGeometry {
     std::vector<RaySegment> segments;
     std::vector<RaySphere> spheres;
     std::vector<RayDisc> discs;
     std::vector<RayTriangle> polygonFans;
-    size_t triangles = 0, objects = 0; // counted, not compared yet
-    glm::vec3 min{1e30f}, max{-1e30f};                          // of every point read
-    float size() const;                                         // the largest side of the box
+    std::vector<RaySurface> surfaces;
+    // The triangles of each surface the file defines (`name id grid ... end`), in the surface's own frame.
+    std::map<std::string, std::vector<RayTriangle>> surfaceMeshes;
+    size_t triangles = 0; // the plant's own (generalized cylinders): counted, not compared yet
+    glm::vec3 min{1e30f}, max{-1e30f}; // of every point the plant draws (not the surfaces' own frames)
+    float size() const;                // the largest side of the box
 };
 
 // Reads an xz-compressed .ray file; throws std::runtime_error where it cannot.

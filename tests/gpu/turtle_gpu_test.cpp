@@ -9,6 +9,8 @@
 #include <fstream>
 #include <sstream>
 
+#include <unistd.h>
+
 #include <fmt/format.h>
 #include <glm/geometric.hpp>
 
@@ -20,6 +22,8 @@
 #include "turtle/turtle_commands.h"
 #include "turtle/turtle_cpu.h"
 #include "turtle/turtle_gpu.h"
+
+#include "../unit/square_surface.h"
 
 namespace simeco::test {
 namespace {
@@ -208,6 +212,24 @@ TEST_F(TurtleGpuTest, CorpusModelsMatchTheCpuTurtle) {
     EXPECT_EQ(tally.compared + int(tally.skipped.size()), models);
     EXPECT_LE(tally.skipped.size(), 6u);
     EXPECT_GE(tally.nonlinear, 5) << "the corpus should exercise tropism and absolute commands";
+}
+
+// A cpfg view's surfaces (drawn scaled one way or three, moving the turtle to their end point, one the view does
+// not define drawing nothing), initial scale, `@D` (scaling the widths set after it) and `tropism:` line (bending
+// before every move), in a field of plants.
+TEST_F(TurtleGpuTest, ACpfgViewsSurfacesScaleAndTropismDrawAsOnTheCpu) {
+    const fs::path folder = fs::temp_directory_path() / ("simeco-gpu-surface-" + std::to_string(::getpid()));
+    fs::create_directories(folder);
+    std::ofstream(folder / "sq.s") << testing::squareSurface();
+    std::ofstream(folder / "m.v") << "surface: s sq.s 2 3 2\nangle increment: 30\ninitial scale: 1.5\n"
+                                     "tropism: T: 1,0,0 E: 0.2\n";
+    std::ofstream(folder / "m.l") << "Lsystem: 1\nAxiom: F~s(1.5)F(1)[+@D(2)~s(1,2,3)!(0.3)F#F@O]/~q(2)fF~s-F\n"
+                                     "endlsystem\n";
+    Tally tally;
+    compareTurtles(context(), folder / "m.l", "surfaces", 3, tally);
+    fs::remove_all(folder);
+    EXPECT_EQ(tally.compared, 1);
+    EXPECT_EQ(tally.organs, 3 * (6 + 3 + 1)); // per plant six segments, three surfaces and a sphere
 }
 
 // Many plants in one stream: each plant keeps its own root and the field places them as the CPU does.

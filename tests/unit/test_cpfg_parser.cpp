@@ -94,6 +94,31 @@ TEST_F(CpfgView, LinesAreTaperedUnlessTheViewSaysOffAndDollarLeavesTheTurtleAlon
     EXPECT_FALSE(viewWith("angle increment: 30\ntapered lines: off\n").taperedLines);
 }
 
+TEST_F(CpfgView, TropismLinesAddUpAsCpfgTurnsTowardTheirSum) {
+    simeco::ir::ViewSettings v = viewWith("tropism: T: 0,-2,0 E: 0.2\n");
+    EXPECT_EQ(v.tropismRule, simeco::ir::TropismRule::CpfgTropism);
+    EXPECT_FLOAT_EQ(v.tropismDirection[1], -1.0f); // unit
+    EXPECT_FLOAT_EQ(v.initialElasticity, 0.2f);
+    // 0.3 down and 0.4 x (elasticity 0.8, half the intensity) toward +x; a line at 90 degrees adds nothing.
+    v = viewWith("tropism: T: 0 -1 0 E: 0.3\ntropism: T: 1 0 0 I: 0.5 E: 0.8\ntropism: T: 0 0 1 A: 90 E: 1\n");
+    EXPECT_NEAR(v.initialElasticity, 0.5f, 1e-6f);
+    EXPECT_NEAR(v.tropismDirection[0], 0.8f, 1e-6f);
+    EXPECT_NEAR(v.tropismDirection[1], -0.6f, 1e-6f);
+    EXPECT_NEAR(v.tropismDirection[2], 0.0f, 1e-6f);
+}
+
+TEST_F(CpfgView, TheFirstDirectionalLightIsTheSunAndTheInitialScaleTheTurtles) {
+    EXPECT_FALSE(viewWith("angle increment: 30\n").look.sunDirection);
+    auto sun = [&](const std::string& view) {
+        return viewWith(view).look.sunDirection.value_or(std::array{9.f, 9.f, 9.f});
+    };
+    EXPECT_EQ(sun("light: V: 0,0,2 A: 0.2 0.2 0.2\nlight: V: 1 0 0\n"), (std::array{0.f, 0.f, 1.f}));
+    EXPECT_EQ(sun("light: O: 1 2 3\nlight direction: 3.0,0,4.0\n"), (std::array{0.6f, 0.f, 0.8f}));
+    EXPECT_FLOAT_EQ(viewWith("").initialScale, 1.0f);
+    EXPECT_FLOAT_EQ(viewWith("initial scale: 2.5\n").initialScale, 2.5f);
+    EXPECT_FLOAT_EQ(viewWith("initial scale: 0\n").initialScale, 1.0f); // as cpfg
+}
+
 TEST_F(CpfgView, LineStyleFollowsTheViewAsCpfgReadsIt) {
     using simeco::ir::LineStyle;
     auto styleWith = [&](const std::string& view) { return viewWith(view).lineStyle; };

@@ -1,4 +1,4 @@
-// The grammars shipped under grammars/abop and grammars/clouds: each loads with its view file, derives,
+// The grammars shipped under grammars/abop, grammars/clouds and grammars/cpfg: each loads with its view file, derives,
 // and grows to the size worked out without simeco.
 //
 // Where the expected numbers come from:
@@ -15,6 +15,7 @@
 //   counts follow from the apex recurrences given next to each test, checked by the same script with the
 //   parameters dropped; parameter values are the book's products (200 * 1.109^6, ...).
 // - The stochastic figure 1.27 variant: bounds and invariants that hold for every choice of successors.
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
@@ -25,8 +26,12 @@
 
 #include <gtest/gtest.h>
 
+#include "compute/shared/organ_layout.h"
 #include "cpu/derive.h"
 #include "lang/load_grammar.h"
+#include "turtle/turtle_commands.h"
+#include "turtle/turtle_cpu.h"
+#include "turtle/turtle_settings.h"
 
 namespace simeco {
 namespace {
@@ -292,7 +297,7 @@ TEST(ShippedGrammars, OrientalClouds) {
 
 TEST(ShippedGrammars, EveryCpfgModelLoadsWithItsViewFile) {
     size_t found = 0;
-    for (const char* dir : {"abop", "clouds"}) {
+    for (const char* dir : {"abop", "clouds", "cpfg"}) {
         std::filesystem::path folder = kGrammarDir + dir;
         ASSERT_TRUE(std::filesystem::is_directory(folder)) << folder;
         for (const auto& entry : std::filesystem::directory_iterator(folder)) {
@@ -305,8 +310,8 @@ TEST(ShippedGrammars, EveryCpfgModelLoadsWithItsViewFile) {
             EXPECT_GT(g.derivationLength, 0);
         }
     }
-    // Figures 1.24 a-f, 1.27, 1.31 a-e, 2.6, 2.7, 2.8; the clouds' example and the library's 28 parts.
-    EXPECT_EQ(found, 15u + 29u);
+    // Figures 1.24 a-f, 1.27, 1.31 a-e, 2.6, 2.7, 2.8; the clouds' example and the library's 28 parts; the herb.
+    EXPECT_EQ(found, 15u + 29u + 1u);
 }
 
 // Every part of the cloud library derives to something drawn, and looks as the library's view says: outlined, on
@@ -335,6 +340,28 @@ TEST(ShippedGrammars, TheCloudLibrarysPartsDeriveAndShareItsLook) {
         ASSERT_EQ(d.grammar.view.palette.size(), 256u); // clouds.map
     }
     EXPECT_EQ(parts, 29u);
+}
+
+// The herb draws its sixteen leaves and five petals from its two surfaces, the leaves largest half way up.
+TEST(ShippedGrammars, TheHerbDrawsItsLeavesAndPetalsFromItsSurfaces) {
+    ir::DrawAssets assets;
+    const ir::Grammar g = lang::loadSpecies(kGrammarDir + "cpfg/herb.l", nullptr, &assets).front();
+    ASSERT_EQ(assets.models.size(), 2u); // leaf.s and petal.s
+    const stream::ModuleString string = cpu::deriveCpu(g, {}).string;
+    const turtle::Interpretation r =
+        turtle::interpretCpu(string, turtle::turtleCommands(g.alphabet), {turtle::turtleSettings(g, g.alphabet)});
+    std::map<uint32_t, std::vector<float>> lengthsByShape;
+    for (uint32_t k = 0; k < r.count[shared::kOrganLeaf]; ++k) {
+        const shared::OrganInstance& o = r.organs[r.first[shared::kOrganLeaf] + k];
+        lengthsByShape[o.shape].push_back(o.position.w);
+    }
+    const std::vector<float>& leaves = lengthsByShape[shared::kSurfaceLastShape + 1];
+    ASSERT_EQ(leaves.size(), 16u);
+    EXPECT_EQ(lengthsByShape[shared::kSurfaceLastShape + 2].size(), 5u);
+    // In pairs from the ground: the largest pair at node 4 of 8, and larger than node 0's by half.
+    const size_t largest = size_t(std::max_element(leaves.begin(), leaves.end()) - leaves.begin());
+    EXPECT_TRUE(largest == 8 || largest == 9) << largest;
+    EXPECT_GT(leaves[8], 1.5f * leaves[0]);
 }
 
 } // namespace

@@ -47,9 +47,10 @@ turtle::Interpretation interpret(const ir::Grammar& g, uint32_t plants, int step
 
 // A plant with every organ kind: stems bent at joints, a leaf, a sphere, discs of both kinds, a polygon.
 turtle::Interpretation everyKind(uint32_t plants) {
-    return interpret(grammarFromText(lsystem(
-                         "F!(0.6)F[+(40)F~l]F[-(50)F@O(0.3)][&(30)F@c(0.5)][^(30)F@o(0.4)]{.f+(90)f+(90)f}", "", 0)),
-                     plants);
+    ir::Grammar g = grammarFromText(
+        lsystem("F!(0.6)F[+(40)F~l]F[-(50)F@O(0.3)][&(30)F@c(0.5)][^(30)F@o(0.4)]{.f+(90)f+(90)f}", "", 0));
+    g.view.undefinedSurfacesDrawn = true; // `~l` a built-in blade, as a quick grammar draws it
+    return interpret(g, plants);
 }
 
 // ABOP fig. 1.24a, a bracketed plant of stems only, three steps.

@@ -157,6 +157,21 @@ TEST(TurtleCpu, ATaperedSegmentNarrowsToTheWidthSetBeforeWhatEndsIt) {
     EXPECT_FLOAT_EQ(r.organs[0].up.w, 1.0f);
 }
 
+TEST(TurtleCpu, AtDScalesTheWidthsSetAfterItAsInCpfg) {
+    // Width 1, increment 1: after `@D(2)` the first segment is twice as long but as wide; `!(0.5)` then sets a
+    // width of 1, `#` adds 2, a sphere without a size is the width across and one with a size twice it.
+    ir::Grammar g = grammarFromText(lsystem("@D(2)F!(0.5)F#F@O@O(0.25)", "", 0));
+    const turtle::Interpretation r = interpretGrammar(g);
+    ASSERT_EQ(r.count[shared::kOrganStem], 3u);
+    EXPECT_FLOAT_EQ(r.organs[0].position.w, 2.0f);
+    EXPECT_FLOAT_EQ(r.organs[0].heading.w, 0.5f);
+    EXPECT_FLOAT_EQ(r.organs[1].heading.w, 0.5f);
+    EXPECT_FLOAT_EQ(r.organs[2].heading.w, 1.5f);
+    ASSERT_EQ(r.count[shared::kOrganSphere], 2u);
+    EXPECT_FLOAT_EQ(r.organs[r.first[shared::kOrganSphere]].heading.w, 1.5f);
+    EXPECT_FLOAT_EQ(r.organs[r.first[shared::kOrganSphere] + 1].heading.w, 0.25f);
+}
+
 TEST(TurtleCpu, RollsAsCpfgWhoseUpIsOursReversed) {
     // \(90) rolls left: cpfg's up (-z at the start) turns toward left (-x), so left turns toward +z; then + turns
     // the heading toward left.
@@ -256,6 +271,33 @@ TEST(TurtleCpu, GeneralizedCylindersFollowTheHeadingsInSegments) {
         expectNear(xyz(tube[k - 1].nextHeading), xyz(tube[k].heading));
         expectNear(xyz(tube[k].position), xyz(tube[k - 1].position) + xyz(tube[k - 1].heading) * tube[k - 1].position.w);
     }
+}
+
+TEST(TurtleCpu, CpfgsTropismLinesBendBeforeEveryMoveByAtMostARadian) {
+    // cpfg's `tropism:` form, toward -x with elasticity 0.5: before the move f the heading, H x T of length one,
+    // turns by 0.5 rad toward -x; before F by 0.5 x |H x T| = 0.5 cos(0.5) more.
+    ir::Grammar g = grammarFromText(lsystem("fF", "", 0));
+    g.view.tropismRule = ir::TropismRule::CpfgTropism;
+    g.view.tropismDirection = {-1, 0, 0};
+    g.view.initialElasticity = 0.5f;
+    turtle::Interpretation r = interpretGrammar(g);
+    ASSERT_EQ(r.count[shared::kOrganStem], 1u);
+    const float angle = 0.5f + 0.5f * std::cos(0.5f);
+    expectNear(xyz(r.organs[0].heading), {-std::sin(angle), std::cos(angle), 0});
+    expectNear(xyz(r.organs[0].position), {-std::sin(0.5f), std::cos(0.5f), 0}); // f moved after bending
+    // A large elasticity turns by one radian at most.
+    g.view.initialElasticity = 5.0f;
+    r = interpretGrammar(g);
+    expectNear(xyz(r.organs[0].position), {-std::sin(1.0f), std::cos(1.0f), 0});
+}
+
+TEST(TurtleCpu, TheViewsInitialScaleScalesTheSteps) {
+    ir::Grammar g = grammarFromText(lsystem("fF(2)", "", 0));
+    g.view.initialScale = 1.5f;
+    const turtle::Interpretation r = interpretGrammar(g);
+    ASSERT_EQ(r.count[shared::kOrganStem], 1u);
+    EXPECT_FLOAT_EQ(r.organs[0].position.y, 1.5f);
+    EXPECT_FLOAT_EQ(r.organs[0].position.w, 3.0f);
 }
 
 TEST(TurtleCpu, TropismBendsTheNextSegmentTowardTheDirection) {

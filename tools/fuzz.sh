@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Fuzzes the readers of user files (cpfg .l, SimEco .eco, quick .lsys, view .v, .func, .fset, .con) with
+# Fuzzes the readers of user files (cpfg .l, SimEco .eco, quick .lsys, view .v, .func, .fset, .con, .s) with
 # libFuzzer, AddressSanitizer and UBSan: builds them with clang into build-fuzz/, seeds each reader with the
 # project's grammars and scenes and the shared cpfg corpus, and runs each for a while. Inputs that reach new code
 # are kept in build-fuzz/corpus/READER/ for the next run; a crash, sanitizer report, hang (an input over 30 s:
@@ -22,7 +22,7 @@ elif [ "${1:-}" = "--seconds" ]; then
   shift 2
 fi
 readers=("$@")
-[ ${#readers[@]} -eq 0 ] && readers=(cpfg eco quick view function function_set contour)
+[ ${#readers[@]} -eq 0 ] && readers=(cpfg eco quick view function function_set contour surface)
 
 if ! command -v clang++ >/dev/null; then
   echo "fuzz: clang++ is needed (Debian packages clang and libclang-rt-dev; tools/setup.sh installs them)" >&2
@@ -43,6 +43,7 @@ seedFiles() {
   function) ls "$shared"/corpus/cpfg-vlab/models/*/*/*.func ;;
   function_set) ls "$shared"/corpus/cpfg-vlab/models/*/*/*.fset ;;
   contour) ls "$shared"/corpus/cpfg-vlab/models/*/*/*.con ;;
+  surface) ls grammars/*/*.s "$shared"/corpus/cpfg-vlab/models/*/*/*.s ;;
   esac 2>/dev/null
 }
 

@@ -39,7 +39,7 @@ void runExport(const ExportArgs& args) {
     turtle::Interpretation interp = field::interpretOnHost(source, field, context.get());
     if (interp.organs.empty()) throw std::runtime_error(fmt::format("{}: the plants draw nothing", source.file));
 
-    exporter::OrganMeshSet meshes(draw::buildOrganMeshes());
+    exporter::OrganMeshSet meshes(draw::buildOrganMeshes(field.assets.models)); // a model's own triangles
     std::string counts;
     if (*format == exporter::MeshFormat::Gltf) {
         exporter::GltfOptions options;

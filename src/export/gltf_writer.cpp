@@ -148,11 +148,11 @@ private:
 };
 
 // Instances of one kind (and one leaf shape), in the order of `organs`.
-std::vector<std::uint32_t> selectInstances(std::span<const OrganInstance> organs, std::uint32_t kind,
-                                           std::optional<std::uint32_t> shape) {
+std::vector<std::uint32_t> selectInstances(std::span<const OrganInstance> organs, const OrganMeshSet& meshes,
+                                           std::uint32_t kind, std::optional<std::uint32_t> shape) {
     std::vector<std::uint32_t> chosen;
     for (std::uint32_t i = 0; i < organs.size(); ++i) {
-        if (organs[i].kind == kind && (!shape || leafShape(organs[i]) == *shape)) {
+        if (organs[i].kind == kind && (!shape || meshes.shapeOf(organs[i]) == *shape)) {
             chosen.push_back(i);
         }
     }
@@ -211,7 +211,7 @@ std::string gltfText(std::span<const OrganInstance> organs, const OrganMeshSet& 
     json children = json::array();
     bool instanced = false;
     for (std::uint32_t kind = 0; kind < shared::kOrganKinds; ++kind) {
-        if (selectInstances(organs, kind, std::nullopt).empty()) {
+        if (selectInstances(organs, meshes, kind, std::nullopt).empty()) {
             continue;
         }
         // Open surfaces are seen from both sides, as the renderer draws them.
@@ -226,11 +226,11 @@ std::string gltfText(std::span<const OrganInstance> organs, const OrganMeshSet& 
         std::vector<std::optional<std::uint32_t>> shapes{std::nullopt};
         if (kind == shared::kOrganLeaf) {
             shapes.clear();
-            for (std::uint32_t s = 0; s < kSurfaceShapes; ++s)
+            for (std::uint32_t s = 0; s < meshes.leafShapes(); ++s)
                 shapes.push_back(s);
         }
         for (std::optional<std::uint32_t> shape : shapes) {
-            std::vector<std::uint32_t> chosen = selectInstances(organs, kind, shape);
+            std::vector<std::uint32_t> chosen = selectInstances(organs, meshes, kind, shape);
             if (chosen.empty()) {
                 continue;
             }

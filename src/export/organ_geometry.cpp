@@ -109,8 +109,10 @@ PlacedVertex placeVertex(const OrganInstance& o, std::uint32_t kind, const MeshV
         v.position = xyz(o.position) + o.heading.w * (local.position.x * axisA + local.position.y * axisB);
         v.normal = unitOr(glm::cross(axisA, axisB), U);
     } else if (kind == kOrganLeaf) {
-        // The leaf mesh holds every shape; a vertex of another shape collapses onto the base.
-        v.present = static_cast<std::uint32_t>(local.normal.w + 0.5f) == leafShape(o);
+        // The leaf mesh holds every shape; a vertex of another shape collapses onto the base. A model the mesh
+        // set does not hold is drawn as the ovate blade (OrganMeshSet::shapeOf).
+        const auto shape = static_cast<std::uint32_t>(local.normal.w + 0.5f);
+        v.present = shape == o.shape || (o.shape > kSurfaceLastShape && shape == kLeafOvate);
         v.position = xyz(o.position);
         if (v.present) {
             v.position += local.position.x * o.position.w * H + local.position.y * o.heading.w * L +
@@ -133,10 +135,6 @@ PlacedVertex placeVertex(const OrganInstance& o, std::uint32_t kind, const MeshV
     return v;
 }
 
-std::uint32_t leafShape(const OrganInstance& o) {
-    return o.shape <= kSurfaceLastShape ? o.shape : kLeafOvate;
-}
-
 const char* organKindName(std::uint32_t kind) {
     switch (kind) {
     case kOrganStem:
@@ -154,7 +152,8 @@ const char* organKindName(std::uint32_t kind) {
     }
 }
 
-const char* leafShapeName(std::uint32_t shape) {
+std::string leafShapeName(std::uint32_t shape) {
+    if (shape > kSurfaceLastShape) return "model_" + std::to_string(shape - kSurfaceLastShape - 1);
     switch (shape) {
     case kLeafLanceolate:
         return "lanceolate";
@@ -182,10 +181,18 @@ OrganMeshSet::OrganMeshSet(const draw::OrganMeshData& data) {
     for (std::uint32_t kind = 0; kind < kOrganKinds; ++kind) {
         kinds_[kind] = extractMesh(data, data.organs[kind], all);
     }
-    for (std::uint32_t shape = 0; shape < kSurfaceShapes; ++shape) {
-        leaves_[shape] = extractMesh(data, data.organs[kOrganLeaf], [shape](const MeshVertex& v) {
+    // The built-in shapes and as many models as the leaf mesh holds.
+    std::uint32_t shapes = kSurfaceShapes;
+    const draw::MeshRange& leaf = data.organs[kOrganLeaf];
+    for (std::uint32_t i = 0; i < leaf.indexCount; ++i) {
+        const std::size_t vertex = static_cast<std::size_t>(leaf.vertexOffset) + data.indices[leaf.firstIndex + i];
+        const MeshVertex& v = data.vertices[vertex];
+        shapes = std::max(shapes, static_cast<std::uint32_t>(v.normal.w + 0.5f) + 1);
+    }
+    for (std::uint32_t shape = 0; shape < shapes; ++shape) {
+        leaves_.push_back(extractMesh(data, leaf, [shape](const MeshVertex& v) {
             return static_cast<std::uint32_t>(v.normal.w + 0.5f) == shape;
-        });
+        }));
     }
 }
 
@@ -193,11 +200,15 @@ const OrganMesh& OrganMeshSet::mesh(std::uint32_t kind, std::uint32_t shape) con
     if (kind >= kOrganKinds) {
         throw std::out_of_range("organ kind " + std::to_string(kind) + " has no mesh");
     }
-    return kind == kOrganLeaf ? leaves_[shape <= kSurfaceLastShape ? shape : kLeafOvate] : kinds_[kind];
+    return kind == kOrganLeaf ? leaves_[shape < leaves_.size() ? shape : kLeafOvate] : kinds_[kind];
+}
+
+std::uint32_t OrganMeshSet::shapeOf(const OrganInstance& o) const {
+    return o.shape < leaves_.size() ? o.shape : kLeafOvate;
 }
 
 const OrganMesh& OrganMeshSet::forInstance(const OrganInstance& o) const {
-    return mesh(o.kind, o.kind == kOrganLeaf ? leafShape(o) : 0);
+    return mesh(o.kind, o.kind == kOrganLeaf ? shapeOf(o) : 0);
 }
 
 WorldMesh placeOrgans(std::span<const OrganInstance> organs, std::span<const std::uint32_t> order,

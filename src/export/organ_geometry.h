@@ -5,6 +5,7 @@
 #include <array>
 #include <cstdint>
 #include <span>
+#include <string>
 #include <vector>
 
 #include <glm/gtc/quaternion.hpp>
@@ -26,13 +27,9 @@ struct PlacedVertex {
 // lies in the heading-left plane like an @c disc, because a mesh file has no viewer to face.
 PlacedVertex placeVertex(const shared::OrganInstance& o, std::uint32_t kind, const shared::MeshVertex& local);
 
-// The surface shape a file draws an instance with: its own, or for a leaf model (which files do not carry yet)
-// the ovate blade.
-std::uint32_t leafShape(const shared::OrganInstance& o);
-
-// Names of the organ kinds and surface shapes, for groups and meshes in the files.
+// Names of the organ kinds and surface shapes (a model's `model_k`), for groups and meshes in the files.
 const char* organKindName(std::uint32_t kind);
-const char* leafShapeName(std::uint32_t shape);
+std::string leafShapeName(std::uint32_t shape);
 
 inline constexpr std::uint32_t kSurfaceShapes = shared::kSurfaceLastShape + 1;
 
@@ -48,13 +45,17 @@ class OrganMeshSet {
 public:
     explicit OrganMeshSet(const draw::OrganMeshData& data);
 
-    // The mesh of a kind; for kOrganLeaf, of one shape (kLeaf*).
+    // The mesh of a kind; for kOrganLeaf, of one shape (kLeaf*, then the models).
     const OrganMesh& mesh(std::uint32_t kind, std::uint32_t shape = 0) const;
     const OrganMesh& forInstance(const shared::OrganInstance& o) const;
+    // The surface shapes it holds (the built-in ones, then the models it was built with), and the one it draws a
+    // leaf with: its own, or the ovate blade for a model it does not hold.
+    std::uint32_t leafShapes() const { return static_cast<std::uint32_t>(leaves_.size()); }
+    std::uint32_t shapeOf(const shared::OrganInstance& o) const;
 
 private:
     std::array<OrganMesh, shared::kOrganKinds> kinds_;
-    std::array<OrganMesh, kSurfaceShapes> leaves_;
+    std::vector<OrganMesh> leaves_;
 };
 
 // Triangles in the world with per-vertex normals and colours, in runs of one plant each.

@@ -85,7 +85,7 @@ std::size_t drawnVertexCount(const draw::OrganMeshData& d, const OrganInstance& 
     std::set<std::uint32_t> used;
     for (std::uint32_t i = 0; i < r.indexCount; ++i) {
         std::uint32_t v = static_cast<std::uint32_t>(r.vertexOffset) + d.indices[r.firstIndex + i];
-        bool ownShape = std::lround(d.vertices[v].normal.w) == long(exporter::leafShape(o));
+        bool ownShape = std::lround(d.vertices[v].normal.w) == long(o.shape);
         if (o.kind != shared::kOrganLeaf || ownShape) used.insert(v);
     }
     return used.size();
@@ -451,6 +451,35 @@ TEST(MeshExport, GltfInstancesAffineOrgansAndBakesTheRest) {
     EXPECT_EQ(baked[shared::kOrganStem], 1u);
     EXPECT_EQ(baked[shared::kOrganTriangle], 1u);
     EXPECT_EQ(g.doc["scenes"][0]["nodes"].size(), 1u);
+}
+
+// A leaf drawn from a model (a cpfg surface, a scene's .obj) is exported with the model's own triangles, placed by
+// its three scales; a mesh set without the model falls back to the ovate blade.
+TEST(MeshExport, ALeafModelIsExportedWithItsOwnTriangles) {
+    ir::LeafModel square; // two triangles: x along the heading from 0 to 1, y across from 0 to 1, z out of it 0.5
+    square.corners = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0.5f}, {0, 0, 0}, {1, 1, 0.5f}, {0, 1, 0}};
+    square.normals = {{0, 0, 1}, {0, 0, 1}};
+    OrganInstance leaf{};
+    leaf.kind = shared::kOrganLeaf;
+    leaf.shape = shared::kSurfaceLastShape + 1;
+    leaf.position = {1, 2, 3, 2.0f}; // along
+    leaf.heading = {0, 1, 0, 3.0f};  // across
+    leaf.up = {0, 0, 1, 4.0f};       // out of it
+    const exporter::OrganMeshSet withModel(draw::buildOrganMeshes({square}));
+    EXPECT_EQ(withModel.leafShapes(), exporter::kSurfaceShapes + 1);
+    EXPECT_EQ(withModel.shapeOf(leaf), leaf.shape);
+    const std::vector<std::uint32_t> order{0};
+    exporter::WorldMesh mesh = exporter::placeOrgans(std::span(&leaf, 1), order, withModel);
+    ASSERT_EQ(mesh.triangleCount(), 2u);
+    // The corner (1, 1, 0.5): 2 along the heading (+y), 3 across (left, U x H = -x), 2 out of it (+z).
+    bool found = false;
+    for (const glm::vec3& p : mesh.positions) found = found || glm::length(p - glm::vec3(-2, 4, 5)) < 1e-5f;
+    EXPECT_TRUE(found);
+    const exporter::OrganMeshSet builtIn(draw::buildOrganMeshes());
+    EXPECT_EQ(builtIn.shapeOf(leaf), shared::kLeafOvate);
+    EXPECT_EQ(exporter::placeOrgans(std::span(&leaf, 1), order, builtIn).triangleCount(),
+              builtIn.mesh(shared::kOrganLeaf, shared::kLeafOvate).indices.size() / 3);
+    EXPECT_EQ(exporter::leafShapeName(leaf.shape), "model_0");
 }
 
 TEST(MeshExport, GltfWithoutInstancingBakesWhatTheObjHolds) {

@@ -94,7 +94,8 @@ SIMECO_CONST kMarkPolygon = 128u;      // `{`: a polygon's first module
 SIMECO_CONST kMarkBranchClose = 256u;  // `]`: with kMarkStemBreak, where a tapering segment's end stops narrowing
 
 // A cylinder point `@Gc(n)` draws the tube from the last one as n segments (at most this many) along the
-// Hermite curve whose tangents are the turtle's headings at the two points, each as long as the chord.
+// Hermite curve whose tangents are the turtle's headings at the two points, each 1.2 times as long as the chord
+// (cpfg's tangent parameters before any `@Gt`).
 SIMECO_CONST kTubeMaxSegments = 64u;
 
 // A cylinder point draws a tube segment from the last one when they lie further apart than this times one

@@ -90,10 +90,11 @@ void setHeadingAndUp(inout Frame f, vec3 h, vec3 u) {
     f.up = cross(h, f.left);
 }
 
+// turtle/frame.h's tubeCurve: tangents 1.2 times the chord, cpfg's tangent parameters before any `@Gt`.
 vec3 tubeCurve(vec3 p0, vec3 h0, vec3 p1, vec3 h1, float chord, float t) {
-    float t2 = t * t, t3 = t2 * t;
-    return p0 * (2.0 * t3 - 3.0 * t2 + 1.0) + h0 * (chord * (t3 - 2.0 * t2 + t)) + p1 * (-2.0 * t3 + 3.0 * t2) +
-           h1 * (chord * (t3 - t2));
+    float t2 = t * t, t3 = t2 * t, tangent = 1.2 * chord;
+    return p0 * (2.0 * t3 - 3.0 * t2 + 1.0) + h0 * (tangent * (t3 - 2.0 * t2 + t)) + p1 * (-2.0 * t3 + 3.0 * t2) +
+           h1 * (tangent * (t3 - t2));
 }
 
 // Segments of the tube a cylinder point with parameter `requested` draws.

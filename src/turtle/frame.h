@@ -107,12 +107,16 @@ inline void setHeadingAndUp(Frame& f, glm::vec3 h, glm::vec3 u) {
     f.up = glm::cross(h, f.left);
 }
 
+// cpfg's tangent parameters before any `@Gt`: a generalized cylinder's tangents are 1.2 times its chord.
+inline constexpr float kTubeTangentParameter = 1.2f;
+
 // The point at t in [0, 1] of the cubic Hermite curve from p0 to p1 whose tangents are the unit headings h0
-// and h1 scaled by the chord's length: how a generalized cylinder bends between two control points.
+// and h1 scaled by the chord's length times cpfg's tangent parameter: how a generalized cylinder bends between
+// two control points.
 inline glm::vec3 tubeCurve(glm::vec3 p0, glm::vec3 h0, glm::vec3 p1, glm::vec3 h1, float chord, float t) {
-    float t2 = t * t, t3 = t2 * t;
-    return p0 * (2 * t3 - 3 * t2 + 1) + h0 * (chord * (t3 - 2 * t2 + t)) + p1 * (-2 * t3 + 3 * t2) +
-           h1 * (chord * (t3 - t2));
+    float t2 = t * t, t3 = t2 * t, tangent = kTubeTangentParameter * chord;
+    return p0 * (2 * t3 - 3 * t2 + 1) + h0 * (tangent * (t3 - 2 * t2 + t)) + p1 * (-2 * t3 + 3 * t2) +
+           h1 * (tangent * (t3 - t2));
 }
 
 } // namespace simeco::turtle

@@ -32,6 +32,7 @@ SIMECO_CONST kBlossomStar = 6u; // five spreading obovate petals around a yellow
 SIMECO_CONST kBlossomHead = 7u; // a dome of small four-lobed florets, yellow at its centre (Lantana)
 SIMECO_CONST kBlossomRose = 8u; // a cup of rounded petals in three rings (Rosa)
 SIMECO_CONST kSurfaceLastShape = kBlossomRose; // models are shapes kSurfaceLastShape + 1 + k
+// OrganInstance.previousHeading.w of a leaf whose surface reaches around its base (a cpfg surface).
 SIMECO_CONST_FLOAT kLeafAroundBase = 1.0f;
 // OrganInstance.shape for kOrganDisc: faces the viewer (@o) rather than lying in the heading-left plane (@c).
 SIMECO_CONST kDiscFacesViewer = 1u;

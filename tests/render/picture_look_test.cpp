@@ -60,6 +60,19 @@ app::PictureOptions small(const std::string& style = "") {
     return options;
 }
 
+// A view's first directional light (`light: V: x,y,z`) is the picture's sun; without one the sun stays the
+// renderer's.
+TEST(PictureSettings, AViewsLightIsTheSun) {
+    ir::ViewSettings view;
+    const glm::vec3 renderers = app::renderSettings(small(), view).sunDirection;
+    view.look.sunDirection = std::array{0.6f, 0.0f, 0.8f};
+    const glm::vec3 sun = app::renderSettings(small(), view).sunDirection;
+    EXPECT_FLOAT_EQ(sun.x, 0.6f);
+    EXPECT_FLOAT_EQ(sun.y, 0.0f);
+    EXPECT_FLOAT_EQ(sun.z, 0.8f);
+    EXPECT_GT(glm::length(renderers - sun), 0.1f);
+}
+
 TEST_F(PictureLook, ACloudDrawsWithoutAGroundOnItsColourMapsBackgroundAndFillsASaneShareOfTheFrame) {
     Picture p = render(kGrammars + "clouds/head-c1a.l", small());
     maybeSavePreview(p.frame, "cloud_c1a");

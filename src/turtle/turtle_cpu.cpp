@@ -298,7 +298,7 @@ private:
             o.previousHeading.w = t_.surfaceDrawn[id] == kSurfaceAroundBase ? kLeafAroundBase : 0.0f;
             const glm::vec3 end = t_.surfaceEnd[id];
             if (end != glm::vec3(0.0f)) {
-                st.position += first * scale * (end.x * f.heading + end.y * f.left + end.z * f.up);
+                st.position += first * st.scale * (end.x * f.heading + end.y * f.left + end.z * f.up);
                 st.lastStem = -1;
             }
             break;

@@ -58,8 +58,7 @@ std::vector<std::uint32_t> commandTableOf(const turtle::TurtleCommands& c,
         for (std::uint32_t s = 0; s < c.symbols; ++s) {
             const bool known = s < t.surfaceDrawn.size();
             const std::uint32_t drawn = known ? t.surfaceDrawn[s] : kSurfaceNone;
-            // The end point per unit of the first scale, the surface's own scale (its reach) applied.
-            const glm::vec3 end = known ? t.surfaceEnd[s] * t.surfaceScale[s] : glm::vec3(0.0f);
+            const glm::vec3 end = known ? t.surfaceEnd[s] : glm::vec3(0.0f);
             table.insert(table.end(), {std::bit_cast<std::uint32_t>(end.x), std::bit_cast<std::uint32_t>(end.y),
                                        std::bit_cast<std::uint32_t>(end.z), drawn});
         }

@@ -122,7 +122,7 @@ TurtleSettings turtleSettings(const ir::Grammar& grammar, const ir::Alphabet& al
             if (surface.model) { // its triangles are in units of its reach
                 const std::array<float, 3>& e = surface.model->endPoint;
                 t.surfaceScale[s] = surface.model->reach;
-                t.surfaceEnd[s] = glm::vec3(e[0], e[1], e[2]) / surface.model->reach;
+                t.surfaceEnd[s] = glm::vec3(e[0], e[1], e[2]);
                 t.surfaceDrawn[s] = shared::kSurfaceAroundBase;
             } else {
                 t.surfaceScale[s] = surface.scale;

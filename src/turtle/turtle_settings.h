@@ -32,7 +32,7 @@ struct TurtleSettings {
     bool dollarRolls = true;   // ir::ViewSettings::dollarRolls
     std::vector<glm::vec4> palette;       // kPaletteSize linear RGBA colours
     // Per symbol id, for `~` and that symbol: the surface's scale and leaf shape (kLeaf*), how it draws (kSurface*)
-    // and where it leaves the turtle (per unit of its first scale, in the turtle's heading, left and up).
+    // and where it leaves the turtle (per unit of its first scale and the turtle's, in its heading, left and up).
     std::vector<float> surfaceScale;
     std::vector<uint32_t> surfaceShape;
     std::vector<glm::vec3> surfaceEnd;

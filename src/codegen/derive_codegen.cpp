@@ -134,15 +134,17 @@ std::string selection(const ir::RuleSet& rules, size_t species, RuleKind kind, b
     for (const auto& [sym, list] : bySymbol) {
         code += fmt::format("    case {}u: {{\n", sym);
         if (!stochastic) {
-            code += "        do {\n";
+            // A flat run of tests rather than a loop left by `break`, whose exits nest: lavapipe loses code nested
+            // deeper than 80 levels (its control-flow stack), so a symbol's 77th production would never apply.
             for (size_t pi : list) {
                 const ir::Production& p = rules.productions[pi];
-                code += fmt::format("            start = draw;\n"
+                code += fmt::format("        if (chosen == 0u) {{\n"
+                                    "            start = draw;\n"
                                     "            if (count == {}u && {}(i, plant, key, pBegin, pEnd, ctxLeft, ctxRight, draw, "
-                                    "1u, produced)) {{ chosen = {}u; length = {}u; break; }}\n",
+                                    "1u, produced)) {{ chosen = {}u; length = {}u; }}\n"
+                                    "        }}\n",
                                     p.strict[0].paramSlots.size(), functionName(species, kind, pi), pi + 1, p.strict.size());
             }
-            code += "        } while (false);\n";
         } else {
             code += stochasticSelection(rules, species, kind, list);
         }

@@ -157,12 +157,10 @@ std::string selection(const ir::RuleSet& rules, size_t species, RuleKind kind, c
     for (const auto& [sym, list] : bySymbol) {
         code += fmt::format("    case {}u: {{\n", sym);
         if (!stochastic) {
-            const char* keyword = "if";
-            for (size_t pi : list) {
-                code += fmt::format("        {} ({}) {{ chosen = {}u; length = {}u; }}\n", keyword, test(pi), pi + 1,
-                                    rules.productions[pi].strict.size());
-                keyword = "else if";
-            }
+            // Flat tests rather than an else-if chain: lavapipe loses code nested deeper than 80 levels.
+            for (size_t pi : list)
+                code += fmt::format("        if (chosen == 0u && {}) {{ chosen = {}u; length = {}u; }}\n", test(pi),
+                                    pi + 1, rules.productions[pi].strict.size());
         } else {
             code += "        double total = 0.0LF;\n        bool any = false;\n";
             for (size_t pi : list) {

@@ -639,5 +639,21 @@ TEST_F(DeriveGpuTest, DeriverDerivesRepeatedly) {
     }
 }
 
+// A symbol with a hundred and twenty productions, each applying once in turn: the last ones apply on the device
+// too (a driver that keeps 80 levels of nested control flow loses every test nested below them).
+TEST_F(DeriveGpuTest, EveryOneOfASymbolsManyProductionsApplies) {
+    const int productions = 120;
+    std::string rules;
+    for (int k = 0; k < productions; ++k) rules += "A(x) : x == " + std::to_string(k) + " --> F(x)A(x+1)\n";
+    ir::Grammar g = simeco::testing::grammarFromText(simeco::testing::lsystem("A(0)", rules, productions));
+    stream::DeriveResult want = cpu::deriveCpu(g, {});
+    ASSERT_EQ(want.string.size(), size_t(productions) + 1) << "the reference did not apply every production";
+    for (gpu::GpuStrategy strategy : {gpu::GpuStrategy::Parallel, gpu::GpuStrategy::Sequential}) {
+        SCOPED_TRACE(strategy == gpu::GpuStrategy::Parallel ? "parallel" : "sequential");
+        gpu::GpuDeriver deriver(context(), g, strategy);
+        EXPECT_EQ(firstDifference(want, deriver.derive({}), g.alphabet), "");
+    }
+}
+
 } // namespace
 } // namespace simeco::test

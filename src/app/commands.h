@@ -16,5 +16,7 @@ void registerBenchCommand(CLI::App& app, CommandContext& ctx);
 void registerRenderCommand(CLI::App& app, CommandContext& ctx);
 void registerExportCommand(CLI::App& app, CommandContext& ctx);
 void registerRunCommand(CLI::App& app, CommandContext& ctx);
+void registerSkeletonCommand(CLI::App& app, CommandContext& ctx);
+void registerInferCommand(CLI::App& app, CommandContext& ctx);
 
 } // namespace simeco::app

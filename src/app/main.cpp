@@ -17,6 +17,8 @@ int main(int argc, char** argv) {
     simeco::app::registerRenderCommand(app, ctx);
     simeco::app::registerExportCommand(app, ctx);
     simeco::app::registerRunCommand(app, ctx);
+    simeco::app::registerSkeletonCommand(app, ctx);
+    simeco::app::registerInferCommand(app, ctx);
 
     try {
         app.parse(argc, argv);

@@ -10,6 +10,9 @@
 
 namespace simeco::turtle {
 
+// Degrees to radians in float, as the turtle turns every angle given in degrees.
+inline constexpr float kRadiansPerDegree = 3.14159265358979f / 180.0f;
+
 // Heading, left and up: a right-handed frame with up = heading x left. A new turtle points up the y axis
 // with left toward -x, as cpfg's does.
 struct Frame {

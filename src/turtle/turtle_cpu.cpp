@@ -18,7 +18,7 @@ using namespace shared;
 
 namespace {
 
-constexpr float kDegrees = 3.14159265358979f / 180.0f;
+constexpr float kDegrees = kRadiansPerDegree;
 
 struct TurtleState {
     Frame frame;

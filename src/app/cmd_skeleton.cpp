@@ -11,8 +11,11 @@
 #include "app/field_options.h"
 #include "draw/atomic_file.h"
 #include "export/output_file.h"
+#include "skeleton/internodes.h"
+#include "skeleton/skeleton_check.h"
 #include "skeleton/skeleton_from_turtle.h"
 #include "skeleton/skeleton_json.h"
+#include "skeleton/skeleton_statistics.h"
 #include "vk/context.h"
 
 namespace simeco::app {
@@ -23,6 +26,7 @@ struct SkeletonArgs {
     field::FieldSource source;
     uint32_t plant = 0;
     std::string output;
+    bool statistics = false;
 };
 
 void writeText(const std::string& path, const std::string& text) {
@@ -51,6 +55,12 @@ void runSkeleton(const SkeletonArgs& args) {
     if (plant.stems.empty()) throw std::runtime_error(fmt::format("{}: plant {} draws no stems", source.file,
                                                                   args.plant));
     writeText(args.output, skeleton::skeletonJson(skeleton));
+    if (args.statistics) {
+        skeleton::Plant checked = plant;
+        skeleton::checkPlant(checked, args.output, 0);
+        std::fputs(skeleton::statisticsTable(skeleton::levelStatistics(skeleton::internodeTree(checked))).c_str(),
+                   stdout);
+    }
     std::printf("%s: plant %u: %zu stems, %zu segments, %zu organs, size %.4g -> %s\n", source.file.c_str(),
                 args.plant, plant.stems.size(), skeleton::segmentCount(plant), plant.organs.size(),
                 skeleton::plantSize(plant), args.output.c_str());
@@ -66,6 +76,9 @@ void registerSkeletonCommand(CLI::App& app, CommandContext& ctx) {
     addFieldOptions(*cmd, args->source);
     cmd->add_option("--plant", args->plant, "which plant of the field (default 0)");
     cmd->add_option("-o,--output", args->output, "skeleton file (.json)")->required();
+    cmd->add_flag("--stats", args->statistics,
+                  "print the skeleton's internodes level by level: their count, length, angle to their parent and "
+                  "children");
     cmd->callback([args, &ctx] { ctx.exitCode = runReportingErrors([&] { runSkeleton(*args); }); });
 }
 

@@ -150,36 +150,45 @@ private:
         return s + ";\n";
     }
 
-    // A tip's apex counts the steps until the skeleton has regrown (the thesis' step function), then picks a
-    // template by the share of the skeleton's rules of its shape, and the templates' apices pick again.
+    // A tip's apex counts the steps until the skeleton has regrown (the thesis' step function), turns as main
+    // children turn and grows on: each apex picks a template by the share of the young growth's rules of its shape
+    // and puts out the template's children as apices that pick again, a level a step.
     std::string prediction() const {
         const Prediction& p = *o_.prediction;
         const int done = waitFirst_ + levels_;
-        std::string s = "            // Prediction: templates of the rules above, by shape, with the ranges their "
-                        "numbers span.\n";
+        Range pitch{1.0f, 0.0f}, roll{1.0f, 0.0f};
+        for (const RuleTemplate& t : p.templates)
+            if (t.goesOn) {
+                pitch.add(t.pitch[0].min);
+                pitch.add(t.pitch[0].max);
+                roll.add(t.roll[0].min);
+                roll.add(t.roll[0].max);
+            }
+        std::string s = "            // Prediction: templates of the young growth's rules, by shape, with the ranges "
+                        "their numbers span.\n";
         s += fmt::format("            A(i) -> A(i + 1, {} < i < {});\n", waitFirst_, done);
-        s += fmt::format("            A({}) -> A({});\n", done, pick_);
+        s += fmt::format("            A({}) ->{} A({});\n", done,
+                         pitch.empty() ? "" : fmt::format(" rotr({}) rotu({})", range(pitch), range(roll)), pick_);
         s += fmt::format("            A({}) ->", pick_);
         double left = 1.0;
         for (size_t k = 0; k < p.templates.size(); ++k) {
             const double share = double(p.templates[k].members) / double(std::max<size_t>(p.internodes, 1));
-            if (k + 1 == p.templates.size() || left <= 0.0) {
-                s += fmt::format(" A({});\n", firstTemplate_ + int(k));
-                break;
-            }
-            s += fmt::format(" prob({}) A({}) |", number(std::min(1.0, share / left)), firstTemplate_ + int(k));
+            const bool last = k + 1 == p.templates.size();
+            if (k > 0) s += "\n                |";
+            if (!last) s += fmt::format(" prob({})", number(std::min(1.0, share / left)));
+            s += templateSuccessor(p.templates[k], firstTemplate_ + int(k));
             left -= share;
         }
-        for (size_t k = 0; k < p.templates.size(); ++k) {
-            const RuleTemplate& t = p.templates[k];
-            s += fmt::format("            A({}) -> S({})", firstTemplate_ + int(k), firstTemplate_ + int(k));
-            for (size_t l = 0; l < t.leaves; ++l)
-                s += fmt::format(" [rotr({}) rotu({}) L(0)]", range(t.leafPitch), range(t.leafRoll));
-            for (size_t c = 1; c < t.pitch.size(); ++c)
-                s += fmt::format(" [rotr({}) rotu({}) A({})]", range(t.pitch[c]), range(t.roll[c]), pick_);
-            if (t.goesOn) s += fmt::format(" rotr({}) rotu({}) A({})", range(t.pitch[0]), range(t.roll[0]), pick_);
-            s += ";\n";
-        }
+        return s + ";\n";
+    }
+
+    std::string templateSuccessor(const RuleTemplate& t, int stage) const {
+        std::string s = fmt::format(" S({})", stage);
+        for (size_t l = 0; l < t.leaves; ++l)
+            s += fmt::format(" [rotr({}) rotu({}) L(0)]", range(t.leafPitch), range(t.leafRoll));
+        for (size_t c = 1; c < t.pitch.size(); ++c)
+            s += fmt::format(" [rotr({}) rotu({}) A({})]", range(t.pitch[c]), range(t.roll[c]), pick_);
+        if (t.goesOn) s += fmt::format(" rotr({}) rotu({}) A({})", range(t.pitch[0]), range(t.roll[0]), pick_);
         return s;
     }
 };

@@ -11,9 +11,10 @@
 
 namespace simeco::test {
 
-skeleton::Plant skeletonOfFile(const std::filesystem::path& file) {
+skeleton::Plant skeletonOfFile(const std::filesystem::path& file, int steps) {
     field::FieldSource source;
     source.file = file.string();
+    source.steps = steps;
     source.backend = field::Backend::Cpu;
     field::Field f = field::deriveField(source, nullptr);
     turtle::Interpretation drawn = field::interpretOnHost(source, f, nullptr);

@@ -11,8 +11,9 @@
 
 namespace simeco::test {
 
-// Plant 0 of a grammar or scene file, derived and drawn on the CPU.
-skeleton::Plant skeletonOfFile(const std::filesystem::path& file);
+// Plant 0 of a grammar or scene file, derived (`steps` steps, -1 for the file's derivation length) and drawn on
+// the CPU.
+skeleton::Plant skeletonOfFile(const std::filesystem::path& file, int steps = -1);
 
 // Writes `text` to `file` and returns its skeleton.
 skeleton::Plant skeletonOfText(const std::string& text, const std::filesystem::path& file);

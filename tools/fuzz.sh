@@ -22,7 +22,7 @@ elif [ "${1:-}" = "--seconds" ]; then
   shift 2
 fi
 readers=("$@")
-[ ${#readers[@]} -eq 0 ] && readers=(cpfg eco quick view function function_set contour surface)
+[ ${#readers[@]} -eq 0 ] && readers=(cpfg eco quick view function function_set contour surface skeleton skeleton_obj three_views)
 
 if ! command -v clang++ >/dev/null; then
   echo "fuzz: clang++ is needed (Debian packages clang and libclang-rt-dev; tools/setup.sh installs them)" >&2
@@ -44,6 +44,9 @@ seedFiles() {
   function_set) ls "$shared"/corpus/cpfg-vlab/models/*/*/*.fset ;;
   contour) ls "$shared"/corpus/cpfg-vlab/models/*/*/*.con ;;
   surface) ls grammars/*/*.s "$shared"/corpus/cpfg-vlab/models/*/*/*.s ;;
+  skeleton) ls scenes/skeletons/*.json ;;
+  skeleton_obj) ls scenes/skeletons/*.obj ;;
+  three_views) ls scenes/skeletons/*.svg ;;
   esac 2>/dev/null
 }
 

@@ -1,5 +1,6 @@
 // `simeco skeleton`: derive a grammar or scene, interpret it with the turtle, and write one plant's stem skeleton
-// (polylines with parent links, widths, and the leaves, flowers and fruits on them) as JSON (docs/SKELETON.md).
+// (polylines with parent links, widths, and the leaves, flowers and fruits on them) as JSON, or its stems as OBJ
+// polylines or as three orthogonal views in SVG (docs/SKELETON.md).
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -15,7 +16,9 @@
 #include "skeleton/skeleton_check.h"
 #include "skeleton/skeleton_from_turtle.h"
 #include "skeleton/skeleton_json.h"
+#include "skeleton/skeleton_obj.h"
 #include "skeleton/skeleton_statistics.h"
+#include "skeleton/three_views.h"
 #include "vk/context.h"
 
 namespace simeco::app {
@@ -37,8 +40,10 @@ void writeText(const std::string& path, const std::string& text) {
 }
 
 void runSkeleton(const SkeletonArgs& args) {
-    if (!args.output.ends_with(".json")) throw CommandLineError(fmt::format("-o '{}': the skeleton is written as .json",
-                                                                            args.output));
+    const bool json = args.output.ends_with(".json"), obj = args.output.ends_with(".obj");
+    const bool views = args.output.ends_with(".svg");
+    if (!json && !obj && !views)
+        throw CommandLineError(fmt::format("-o '{}': the skeleton is written as .json, .obj or .svg", args.output));
     const field::FieldSource& source = args.source;
     std::unique_ptr<vk::Context> context = field::contextFor(source);
     field::Field field = field::deriveField(source, context.get());
@@ -54,7 +59,9 @@ void runSkeleton(const SkeletonArgs& args) {
     const skeleton::Plant& plant = skeleton.plants.front();
     if (plant.stems.empty()) throw std::runtime_error(fmt::format("{}: plant {} draws no stems", source.file,
                                                                   args.plant));
-    writeText(args.output, skeleton::skeletonJson(skeleton));
+    if (json) writeText(args.output, skeleton::skeletonJson(skeleton));
+    else if (obj) writeText(args.output, skeleton::skeletonObj(plant, "simeco skeleton of " + skeleton.source));
+    else writeText(args.output, skeleton::threeViewsSvg(skeleton::projectThreeViews(plant)));
     if (args.statistics) {
         skeleton::Plant checked = plant;
         skeleton::checkPlant(checked, args.output, 0);
@@ -75,7 +82,9 @@ void registerSkeletonCommand(CLI::App& app, CommandContext& ctx) {
                                                    "(JSON polylines with parents, widths, leaves and flowers)");
     addFieldOptions(*cmd, args->source);
     cmd->add_option("--plant", args->plant, "which plant of the field (default 0)");
-    cmd->add_option("-o,--output", args->output, "skeleton file (.json)")->required();
+    cmd->add_option("-o,--output", args->output,
+                    "skeleton file: .json (stems, parents, widths, organs), .obj (polylines) or .svg (three views)")
+        ->required();
     cmd->add_flag("--stats", args->statistics,
                   "print the skeleton's internodes level by level: their count, length, angle to their parent and "
                   "children");

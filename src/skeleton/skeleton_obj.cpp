@@ -164,4 +164,18 @@ Skeleton readObjSkeleton(const std::string& path) {
     return parseObjSkeleton(text.str(), path);
 }
 
+std::string skeletonObj(const Plant& plant, const std::string& comment) {
+    std::string out = "# " + comment + "\n";
+    for (const Stem& s : plant.stems)
+        for (const glm::dvec3& p : s.points) out += fmt::format("v {:.9g} {:.9g} {:.9g}\n", p.x, p.y, p.z);
+    size_t first = 1;
+    for (const Stem& s : plant.stems) {
+        out += "l";
+        for (size_t k = 0; k < s.points.size(); ++k) out += fmt::format(" {}", first + k);
+        out += "\n";
+        first += s.points.size();
+    }
+    return out;
+}
+
 } // namespace simeco::skeleton

@@ -20,4 +20,7 @@ Skeleton parseObjSkeleton(const std::string& text, const std::string& file);
 // Reads the OBJ file at `path`.
 Skeleton readObjSkeleton(const std::string& path);
 
+// The plant's stems as OBJ polylines (`v` and `l`), as parseObjSkeleton reads them back.
+std::string skeletonObj(const Plant& plant, const std::string& comment);
+
 } // namespace simeco::skeleton

@@ -60,6 +60,10 @@ inline constexpr double kDisagreementFraction = 0.05;
 // ...]}, "side": {...}, "top": {...}}}, parent and width written in the front view only.
 std::string threeViewsJson(const ThreeViews& views);
 
+// The SVG form: the three views side by side (front, side, then top), each a group of polylines with their stem
+// ids (data-stem) and, in the front view, parents and widths, for tracing over photographs or editing.
+std::string threeViewsSvg(const ThreeViews& views);
+
 // Reads the JSON form; `file` names it in errors (text that is not JSON at its line and column, a value of the
 // wrong shape by its JSON pointer). A stem's "parent" and "width" are read from the front view; both may be left
 // out (no parent: see plantFromThreeViews; width 0).

@@ -440,6 +440,40 @@ private:
 
 } // namespace
 
+std::string threeViewsSvg(const ThreeViews& views) {
+    // Every view in the coordinates it is read in (a transform would be refused), SVG's y growing downward (a
+    // view's v is -y): the three groups lie over one another, like layers to show one at a time.
+    const View* all[3] = {&views.front, &views.side, &views.top};
+    const char* names[3] = {"front", "side", "top"};
+    double minU = 1e300, maxU = -1e300, minV = 1e300, maxV = -1e300;
+    std::string body;
+    for (int k = 0; k < 3; ++k) {
+        body += fmt::format("  <g id=\"{}\">\n", names[k]);
+        for (const ViewStem& s : all[k]->stems) {
+            body += fmt::format("    <polyline data-stem=\"{}\"", s.id);
+            if (k == 0 && s.parent) body += fmt::format(" data-parent=\"{}\"", *s.parent);
+            if (k == 0 && s.width > 0.0) body += fmt::format(" data-width=\"{:.9g}\"", s.width);
+            body += " points=\"";
+            for (size_t j = 0; j < s.points.size(); ++j) {
+                const glm::dvec2& p = s.points[j];
+                body += fmt::format("{}{:.9g},{:.9g}", j ? " " : "", p.x, -p.y);
+                minU = std::min(minU, p.x);
+                maxU = std::max(maxU, p.x);
+                minV = std::min(minV, p.y);
+                maxV = std::max(maxV, p.y);
+            }
+            body += "\"/>\n";
+        }
+        body += "  </g>\n";
+    }
+    if (minU > maxU) minU = maxU = minV = maxV = 0.0;
+    const double size = std::max({maxU - minU, maxV - minV, 1e-9}), margin = 0.05 * size;
+    return fmt::format("<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"{:.9g} {:.9g} {:.9g} {:.9g}\" "
+                       "fill=\"none\" stroke=\"black\" stroke-width=\"{:.3g}\">\n{}</svg>\n",
+                       minU - margin, -maxV - margin, maxU - minU + 2 * margin, maxV - minV + 2 * margin,
+                       0.005 * size, body);
+}
+
 Skeleton parseThreeViewsSvg(const std::string& text, const std::string& file) {
     ThreeViews views = SvgReader(text, file).read();
     Skeleton skeleton;

@@ -13,6 +13,10 @@
 #include "lang/cpfg_contour.h"
 #include "lang/cpfg_view.h"
 #include "lang/load_grammar.h"
+#include "skeleton/skeleton_check.h"
+#include "skeleton/skeleton_json.h"
+#include "skeleton/skeleton_obj.h"
+#include "skeleton/three_views.h"
 
 namespace {
 
@@ -62,6 +66,15 @@ void readInput(const uint8_t* data, size_t size) {
     } else if (reader == "surface") {
         write("fuzz.s", data, size);
         simeco::lang::readCpfgView(viewNaming("surface: s fuzz.s 1 10 10").string());
+    } else if (reader == "skeleton") {
+        simeco::skeleton::Skeleton s = simeco::skeleton::readSkeletonJson(write("fuzz.json", data, size).string());
+        simeco::skeleton::checkSkeleton(s, "fuzz.json");
+    } else if (reader == "skeleton_obj") {
+        simeco::skeleton::Skeleton s = simeco::skeleton::readObjSkeleton(write("fuzz.obj", data, size).string());
+        simeco::skeleton::checkSkeleton(s, "fuzz.obj");
+    } else if (reader == "three_views") {
+        simeco::skeleton::Skeleton s = simeco::skeleton::readThreeViews(write("fuzz.svg", data, size).string());
+        simeco::skeleton::checkSkeleton(s, "fuzz.svg");
     } else {
         std::abort(); // a reader this target does not know: a build error, not a finding
     }

@@ -22,7 +22,8 @@ elif [ "${1:-}" = "--seconds" ]; then
   shift 2
 fi
 readers=("$@")
-[ ${#readers[@]} -eq 0 ] && readers=(cpfg eco quick view function function_set contour surface skeleton skeleton_obj three_views)
+[ ${#readers[@]} -eq 0 ] &&
+  readers=(cpfg eco quick view function function_set contour surface skeleton skeleton_obj three_views)
 
 if ! command -v clang++ >/dev/null; then
   echo "fuzz: clang++ is needed (Debian packages clang and libclang-rt-dev; tools/setup.sh installs them)" >&2

@@ -13,8 +13,7 @@
 
 #include "app/commands.h"
 #include "app/error_report.h"
-#include "draw/atomic_file.h"
-#include "export/output_file.h"
+#include "app/text_output.h"
 #include "skeleton/dressing.h"
 #include "skeleton/eco_writer.h"
 #include "skeleton/lsystem_writer.h"
@@ -49,13 +48,6 @@ skeleton::Skeleton readAnySkeleton(const std::string& path) {
     if (ext == ".svg") return skeleton::readThreeViews(path);
     if (ext != ".json") throw CommandLineError(fmt::format("'{}': a skeleton is read from .json, .obj or .svg", path));
     return holdsThreeViews(path) ? skeleton::readThreeViews(path) : skeleton::readSkeletonJson(path);
-}
-
-void writeText(draw::OutputBatch& batch, const std::filesystem::path& path, const std::string& text) {
-    batch.write(path, [&](const std::filesystem::path& temporary) {
-        exporter::OutputFile file(temporary);
-        file.write(text.data(), text.size());
-    });
 }
 
 void runInfer(const InferArgs& args) {
@@ -115,7 +107,9 @@ void registerInferCommand(CLI::App& app, CommandContext& ctx) {
                     "leaf shape (ovate, lanceolate, cordate, compound, trifoliate, serrate), habit (herb, shrub, "
                     "tree)");
     cmd->add_flag("--initial-only", args->initialOnly, "write the initial-state grammar without prediction rules");
-    cmd->add_option("-o,--output", args->output, "grammar file: .eco (SimEco script) or .l (cpfg, with its view file .v beside it)")->required();
+    cmd->add_option("-o,--output", args->output,
+                    "grammar file: .eco (SimEco script) or .l (cpfg, with its view file .v beside it)")
+        ->required();
     cmd->callback([args, &ctx] { ctx.exitCode = runReportingErrors([&] { runInfer(*args); }); });
 }
 

@@ -10,8 +10,7 @@
 #include "app/commands.h"
 #include "app/error_report.h"
 #include "app/field_options.h"
-#include "draw/atomic_file.h"
-#include "export/output_file.h"
+#include "app/text_output.h"
 #include "skeleton/internodes.h"
 #include "skeleton/skeleton_check.h"
 #include "skeleton/skeleton_from_turtle.h"
@@ -31,13 +30,6 @@ struct SkeletonArgs {
     std::string output;
     bool statistics = false;
 };
-
-void writeText(const std::string& path, const std::string& text) {
-    draw::writeAtomically(path, [&](const std::filesystem::path& temporary) {
-        exporter::OutputFile file(temporary);
-        file.write(text.data(), text.size());
-    });
-}
 
 void runSkeleton(const SkeletonArgs& args) {
     const bool json = args.output.ends_with(".json"), obj = args.output.ends_with(".obj");
@@ -59,9 +51,11 @@ void runSkeleton(const SkeletonArgs& args) {
     const skeleton::Plant& plant = skeleton.plants.front();
     if (plant.stems.empty()) throw std::runtime_error(fmt::format("{}: plant {} draws no stems", source.file,
                                                                   args.plant));
-    if (json) writeText(args.output, skeleton::skeletonJson(skeleton));
-    else if (obj) writeText(args.output, skeleton::skeletonObj(plant, "simeco skeleton of " + skeleton.source));
-    else writeText(args.output, skeleton::threeViewsSvg(skeleton::projectThreeViews(plant)));
+    draw::OutputBatch batch;
+    if (json) writeText(batch, args.output, skeleton::skeletonJson(skeleton));
+    else if (obj) writeText(batch, args.output, skeleton::skeletonObj(plant, "simeco skeleton of " + skeleton.source));
+    else writeText(batch, args.output, skeleton::threeViewsSvg(skeleton::projectThreeViews(plant)));
+    batch.commit();
     if (args.statistics) {
         skeleton::Plant checked = plant;
         skeleton::checkPlant(checked, args.output, 0);

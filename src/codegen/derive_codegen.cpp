@@ -140,10 +140,11 @@ std::string selection(const ir::RuleSet& rules, size_t species, RuleKind kind, b
                 const ir::Production& p = rules.productions[pi];
                 code += fmt::format("        if (chosen == 0u) {{\n"
                                     "            start = draw;\n"
-                                    "            if (count == {}u && {}(i, plant, key, pBegin, pEnd, ctxLeft, ctxRight, draw, "
-                                    "1u, produced)) {{ chosen = {}u; length = {}u; }}\n"
+                                    "            if (count == {}u && {}(i, plant, key, pBegin, pEnd, ctxLeft, ctxRight, "
+                                    "draw, 1u, produced)) {{ chosen = {}u; length = {}u; }}\n"
                                     "        }}\n",
-                                    p.strict[0].paramSlots.size(), functionName(species, kind, pi), pi + 1, p.strict.size());
+                                    p.strict[0].paramSlots.size(), functionName(species, kind, pi), pi + 1,
+                                    p.strict.size());
             }
         } else {
             code += stochasticSelection(rules, species, kind, list);

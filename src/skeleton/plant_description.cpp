@@ -104,7 +104,8 @@ PlantDescription describePlant(const std::string& text) {
         auto k = std::find_if(std::begin(kKeywords), std::end(kKeywords),
                               [&](const Keyword& known) { return w == known.word; });
         if (k == std::end(kKeywords))
-            throw std::invalid_argument(fmt::format("unknown word '{}' in the description (known: {})", w, knownWords()));
+            throw std::invalid_argument(
+                fmt::format("unknown word '{}' in the description (known: {})", w, knownWords()));
         if (k->phyllotaxy != Phyllotaxy::Unsaid) {
             d.phyllotaxy = k->phyllotaxy;
             d.understood.push_back(phyllotaxyName(k->phyllotaxy));

@@ -56,7 +56,8 @@ public:
     std::vector<Reader> items() const {
         if (!value_.is_array()) fail("expected an array");
         std::vector<Reader> out;
-        for (size_t k = 0; k < value_.size(); ++k) out.push_back({value_[k], pointer_ + "/" + std::to_string(k), file_});
+        for (size_t k = 0; k < value_.size(); ++k)
+            out.push_back({value_[k], pointer_ + "/" + std::to_string(k), file_});
         return out;
     }
     double number() const {

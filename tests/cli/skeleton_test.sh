@@ -36,7 +36,8 @@ again=$("$simeco" skeleton "$work/tree.l" -o "$work/again-l.json")
 echo "$again" | grep -q " $segments segments"
 check "the L-system regrows the skeleton's segments ($again)" $?
 
-"$simeco" skeleton "$tree" -o "$work/tree-views.svg" >/dev/null && "$simeco" skeleton "$tree" -o "$work/tree.obj" >/dev/null
+"$simeco" skeleton "$tree" -o "$work/tree-views.svg" >/dev/null &&
+  "$simeco" skeleton "$tree" -o "$work/tree.obj" >/dev/null
 check "skeleton writes three views and OBJ polylines" $?
 "$simeco" infer "$work/tree-views.svg" -o "$work/views-tree.eco" >/dev/null
 again=$("$simeco" skeleton "$work/views-tree.eco" -o "$work/again-views.json")
@@ -45,8 +46,10 @@ check "the grammar inferred from its three views regrows the skeleton's segments
 
 cat >"$work/views.svg" <<'SVG'
 <svg xmlns="http://www.w3.org/2000/svg">
-  <g id="front"><polyline data-stem="0" points="0,0 0,-2"/><polyline data-stem="1" data-parent="0" points="0,-1 1,-2"/></g>
-  <g id="side"><polyline data-stem="0" points="0,0 0,-2"/><polyline data-stem="1" points="0,-1 0.5,-2"/></g>
+  <g id="front"><polyline data-stem="0" points="0,0 0,-2"/>
+    <polyline data-stem="1" data-parent="0" points="0,-1 1,-2"/></g>
+  <g id="side"><polyline data-stem="0" points="0,0 0,-2"/>
+    <polyline data-stem="1" points="0,-1 0.5,-2"/></g>
   <g id="top"><polyline data-stem="0" points="0,0 0,0.001"/><polyline data-stem="1" points="0,0 1,0.5"/></g>
 </svg>
 SVG
@@ -65,9 +68,11 @@ bad() { # NAME FILE EXPECTED-MESSAGE-PART
   [ $code -eq 2 ] && [ ! -e "$work/bad.eco" ] && grep -q "$3" "$work/err.txt"
   check "$1 is refused (code $code: $(head -c 200 "$work/err.txt"))" $?
 }
-printf '{"plants": [{"stems": [{"id": 0, "parent": 1, "points": [[0,0,0],[0,1,0]]},\n {"id": 1, "parent": 0, "points": [[0,1,0],[0,2,0]]}]}]}\n' >"$work/cycle.json"
+printf '%s\n' '{"plants": [{"stems": [{"id": 0, "parent": 1, "points": [[0,0,0],[0,1,0]]},' \
+  '{"id": 1, "parent": 0, "points": [[0,1,0],[0,2,0]]}]}]}' >"$work/cycle.json"
 bad "a cycle" "$work/cycle.json" "loop back"
-printf '{"plants": [{"stems": [{"id": 0, "points": [[0,0,0],[0,1,0]]},\n {"id": 1, "points": [[5,0,0],[5,1,0]]}]}]}\n' >"$work/apart.json"
+printf '%s\n' '{"plants": [{"stems": [{"id": 0, "points": [[0,0,0],[0,1,0]]},' \
+  '{"id": 1, "points": [[5,0,0],[5,1,0]]}]}]}' >"$work/apart.json"
 bad "a plant in two pieces" "$work/apart.json" "not connected"
 printf '{"plants": [{"stems": [{"id": 0, "points": [[0,0,0],[0,0,0]]}]}]}\n' >"$work/zero.json"
 bad "a zero-length stem" "$work/zero.json" "coincide"

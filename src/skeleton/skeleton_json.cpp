@@ -1,13 +1,12 @@
 #include "skeleton/skeleton_json.h"
 
 #include <cmath>
-#include <fstream>
-#include <sstream>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include "ir/source_loc.h"
+#include "skeleton/json_reader.h"
 
 namespace simeco::skeleton {
 
@@ -38,72 +37,24 @@ std::string organJson(const Organ& o) {
                        organKindName(o.kind), o.stem, o.point, point(o.position), point(o.heading), number(o.size));
 }
 
-// Reading: every value is looked up through a Reader that knows its place in the document.
-class Reader {
-public:
-    Reader(const json& value, std::string pointer, const std::string& file)
-        : value_(value), pointer_(std::move(pointer)), file_(file) {}
 
-    [[noreturn]] void fail(const std::string& message) const {
-        throw ir::InputError({file_, 0, 0}, fmt::format("{}: {}", pointer_.empty() ? "/" : pointer_, message));
-    }
-    bool has(const char* key) const { return value_.is_object() && value_.contains(key); }
-    Reader at(const char* key) const {
-        if (!value_.is_object()) fail("expected an object");
-        if (!value_.contains(key)) fail(fmt::format("missing \"{}\"", key));
-        return {value_.at(key), pointer_ + "/" + key, file_};
-    }
-    std::vector<Reader> items() const {
-        if (!value_.is_array()) fail("expected an array");
-        std::vector<Reader> out;
-        for (size_t k = 0; k < value_.size(); ++k)
-            out.push_back({value_[k], pointer_ + "/" + std::to_string(k), file_});
-        return out;
-    }
-    double number() const {
-        if (!value_.is_number()) fail("expected a number");
-        double v = value_.get<double>();
-        if (!std::isfinite(v)) fail("the number is not finite");
-        return v;
-    }
-    int integer() const {
-        double v = number();
-        if (v != std::floor(v) || std::abs(v) > 1e9) fail("expected a whole number");
-        return static_cast<int>(v);
-    }
-    std::string text() const {
-        if (!value_.is_string()) fail("expected a string");
-        return value_.get<std::string>();
-    }
-    glm::dvec3 vector() const {
-        std::vector<Reader> xyz = items();
-        if (xyz.size() != 3) fail("expected [x, y, z]");
-        return {xyz[0].number(), xyz[1].number(), xyz[2].number()};
-    }
-
-private:
-    const json& value_;
-    std::string pointer_;
-    const std::string& file_;
-};
-
-Stem readStem(const Reader& r) {
+Stem readStem(const JsonReader& r) {
     Stem s;
     s.id = r.at("id").integer();
     s.parent = r.has("parent") ? r.at("parent").integer() : -1;
     s.attach = r.has("attach") ? r.at("attach").integer() : -1;
     s.width = r.has("width") ? r.at("width").number() : 0.0;
     if (s.width < 0.0) r.at("width").fail("a width is not negative");
-    for (const Reader& p : r.at("points").items()) s.points.push_back(p.vector());
+    for (const JsonReader& p : r.at("points").items()) s.points.push_back(p.point3());
     if (r.has("widths")) {
-        for (const Reader& w : r.at("widths").items()) s.widths.push_back(w.number());
+        for (const JsonReader& w : r.at("widths").items()) s.widths.push_back(w.number());
         if (s.widths.size() + 1 != s.points.size())
             r.at("widths").fail(fmt::format("expected one width per segment ({})", s.points.size() - 1));
     }
     return s;
 }
 
-Organ readOrgan(const Reader& r) {
+Organ readOrgan(const JsonReader& r) {
     Organ o;
     std::string kind = r.at("kind").text();
     if (kind == "leaf") o.kind = OrganKind::Leaf;
@@ -112,24 +63,10 @@ Organ readOrgan(const Reader& r) {
     else r.at("kind").fail(fmt::format("unknown organ '{}' (expected leaf, flower or fruit)", kind));
     o.stem = r.at("stem").integer();
     o.point = r.at("point").integer();
-    o.position = r.at("position").vector();
-    if (r.has("heading")) o.heading = r.at("heading").vector();
+    o.position = r.at("position").point3();
+    if (r.has("heading")) o.heading = r.at("heading").point3();
     if (r.has("size")) o.size = r.at("size").number();
     return o;
-}
-
-// The line and column of byte `offset` of `text` (both from 1).
-ir::SourceLoc locationOf(const std::string& text, size_t offset, const std::string& file) {
-    ir::SourceLoc loc{file, 1, 1};
-    for (size_t k = 0; k < offset && k < text.size(); ++k) {
-        if (text[k] == '\n') {
-            ++loc.line;
-            loc.col = 1;
-        } else {
-            ++loc.col;
-        }
-    }
-    return loc;
 }
 
 } // namespace
@@ -149,39 +86,22 @@ std::string skeletonJson(const Skeleton& skeleton) {
 }
 
 Skeleton parseSkeletonJson(const std::string& text, const std::string& file) {
-    json document;
-    try {
-        document = json::parse(text);
-    } catch (const json::parse_error& e) {
-        // "[json.exception.parse_error.101] parse error at line 3, column 7: syntax error ..." without its prefix
-        std::string message = e.what();
-        size_t colon = message.find(": ");
-        if (colon != std::string::npos) message = message.substr(colon + 2);
-        throw ir::InputError(locationOf(text, e.byte > 0 ? e.byte - 1 : 0, file), message);
-    } catch (const json::exception& e) { // a number too large for a double
-        std::string message = e.what();
-        size_t end = message.find("] ");
-        throw ir::InputError({file, 0, 0}, end == std::string::npos ? message : message.substr(end + 2));
-    }
-    Reader root(document, "", file);
+    const json document = parseJsonDocument(text, file);
+    JsonReader root(document, "", file);
     Skeleton skeleton;
     if (root.has("source")) skeleton.source = root.at("source").text();
-    for (const Reader& p : root.at("plants").items()) {
+    for (const JsonReader& p : root.at("plants").items()) {
         Plant plant;
-        for (const Reader& s : p.at("stems").items()) plant.stems.push_back(readStem(s));
+        for (const JsonReader& s : p.at("stems").items()) plant.stems.push_back(readStem(s));
         if (p.has("organs"))
-            for (const Reader& o : p.at("organs").items()) plant.organs.push_back(readOrgan(o));
+            for (const JsonReader& o : p.at("organs").items()) plant.organs.push_back(readOrgan(o));
         skeleton.plants.push_back(std::move(plant));
     }
     return skeleton;
 }
 
 Skeleton readSkeletonJson(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw ir::InputError({path, 0, 0}, "cannot open the skeleton file");
-    std::stringstream text;
-    text << in.rdbuf();
-    return parseSkeletonJson(text.str(), path);
+    return parseSkeletonJson(readWholeFile(path, "skeleton file"), path);
 }
 
 } // namespace simeco::skeleton

@@ -2,13 +2,12 @@
 
 #include <charconv>
 #include <cmath>
-#include <fstream>
-#include <sstream>
 #include <string_view>
 
 #include <fmt/format.h>
 
 #include "ir/source_loc.h"
+#include "skeleton/json_reader.h"
 #include "skeleton/skeleton_check.h"
 #include "skeleton/stem_parents.h"
 
@@ -157,11 +156,7 @@ Skeleton parseObjSkeleton(const std::string& text, const std::string& file) {
 }
 
 Skeleton readObjSkeleton(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw ir::InputError({path, 0, 0}, "cannot open the OBJ file");
-    std::stringstream text;
-    text << in.rdbuf();
-    return parseObjSkeleton(text.str(), path);
+    return parseObjSkeleton(readWholeFile(path, "OBJ file"), path);
 }
 
 std::string skeletonObj(const Plant& plant, const std::string& comment) {

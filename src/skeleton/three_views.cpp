@@ -23,13 +23,12 @@
 #include <cctype>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <map>
-#include <sstream>
 
 #include <fmt/format.h>
 #include <glm/geometric.hpp>
 
+#include "skeleton/json_reader.h"
 #include "skeleton/stem_parents.h"
 
 namespace simeco::skeleton {
@@ -316,11 +315,8 @@ Skeleton readThreeViews(const std::string& path) {
                    [](unsigned char c) { return char(std::tolower(c)); });
     if (extension != ".json" && extension != ".svg")
         throw ir::InputError({path, 0, 0}, "three views are read from a .json or an .svg file");
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw ir::InputError({path, 0, 0}, "cannot open the file of three views");
-    std::stringstream text;
-    text << in.rdbuf();
-    return extension == ".json" ? parseThreeViewsJson(text.str(), path) : parseThreeViewsSvg(text.str(), path);
+    const std::string text = readWholeFile(path, "file of three views");
+    return extension == ".json" ? parseThreeViewsJson(text, path) : parseThreeViewsSvg(text, path);
 }
 
 } // namespace simeco::skeleton

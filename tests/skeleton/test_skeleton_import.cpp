@@ -13,8 +13,8 @@
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
-#include <unistd.h>
 
+#include "../unit/temporary_folder.h"
 #include "ir/source_loc.h"
 #include "skeleton/skeleton_check.h"
 #include "skeleton/skeleton_obj.h"
@@ -414,22 +414,13 @@ TEST(ThreeViews, MalformedSvgIsRefusedAtItsLineAndColumn) {
 }
 
 // Files read by their names, in a folder of the test's own.
-class ImportFiles : public ::testing::Test {
+class ImportFiles : public simeco::testing::TemporaryFolderTest {
 protected:
-    void SetUp() override {
-        dir_ = std::filesystem::temp_directory_path() / ("simeco-import-" + std::to_string(::getpid()));
-        std::filesystem::remove_all(dir_);
-        std::filesystem::create_directories(dir_);
-    }
-    void TearDown() override { std::filesystem::remove_all(dir_); }
-
     std::string write(const std::string& name, const std::string& text) {
         std::filesystem::path path = dir_ / name;
         std::ofstream(path, std::ios::binary) << text;
         return path.string();
     }
-
-    std::filesystem::path dir_;
 };
 
 TEST_F(ImportFiles, ReadersChooseByExtensionAndNameTheFileInErrors) {

@@ -70,7 +70,7 @@ void runInfer(const InferArgs& args) {
     const std::string source = fmt::format("{}, plant {}", std::filesystem::path(args.input).filename().string(),
                                            args.plant);
     const skeleton::Regrowth growth =
-        skeleton::regrowth(plant, eco ? skeleton::AngleUnit::Radians : skeleton::AngleUnit::Degrees);
+        skeleton::regrowth(plant, eco ? skeleton::Dialect::SimEco : skeleton::Dialect::Cpfg);
     draw::OutputBatch batch;
     if (eco) {
         const skeleton::Prediction prediction = skeleton::predictionOf(plant, growth);

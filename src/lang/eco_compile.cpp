@@ -15,9 +15,14 @@
 // - `rotu` turns about the parent's growth direction, `rotr` away from it: in a run of rotations the turtle
 //   rolls by every rotu before it pitches by the rotr (`rotr(a) rotu(b)` spins the tilted branch about the
 //   parent axis, as the thesis draws its phyllotaxis).
+// - rotr turns about a stem's reference axis r, the turtle's left. A main stem carries its parent's r turned with
+//   it; a branch (a stem or apex after the rotations that open a bracket) takes its parent's direction as r
+//   (seed 002, section 3.3.4), here the part of it at right angles to the branch: after the branch's rotations
+//   the turtle rolls a quarter turn, `/(-90)`, which brings its left there (the parent's direction, seen from the
+//   branch turned by rotr, lies along the turtle's up).
 // - The organs are drawn by a homomorphism from their stages (lang/eco_geometry.h).
-// - Symbols are interned in a fixed order (brackets, A S L F T R, the rotations, then the drawing modules), so
-//   every SimEco plant of a scene numbers its symbols alike.
+// - Symbols are interned in a fixed order (brackets, A S L F T R, the rotations and the roll, then the drawing
+//   modules), so every SimEco plant of a scene numbers its symbols alike.
 #include <algorithm>
 #include <cmath>
 
@@ -31,6 +36,7 @@ namespace simeco::lang {
 namespace {
 
 constexpr const char* kRotationNames[] = {"rotr", "rotu", "rotx", "roty", "rotz"};
+constexpr const char* kBranchAxisRoll = "/"; // cpfg's roll, in degrees
 
 ir::Expr localSlot(int slot, const ir::SourceLoc& loc) {
     ir::Expr e;
@@ -72,6 +78,7 @@ public:
     ir::Grammar compile(const ir::EcoPlant& plant) {
         for (char letter : ir::kEcoSegmentLetters) symbol(std::string(1, letter));
         for (const char* rotation : kRotationNames) symbol(rotation);
+        symbol(kBranchAxisRoll);
 
         grammar_.axiomLoc = plant.grow.axiomLoc;
         grammar_.axiom = successorModules(plant.grow.axiom);
@@ -81,6 +88,7 @@ public:
 
         grammar_.contextSkip.resize(grammar_.alphabet.size(), false);
         for (const char* rotation : kRotationNames) grammar_.contextSkip[symbol(rotation)] = true;
+        grammar_.contextSkip[symbol(kBranchAxisRoll)] = true;
 
         grammar_.derivationLength = plant.derivationLength.value_or(defaultDerivationLength(plant));
         return std::move(grammar_);
@@ -118,8 +126,34 @@ private:
             run = end;
         }
         std::vector<ir::SuccessorModule> out;
-        for (const ir::EcoModule& m : ordered) out.push_back(successorModule(m));
+        for (size_t k = 0; k < ordered.size(); ++k) {
+            out.push_back(successorModule(ordered[k]));
+            if (endsBranchTurn(ordered, k)) out.push_back(branchAxisRoll(ordered[k].loc));
+        }
         return out;
+    }
+
+    static bool isRotation(const ir::EcoModule& m) {
+        return std::find(std::begin(kRotationNames), std::end(kRotationNames), m.name) != std::end(kRotationNames);
+    }
+
+    // Whether module k ends the rotations that open a bracket before a stem or an apex (a branch's turn).
+    static bool endsBranchTurn(const std::vector<ir::EcoModule>& modules, size_t k) {
+        if (!isRotation(modules[k]) || k + 1 >= modules.size()) return false;
+        const std::string& next = modules[k + 1].name;
+        if (next != "S" && next != "A") return false;
+        size_t first = k;
+        while (first > 0 && isRotation(modules[first - 1])) --first;
+        return first > 0 && modules[first - 1].name == "[";
+    }
+
+    // The quarter roll that turns a branch's left to its parent's direction.
+    ir::SuccessorModule branchAxisRoll(const ir::SourceLoc& loc) {
+        ir::SuccessorModule m;
+        m.sym = symbol(kBranchAxisRoll);
+        m.args.push_back(ir::Expr::constant(-90.0f, loc));
+        m.loc = loc;
+        return m;
     }
 
     ir::PatternModule pattern(const ir::EcoPatternSegment& seg) {

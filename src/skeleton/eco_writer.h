@@ -24,7 +24,7 @@ struct EcoScriptOptions {
     const PlantDescription* description = nullptr;   // its leaf shape names the plant's leaf
 };
 
-// `growth` must be in radians.
+// `growth` must be a SimEco regrowth (Dialect::SimEco).
 std::string ecoScript(const Plant& plant, const Regrowth& growth, const EcoScriptOptions& options);
 
 } // namespace simeco::skeleton

@@ -19,9 +19,9 @@ struct Place {
 
 class Regrower {
 public:
-    Regrower(const Plant& plant, AngleUnit unit) : plant_(plant) {
+    Regrower(const Plant& plant, Dialect dialect) : plant_(plant) {
         out_.tree = internodeTree(plant);
-        out_.unit = unit;
+        out_.dialect = dialect;
         out_.internodes.resize(out_.tree.internodes.size());
     }
 
@@ -31,8 +31,8 @@ public:
         for (int k : out_.tree.baseOrgans) out_.baseOrgans.push_back({k, aimAlong(base, heading(k))});
         // Depth first with a stack of its own: a skeleton may be thousands of internodes deep.
         std::vector<std::pair<int, Place>> pending;
-        for (auto it = out_.roots.rbegin(); it != out_.roots.rend(); ++it)
-            pending.push_back({it->internode, turned(base, it->turn)});
+        for (size_t k = out_.roots.size(); k-- > 0;)
+            pending.push_back({out_.roots[k].internode, turned(base, out_.roots[k].turn, k > 0)});
         bool trunk = true;
         while (!pending.empty()) {
             auto [i, place] = pending.back();
@@ -40,8 +40,8 @@ public:
             grow(i, place, trunk);
             trunk = false;
             const GrownInternode& g = out_.internodes[size_t(i)];
-            for (auto it = g.children.rbegin(); it != g.children.rend(); ++it)
-                pending.push_back({it->internode, turned(place, it->turn)});
+            for (size_t k = g.children.size(); k-- > 0;)
+                pending.push_back({g.children[k].internode, turned(place, g.children[k].turn, k > 0)});
         }
         return std::move(out_);
     }
@@ -51,7 +51,7 @@ private:
     Regrowth out_;
 
     float radians(float angle) const {
-        return out_.unit == AngleUnit::Degrees ? angle * turtle::kRadiansPerDegree : angle;
+        return out_.dialect == Dialect::Cpfg ? angle * turtle::kRadiansPerDegree : angle;
     }
 
     // The skeleton point internode i ends at, in the plant's own space (its base at the origin).
@@ -69,14 +69,17 @@ private:
         const double across = std::hypot(up, left);
         const double pitch = std::atan2(across, along);
         const double roll = across > 1e-12 ? std::atan2(-left, -up) : 0.0;
-        const double unit = out_.unit == AngleUnit::Degrees ? 180.0 / std::numbers::pi : 1.0;
+        const double unit = out_.dialect == Dialect::Cpfg ? 180.0 / std::numbers::pi : 1.0;
         return {float(pitch * unit), float(roll * unit)};
     }
 
-    // The frame after a turn, as the turtle turns it: roll, then pitch.
-    Place turned(Place p, const Turn& t) const {
+    // The frame after a turn, as the turtle turns it: roll, then pitch; a SimEco branch then rolls a quarter turn
+    // back, `/(-90)`, to take its parent's direction as its reference axis.
+    Place turned(Place p, const Turn& t, bool branch) const {
         turtle::turnToward(p.frame.up, p.frame.left, radians(t.roll));
         turtle::turnToward(p.frame.heading, p.frame.up, -radians(t.pitch));
+        if (branch && out_.dialect == Dialect::SimEco)
+            turtle::turnToward(p.frame.up, p.frame.left, -90.0f * turtle::kRadiansPerDegree);
         return p;
     }
 
@@ -98,6 +101,6 @@ private:
 
 } // namespace
 
-Regrowth regrowth(const Plant& plant, AngleUnit unit) { return Regrower(plant, unit).run(); }
+Regrowth regrowth(const Plant& plant, Dialect dialect) { return Regrower(plant, dialect).run(); }
 
 } // namespace simeco::skeleton

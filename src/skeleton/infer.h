@@ -4,9 +4,9 @@
 //
 // Reference axes, as the thesis defines them: the first stem's r is the first stem's direction times its main child's
 // (so that child turns by rotu 0), which the trunk's frame takes by a roll; a main child carries its parent's r
-// turned with it by its rotr and rotu. A branch does too, where the thesis gives it its parent's direction: that axis
-// is not at right angles to the branch, so a turn about it would not keep the angle between the stems; simeco's
-// turtle carries one frame, and the inferred turns are measured in it.
+// turned with it by its rotr and rotu; a branch takes its parent's direction, the part of it at right angles to the
+// branch, which a SimEco turtle reaches by a quarter roll after the branch's turn (lang/eco_compile.cpp). A cpfg
+// turtle carries one frame into branches as into main stems.
 //
 // The turns and lengths are computed in the turtle's own float arithmetic (turtle/frame.h) from the frame and place
 // the turtle will have, not from the skeleton's exact ones, so rounding does not add up along a stem: each
@@ -44,18 +44,20 @@ struct GrownInternode {
     std::vector<GrownOrgan> organs;
 };
 
-enum class AngleUnit { Radians, Degrees };
+// Which turtle regrows the plant: a SimEco script's (turns in radians, branches take their parent's direction as
+// their reference axis) or a cpfg L-system's (turns in degrees, one frame carried into branches).
+enum class Dialect { SimEco, Cpfg };
 
 struct Regrowth {
     InternodeTree tree;
     std::vector<GrownInternode> internodes; // by internode
     std::vector<GrownChild> roots;          // from the plant's base, in its upright frame; the trunk first
     std::vector<GrownOrgan> baseOrgans;
-    AngleUnit unit = AngleUnit::Radians;
+    Dialect dialect = Dialect::SimEco;
 };
 
 // The turns and lengths that regrow `plant` (checked) from its base, the turtle starting upright there (heading +y,
 // left -x), as simeco draws a grammar's plant at the origin of its own space.
-Regrowth regrowth(const Plant& plant, AngleUnit unit);
+Regrowth regrowth(const Plant& plant, Dialect dialect);
 
 } // namespace simeco::skeleton

@@ -9,7 +9,8 @@
 
 namespace simeco::skeleton {
 
-// `growth` must be in degrees. `source` names what the skeleton came from, for the opening comment.
+// `growth` must be a cpfg regrowth (Dialect::Cpfg). `source` names what the skeleton came from, for the opening
+// comment.
 std::string lsystemText(const Plant& plant, const Regrowth& growth, const std::string& source);
 
 // The view file that goes beside it (same name, .v): stems drawn as cylinders of their widths in the plant's units,

@@ -32,7 +32,7 @@ RoundTrip roundTrip(const skeleton::Plant& plant, const std::filesystem::path& f
     skeleton::checkPlant(checked, "skeleton", 0);
     const bool eco = file.extension() == ".eco";
     skeleton::Regrowth growth =
-        skeleton::regrowth(checked, eco ? skeleton::AngleUnit::Radians : skeleton::AngleUnit::Degrees);
+        skeleton::regrowth(checked, eco ? skeleton::Dialect::SimEco : skeleton::Dialect::Cpfg);
     std::string text;
     if (eco) {
         skeleton::EcoScriptOptions options;

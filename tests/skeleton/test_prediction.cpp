@@ -41,7 +41,7 @@ skeleton::Distribution over(const std::vector<skeleton::LevelStatistics>& levels
 TEST_F(Prediction, GrownOnTheInferredPlantKeepsItsYoungGrowthsLengthsAndAngles) {
     skeleton::Plant plant = skeletonOfFile(kGrammars / "abop" / "fig2.8-ternary.l");
     skeleton::checkPlant(plant, "skeleton", 0);
-    const skeleton::Regrowth growth = skeleton::regrowth(plant, skeleton::AngleUnit::Radians);
+    const skeleton::Regrowth growth = skeleton::regrowth(plant, skeleton::Dialect::SimEco);
     const skeleton::Prediction prediction = skeleton::predictionOf(plant, growth);
     ASSERT_GE(prediction.templates.size(), 2u);
     skeleton::EcoScriptOptions options;

@@ -182,9 +182,10 @@ TEST(EcoParser, LantanaGrammar) {
     ASSERT_EQ(s1->alternatives.size(), 2u);
     EXPECT_FLOAT_EQ(s1->alternatives[0].probability, 0.7f);
     EXPECT_FLOAT_EQ(s1->alternatives[1].probability, 1.0f);
-    EXPECT_EQ(s1->alternatives[0].modules.size(), 26u);
-    // rotu turns about the parent's axis: lowered before the rotr it follows (eco_compile.cpp).
-    EXPECT_EQ(spelled(g, s1->alternatives[0]).substr(0, 22), "S [ rotu rotr S L ] [ ");
+    EXPECT_EQ(s1->alternatives[0].modules.size(), 30u);
+    // rotu turns about the parent's axis: lowered before the rotr it follows; a branch then rolls a quarter turn
+    // back to take its parent's direction as its reference axis (eco_compile.cpp).
+    EXPECT_EQ(spelled(g, s1->alternatives[0]).substr(0, 24), "S [ rotu rotr / S L ] [ ");
     EXPECT_EQ(spelled(g, s1->alternatives[1]), "S");
     EXPECT_FLOAT_EQ(s1->alternatives[1].modules[0].args[0].value, 99.0f);
     const ir::SuccessorModule& rotu = s1->alternatives[0].modules[2];
@@ -192,7 +193,12 @@ TEST(EcoParser, LantanaGrammar) {
     ASSERT_TRUE(rotu.args[0].isConst());
     EXPECT_FLOAT_EQ(rotu.args[0].value, 1.5708f);
     EXPECT_EQ(s1->alternatives[0].modules[1].sym, ir::kBranchOpen);
-    EXPECT_EQ(s1->alternatives[0].modules[6].sym, ir::kBranchClose);
+    const ir::SuccessorModule& roll = s1->alternatives[0].modules[4];
+    EXPECT_EQ(g.alphabet.name(roll.sym), "/");
+    ASSERT_TRUE(roll.args[0].isConst());
+    EXPECT_FLOAT_EQ(roll.args[0].value, -90.0f);
+    EXPECT_TRUE(g.skippedInContext(roll.sym));
+    EXPECT_EQ(s1->alternatives[0].modules[7].sym, ir::kBranchClose);
 
     // S(2) -> S(3): the literal stage is a slot with the condition slot == 2.
     const ir::Production* s2 = firstMatch(g, "S", {2.0f});
@@ -272,7 +278,7 @@ TEST(EcoParser, RosaAlternativesAndRandomAngles) {
     EXPECT_FLOAT_EQ(s10->alternatives[0].probability, 0.5f);
     EXPECT_FLOAT_EQ(s10->alternatives[1].probability, 0.5f);
     EXPECT_FLOAT_EQ(s10->alternatives[2].probability, 1.0f);
-    EXPECT_EQ(spelled(g, s10->alternatives[2]), "S [ rotr S L ] [ rotu rotr S L ]");
+    EXPECT_EQ(spelled(g, s10->alternatives[2]), "S [ rotr / S L ] [ rotu rotr / S L ]");
 
     // S(6) -> prob(0.8) S(7)[rotr(1.2472) rotu(rand(0.0, 6.2832)) S(20) S(21)] | S(7);
     const ir::Production* s6 = firstMatch(g, "S", {6.0f});
@@ -314,7 +320,7 @@ TEST(EcoParser, OxalisRandomRotationWithNegativeBound) {
     ASSERT_EQ(angle.op, ir::Op::Add);
     EXPECT_FLOAT_EQ(angle.args[0].value, -1.2f);
     EXPECT_FLOAT_EQ(angle.args[1].args[0].value, 2.4f);
-    EXPECT_EQ(spelled(g, s0->alternatives[0]), "rotr S [ rotu rotr A ] S");
+    EXPECT_EQ(spelled(g, s0->alternatives[0]), "rotr S [ rotu rotr / A ] S");
 }
 
 TEST(EcoParser, GeneratorScriptWithPageBreakBraces) {
@@ -347,7 +353,7 @@ TEST(EcoParser, GeneratorScriptWithPageBreakBraces) {
     // S(4) -> S(0) [rotr rotu S(9)] [rotr rotu S(12)] rotr rotu S(5);
     const ir::Production* s4 = firstMatch(g, "S", {4.0f});
     ASSERT_NE(s4, nullptr);
-    EXPECT_EQ(spelled(g, s4->alternatives[0]), "S [ rotu rotr S ] [ rotu rotr S ] rotu rotr S");
+    EXPECT_EQ(spelled(g, s4->alternatives[0]), "S [ rotu rotr / S ] [ rotu rotr / S ] rotu rotr S");
     EXPECT_FLOAT_EQ(s4->alternatives[0].modules[2].args[0].value, -2.102210f);
 }
 

@@ -64,21 +64,21 @@ TEST(Growth, TheFirstModuleOfAnOrganContinuesItsParticleAndTheOthersAreBorn) {
     ASSERT_EQ(derivation.advance({1}), 1u);
     ts.tick = 2;
     grow::tickCpu(ts, derivation.current());
-    // S(1) [ rotr S(0) ] S(0): the first stem goes on growing in its new stage; the other two start at zero.
+    // S(1) [ rotr / S(0) ] S(0): the first stem goes on growing in its new stage; the other two start at zero.
     const stream::ModuleString& s = derivation.current();
-    ASSERT_EQ(s.size(), 6u);
+    ASSERT_EQ(s.size(), 7u);
     EXPECT_EQ(idOf(s.particles[0]), idOf(axiom));
     EXPECT_FLOAT_EQ(s.particles[0].value[shared::kParticleElongation], 3.0f);
     EXPECT_FLOAT_EQ(s.particles[0].value[shared::kParticleAge], 3.0f);
     EXPECT_FLOAT_EQ(s.particles[0].value[shared::kParticleStageAge], 1.0f);
-    for (size_t i : {3u, 5u}) {
+    for (size_t i : {4u, 6u}) {
         EXPECT_FLOAT_EQ(s.particles[i].value[shared::kParticleElongation], 1.0f) << i;
         EXPECT_FLOAT_EQ(s.particles[i].value[shared::kParticleAge], 1.0f) << i;
         EXPECT_NE(idOf(s.particles[i]), idOf(axiom)) << i;
     }
-    EXPECT_NE(idOf(s.particles[3]), idOf(s.particles[5]));
-    // The brackets and the rotation are born too, as modules of classes of their own.
-    for (size_t i : {1u, 2u, 4u})
+    EXPECT_NE(idOf(s.particles[4]), idOf(s.particles[6]));
+    // The brackets, the rotation and the branch's roll are born too, as modules of classes of their own.
+    for (size_t i : {1u, 2u, 3u, 5u})
         EXPECT_NE(idOf(s.particles[i]), idOf(axiom)) << i;
     EXPECT_NE(idOf(s.particles[2]), idOf(s.particles[1]));
 }

@@ -94,7 +94,7 @@ float tipHeight(const std::vector<shared::OrganInstance>& organs) {
 }
 
 TEST(GrowthLife, AStemThatDiesIsShedWithItsBranchAndLeavesAgeThenFall) {
-    // S(1) [ S(0) S(1) L(0) ] S(1) L(0): the stage-0 stem lives 5 s, the leaves 8 s.
+    // S(1) [ rotr / S(0) S(1) L(0) ] S(1) L(0): the stage-0 stem lives 5 s, the leaves 8 s.
     GrownPlant plant(scene("Stage 0 { GrowRate = 1.0; GrowTime = 10.0; LifeTime = 5.0; }\n"
                            "Default { GrowRate = 1.0; GrowTime = 10.0; }\n",
                            "Default { GrowRate = 0.1; GrowTime = 10.0; LifeTime = 8.0; }\n",
@@ -123,7 +123,7 @@ TEST(GrowthLife, AStemThatDiesIsShedWithItsBranchAndLeavesAgeThenFall) {
     EXPECT_GT(leaves[1].position.w, 0.0f);
     EXPECT_GT(leaves[1].color.x, leaves[1].color.y); // yellow
     // The dead stem grew no more after 5 s; the living ones did.
-    EXPECT_FLOAT_EQ(plant.derived().particles[3].value[shared::kParticleElongation], 5.0f);
+    EXPECT_FLOAT_EQ(plant.derived().particles[4].value[shared::kParticleElongation], 5.0f); // after [ rotr /
 
     // At 9 s every leaf has fallen.
     for (const shared::OrganInstance& leaf : ofKind(plant.after(9), shared::kOrganLeaf))

@@ -8,6 +8,10 @@ namespace simeco::skeleton {
 
 namespace {
 
+// How many derivation steps the prediction rules get after the skeleton has regrown, by default (the script's
+// DerivationLength; `simeco run` derives no further).
+constexpr int kPredictedSteps = 6;
+
 std::string number(double v) { return fmt::format("{:.9g}", v); }
 std::string number(float v) { return fmt::format("{:.9g}", double(v)); }
 
@@ -42,7 +46,7 @@ public:
         s += fmt::format("        Position = vector({}, {}, {});\n", number(p.x), number(p.y), number(p.z));
         s += "        Direction = vector(0.0, 1.0, 0.0);\n";
         s += "        DeriveTime = 1.0;\n";
-        s += fmt::format("        DerivationLength = {};\n", levels_);
+        s += fmt::format("        DerivationLength = {};\n", levels_ + (o_.prediction ? kPredictedSteps : 0));
         s += "        Apex {}\n";
         s += stems();
         s += organs();
@@ -77,8 +81,10 @@ private:
                          "n,\n// GrowRate x GrowTime its length, BroadenRate x GrowTime its width).",
                          levels_);
         if (o_.prediction)
-            s += " Derived or grown further,\n// its tips grow on by the prediction rules at the end, templates of "
-                 "its own rules.";
+            s += fmt::format(" In the {} steps after them,\n// its tips grow on by the prediction rules at the end, "
+                             "templates of its own rules (derive with\n// -n {} for the skeleton alone, or more to "
+                             "grow further).",
+                             kPredictedSteps, levels_);
         return s + "\n";
     }
 

@@ -4,7 +4,9 @@
 //     A(n) -> S(n) [rotr(..) rotu(..) A(branch)] ... rotr(..) rotu(..) A(main);
 // A stem S(n) keeps its stage, so the derivation alone draws every internode at its length (the thesis writes
 // S(n) -> S(0) [...] S(main), which keeps a stem's length only where its particle carries it on) and the growth
-// simulation grows each from its birth. Leaves, flowers and fruits sit at their points in brackets.
+// simulation grows each from its birth. Leaves, flowers and fruits sit at their points in brackets. The skeleton
+// has regrown after as many derivation steps as it has levels; with prediction rules the DerivationLength is six
+// steps more, in which its tips grow on.
 #pragma once
 
 #include <string>

@@ -21,14 +21,18 @@ segments=$(echo "$out" | sed -n 's/.* \([0-9]*\) segments.*/\1/p')
 grep -q "^level  internodes" "$work/stats.txt" && [ "$(wc -l <"$work/stats.txt")" -gt 5 ]
 check "--stats prints the levels" $?
 
-"$simeco" infer "$work/tree.json" --describe "alternate, ovate, tree" -o "$work/tree.eco" >/dev/null
-check "infer writes a SimEco script" $?
-again=$("$simeco" skeleton "$work/tree.eco" -o "$work/again.json")
+inferred=$("$simeco" infer "$work/tree.json" --describe "alternate, ovate, tree" -o "$work/tree.eco")
+check "infer writes a SimEco script ($inferred)" $?
+levels=$(echo "$inferred" | sed -n 's/.* in \([0-9]*\) levels.*/\1/p')
+again=$("$simeco" skeleton "$work/tree.eco" -n "$levels" -o "$work/again.json")
 echo "$again" | grep -q " $segments segments"
-check "the script regrows the skeleton's $segments segments ($again)" $?
-"$simeco" derive "$work/tree.eco" -n 30 --format stats >"$work/grown.txt"
-[ "$(sed -n 's/^modules: //p' "$work/grown.txt")" -gt "$(sed -n 's/.*plant 0: \([0-9]*\) stems.*/\1/p' <<<"$again")" ]
-check "derived further, its prediction rules grow on" $?
+check "derived as many steps as it has levels ($levels), the script regrows the skeleton's $segments segments" $?
+grown=$("$simeco" skeleton "$work/tree.eco" -o "$work/grown.json")
+[ "$(echo "$grown" | sed -n 's/.* \([0-9]*\) segments.*/\1/p')" -gt "$segments" ]
+check "derived to its DerivationLength, its prediction rules grow it on ($grown)" $?
+"$simeco" infer "$work/tree.json" --initial-only -o "$work/initial.eco" >/dev/null &&
+  "$simeco" skeleton "$work/initial.eco" -o "$work/initial.json" | grep -q " $segments segments"
+check "the initial state alone regrows the skeleton at its DerivationLength" $?
 
 "$simeco" infer "$work/tree.json" -o "$work/tree.l" >/dev/null && [ -s "$work/tree.l" ] && [ -s "$work/tree.v" ]
 check "infer -o tree.l writes the L-system and its view file" $?
@@ -39,7 +43,7 @@ check "the L-system regrows the skeleton's segments ($again)" $?
 "$simeco" skeleton "$tree" -o "$work/tree-views.svg" >/dev/null &&
   "$simeco" skeleton "$tree" -o "$work/tree.obj" >/dev/null
 check "skeleton writes three views and OBJ polylines" $?
-"$simeco" infer "$work/tree-views.svg" -o "$work/views-tree.eco" >/dev/null
+"$simeco" infer "$work/tree-views.svg" --initial-only -o "$work/views-tree.eco" >/dev/null
 again=$("$simeco" skeleton "$work/views-tree.eco" -o "$work/again-views.json")
 echo "$again" | grep -q " $segments segments"
 check "the grammar inferred from its three views regrows the skeleton's segments ($again)" $?

@@ -49,8 +49,8 @@ TEST_F(Prediction, GrownOnTheInferredPlantKeepsItsYoungGrowthsLengthsAndAngles) 
     std::ofstream(dir_ / "plant.eco") << skeleton::ecoScript(plant, growth, options);
 
     const int levels = growth.tree.levels;
-    // Derived only as far as its DerivationLength, it is its skeleton; three steps more and its tips have grown on.
-    EXPECT_TRUE(skeleton::matchSegments(plant, skeletonOfFile(dir_ / "plant.eco")).same());
+    // Derived as many steps as it has levels, it is its skeleton; four steps more and its tips have grown on.
+    EXPECT_TRUE(skeleton::matchSegments(plant, skeletonOfFile(dir_ / "plant.eco", levels)).same());
     skeleton::Plant grown = skeletonOfFile(dir_ / "plant.eco", levels + 4);
     skeleton::checkPlant(grown, "grown", 0);
     const auto before = skeleton::levelStatistics(growth.tree);

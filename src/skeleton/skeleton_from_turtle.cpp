@@ -46,8 +46,7 @@ public:
     }
 
     Plant finish() {
-        while (joinStraightOn()) {
-        }
+        joinStraightOn();
         renumber();
         for (Stem& s : plant_.stems) {
             bool same = true;
@@ -95,56 +94,62 @@ private:
 
     // A branch that is all that grows from its parent's tip, straight on at the same width and with nothing else
     // on that point, continues its parent: the point is not a node of the plant. (A bracket's first segment starts
-    // a stem before the turtle knows whether the parent goes on.) Joins one such pair; false when there is none.
-    bool joinStraightOn() {
-        for (Stem& s : plant_.stems) {
-            if (s.points.empty()) continue; // joined into another
-            const int tip = int(s.points.size()) - 1;
-            Stem* only = nullptr;
-            int count = 0;
-            for (Stem& l : plant_.stems)
-                if (!l.points.empty() && l.parent == s.id && l.attach == tip) {
-                    only = &l;
-                    ++count;
-                }
-            if (count != 1 || organsAt(s.id, tip) || organsAt(only->id, 0) || stemsAt(only->id, 0)) continue;
-            const glm::dvec3 last = glm::normalize(s.points[size_t(tip)] - s.points[size_t(tip) - 1]);
-            const glm::dvec3 next = glm::normalize(only->points[1] - only->points[0]);
-            const bool straight = glm::dot(last, next) > 0.0 && glm::length(glm::cross(last, next)) < 1e-5;
-            if (!straight || std::abs(s.widths.back() - only->widths.front()) > 1e-6 * s.widths.back()) continue;
-            join(s, *only);
-            return true;
-        }
-        return false;
-    }
-
-    bool organsAt(int stem, int point) const {
-        for (const Organ& o : plant_.organs)
-            if (o.stem == stem && o.point == point) return true;
-        return false;
-    }
-    bool stemsAt(int stem, int point) const {
+    // a stem before the turtle knows whether the parent goes on.) One pass in stem order, parents before their
+    // branches, each stem taking over such branches for as long as its new tip has one.
+    void joinStraightOn() {
+        std::vector<std::vector<int>> branches(plant_.stems.size());
         for (const Stem& l : plant_.stems)
-            if (!l.points.empty() && l.parent == stem && l.attach == point) return true;
-        return false;
+            if (l.parent >= 0) branches[size_t(l.parent)].push_back(l.id);
+        std::set<std::pair<int, int>> organPoints;
+        for (const Organ& o : plant_.organs) organPoints.insert({o.stem, o.point});
+        auto branchesAt = [&](int stem, int point) {
+            int count = 0, only = -1;
+            for (int b : branches[size_t(stem)])
+                if (plant_.stems[size_t(b)].attach == point) {
+                    ++count;
+                    only = b;
+                }
+            return std::pair{count, only};
+        };
+        for (Stem& s : plant_.stems) {
+            while (!s.points.empty()) {
+                const int tip = int(s.points.size()) - 1;
+                const auto [count, only] = branchesAt(s.id, tip);
+                if (count != 1 || organPoints.count({s.id, tip}) || organPoints.count({only, 0}) ||
+                    branchesAt(only, 0).first > 0)
+                    break;
+                Stem& l = plant_.stems[size_t(only)];
+                const glm::dvec3 last = glm::normalize(s.points[size_t(tip)] - s.points[size_t(tip) - 1]);
+                const glm::dvec3 next = glm::normalize(l.points[1] - l.points[0]);
+                const bool straight = glm::dot(last, next) > 0.0 && glm::length(glm::cross(last, next)) < 1e-5;
+                if (!straight || std::abs(s.widths.back() - l.widths.front()) > 1e-6 * s.widths.back()) break;
+                join(s, l, branches, organPoints);
+            }
+        }
     }
 
     // `s` takes over `l`: l's points after its base follow s's tip in its place, and what sits on them moves too.
-    void join(Stem& s, Stem& l) {
+    void join(Stem& s, Stem& l, std::vector<std::vector<int>>& branches,
+              std::set<std::pair<int, int>>& organPoints) {
         const int shift = int(s.points.size()) - 2; // l's point j is s's point j + shift
         s.points.pop_back();
         s.widths.pop_back();
         s.points.insert(s.points.end(), l.points.begin() + 1, l.points.end());
         s.widths.insert(s.widths.end(), l.widths.begin(), l.widths.end());
-        for (Stem& other : plant_.stems)
-            if (other.parent == l.id) {
-                other.parent = s.id;
-                other.attach += shift;
-            }
+        std::vector<int>& own = branches[size_t(s.id)];
+        own.erase(std::find(own.begin(), own.end(), l.id));
+        for (int b : branches[size_t(l.id)]) {
+            plant_.stems[size_t(b)].parent = s.id;
+            plant_.stems[size_t(b)].attach += shift;
+            own.push_back(b);
+        }
+        branches[size_t(l.id)].clear();
         for (Organ& o : plant_.organs)
             if (o.stem == l.id) {
+                organPoints.erase({o.stem, o.point});
                 o.stem = s.id;
                 o.point += shift;
+                organPoints.insert({o.stem, o.point});
             }
         l.points.clear();
         l.parent = -2; // joined

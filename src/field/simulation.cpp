@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include "compute/shared/growth_layout.h"
 #include "compute/shared/random.h"
 #include "compute/shared/turtle_layout.h"
 #include "compute/shared/turtle_state_layout.h"
@@ -46,6 +47,9 @@ double secondsSince(Clock::time_point start) { return std::chrono::duration<doub
 // half a binding), the other half of the binding left to plants that grow larger than the one grown before the
 // field.
 constexpr uint64_t kBatchDrawnModules = kBatchModules;
+
+// The gravity relative to which a scene's Gravity bends its plants (grow::GrowingSpecies::relativeGravity).
+constexpr float kEarthGravity = 9.81f;
 
 // The random streams of batch b: the field's seed for the first, another for each other, so that plants at the
 // same place in two batches differ.
@@ -86,6 +90,11 @@ struct Simulation::Impl {
     std::vector<shared::PlantPlacement> placements;
     std::vector<uint8_t> absent; // per plant: an empty slot of a field of populations
     std::vector<float> vigour;   // per plant: the factor on its growth rates (empty: 1)
+    // The populations' per-plant variation of the vigour, before the climate's factor; the stage rows before the
+    // live environment's factors.
+    std::vector<float> plantVigour;
+    grow::GrowthTables sceneTables;
+    LiveEnvironment live;
     GrownPlants grown;
     double time = 0;
     uint32_t ticks = 0;
@@ -113,6 +122,8 @@ struct Simulation::Impl {
     float openLight = 0.0f;                        // their light in the open, which organs grow by in full
     bool answersQueries = false; // the alphabet spells cpfg's `?E`
     void chooseLight();
+    void startEnvironment();
+    void applyClimate();
     // cpfg's ?E queries of the field's drawn string (the batches' one after the other, from `drawnStarts`, each
     // module's derived one in `origins`), answered from the last drawing's light grid into the derived strings.
     void answerQueriesOnHost(const stream::ModuleString& field, const std::vector<size_t>& drawnStarts,
@@ -120,7 +131,7 @@ struct Simulation::Impl {
     void prepareLight(const draw::Bounds& extent, uint32_t standing);
 
     grow::TickSettings settings(const Batch& b, uint32_t tick) const {
-        return {&tables, uint32_t(g.species.size()), options.dt, tick, b.seed, g.relativeGravity(),
+        return {&tables, uint32_t(g.species.size()), options.dt, tick, b.seed, live.gravity / kEarthGravity,
                 b.vigour.empty() ? nullptr : &b.vigour, openLight, &b.field.placements};
     }
     // The height each plant stands at.
@@ -209,19 +220,14 @@ Simulation::Simulation(const SimulationOptions& options, const vk::Context* cont
     m.derive.plants = hasPopulations(m.g) ? uint32_t(layout.placements.size())
                       : options.plants    ? options.plants
                                           : uint32_t(m.g.species.size());
-    // The scene's climate and soil scale every plant's growth rates (grow/environment.h).
-    if (m.g.scene) {
-        const float climate = grow::environmentGrowthFactor(*m.g.scene);
-        if (climate != 1.0f) {
-            if (m.vigour.empty()) m.vigour.assign(m.derive.plants, 1.0f);
-            for (float& v : m.vigour) v *= climate;
-        }
-    }
+    m.plantVigour = m.vigour;
     m.derive.maxModules = options.maxModules;
     m.derive.maxSeconds = options.maxSeconds;
     m.derive.particles = true;
     m.derive.seed = m.seed;
     m.tables = grow::growthTables(m.g.species, m.g.ecoPlants);
+    m.sceneTables = m.tables;
+    m.startEnvironment();
     m.chooseLight();
     m.derive.lightScale = m.openLight > 0.0f ? 1.0f / m.openLight : 0.0f;
     m.deriveTimes = grow::plantDeriveTimes(m.g.ecoPlants, m.derive.plants, m.seed);
@@ -281,6 +287,36 @@ TickReport Simulation::tick() {
     return report;
 }
 
+const LiveEnvironment& Simulation::environment() const { return impl_->live; }
+
+void Simulation::setEnvironment(const LiveEnvironment& environment) {
+    Impl& m = *impl_;
+    if (environment.species.size() != m.g.species.size())
+        throw std::invalid_argument(fmt::format("the environment has factors for {} species, the field {}",
+                                                environment.species.size(), m.g.species.size()));
+    const bool speciesChanged = environment.species != m.live.species;
+    m.live = environment;
+    m.applyClimate();
+    m.chooseLight();
+    if (m.lightGpu) m.lightGpu->setDirections(m.lightFrom);
+    if (m.lightCpu) m.lightCpu->setDirections(m.lightFrom);
+    if (speciesChanged) {
+        m.tables = m.sceneTables;
+        for (uint32_t s = 0; s < m.live.species.size(); ++s) {
+            const LiveEnvironment::SpeciesFactors& f = m.live.species[s];
+            grow::scaleSpeciesProperty(m.tables, s, shared::kGrowRate, f.growRate);
+            grow::scaleSpeciesProperty(m.tables, s, shared::kGeotropism, f.geotropism);
+            grow::scaleSpeciesProperty(m.tables, s, shared::kStrength, f.strength);
+        }
+    }
+    for (Batch& b : m.batches) {
+        b.vigour = m.vigour.empty() ? std::vector<float>{} : slice(m.vigour, b.first, b.count);
+        if (!b.growth) continue;
+        b.growth->setVigour(b.vigour);
+        if (speciesChanged) b.growth->setRows(m.tables);
+    }
+}
+
 SimulationState Simulation::save() const {
     const Impl& m = *impl_;
     SimulationState state{m.ticks, m.nextStep, {}};
@@ -317,7 +353,28 @@ void Simulation::resume(const SimulationState& state) {
 }
 
 void Simulation::Impl::chooseLight() {
-    lightFrom = sceneLightDirections(g.scene ? g.scene->light : ir::EcoLight{}, openLight);
+    lightFrom = sceneLightDirections(live.light, openLight);
+}
+
+// The scene's environment, as the field starts.
+void Simulation::Impl::startEnvironment() {
+    live.species.assign(g.species.size(), {});
+    live.gravity = g.relativeGravity() * kEarthGravity;
+    if (!g.scene) return;
+    live.light = g.scene->light;
+    live.dayLight = g.scene->dayLight.typical();
+    live.rainRate = g.scene->rainRate.typical();
+    live.soilPH = g.scene->soilPH.typical();
+    applyClimate();
+}
+
+// The climate and soil scale every plant's growth rates (grow/environment.h).
+void Simulation::Impl::applyClimate() {
+    const float climate = grow::climateGrowthFactor(live.dayLight, live.rainRate, live.soilPH);
+    vigour = plantVigour;
+    if (climate == 1.0f) return;
+    if (vigour.empty()) vigour.assign(derive.plants, 1.0f);
+    for (float& v : vigour) v *= climate;
 }
 
 void Simulation::Impl::prepareLight(const draw::Bounds& extent, uint32_t standing) {

@@ -14,6 +14,7 @@
 #include "compute/shared/plant_statistics_layout.h"
 #include "draw/bounds.h"
 #include "draw/renderer.h"
+#include "ir/eco_field.h"
 #include "field/backend.h"
 #include "field/light_view.h"
 #include "grow/growing_species.h"
@@ -42,6 +43,22 @@ struct SimulationOptions {
     uint64_t maxPartBytes = 0; // of the organs' parts (turtle::OrganMerge); 0: one buffer binding's
     Backend backend = Backend::Gpu;
     std::string colormap; // a cpfg colour map (.map) in place of the grammars' own; empty: theirs
+};
+
+// What may change while a field grows (`simeco view`'s panel): the light it grows by, its climate and soil (the
+// scene's EcoSystem block), gravity, and factors on each species' stage properties. A change acts from the next
+// tick and drawing on, on either backend.
+struct LiveEnvironment {
+    ir::EcoLight light; // the sun's direction and intensity, the sky's light (ground size is not read)
+    float dayLight = 12.0f; // hours
+    float rainRate = 0.9f;
+    float soilPH = 7.0f;
+    float gravity = 9.81f; // m/s², pulling down
+    struct SpeciesFactors {
+        float growRate = 1.0f, geotropism = 1.0f, strength = 1.0f;
+        bool operator==(const SpeciesFactors&) const = default;
+    };
+    std::vector<SpeciesFactors> species; // per species of the field
 };
 
 // What a tick did.
@@ -100,6 +117,10 @@ public:
     // Before the first tick: ticks of `dt` simulated seconds (an animation's, once it knows how long the field
     // grows). Throws std::logic_error after it.
     void setTickSeconds(float dt);
+    // The environment the field grows in now (at first the scene's), and a new one for the ticks after. Throws
+    // std::invalid_argument for factors of another count of species than the field's.
+    const LiveEnvironment& environment() const;
+    void setEnvironment(const LiveEnvironment& environment);
     // Where the field will reach when grown, as one plant of each species grows on the CPU (a plant's own random
     // draws may take it a little further): what a camera that stays put while the field grows frames.
     draw::Bounds grownBounds() const;

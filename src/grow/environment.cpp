@@ -28,9 +28,12 @@ float soilResponse(float pH) {
     return std::exp(-(distance / 1.5f) * (distance / 1.5f));
 }
 
+float climateGrowthFactor(float dayLightHours, float rainRate, float soilPH) {
+    return dayLightResponse(dayLightHours) * rainResponse(rainRate) * soilResponse(soilPH);
+}
+
 float environmentGrowthFactor(const ir::EcoScene& scene) {
-    return dayLightResponse(scene.dayLight.typical()) * rainResponse(scene.rainRate.typical()) *
-           soilResponse(scene.soilPH.typical());
+    return climateGrowthFactor(scene.dayLight.typical(), scene.rainRate.typical(), scene.soilPH.typical());
 }
 
 } // namespace simeco::grow

@@ -14,6 +14,8 @@ float rainResponse(float rainRate);
 // Soil: 1 for a pH from 6 to 7.5, falling off outside as exp(-(distance / 1.5)^2) (0.37 at 4.5 and at 9).
 float soilResponse(float pH);
 
+// Their product.
+float climateGrowthFactor(float dayLightHours, float rainRate, float soilPH);
 // Their product for the scene's values (a range's midpoint where the script gives one).
 float environmentGrowthFactor(const ir::EcoScene& scene);
 

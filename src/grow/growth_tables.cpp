@@ -98,6 +98,20 @@ bool GrowthTables::growsSegments() const {
     return false;
 }
 
+void scaleSpeciesProperty(GrowthTables& tables, uint32_t s, uint32_t property, float factor) {
+    const uint32_t* words = tables.species.data() + size_t(s) * shared::kSpeciesGrowthWords;
+    for (uint32_t k = 0; k < shared::kGrowOrganKinds; ++k) {
+        if (words[shared::kSpeciesFirstRow + k] == shared::kGrowNoRow) continue;
+        // The organ's stage rows and its Default row after them.
+        const uint32_t first = words[shared::kSpeciesFirstRow + k];
+        for (uint32_t row = first; row <= first + words[shared::kSpeciesRowCount + k]; ++row) {
+            float* at = tables.rows.data() + size_t(row) * shared::kStageRowFloats;
+            at[shared::propertyMin(property)] *= factor;
+            at[shared::propertyMax(property)] *= factor;
+        }
+    }
+}
+
 GrowthTables growthTables(const std::vector<ir::Grammar>& species, const std::vector<const ir::EcoPlant*>& ecoPlants) {
     GrowthTables t;
     t.symbols = species.empty() ? 0u : uint32_t(species.front().alphabet.size());

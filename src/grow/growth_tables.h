@@ -30,6 +30,10 @@ struct GrowthTables {
 // length over their first DeriveTime. The species share one alphabet.
 GrowthTables growthTables(const std::vector<ir::Grammar>& species, const std::vector<const ir::EcoPlant*>& ecoPlants);
 
+// Species `s`'s stage rows with property `property` (shared::kGrowRate, ...) times `factor`, min and max: a
+// viewer's slider on the running field. A species without stage rows (a grammar file's) is left as it is.
+void scaleSpeciesProperty(GrowthTables& tables, uint32_t s, uint32_t property, float factor);
+
 // Each of `plants` plants' DeriveTime (plant p is of species p mod the species' count), drawn from its range
 // with the field's seed.
 std::vector<float> plantDeriveTimes(const std::vector<const ir::EcoPlant*>& ecoPlants, uint32_t plants, uint32_t seed);

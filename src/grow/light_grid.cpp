@@ -240,7 +240,7 @@ void LightGridCpu::gather(const turtle::Interpretation& organs, std::vector<shar
 GpuLightGrid::GpuLightGrid(const vk::Context& context, const LightGridSpec& spec,
                            const std::vector<shared::LightDirection>& directions,
                            const std::vector<uint32_t>& obstacles, const std::vector<float>& shapeAreas)
-    : spec_(spec), directionCount_(uint32_t(directions.size())),
+    : context_(context), spec_(spec), directionCount_(uint32_t(directions.size())),
       splat_(vk::ComputePipeline::embedded(context, "grow/light_splat")),
       propagate_(vk::ComputePipeline::embedded(context, "grow/light_propagate")),
       gather_(vk::ComputePipeline::embedded(context, "grow/light_gather")),
@@ -272,6 +272,11 @@ shared::LightGridPush GpuLightGrid::push() const {
     p.directions = directionCount_;
     p.obstacleTop = obstacleTop_;
     return p;
+}
+
+void GpuLightGrid::setDirections(const std::vector<shared::LightDirection>& directions) {
+    directions_ = vk::deviceBufferWith(context_, std::span<const shared::LightDirection>(directions));
+    directionCount_ = uint32_t(directions.size());
 }
 
 void GpuLightGrid::recordClear(VkCommandBuffer cmd) {

@@ -70,6 +70,7 @@ public:
     LightGridCpu(const LightGridSpec& spec, std::vector<shared::LightDirection> directions,
                  std::vector<uint32_t> obstacles);
 
+    void setDirections(std::vector<shared::LightDirection> directions) { directions_ = std::move(directions); }
     void clear(); // the splatted areas and the voxels' holders
     // `organs`' plants numbered as in the field.
     void splat(const turtle::Interpretation& organs, const std::vector<float>& shapeAreas);
@@ -104,6 +105,10 @@ public:
                  const std::vector<shared::LightDirection>& directions, const std::vector<uint32_t>& obstacles,
                  const std::vector<float>& shapeAreas);
 
+    // The light to propagate from, for the drawings after (a viewer moving the sun); the caller's submissions
+    // reading the old directions must have completed.
+    void setDirections(const std::vector<shared::LightDirection>& directions);
+
     void recordClear(VkCommandBuffer cmd);
     // `firstPlant`: the field's number of the organs' plant 0 (a batch's first plant).
     void recordSplat(VkCommandBuffer cmd, const turtle::DeviceOrgans& organs, uint32_t firstPlant = 0);
@@ -130,6 +135,7 @@ public:
 private:
     shared::LightGridPush push() const;
 
+    const vk::Context& context_;
     LightGridSpec spec_;
     uint32_t directionCount_;
     vk::ComputePipeline splat_, propagate_, gather_, queries_;

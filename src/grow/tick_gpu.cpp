@@ -44,6 +44,14 @@ GpuGrowth::GpuGrowth(const vk::Context& context, const GrowthTables& tables, con
       placements_(vk::deviceBufferWith(
           context, std::span<const shared::PlantPlacement>(orAsDrawn(placements, deriveTimes.size())))) {}
 
+void GpuGrowth::setRows(const GrowthTables& tables) {
+    rows_ = vk::deviceBufferWith(context_, std::span<const float>(tables.rows));
+}
+
+void GpuGrowth::setVigour(const std::vector<float>& vigour) {
+    vigour_ = vk::deviceBufferWith(context_, std::span<const float>(orOnes(vigour, vigour_.size() / sizeof(float))));
+}
+
 void GpuGrowth::recordTick(VkCommandBuffer cmd, const stream::DeviceModules& derived, const TickSettings& settings) {
     if (!derived.particles) throw std::logic_error("GpuGrowth::recordTick: the string carries no particle state");
     if (derived.count == 0) return;

@@ -38,6 +38,11 @@ public:
     stream::DeviceModules copyForDrawing(const stream::DeviceModules& modules);
 
     void tick(const stream::DeviceModules& derived, const TickSettings& settings);
+
+    // New stage rows (the same tables' shape: a viewer's factors on stage properties) and plant vigours, for the
+    // ticks after; waits for nothing, so the caller's submissions reading the old ones must have completed.
+    void setRows(const GrowthTables& tables);
+    void setVigour(const std::vector<float>& vigour);
     void growSizes(const stream::DeviceModules& drawn, const TickSettings& settings);
 
 private:

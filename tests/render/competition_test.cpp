@@ -3,10 +3,12 @@
 // branches while an open-grown plant keeps them; a plant among taller neighbours catches less light than one alone;
 // a shoot does not grow into a wall; rules on the light choose what grows.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -69,12 +71,17 @@ std::vector<Lean> leans(const turtle::Interpretation& drawn, const std::vector<s
     return lean;
 }
 
+// A change of both fields before a tick (a viewer's panel acting on the running field).
+using DuringGrowth = std::function<void(field::Simulation& field, int tick)>;
+
 // Grows the scene on both backends for `ticks`, checks that they draw alike, and returns the device's drawing.
 turtle::Interpretation grownAlike(const vk::Context& context, const std::string& body, int ticks,
-                                  std::vector<shared::PlantStatistics>* statistics = nullptr) {
+                                  std::vector<shared::PlantStatistics>* statistics = nullptr,
+                                  const DuringGrowth& during = {}) {
     field::Simulation gpu(scene(body, field::Backend::Gpu), &context);
     field::Simulation cpu(scene(body, field::Backend::Cpu), &context);
     for (int tick = 0; tick < ticks; ++tick) {
+        if (during) during(gpu, tick), during(cpu, tick);
         gpu.tick(), cpu.tick();
         gpu.interpretParts(), cpu.interpretParts();
     }
@@ -105,6 +112,50 @@ TEST_F(CompetitionTest, ShootsTurnTowardTheSunWhereverItIs) {
     EXPECT_NEAR(lean[0][0], -lean[1][0], 0.05f * lean[0][0]);
     EXPECT_LT(std::abs(lean[0][1]), 0.02f);
     EXPECT_LT(std::abs(lean[1][1]), 0.02f);
+}
+
+TEST_F(CompetitionTest, MovingTheSunWhileAFieldGrowsTurnsItsShootsTowardTheNewSun) {
+    const std::string body = " SunDirection = vector(1.0, 0.8, 0.0);\n Plant \"Turning\" { Position = "
+                             "vector(0.0, 0.0, 0.0);" + shoot(0.3) + "\n";
+    field::Simulation probe(scene(body, field::Backend::Cpu), &context());
+    const float east = leans(grownAlike(context(), body, 12), probe.placements())[0].x;
+    // The same field with the sun moved to the west after four ticks, as a viewer's slider moves it.
+    const DuringGrowth sunToTheWest = [](field::Simulation& f, int tick) {
+        if (tick != 4) return;
+        field::LiveEnvironment e = f.environment();
+        ASSERT_TRUE(e.light.sunDirection);
+        EXPECT_FLOAT_EQ((*e.light.sunDirection)[0], 1.0f); // the scene's sun, until it moves
+        e.light.sunDirection = std::array<float, 3>{-1.0f, 0.8f, 0.0f};
+        f.setEnvironment(e);
+    };
+    const float moved = leans(grownAlike(context(), body, 12, nullptr, sunToTheWest), probe.placements())[0].x;
+    EXPECT_GT(east, 0.3f);
+    EXPECT_LT(moved, 0.0f); // the stems grown since lean west, more of them than before
+}
+
+TEST_F(CompetitionTest, ASpeciesFactorsAndTheClimateSetWhileItGrowsActOnBothBackends) {
+    const std::string body = " SunDirection = vector(0.3, 1.0, 0.2);\n Plant \"A\" { Position = "
+                             "vector(0.0, 0.0, 0.0);" + shoot(0.0) + "\n Plant \"B\" { Position = "
+                             "vector(6.0, 0.0, 0.0);" + shoot(0.0) + "\n";
+    std::vector<shared::PlantStatistics> before, after;
+    grownAlike(context(), body, 10, &before);
+    // From the second tick on, species B grows at half its rate, and the days are short for both.
+    const DuringGrowth slower = [](field::Simulation& f, int tick) {
+        if (tick != 1) return;
+        field::LiveEnvironment e = f.environment();
+        ASSERT_EQ(e.species.size(), 2u);
+        e.species[1].growRate = 0.5f;
+        e.dayLight = 6.0f;
+        f.setEnvironment(e);
+    };
+    grownAlike(context(), body, 10, &after, slower);
+    ASSERT_EQ(before.size(), 2u);
+    ASSERT_EQ(after.size(), 2u);
+    EXPECT_FLOAT_EQ(before[0].height, before[1].height);
+    // Short days slow both; B's own factor slows it further.
+    EXPECT_LT(after[0].height, 0.95f * before[0].height);
+    EXPECT_LT(after[1].height, 0.8f * after[0].height);
+    EXPECT_LT(after[1].leafArea, after[0].leafArea);
 }
 
 TEST_F(CompetitionTest, AShootBesideAWallTurnsAwayFromItsShadeAndGrowsLess) {

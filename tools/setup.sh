@@ -9,7 +9,8 @@ packages=(
   build-essential cmake pkg-config git python3
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools spirv-tools
   glslang-tools glslang-dev
-  libglm-dev libglfw3-dev libopenexr-dev libpng-dev libtinyobjloader-dev
+  libglm-dev libglfw3-dev libimgui-dev libopenexr-dev libpng-dev libtinyobjloader-dev
+  xvfb xauth
   libgtest-dev libcli11-dev nlohmann-json3-dev libfmt-dev liblzma-dev
   gnuplot-nox
   clang libclang-rt-dev

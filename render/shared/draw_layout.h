@@ -121,6 +121,14 @@ struct ShadowVolumePush {
 };
 
 // toon_outline.comp: dark lines where depth or plant changes, over the copied frame buffers.
+// present/display_bytes.comp: a frame's colours as bytes for a window.
+struct DisplayPush {
+    uint pixels;
+    uint encodeSrgb; // 0 where the window's format encodes sRGB itself
+    uint pad0;
+    uint pad1;
+};
+
 struct OutlinePush {
     vec4 lineColor;   // rgb, linear
     uint width;
@@ -136,6 +144,7 @@ struct OutlinePush {
 #ifdef __cplusplus
 static_assert(sizeof(MeshVertex) == 32);
 static_assert(sizeof(DrawFrame) == 64 + 11 * 16);
+static_assert(sizeof(DisplayPush) == 16);
 static_assert(sizeof(DrawPush) == 8);
 static_assert(sizeof(DrawArgsPush) == 64);
 static_assert(sizeof(VolumeDraw) == 32);

@@ -18,5 +18,6 @@ void registerExportCommand(CLI::App& app, CommandContext& ctx);
 void registerRunCommand(CLI::App& app, CommandContext& ctx);
 void registerSkeletonCommand(CLI::App& app, CommandContext& ctx);
 void registerInferCommand(CLI::App& app, CommandContext& ctx);
+void registerViewCommand(CLI::App& app, CommandContext& ctx);
 
 } // namespace simeco::app

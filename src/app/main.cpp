@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
     simeco::app::registerRunCommand(app, ctx);
     simeco::app::registerSkeletonCommand(app, ctx);
     simeco::app::registerInferCommand(app, ctx);
+    simeco::app::registerViewCommand(app, ctx);
 
     try {
         app.parse(argc, argv);

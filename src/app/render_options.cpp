@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <tuple>
 
 #include <fmt/format.h>
 #include <glm/geometric.hpp>
@@ -69,15 +70,18 @@ draw::Camera viewCamera(const ir::PictureLook& look) {
 
 } // namespace
 
-draw::RenderSettings renderSettings(const PictureOptions& options, const ir::ViewSettings& view) {
-    draw::RenderSettings s;
+std::pair<std::uint32_t, std::uint32_t> imageSize(const std::string& size) {
     unsigned w = 0, h = 0;
     char x = 0;
-    if (std::sscanf(options.size.c_str(), "%u%c%u", &w, &x, &h) != 3 || x != 'x' || w == 0 || h == 0 || w > 16384 ||
+    if (std::sscanf(size.c_str(), "%u%c%u", &w, &x, &h) != 3 || x != 'x' || w == 0 || h == 0 || w > 16384 ||
         h > 16384)
-        throw CommandLineError(fmt::format("--size '{}': expected WIDTHxHEIGHT, each 1 to 16384", options.size));
-    s.width = w;
-    s.height = h;
+        throw CommandLineError(fmt::format("--size '{}': expected WIDTHxHEIGHT, each 1 to 16384", size));
+    return {w, h};
+}
+
+draw::RenderSettings renderSettings(const PictureOptions& options, const ir::ViewSettings& view) {
+    draw::RenderSettings s;
+    std::tie(s.width, s.height) = imageSize(options.size);
     if (!options.camera.empty()) {
         draw::Camera c;
         int read = std::sscanf(options.camera.c_str(), "%f,%f,%f", &c.azimuthDegrees, &c.elevationDegrees,

@@ -2,7 +2,9 @@
 // ground and background, as typed.
 #pragma once
 
+#include <cstdint>
 #include <string>
+#include <utility>
 
 #include <CLI/CLI.hpp>
 
@@ -27,6 +29,9 @@ struct PictureOptions {
 // --size, --camera, --projection, --style, --shadows, --ground and --background; `framed` says what the default
 // camera frames.
 void addPictureOptions(CLI::App& cmd, PictureOptions& options, const std::string& framed);
+
+// WIDTHxHEIGHT; throws CommandLineError for another form or a side outside 1 to 16384.
+std::pair<std::uint32_t, std::uint32_t> imageSize(const std::string& size);
 
 // Throws CommandLineError for a size other than WIDTHxHEIGHT (each 1 to 16384), a camera other than
 // azimuth,elevation[,distance] with the elevation within (-90, 90), or a background that names the colour map of

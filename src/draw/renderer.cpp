@@ -433,12 +433,16 @@ void Renderer::record(VkCommandBuffer cmd, const RenderTarget& target, const std
     if (hasOutlines(setup.settings.style)) r.recordOutlines(cmd, target, setup);
 }
 
+const vk::Buffer& Renderer::finalColor(const RenderTarget& target, const FrameSetup& setup) {
+    return hasOutlines(setup.settings.style) ? target.outlined() : target.color();
+}
+
 Frame Renderer::readBack(const RenderTarget& target, const FrameSetup& setup) const {
     Frame result;
     result.width = target.width();
     result.height = target.height();
     std::size_t pixels = result.pixelCount();
-    const vk::Buffer& color = hasOutlines(setup.settings.style) ? target.outlined() : target.color();
+    const vk::Buffer& color = finalColor(target, setup);
     result.rgba.resize(4 * pixels);
     std::memcpy(result.rgba.data(), color.mapped(), result.rgba.size() * sizeof(float));
     result.plant.resize(pixels);

@@ -94,6 +94,9 @@ public:
                 const FrameSetup& setup);
     void record(VkCommandBuffer cmd, const RenderTarget& target, const std::vector<OrganPart>& parts,
                 const FrameSetup& setup);
+    // The buffer of `target` that holds the frame's last colours (linear RGBA floats, rows from the top), for
+    // passes recorded after record(): the outlines' output in the styles that draw them.
+    static const vk::Buffer& finalColor(const RenderTarget& target, const FrameSetup& setup);
     // The frame `record` drew into `target`, once its submission has completed.
     Frame readBack(const RenderTarget& target, const FrameSetup& setup) const;
     // The offscreen target of the given size, made on first use and kept while the size stays.

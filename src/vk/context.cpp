@@ -39,8 +39,19 @@ std::uint32_t chooseQueueFamily(VkPhysicalDevice device, std::uint32_t& timestam
 
 } // namespace
 
-Context::Context(const ContextOptions& options) : instance_(options.validation, options.validationLog) {
+Context::Context(const ContextOptions& options)
+    : instance_(options.validation, options.validationLog, options.instanceExtensions) {
     std::vector<PhysicalDeviceInfo> devices = listPhysicalDevices(instance_.get());
+    presents_ = bool(options.presentsFrom);
+    if (presents_) {
+        // The one queue computes, draws and presents.
+        for (PhysicalDeviceInfo& d : devices) {
+            if (!d.suitable()) continue;
+            std::uint32_t bits = 0;
+            if (!options.presentsFrom(instance_.get(), d.handle, chooseQueueFamily(d.handle, bits)))
+                d.unsuitableReason = "its queue cannot present to the window";
+        }
+    }
     info_ = devices[selectPhysicalDevice(devices, options.device)];
     vkGetPhysicalDeviceProperties(info_.handle, &properties_);
     vkGetPhysicalDeviceMemoryProperties(info_.handle, &memory_);
@@ -83,14 +94,15 @@ Context::Context(const ContextOptions& options) : instance_(options.validation, 
     queueInfo.queueCount = 1;
     queueInfo.pQueuePriorities = &priority;
 
-    const char* extensions[] = {VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME};
+    std::vector<const char*> extensions = {VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME};
+    if (presents_) extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
     VkDeviceCreateInfo deviceInfo{};
     deviceInfo.sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO;
     deviceInfo.pNext = &enabled;
     deviceInfo.queueCreateInfoCount = 1;
     deviceInfo.pQueueCreateInfos = &queueInfo;
-    deviceInfo.enabledExtensionCount = 1;
-    deviceInfo.ppEnabledExtensionNames = extensions;
+    deviceInfo.enabledExtensionCount = std::uint32_t(extensions.size());
+    deviceInfo.ppEnabledExtensionNames = extensions.data();
     VK_CHECK(vkCreateDevice(info_.handle, &deviceInfo, nullptr, &device_));
     vkGetDeviceQueue(device_, queueFamily_, 0, &queue_);
 

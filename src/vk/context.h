@@ -7,6 +7,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <vulkan/vulkan.h>
 
@@ -26,6 +27,11 @@ struct ContextOptions {
     bool validation = validationRequestedByEnvironment();
     // Where validation messages are collected; must outlive the context. Null: the instance keeps its own.
     ValidationLog* validationLog = nullptr;
+    // Presenting to a window: the window system's instance extensions (the surface's), and a test of whether a
+    // device's queue family can present to it. Given, the device is made with VK_KHR_swapchain and its queue
+    // family must present; a device that cannot is passed over when choosing, refused when named.
+    std::vector<std::string> instanceExtensions;
+    std::function<bool(VkInstance, VkPhysicalDevice, std::uint32_t)> presentsFrom;
 };
 
 class Context {
@@ -48,6 +54,9 @@ public:
     const VkPhysicalDeviceMemoryProperties& memoryProperties() const { return memory_; }
     // Bits of a timestamp that are valid on the queue; 0 means no timestamps.
     std::uint32_t timestampValidBits() const { return timestampValidBits_; }
+
+    // Whether the device was made to present to a window (ContextOptions::presentsFrom).
+    bool presents() const { return presents_; }
 
     bool validationEnabled() const { return instance_.validationEnabled(); }
     const ValidationLog& validationLog() const { return instance_.validationLog(); }
@@ -78,6 +87,7 @@ private:
     VkPhysicalDeviceMemoryProperties memory_{};
     std::uint32_t queueFamily_ = 0;
     std::uint32_t timestampValidBits_ = 0;
+    bool presents_ = false;
     VkDevice device_ = VK_NULL_HANDLE;
     VkQueue queue_ = VK_NULL_HANDLE;
     UniqueCommandPool commandPool_;

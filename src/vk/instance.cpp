@@ -72,7 +72,7 @@ std::vector<std::string> ValidationLog::messages() const {
     return messages_;
 }
 
-Instance::Instance(bool validation, ValidationLog* externalLog)
+Instance::Instance(bool validation, ValidationLog* externalLog, const std::vector<std::string>& requested)
     : ownLog_(externalLog == nullptr ? std::make_unique<ValidationLog>() : nullptr),
       log_(externalLog == nullptr ? ownLog_.get() : externalLog) {
     std::uint32_t loaderVersion = VK_API_VERSION_1_0;
@@ -99,6 +99,7 @@ Instance::Instance(bool validation, ValidationLog* externalLog)
 
     std::vector<const char*> layers;
     std::vector<const char*> extensions;
+    for (const std::string& name : requested) extensions.push_back(name.c_str());
     // Chained into instance creation too, so messages from vkCreateInstance/vkDestroyInstance are caught.
     VkDebugUtilsMessengerCreateInfoEXT debugInfo = messengerInfo(log_);
     VkInstanceCreateInfo info{};

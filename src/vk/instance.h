@@ -31,7 +31,9 @@ public:
     // With `validation`, VK_LAYER_KHRONOS_validation must be installed: a missing layer is an error rather than
     // a silent run without checks. Messages go to `externalLog` when given (it must outlive the instance, which
     // lets tests see messages emitted while the instance is destroyed), else to a log of the instance's own.
-    explicit Instance(bool validation, ValidationLog* externalLog = nullptr);
+    // `extensions`: instance extensions besides the validation's (a window system's surface, for presenting).
+    explicit Instance(bool validation, ValidationLog* externalLog = nullptr,
+                      const std::vector<std::string>& extensions = {});
     ~Instance();
 
     Instance(const Instance&) = delete;

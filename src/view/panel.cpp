@@ -1,0 +1,116 @@
+#include "view/panel.h"
+
+#include <algorithm>
+
+#include <fmt/format.h>
+#include <imgui.h>
+
+namespace simeco::view {
+namespace {
+
+// A slider that reports a change of the environment.
+void slider(const char* label, float& value, float lowest, float highest, bool& changed, const char* format = "%.2f") {
+    changed |= ImGui::SliderFloat(label, &value, lowest, highest, format);
+}
+
+void environment(ViewControls& c, PanelActions& actions) {
+    bool& changed = actions.environmentChanged;
+    if (!ImGui::CollapsingHeader("Environment", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    slider("sun azimuth", c.sunAzimuth, -180.0f, 180.0f, changed, "%.0f deg");
+    slider("sun elevation", c.sunElevation, 1.0f, 90.0f, changed, "%.0f deg");
+    slider("sun intensity", c.sunIntensity, 0.0f, 3.0f, changed);
+    slider("sky light", c.skyLight, 0.0f, 3.0f, changed);
+    slider("DayLight", c.dayLight, 0.0f, 24.0f, changed, "%.1f h");
+    slider("RainRate", c.rainRate, 0.0f, 3.0f, changed);
+    slider("SoilPH", c.soilPH, 3.0f, 11.0f, changed, "%.1f");
+    slider("gravity", c.gravity, 0.0f, 30.0f, changed, "%.1f m/s2");
+}
+
+void species(ViewControls& c, PanelActions& actions) {
+    if (!ImGui::CollapsingHeader("Species")) return;
+    for (size_t s = 0; s < c.species.size(); ++s) {
+        ImGui::PushID(int(s));
+        ImGui::TextUnformatted(c.species[s].name.c_str());
+        field::LiveEnvironment::SpeciesFactors& f = c.species[s].factors;
+        slider("GrowRate x", f.growRate, 0.0f, 3.0f, actions.environmentChanged);
+        slider("Geotropism x", f.geotropism, -3.0f, 3.0f, actions.environmentChanged);
+        slider("Strength x", f.strength, 0.0f, 3.0f, actions.environmentChanged);
+        ImGui::PopID();
+    }
+}
+
+void simulation(ViewControls& c, PanelActions& actions) {
+    if (!ImGui::CollapsingHeader("Simulation", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    ImGui::Checkbox("paused", &c.paused);
+    ImGui::SameLine();
+    actions.step = ImGui::Button("step");
+    ImGui::SameLine();
+    actions.reset = ImGui::Button("reset");
+    int scale = int(c.timeScale);
+    if (ImGui::SliderInt("ticks a frame", &scale, 1, 16)) c.timeScale = std::uint32_t(scale);
+    int seed = int(c.seed);
+    if (ImGui::InputInt("seed (at reset)", &seed)) c.seed = std::uint32_t(std::max(seed, 0));
+    int plants = int(c.plants);
+    if (ImGui::InputInt("plants (at reset, 0: the scene's)", &plants, 10, 100))
+        c.plants = std::uint32_t(std::clamp(plants, 0, 1000000));
+}
+
+void look(ViewControls& c, PanelActions& actions) {
+    if (!ImGui::CollapsingHeader("Look", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    ImGui::Checkbox("shadows", &c.shadows);
+    const char* styles[] = {"lit", "toon", "outline", "paper-cut"};
+    int style = int(c.style);
+    if (ImGui::Combo("style", &style, styles, 4)) c.style = draw::Style(style);
+    actions.screenshot = ImGui::Button("screenshot");
+}
+
+void figures(const PanelFigures& f) {
+    ImGui::Text("%.1f ms a frame, %.1f ticks/s", f.frameSeconds * 1e3, f.ticksPerSecond);
+    ImGui::Text("t = %.1f s, %u plants", f.time, f.plants);
+    ImGui::Text("%llu modules, %llu organs drawn",
+                static_cast<unsigned long long>(f.modules), static_cast<unsigned long long>(f.instances));
+    for (const SpeciesHistory& h : f.history) {
+        if (h.leafArea.empty()) continue;
+        ImGui::PushID(h.name.c_str());
+        ImGui::TextUnformatted(h.name.c_str());
+        const std::string leafArea = fmt::format("leaf area {:.1f}", h.leafArea.back());
+        const std::string light = fmt::format("light {:.1f}", h.light.back());
+        ImGui::PlotLines("##leaf area", h.leafArea.data(), int(h.leafArea.size()), 0, leafArea.c_str(), 0.0f, FLT_MAX,
+                         ImVec2(-1, 36));
+        ImGui::PlotLines("##light", h.light.data(), int(h.light.size()), 0, light.c_str(), 0.0f, FLT_MAX,
+                         ImVec2(-1, 36));
+        ImGui::PopID();
+    }
+    if (f.picked) {
+        const PickedPlant& p = *f.picked;
+        ImGui::Separator();
+        ImGui::Text("plant %u: %s", p.plant, p.species.c_str());
+        ImGui::Text("age %.1f s, %llu modules, height %.2f", p.age, static_cast<unsigned long long>(p.modules),
+                    p.height);
+        ImGui::Text("leaf area %.3f, light %.3f", p.leafArea, p.light);
+    }
+    if (!f.error.empty()) {
+        ImGui::Separator();
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
+        ImGui::TextWrapped("%s", f.error.c_str());
+        ImGui::PopStyleColor();
+    }
+}
+
+} // namespace
+
+PanelActions drawPanel(ViewControls& controls, const PanelFigures& f) {
+    PanelActions actions;
+    ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(400, 0), ImGuiCond_FirstUseEver);
+    ImGui::Begin("simeco");
+    figures(f);
+    environment(controls, actions);
+    species(controls, actions);
+    simulation(controls, actions);
+    look(controls, actions);
+    ImGui::End();
+    return actions;
+}
+
+} // namespace simeco::view

@@ -36,6 +36,9 @@ layout(std430, binding = 4) buffer Volumes {
 layout(std430, binding = 5) writeonly buffer VolumeVertices {
     vec4 volumeVertices[];
 };
+layout(std430, binding = 6) readonly buffer LeafShapeTriangles {
+    uvec2 leafShapeTriangles[];  // per leaf shape: its first triangle in the leaf hull, and its count
+};
 layout(push_constant) uniform Push {
     ShadowVolumePush push;
 };
@@ -61,7 +64,12 @@ void main() {
     vec4 infinity = vec4(away, 0.0);
     bool capped = push.capped != 0u && away.y < 0.0;
 
-    for (uint t = 0u; t < push.triangleCount; ++t) {
+    // A leaf casts from its own shape's triangles of the mesh all shapes share.
+    uvec2 triangles = uvec2(0u, push.triangleCount);
+    if (push.kind == kOrganLeaf) {
+        triangles = o.shape < uint(leafShapeTriangles.length()) ? leafShapeTriangles[o.shape] : uvec2(0u);
+    }
+    for (uint t = triangles.x; t < triangles.x + triangles.y; ++t) {
         OrganVertex va = hullVertex(o, 3u * t);
         OrganVertex vb = hullVertex(o, 3u * t + 1u);
         OrganVertex vc = hullVertex(o, 3u * t + 2u);

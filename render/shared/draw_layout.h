@@ -120,7 +120,6 @@ struct ShadowVolumePush {
     float capHeight;
 };
 
-// toon_outline.comp: dark lines where depth or plant changes, over the copied frame buffers.
 // present/display_bytes.comp: a frame's colours as bytes for a window.
 struct DisplayPush {
     uint pixels;
@@ -129,6 +128,7 @@ struct DisplayPush {
     uint pad1;
 };
 
+// toon_outline.comp: dark lines where depth or plant changes, over the copied frame buffers.
 struct OutlinePush {
     vec4 lineColor;   // rgb, linear
     uint width;

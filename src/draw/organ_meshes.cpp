@@ -379,8 +379,10 @@ OrganMeshData buildOrganMeshes(const std::vector<ir::LeafModel>& leafModels) {
 
     b.begin();
     std::array<std::uint32_t, kSurfaceLastShape + 1> leafTriangles{};
+    const auto leafFirst = static_cast<std::uint32_t>(data.indices.size()) / 3;
     auto count = [&](std::uint32_t shape, std::uint32_t before) {
         leafTriangles[shape] = static_cast<std::uint32_t>(data.indices.size()) / 3 - before;
+        data.leafShapeTriangles.push_back({before - leafFirst, leafTriangles[shape]});
     };
     std::uint32_t before = static_cast<std::uint32_t>(data.indices.size()) / 3;
     addBlade(b, bladeOutline(lanceolateHalfWidth, 12), {0.35f, 0}, static_cast<float>(kLeafLanceolate));
@@ -413,6 +415,8 @@ OrganMeshData buildOrganMeshes(const std::vector<ir::LeafModel>& leafModels) {
     for (std::size_t k = 0; k < leafModels.size(); ++k) {
         const ir::LeafModel& model = leafModels[k];
         const float shape = static_cast<float>(kSurfaceLastShape + 1 + k);
+        data.leafShapeTriangles.push_back({static_cast<std::uint32_t>(data.indices.size()) / 3 - leafFirst,
+                                           static_cast<std::uint32_t>(model.normals.size())});
         for (std::size_t t = 0; t < model.normals.size(); ++t) {
             const auto& n = model.normals[t];
             std::uint32_t corner[3];
@@ -461,6 +465,7 @@ OrganMeshes::OrganMeshes(const vk::Context& context, const std::vector<ir::LeafM
                VK_BUFFER_USAGE_INDEX_BUFFER_BIT) {
     vk::uploadSpan(context, vertices_, std::span<const shared::MeshVertex>(data_.vertices));
     vk::uploadSpan(context, indices_, std::span<const std::uint32_t>(data_.indices));
+    leafShapeTriangles_ = vk::deviceBufferWith(context, std::span<const std::array<std::uint32_t, 2>>(data_.leafShapeTriangles));
 }
 
 } // namespace simeco::draw

@@ -36,6 +36,9 @@ struct OrganMeshData {
     std::array<MeshRange, shared::kOrganKinds> hulls;  // cast shadows, by kind
     // Whether a kind's hull is closed (casts from the faces turned away from the sun) or an open sheet.
     std::array<bool, shared::kOrganKinds> closedHull{};
+    // Per leaf shape (the built-in ones, then the models), its triangles within the leaf mesh: the first, counted
+    // from the leaf range's first, and how many. A leaf casts only its own shape's.
+    std::vector<std::array<std::uint32_t, 2>> leafShapeTriangles;
     // Hull triangles one instance of a kind can cast at most (the leaf hull holds every shape, one is cast).
     std::array<std::uint32_t, shared::kOrganKinds> castingTriangles{};
     MeshRange ground; // the square [-1, 1]^2 in x and z at y = 0, facing +y
@@ -59,11 +62,13 @@ public:
     const OrganMeshData& data() const { return data_; }
     const vk::Buffer& vertices() const { return vertices_; }
     const vk::Buffer& indices() const { return indices_; }
+    const vk::Buffer& leafShapeTriangles() const { return leafShapeTriangles_; }
 
 private:
     OrganMeshData data_;
     vk::Buffer vertices_;
     vk::Buffer indices_;
+    vk::Buffer leafShapeTriangles_;
 };
 
 } // namespace simeco::draw

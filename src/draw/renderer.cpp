@@ -15,6 +15,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "compute/shaders.h"
+#include "draw/downsample.h"
 #include "draw/draw_pipelines.h"
 #include "draw/organ_meshes.h"
 #include "draw/render_target.h"
@@ -207,11 +208,12 @@ FrameSetup Renderer::prepareWithin(std::uint32_t organs, const Bounds& bounds, c
 
 FrameSetup Renderer::prepareView(const Bounds& bounds, const RenderSettings& settings) {
     const VkPhysicalDeviceLimits& limits = context_.limits();
-    if (settings.width == 0 || settings.height == 0 || settings.width > limits.maxFramebufferWidth ||
-        settings.height > limits.maxFramebufferHeight) {
+    const std::uint64_t samples = std::max(settings.antialias, 1u);
+    if (settings.width == 0 || settings.height == 0 || settings.width * samples > limits.maxFramebufferWidth ||
+        settings.height * samples > limits.maxFramebufferHeight) {
         throw std::invalid_argument(fmt::format("cannot render a {} x {} image: the device allows 1 to {} x {}",
-                                                settings.width, settings.height, limits.maxFramebufferWidth,
-                                                limits.maxFramebufferHeight));
+                                                settings.width * samples, settings.height * samples,
+                                                limits.maxFramebufferWidth, limits.maxFramebufferHeight));
     }
     float sunLength = glm::length(settings.sunDirection);
     if (!(sunLength > 0.0f) || !std::isfinite(sunLength)) {
@@ -303,7 +305,7 @@ void Renderer::Resources::recordDrawInputs(VkCommandBuffer cmd, const std::vecto
                 push.capHeight = capHeight;
                 r.shadowVolumes.dispatch(cmd,
                                          {*parts[p].instances, *parts[p].table, r.meshes.vertices(), r.meshes.indices(),
-                                          r.volumeDraw, r.volumeVertices},
+                                          r.volumeDraw, r.volumeVertices, r.meshes.leafShapeTriangles()},
                                          push, r.shadowVolumes.groupsFor(counts.count[kind]));
             }
         }
@@ -468,10 +470,11 @@ Frame Renderer::render(const vk::Buffer& instances, const vk::Buffer& table, con
 }
 
 Frame Renderer::render(const std::vector<OrganPart>& parts, const Bounds& bounds, const RenderSettings& settings) {
+    const std::uint32_t samples = std::max(settings.antialias, 1u);
     FrameSetup setup = prepare(parts, bounds, settings);
-    const RenderTarget& target = offscreenTarget(settings.width, settings.height);
+    const RenderTarget& target = offscreenTarget(settings.width * samples, settings.height * samples);
     context_.submitAndWait([&](VkCommandBuffer cmd) { record(cmd, target, parts, setup); });
-    return readBack(target, setup);
+    return samples > 1 ? downsample(readBack(target, setup), samples) : readBack(target, setup);
 }
 
 } // namespace simeco::draw

@@ -15,7 +15,11 @@
 namespace simeco::app {
 
 void addPictureOptions(CLI::App& cmd, PictureOptions& options, const std::string& framed) {
-    cmd.add_option("--size", options.size, "image size WIDTHxHEIGHT (default 960x720)");
+    cmd.add_option("--size", options.size, fmt::format("image size WIDTHxHEIGHT (default {})", options.size));
+    cmd.add_option("--antialias", options.antialias,
+                   "samples along each side of a pixel: the frame drawn N times larger and each pixel averaged "
+                   "(default 1: none)")
+        ->check(CLI::Range(1u, 4u));
     cmd.add_option("--camera", options.camera,
                    fmt::format("azimuth,elevation[,distance] in degrees (default: framed on the {})", framed));
     cmd.add_option("--projection", options.projection,
@@ -82,6 +86,7 @@ std::pair<std::uint32_t, std::uint32_t> imageSize(const std::string& size) {
 draw::RenderSettings renderSettings(const PictureOptions& options, const ir::ViewSettings& view) {
     draw::RenderSettings s;
     std::tie(s.width, s.height) = imageSize(options.size);
+    s.antialias = options.antialias;
     if (!options.camera.empty()) {
         draw::Camera c;
         int read = std::sscanf(options.camera.c_str(), "%f,%f,%f", &c.azimuthDegrees, &c.elevationDegrees,

@@ -18,6 +18,7 @@ namespace simeco::app {
 // simeco's `render style:`, `shadows:`, `ground:`, `background:` lines), else the defaults.
 struct PictureOptions {
     std::string size = "960x720";
+    std::uint32_t antialias = 1;
     std::string camera;
     std::string projection;
     std::string style;
@@ -26,7 +27,7 @@ struct PictureOptions {
     std::string background;
 };
 
-// --size, --camera, --projection, --style, --shadows, --ground and --background; `framed` says what the default
+// --size, --antialias, --camera, --projection, --style, --shadows, --ground and --background; `framed` says what the default
 // camera frames.
 void addPictureOptions(CLI::App& cmd, PictureOptions& options, const std::string& framed);
 

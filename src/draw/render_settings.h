@@ -37,6 +37,10 @@ enum class Shadows {
 struct RenderSettings {
     std::uint32_t width = 960;
     std::uint32_t height = 720;
+    // Samples along each side of a pixel (supersampling): Renderer::render draws the frame at this many times the
+    // size and averages each pixel's samples, so thin stems and leaf edges are smooth rather than stepped or broken.
+    // Pixel lines and outlines keep their widths in the frame's own pixels.
+    std::uint32_t antialias = 1;
     // Empty: the default view angles, framed automatically on the bounds.
     std::optional<Camera> camera;
     Style style = Style::Lit;

@@ -136,36 +136,26 @@ check "render writes the light grid's views ($(head -c 300 "$work/lit.txt"))" $o
 [ -s "$work/cut.png" ]
 check "render draws a cloud in a colour map given on the command line ($(head -c 300 "$work/cut.txt"))" $?
 
+# Antialiased: the frame drawn at twice the size and brought to the size asked for.
+"$simeco" render "$source_dir/grammars/abop/fig1.24d.l" -n 4 --size 96x72 --antialias 2 -o "$work/aa.png" \
+  >"$work/aa.txt" 2>&1
+PYTHONPATH="$(dirname "$0")" python3 -c "
+import sys
+from png_pixels import read_png
+width, height, rows = read_png(sys.argv[1])
+assert (width, height) == (96, 72), (width, height)
+assert len({p for row in rows for p in row}) > 20  # edges blend the organs into the background
+" "$work/aa.png" && ! grep -qi validation "$work/aa.txt"
+check "render --antialias 2 draws a smoothed frame of the size asked for ($(head -c 300 "$work/aa.txt"))" $?
+
 # The cloud's growth in four frames: more of it drawn in each, every one framed alike.
 "$simeco" render "$source_dir/grammars/clouds/head-c1a.l" --frames 4 --size 80x60 -o "$work/grow.png" \
   >"$work/grow.txt" 2>&1
-python3 - "$work" <<'PY'
-import struct, sys, zlib
+PYTHONPATH="$(dirname "$0")" python3 - "$work" <<'PY'
+import sys
+from png_pixels import read_png
 def pixels(name):
-    """The RGB rows of an 8-bit RGB or RGBA PNG, unfiltered."""
-    data = open(f"{sys.argv[1]}/{name}", "rb").read()
-    width, height, depth, kind = struct.unpack(">IIBB", data[16:26])
-    assert depth == 8 and kind in (2, 6), (depth, kind)
-    at, idat = 8, b""
-    while at < len(data):
-        size, = struct.unpack(">I", data[at:at + 4])
-        if data[at + 4:at + 8] == b"IDAT":
-            idat += data[at + 8:at + 8 + size]
-        at += 12 + size
-    raw, bpp = zlib.decompress(idat), 3 if kind == 2 else 4
-    stride, rows, previous, at = width * bpp, [], bytearray(width * bpp), 0
-    for _ in range(height):
-        kind_of_filter, line = raw[at], bytearray(raw[at + 1:at + 1 + stride])
-        at += 1 + stride
-        for x in range(stride):
-            a = line[x - bpp] if x >= bpp else 0
-            b, c = previous[x], previous[x - bpp] if x >= bpp else 0
-            p = [0, a, b, (a + b) // 2][kind_of_filter] if kind_of_filter < 4 else \
-                min((a, b, c), key=lambda v: abs(a + b - c - v))
-            line[x] = (line[x] + p) & 255
-        rows.append([tuple(line[x * bpp:x * bpp + 3]) for x in range(width)])
-        previous = line
-    return rows
+    return read_png(f"{sys.argv[1]}/{name}")[2]
 drawn = []
 for k in range(1, 5):
     rows = pixels(f"grow-{k:05}.png")

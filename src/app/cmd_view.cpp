@@ -77,8 +77,8 @@ void registerViewCommand(CLI::App& app, CommandContext& ctx) {
     cmd->add_option("--plants", s.plants, "plants in the field; a scene's species take turns (default: the scene's)")
         ->check(CLI::Range(1u, 1000000u));
     cmd->add_option("--dt", s.dt, "simulated seconds per tick (default 1)")->check(CLI::Range(1e-3, 1e6));
-    addPictureOptions(*cmd, args->picture, "field");
     args->picture.size = "1280x720";
+    addPictureOptions(*cmd, args->picture, "field");
     addColormapOption(*cmd, s.colormap);
     addBackendOption(*cmd, s.backend, "derivation, growth and turtle: gpu (compute kernels) or cpu (references)");
     cmd->add_option("--max-modules", s.maxModules, "module budget (default: sized to this machine's memory)");

@@ -73,6 +73,22 @@ SimEntry measure(const SimBenchOptions& o, const std::string& scene, std::uint32
     e.medianTickSeconds = median(e.tickSeconds);
     e.ticksPerSecond = e.medianTickSeconds > 0 ? 1.0 / e.medianTickSeconds : 0;
     e.stages = {median(derive), median(grow), median(interpret), median(light), median(statistics), median(draw)};
+    if (e.notDrawn.empty()) {
+        const std::vector<draw::OrganPart> parts = field::organParts(simulation.interpretParts());
+        for (const draw::Shadows shadows : {draw::Shadows::Volume, draw::Shadows::None}) {
+            settings.shadows = shadows;
+            const double frame =
+                median(repeatRuns(o.warmUp, o.repeat, [&] {
+                    const Clock::time_point start = Clock::now();
+                    renderer.render(parts, framed, settings);
+                    return secondsSince(start);
+                }));
+            const double growing = 1.0 / std::max(e.medianTickSeconds - e.stages.draw + frame, 1e-9);
+            (shadows == draw::Shadows::Volume ? e.frameShadowsSeconds : e.frameNoShadowsSeconds) = frame;
+            (shadows == draw::Shadows::Volume ? e.growingFramesPerSecondShadows : e.growingFramesPerSecondNoShadows) =
+                growing;
+        }
+    }
     if (e.stages.grow > 0) {
         e.particlesPerSecond = double(simulation.modules()) / e.stages.grow;
         e.growBytesPerSecond = e.particlesPerSecond * kGrowBytesPerParticle;

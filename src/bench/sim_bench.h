@@ -1,7 +1,7 @@
 // `simeco bench --sim`: the growing field (field::Simulation) of the built-in garden at 100, 1,000 and 10,000
 // plants. Each field grows untimed to half its life, then ticks are timed as `simeco run` runs them: the due
 // plants derive, every particle grows, the turtle draws the field with each plant's statistics, and a frame is
-// rendered. Reported: ticks per second, particles per second of the growth tick and its bytes against the device's
+// rendered; then frames of the field with and without shadow volumes. Reported: ticks per second, particles per second of the growth tick and its bytes against the device's
 // copy bandwidth, and each stage's wall time (medians). See docs/BENCHMARKS.md.
 #pragma once
 
@@ -49,6 +49,10 @@ struct SimEntry {
     std::string status = "ok";     // or "failed" with `reason`
     std::string reason;
     std::string notDrawn; // why the field was not interpreted and drawn (larger than the device binds); its growth was
+    // A frame of the field as the timed ticks left it, with shadow volumes and without (medians), and the frames a
+    // second of a field that ticks once a frame, as `simeco view` grows it: 1 / (the tick's other stages + a frame).
+    double frameShadowsSeconds = 0, frameNoShadowsSeconds = 0;
+    double growingFramesPerSecondShadows = 0, growingFramesPerSecondNoShadows = 0;
 };
 
 struct SimBenchReport {

@@ -39,6 +39,12 @@ nlohmann::json simReportJson(const SimBenchReport& report) {
                                              {"light", e.stages.light},
                                              {"statistics", e.stages.statistics},
                                              {"draw", e.stages.draw}};
+            if (e.notDrawn.empty()) {
+                entry["frame_median_seconds"] = {{"shadow_volumes", e.frameShadowsSeconds},
+                                                 {"no_shadows", e.frameNoShadowsSeconds}};
+                entry["growing_frames_per_second"] = {{"shadow_volumes", e.growingFramesPerSecondShadows},
+                                                      {"no_shadows", e.growingFramesPerSecondNoShadows}};
+            }
         }
         entries.push_back(std::move(entry));
     }
@@ -63,7 +69,13 @@ std::string formatSimTable(const SimBenchReport& report) {
                            e.plants, e.batches, e.modules, e.ticksPerSecond, e.particlesPerSecond,
                            100.0 * e.copyFraction, e.stages.derive, e.stages.grow, e.stages.interpret, e.stages.light,
                            e.stages.statistics, e.stages.draw);
-        if (!e.notDrawn.empty()) out += fmt::format("{:>7} not drawn: {}\n", "", e.notDrawn);
+        if (!e.notDrawn.empty())
+            out += fmt::format("{:>7} not drawn: {}\n", "", e.notDrawn);
+        else
+            out += fmt::format("{:>7} a frame: {:.3f} s with shadow volumes, {:.3f} s without; growing a tick a frame: "
+                               "{:.2f} and {:.2f} frames/s\n",
+                               "", e.frameShadowsSeconds, e.frameNoShadowsSeconds, e.growingFramesPerSecondShadows,
+                               e.growingFramesPerSecondNoShadows);
     }
     return out;
 }

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 
-#include <fmt/format.h>
 #include <imgui.h>
 
 namespace simeco::view {
@@ -61,6 +60,7 @@ void look(ViewControls& c, PanelActions& actions) {
     const char* styles[] = {"lit", "toon", "outline", "paper-cut"};
     int style = int(c.style);
     if (ImGui::Combo("style", &style, styles, 4)) c.style = draw::Style(style);
+    ImGui::SliderFloat("resolution x", &c.renderScale, 0.25f, 2.0f, "%.2f");
     actions.screenshot = ImGui::Button("screenshot");
 }
 
@@ -71,14 +71,12 @@ void figures(const PanelFigures& f) {
                 static_cast<unsigned long long>(f.modules), static_cast<unsigned long long>(f.instances));
     for (const SpeciesHistory& h : f.history) {
         if (h.leafArea.empty()) continue;
+        ImGui::Text("%s: leaf area %.1f, light %.1f", h.name.c_str(), h.leafArea.back(), h.light.back());
+        if (h.leafArea.size() < 2) continue; // a plot needs two ticks
         ImGui::PushID(h.name.c_str());
-        ImGui::TextUnformatted(h.name.c_str());
-        const std::string leafArea = fmt::format("leaf area {:.1f}", h.leafArea.back());
-        const std::string light = fmt::format("light {:.1f}", h.light.back());
-        ImGui::PlotLines("##leaf area", h.leafArea.data(), int(h.leafArea.size()), 0, leafArea.c_str(), 0.0f, FLT_MAX,
-                         ImVec2(-1, 36));
-        ImGui::PlotLines("##light", h.light.data(), int(h.light.size()), 0, light.c_str(), 0.0f, FLT_MAX,
-                         ImVec2(-1, 36));
+        ImGui::PlotLines("##leaf area", h.leafArea.data(), int(h.leafArea.size()), 0, "leaf area", 0.0f, FLT_MAX,
+                         ImVec2(0, 32));
+        ImGui::PlotLines("##light", h.light.data(), int(h.light.size()), 0, "light", 0.0f, FLT_MAX, ImVec2(0, 32));
         ImGui::PopID();
     }
     if (f.picked) {

@@ -59,7 +59,7 @@ SpeciesControls& speciesOf(ViewControls& controls, std::string_view name, std::s
 
 std::string settingNames() {
     return "sun.azimuth, sun.elevation, sun.intensity, sky, daylight, rain, soil_ph, gravity, time_scale, paused, "
-           "seed, plants, shadows, style, species.K.grow_rate, species.K.geotropism, species.K.strength";
+           "seed, plants, shadows, style, render_scale, species.K.grow_rate, species.K.geotropism, species.K.strength";
 }
 
 void applySetting(ViewControls& c, std::string_view assignment) {
@@ -81,6 +81,7 @@ void applySetting(ViewControls& c, std::string_view assignment) {
     else if (name == "seed") c.seed = count(name, value, UINT32_MAX);
     else if (name == "plants") c.plants = count(name, value, 1000000);
     else if (name == "shadows") c.shadows = onOff(name, value);
+    else if (name == "render_scale") c.renderScale = number(name, value, 0.25f, 2.0f);
     else if (name == "style") {
         const std::optional<draw::Style> style = ir::pictureStyleNamed(std::string(value));
         if (!style) throw SettingError(fmt::format("--set style: '{}' is none of lit, toon, outline, paper-cut", value));
@@ -127,6 +128,7 @@ ViewControls controlsFor(const field::LiveEnvironment& environment, const draw::
     c.gravity = environment.gravity;
     c.shadows = settings.shadows == draw::Shadows::Volume;
     c.style = settings.style;
+    c.renderScale = float(settings.antialias);
     for (size_t s = 0; s < environment.species.size(); ++s)
         c.species.push_back({s < speciesNames.size() ? speciesNames[s] : fmt::format("{}", s),
                              environment.species[s]});

@@ -362,6 +362,8 @@ void runViewer(const ViewOptions& options) {
 
         // The field grows: its organs are drawn again once the frames reading them are done.
         const std::uint32_t ticks = controls.paused ? (actions.step ? 1u : 0u) : controls.timeScale;
+        live.ticked = 0;
+        live.tickSeconds = 0;
         if (ticks > 0) {
             waitForFrames();
             tickField(live, ticks);
@@ -382,15 +384,16 @@ void runViewer(const ViewOptions& options) {
             continue;
         }
         draw::RenderSettings settings = live.settings;
-        settings.width = extent.width;
-        settings.height = extent.height;
+        settings.width = std::max(1u, std::uint32_t(std::lround(float(extent.width) * controls.renderScale)));
+        settings.height = std::max(1u, std::uint32_t(std::lround(float(extent.height) * controls.renderScale)));
+        settings.antialias = 1; // the render scale samples, the presenter's scaling averages
         settings.camera = orbit.camera();
         settings.shadows = controls.shadows ? draw::Shadows::Volume : draw::Shadows::None;
         settings.style = controls.style;
         settings.sunDirection = sunDirection(controls.sunAzimuth, controls.sunElevation);
         settings.sunColor = live.settings.sunColor * controls.sunIntensity;
-        if (!slot.target || slot.target->width() != extent.width || slot.target->height() != extent.height)
-            slot.target = live.renderer->makeTarget(extent.width, extent.height);
+        if (!slot.target || slot.target->width() != settings.width || slot.target->height() != settings.height)
+            slot.target = live.renderer->makeTarget(settings.width, settings.height);
         const std::vector<draw::OrganPart> parts = field::organParts(live.organs);
         slot.setup = live.renderer->prepare(parts, live.framed, settings);
 
@@ -400,8 +403,8 @@ void runViewer(const ViewOptions& options) {
         begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
         VK_CHECK(vkBeginCommandBuffer(slot.cmd, &begin));
         live.renderer->record(slot.cmd, *slot.target, parts, slot.setup);
-        presenter.record(slot.cmd, draw::Renderer::finalColor(*slot.target, slot.setup), extent.width, extent.height,
-                         swapchain, *image);
+        presenter.record(slot.cmd, draw::Renderer::finalColor(*slot.target, slot.setup), settings.width,
+                         settings.height, swapchain, *image);
         overlay.record(slot.cmd, *image);
         VK_CHECK(vkEndCommandBuffer(slot.cmd));
 
@@ -432,12 +435,11 @@ void runViewer(const ViewOptions& options) {
             waitFor(device, slot);
             int windowWidth = 1, windowHeight = 1;
             glfwGetWindowSize(window.handle(), &windowWidth, &windowHeight);
-            const auto px = std::uint32_t(std::clamp(pickX * extent.width / std::max(windowWidth, 1), 0.0,
-                                                     double(extent.width - 1)));
-            const auto py = std::uint32_t(std::clamp(pickY * extent.height / std::max(windowHeight, 1),
-                                                     0.0, double(extent.height - 1)));
+            const std::uint32_t w = slot.target->width(), h = slot.target->height();
+            const auto px = std::uint32_t(std::clamp(pickX * w / std::max(windowWidth, 1), 0.0, double(w - 1)));
+            const auto py = std::uint32_t(std::clamp(pickY * h / std::max(windowHeight, 1), 0.0, double(h - 1)));
             const auto* ids = reinterpret_cast<const std::uint32_t*>(slot.target->plant().mapped());
-            const std::uint32_t plant = ids[size_t(py) * extent.width + px];
+            const std::uint32_t plant = ids[size_t(py) * w + px];
             pickedPlant = plant == draw::Frame::kNoId ? std::nullopt : std::optional<std::uint32_t>(plant);
             picking = false;
         }

@@ -37,5 +37,8 @@ for e in entries:
     for stage in ("derive", "grow", "interpret", "light", "statistics", "draw"):
         check(stage in stages and stages[stage] >= 0, f"{where}: stage {stage} missing")
     check(sum(stages.values()) <= 1.5 * max(e.get("tick_seconds", [0])), f"{where}: stages outlast the ticks")
+    for key in ("frame_median_seconds", "growing_frames_per_second"):
+        for shadows in ("shadow_volumes", "no_shadows"):
+            positive(e.get(key, {}), shadows, f"{where}: {key}")
 finish(f"sim bench smoke test: {len(entries)} fields")
 PY

@@ -465,7 +465,8 @@ OrganMeshes::OrganMeshes(const vk::Context& context, const std::vector<ir::LeafM
                VK_BUFFER_USAGE_INDEX_BUFFER_BIT) {
     vk::uploadSpan(context, vertices_, std::span<const shared::MeshVertex>(data_.vertices));
     vk::uploadSpan(context, indices_, std::span<const std::uint32_t>(data_.indices));
-    leafShapeTriangles_ = vk::deviceBufferWith(context, std::span<const std::array<std::uint32_t, 2>>(data_.leafShapeTriangles));
+    leafShapeTriangles_ =
+        vk::deviceBufferWith(context, std::span<const std::array<std::uint32_t, 2>>(data_.leafShapeTriangles));
 }
 
 } // namespace simeco::draw

@@ -53,6 +53,21 @@ Attachment::Attachment(const vk::Context& context, VkFormat imageFormat, VkImage
                        VkImageUsageFlags usage, std::uint32_t width, std::uint32_t height)
     : DeviceImage(context, imageFormat, aspect, usage, {width, height}, 1, 1), format(imageFormat) {}
 
+void imageTransition(VkCommandBuffer cmd, VkImage image, std::uint32_t levels, std::uint32_t layers, VkImageLayout from,
+                     VkImageLayout to, VkPipelineStageFlags srcStage, VkAccessFlags srcAccess,
+                     VkPipelineStageFlags dstStage, VkAccessFlags dstAccess) {
+    VkImageMemoryBarrier barrier{};
+    barrier.sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER;
+    barrier.srcAccessMask = srcAccess;
+    barrier.dstAccessMask = dstAccess;
+    barrier.oldLayout = from;
+    barrier.newLayout = to;
+    barrier.srcQueueFamilyIndex = barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    barrier.image = image;
+    barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, levels, 0, layers};
+    vkCmdPipelineBarrier(cmd, srcStage, dstStage, 0, 0, nullptr, 0, nullptr, 1, &barrier);
+}
+
 void memoryDependency(VkCommandBuffer cmd, VkPipelineStageFlags srcStages, VkAccessFlags srcAccess,
                       VkPipelineStageFlags dstStages, VkAccessFlags dstAccess) {
     VkMemoryBarrier barrier{};

@@ -40,6 +40,12 @@ struct Attachment : DeviceImage {
     VkFormat format = VK_FORMAT_UNDEFINED;
 };
 
+// A layout transition of an image's colour levels [0, levels) and layers [0, layers), after the given stages and
+// accesses and before the others.
+void imageTransition(VkCommandBuffer cmd, VkImage image, std::uint32_t levels, std::uint32_t layers, VkImageLayout from,
+                     VkImageLayout to, VkPipelineStageFlags srcStage, VkAccessFlags srcAccess,
+                     VkPipelineStageFlags dstStage, VkAccessFlags dstAccess);
+
 // One dependency over all memory between the given stages and accesses.
 void memoryDependency(VkCommandBuffer cmd, VkPipelineStageFlags srcStages, VkAccessFlags srcAccess,
                       VkPipelineStageFlags dstStages, VkAccessFlags dstAccess);

@@ -84,7 +84,8 @@ void applySetting(ViewControls& c, std::string_view assignment) {
     else if (name == "render_scale") c.renderScale = number(name, value, 0.25f, 2.0f);
     else if (name == "style") {
         const std::optional<draw::Style> style = ir::pictureStyleNamed(std::string(value));
-        if (!style) throw SettingError(fmt::format("--set style: '{}' is none of lit, toon, outline, paper-cut", value));
+        if (!style)
+            throw SettingError(fmt::format("--set style: '{}' is none of lit, toon, outline, paper-cut", value));
         c.style = *style;
     } else if (name.starts_with("species.")) {
         const std::string_view rest = name.substr(8);

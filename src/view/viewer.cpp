@@ -209,6 +209,12 @@ void runViewer(const ViewOptions& options) {
     const auto waitForFrames = [&] {
         for (const FrameSlot& slot : slots) waitFor(device, slot);
     };
+    // Another field in place of the drawn one: its renderer makes the frames' targets anew.
+    const auto replaceField = [&](LiveField& field, LiveField&& next) {
+        waitForFrames();
+        for (FrameSlot& slot : slots) slot.target.reset();
+        field = std::move(next);
+    };
 
     field::SimulationOptions simulationOptions = options.simulation;
     LiveField live = makeField(context, options, simulationOptions);
@@ -258,14 +264,13 @@ void runViewer(const ViewOptions& options) {
             if (!failed && written != seen) {
                 seen = written;
                 try {
-                    LiveField reloaded = makeField(context, options, simulationOptions);
-                    waitForFrames();
-                    live = std::move(reloaded);
+                    replaceField(live, makeField(context, options, simulationOptions));
                     ViewControls fresh =
                         controlsFor(live.simulation->environment(), live.settings, speciesNames(*live.simulation));
                     // The user's controls stay where the scene keeps its species.
                     if (fresh.species.size() == controls.species.size()) {
-                        for (size_t s = 0; s < fresh.species.size(); ++s) fresh.species[s].factors = controls.species[s].factors;
+                        for (size_t s = 0; s < fresh.species.size(); ++s)
+                            fresh.species[s].factors = controls.species[s].factors;
                         fresh.sunAzimuth = controls.sunAzimuth;
                         fresh.sunElevation = controls.sunElevation;
                     }
@@ -309,9 +314,7 @@ void runViewer(const ViewOptions& options) {
             reset.seed = controls.seed;
             reset.plants = controls.plants;
             try {
-                LiveField fresh = makeField(context, options, reset);
-                waitForFrames();
-                live = std::move(fresh);
+                replaceField(live, makeField(context, options, reset));
                 live.simulation->setEnvironment(environmentOf(controls, live.simulation->environment()));
                 drawAgain(live);
                 simulationOptions = reset;

@@ -2,7 +2,7 @@
 # Checks of `simeco view` in a virtual X display (xvfb-run) on the Vulkan device there is: the window opens and
 # draws frames, and its screenshot shows plants; moving the sun with --set moves the shadows to the other side of
 # the plants; a broken edit of the scene on disk is reported at its line and column while the field before it keeps
-# growing; bad settings and a missing display are refused.
+# growing, and an edit that loads starts the field again; bad settings and a missing display are refused.
 # Usage: view_test.sh SIMECO SOURCE_DIR
 set -u
 simeco=$1
@@ -65,19 +65,34 @@ assert east < -5 and west > 5, (east, west)
 PY
 check "moving the sun moves the shadows" $?
 
+# edit_while_viewing NAME FRAMES TEXT SEEN: views the scene for FRAMES frames, appends TEXT to it once the first is
+# drawn, waits until the log shows SEEN (a grep pattern), and sets $code to the viewer's exit status.
+edit_while_viewing() {
+  local log="$work/$1.txt"
+  view "$log" --frames "$2" --screenshot "$work/$1.png" &
+  local viewer=$!
+  for _ in $(seq 600); do grep -q 'the first frame is drawn' "$log" && break; sleep 0.2; done
+  printf '%b' "$3" >>"$scene"
+  for _ in $(seq 600); do grep -q "$4" "$log" && break; sleep 0.2; done
+  wait $viewer
+  code=$?
+}
+
 # A broken edit while the field grows: its error at its place, the field before it going on to the last frame.
-view "$work/edit.txt" --frames 40 --screenshot "$work/edit.png" &
-viewer=$!
-for _ in $(seq 600); do grep -q 'the first frame is drawn' "$work/edit.txt" && break; sleep 0.2; done
-printf 'Plant Broken {\n  Position = (0, 0\n' >>"$scene"
-for _ in $(seq 600); do grep -q 'garden.eco:[0-9]*:[0-9]*: error' "$work/edit.txt" && break; sleep 0.2; done
-wait $viewer
-code=$?
+edit_while_viewing edit 40 'Plant Broken {\n  Position = (0, 0\n' 'garden.eco:[0-9]*:[0-9]*: error'
 grep -qE 'garden.eco:[0-9]+:[0-9]+: error: ' "$work/edit.txt"
 check "a broken edit is reported at its line and column ($(grep error "$work/edit.txt" | head -c 300))" $?
 [ $code -eq 0 ] && grep -q '40 frames, 40.0 s of growth, 4 plants' "$work/edit.txt" && [ -s "$work/edit.png" ]
 ok=$?
 check "the field before the edit keeps growing (exit $code: $(tail -n 1 "$work/edit.txt"))" $ok
+
+# An edit that loads: the field starts again from the edited scene, the camera and panel kept.
+cp "$source_dir/scenes/garden.eco" "$scene"
+edit_while_viewing reload 30 '\n// edited while the viewer runs\n' 'garden.eco: reloaded'
+[ $code -eq 0 ] && grep -q 'garden.eco: reloaded' "$work/reload.txt" && clean "$work/reload.txt" &&
+  grep -q '30 frames, ' "$work/reload.txt" && [ -s "$work/reload.png" ]
+ok=$?
+check "an edit that loads starts the field again (exit $code: $(grep -v warning "$work/reload.txt" | head -c 300))" $ok
 
 # Bad settings and screenshots: exit 2, nothing written.
 cp "$source_dir/scenes/garden.eco" "$scene"

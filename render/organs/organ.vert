@@ -1,6 +1,7 @@
 #version 460
 // Organs, instanced: one draw per organ kind whose instances come from the instance buffer by gl_InstanceIndex
-// (the draw's firstInstance is the kind's first instance). The ground plane is drawn with the same shader.
+// (the draw's firstInstance is the kind's first instance), but leaves: a draw per leaf shape, whose instances come
+// through the leaf order (organs/leaf_shapes.comp). The ground plane is drawn with the same shader.
 #extension GL_GOOGLE_include_directive : require
 
 #include "render/shared/draw_layout.h"
@@ -14,6 +15,9 @@ layout(std430, set = 0, binding = 0) readonly buffer Instances {
 };
 layout(std140, set = 0, binding = 1) uniform Frame {
     DrawFrame frame;
+};
+layout(std430, set = 0, binding = 3) readonly buffer LeafOrder {
+    uint leafOrder[];
 };
 layout(push_constant) uniform Push {
     DrawPush push;
@@ -57,7 +61,7 @@ void main() {
         outUv = vec2(0.0);
         outTexture = -1;
     } else {
-        OrganInstance o = instances[gl_InstanceIndex];
+        OrganInstance o = instances[push.kind == kOrganLeaf ? leafOrder[gl_InstanceIndex] : gl_InstanceIndex];
         OrganVertex v = organVertex(o, push.kind, inPosition, inNormal, frame.cameraRight.xyz, frame.cameraUp.xyz,
                                     frame.cameraPosition, frame.options.w != 0u);
         world = v.position;

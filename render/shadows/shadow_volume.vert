@@ -22,5 +22,14 @@ const uint kFaces[kVolumeCorners] = uint[](0u, 2u, 1u,  // near cap
                                            2u, 0u, 3u, 2u, 3u, 5u); // side c a
 
 void main() {
-    gl_Position = frame.viewProj * inCorners[kFaces[gl_VertexIndex]];
+    const uint corner = kFaces[gl_VertexIndex];
+    // A side inside a flat sheet (its first near corner's w is 3) is left out: its triangles go outside the view.
+    const uint face = gl_VertexIndex / 3u;
+    const uint side = face >= 2u ? (face - 2u) / 2u : 3u;
+    if (side < 3u && inCorners[side].w > 2.0) {
+        gl_Position = vec4(2.0, 0.0, 0.5, 1.0);
+        return;
+    }
+    const vec4 p = inCorners[corner];
+    gl_Position = frame.viewProj * (corner < 3u ? vec4(p.xyz, 1.0) : p);
 }

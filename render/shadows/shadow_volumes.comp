@@ -39,6 +39,9 @@ layout(std430, binding = 5) writeonly buffer VolumeVertices {
 layout(std430, binding = 6) readonly buffer LeafShapeTriangles {
     uvec2 leafShapeTriangles[];  // per leaf shape: its first triangle in the leaf hull, and its count
 };
+layout(std430, binding = 7) readonly buffer InteriorEdges {
+    uint interiorEdges[];  // per triangle of the index buffer: bit k, its edge k is inside a flat sheet
+};
 layout(push_constant) uniform Push {
     ShadowVolumePush push;
 };
@@ -80,6 +83,8 @@ void main() {
         vec3 b = vb.position;
         vec3 c = vc.position;
         float facing = dot(cross(b - a, c - a), away);
+        // Edges k = (a, b), (b, c), (c, a) inside a flat sheet: neighbouring volumes' sides there cancel.
+        uint inside = push.closedHull != 0u ? 0u : interiorEdges[push.firstIndex / 3u + t];
         if (push.closedHull != 0u) {
             if (!(facing > 0.0)) {
                 continue;  // lit (or edge-on, or degenerate): the volume starts at the far side of the hull
@@ -92,6 +97,8 @@ void main() {
                 vec3 swap = b;
                 b = c;
                 c = swap;
+                // (a, c, b): its edges are the old (c, a), (b, c), (a, b).
+                inside = ((inside >> 2u) & 1u) | (inside & 2u) | ((inside & 1u) << 2u);
             }
             // The push is relative to the organ, so it stays small next to the organ at any scene scale.
             float size = push.kind == kOrganTriangle ? max(distance(a, b), max(distance(b, c), distance(c, a)))
@@ -109,9 +116,10 @@ void main() {
         }
         // Wound so that (a, c, b) looks towards the sun (shadow_volume.vert makes the faces of it). A triangle
         // reaching below the plane goes to infinity whole.
-        volumeVertices[base + 0u] = vec4(a, 1.0);
-        volumeVertices[base + 1u] = vec4(b, 1.0);
-        volumeVertices[base + 2u] = vec4(c, 1.0);
+        // A near corner's w says whether the side from it to the next corner is left out (3) or drawn (1).
+        volumeVertices[base + 0u] = vec4(a, (inside & 1u) != 0u ? 3.0 : 1.0);
+        volumeVertices[base + 1u] = vec4(b, (inside & 2u) != 0u ? 3.0 : 1.0);
+        volumeVertices[base + 2u] = vec4(c, (inside & 4u) != 0u ? 3.0 : 1.0);
         bool toPlane = capped && min(a.y, min(b.y, c.y)) > push.capHeight;
         vec3 corners[3] = vec3[](a, b, c);
         for (uint k = 0u; k < 3u; ++k) {

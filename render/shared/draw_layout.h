@@ -90,6 +90,22 @@ struct DrawArgsPush {
     uint firstIndex[kOrganKinds];
     int vertexOffset[kOrganKinds];
     uint volumeCapacity;  // vertices; a multiple of kVolumeVerticesPerTriangle
+    uint leafShapes;      // shapes in the leaf mesh, each drawn by a draw of its own after the kinds' draws
+};
+
+// Leaf shapes a frame draws apart (the built-in ones and the models after them): each shape's leaves are gathered
+// into an order of their own (organs/leaf_shapes.comp) and drawn with that shape's triangles alone.
+SIMECO_CONST kDrawMaxLeafShapes = 128u;
+
+// organs/leaf_shapes.comp: counts the leaves of each shape (kLeafShapesCount), then, once draw_args.comp has made
+// the counts into each shape's first place in the order, writes every leaf's instance there (kLeafShapesScatter).
+SIMECO_CONST kLeafShapesCount = 0u;
+SIMECO_CONST kLeafShapesScatter = 1u;
+struct LeafShapesPush {
+    uint pass;
+    uint shapes;
+    uint pad0;
+    uint pad1;
 };
 
 // The indirect draw of the shadow volumes, preceded by the counter the volume kernel allocates with.
@@ -146,7 +162,8 @@ static_assert(sizeof(MeshVertex) == 32);
 static_assert(sizeof(DrawFrame) == 64 + 11 * 16);
 static_assert(sizeof(DisplayPush) == 16);
 static_assert(sizeof(DrawPush) == 8);
-static_assert(sizeof(DrawArgsPush) == 64);
+static_assert(sizeof(DrawArgsPush) == 68);
+static_assert(sizeof(LeafShapesPush) == 16);
 static_assert(sizeof(VolumeDraw) == 32);
 static_assert(sizeof(ShadowVolumePush) == 80);
 static_assert(sizeof(OutlinePush) == 48);

@@ -179,10 +179,11 @@ vk::UniquePipeline createPipeline(VkDevice device, VkPipelineLayout layout, VkRe
 DrawPipelines::DrawPipelines(const vk::Context& context, VkRenderPass renderPass)
     : cmdPushDescriptorSet_(context.cmdPushDescriptorSet()) {
     VkDevice device = context.device();
-    std::array<VkDescriptorSetLayoutBinding, 3> bindings{{
+    std::array<VkDescriptorSetLayoutBinding, 4> bindings{{
         {0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr},
         {1, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
         {2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
+        {3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr},
     }};
     setLayout_ = vk::createPushDescriptorSetLayout(device, bindings);
     layout_ = vk::createPipelineLayout(device, setLayout_.get(),
@@ -198,21 +199,24 @@ DrawPipelines::DrawPipelines(const vk::Context& context, VkRenderPass renderPass
 }
 
 void DrawPipelines::pushDescriptors(VkCommandBuffer cmd, const vk::Buffer& instances,
-                                    const vk::Buffer& frameConstants, const VkDescriptorImageInfo& textures) const {
-    std::array<VkDescriptorBufferInfo, 2> infos{{
+                                    const vk::Buffer& frameConstants, const VkDescriptorImageInfo& textures,
+                                    const vk::Buffer& leafOrder) const {
+    std::array<VkDescriptorBufferInfo, 4> infos{{
         {instances.handle(), 0, instances.bindingRange()},
         {frameConstants.handle(), 0, frameConstants.bindingRange()},
+        {},
+        {leafOrder.handle(), 0, leafOrder.bindingRange()},
     }};
-    std::array<VkWriteDescriptorSet, 3> writes{};
+    std::array<VkWriteDescriptorSet, 4> writes{};
     for (std::uint32_t i = 0; i < writes.size(); ++i) {
         writes[i].sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
         writes[i].dstBinding = i;
         writes[i].descriptorCount = 1;
-        writes[i].descriptorType = i == 0   ? VK_DESCRIPTOR_TYPE_STORAGE_BUFFER
-                                   : i == 1 ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER
-                                            : VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-        if (i < 2) writes[i].pBufferInfo = &infos[i];
-        else writes[i].pImageInfo = &textures;
+        writes[i].descriptorType = i == 1   ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER
+                                   : i == 2 ? VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER
+                                            : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+        if (i == 2) writes[i].pImageInfo = &textures;
+        else writes[i].pBufferInfo = &infos[i];
     }
     cmdPushDescriptorSet_(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.get(), 0,
                           static_cast<std::uint32_t>(writes.size()), writes.data());

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <numbers>
 #include <span>
 
@@ -362,6 +363,20 @@ void addRoseBlossom(MeshBuilder& b, float shape) {
                  0.0f);
 }
 
+// Marks the edges two of the triangles [first, first + count) share (by their vertices, as a fan shares them).
+void markInteriorEdges(OrganMeshData& data, std::uint32_t first, std::uint32_t count) {
+    std::map<std::pair<std::uint32_t, std::uint32_t>, int> uses;
+    auto edge = [&](std::uint32_t t, std::uint32_t k) {
+        const std::uint32_t a = data.indices[3 * t + k], b = data.indices[3 * t + (k + 1) % 3];
+        return std::make_pair(std::min(a, b), std::max(a, b));
+    };
+    for (std::uint32_t t = first; t < first + count; ++t)
+        for (std::uint32_t k = 0; k < 3; ++k) ++uses[edge(t, k)];
+    for (std::uint32_t t = first; t < first + count; ++t)
+        for (std::uint32_t k = 0; k < 3; ++k)
+            if (uses[edge(t, k)] == 2) data.interiorEdges[t] |= 1u << k;
+}
+
 } // namespace
 
 OrganMeshData buildOrganMeshes(const std::vector<ir::LeafModel>& leafModels) {
@@ -430,6 +445,9 @@ OrganMeshData buildOrganMeshes(const std::vector<ir::LeafModel>& leafModels) {
     }
     data.organs[kOrganLeaf] = b.end();
     data.hulls[kOrganLeaf] = data.organs[kOrganLeaf];
+    data.interiorEdges.assign(data.indices.size() / 3, 0);
+    for (std::uint32_t shape = 0; shape <= kLeafLastShape; ++shape)
+        markInteriorEdges(data, leafFirst + data.leafShapeTriangles[shape][0], data.leafShapeTriangles[shape][1]);
 
     b.begin();
     for (int corner = 0; corner < 3; ++corner) {
@@ -467,6 +485,7 @@ OrganMeshes::OrganMeshes(const vk::Context& context, const std::vector<ir::LeafM
     vk::uploadSpan(context, indices_, std::span<const std::uint32_t>(data_.indices));
     leafShapeTriangles_ =
         vk::deviceBufferWith(context, std::span<const std::array<std::uint32_t, 2>>(data_.leafShapeTriangles));
+    interiorEdges_ = vk::deviceBufferWith(context, std::span<const std::uint32_t>(data_.interiorEdges));
 }
 
 } // namespace simeco::draw

@@ -39,6 +39,10 @@ struct OrganMeshData {
     // Per leaf shape (the built-in ones, then the models), its triangles within the leaf mesh: the first, counted
     // from the leaf range's first, and how many. A leaf casts only its own shape's.
     std::vector<std::array<std::uint32_t, 2>> leafShapeTriangles;
+    // Per triangle of the index buffer: bit k set where its edge k (corner k to corner k + 1) is shared with another
+    // triangle of the same flat leaf shape. The shadow volumes of a flat sheet's triangles meet there with opposite
+    // sides, which cancel in the stencil, so they leave them out (shadow_volume.vert). Zero elsewhere.
+    std::vector<std::uint32_t> interiorEdges;
     // Hull triangles one instance of a kind can cast at most (the leaf hull holds every shape, one is cast).
     std::array<std::uint32_t, shared::kOrganKinds> castingTriangles{};
     MeshRange ground; // the square [-1, 1]^2 in x and z at y = 0, facing +y
@@ -63,12 +67,14 @@ public:
     const vk::Buffer& vertices() const { return vertices_; }
     const vk::Buffer& indices() const { return indices_; }
     const vk::Buffer& leafShapeTriangles() const { return leafShapeTriangles_; }
+    const vk::Buffer& interiorEdges() const { return interiorEdges_; }
 
 private:
     OrganMeshData data_;
     vk::Buffer vertices_;
     vk::Buffer indices_;
     vk::Buffer leafShapeTriangles_;
+    vk::Buffer interiorEdges_;
 };
 
 } // namespace simeco::draw

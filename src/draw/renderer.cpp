@@ -90,7 +90,8 @@ void requireFeatures(const vk::Context& context) {
 struct Renderer::Resources {
     Resources(const vk::Context& context, const ir::DrawAssets& assets)
         : meshes(context, assets.models), textures(context, assets.textures), renderPass(createRenderPass(context)), pipelines(context, renderPass.get()),
-          drawArgs(kernel(context, "organs/draw_args")), shadowVolumes(kernel(context, "shadows/shadow_volumes")),
+          drawArgs(kernel(context, "organs/draw_args")), leafShapes(kernel(context, "organs/leaf_shapes")),
+          shadowVolumes(kernel(context, "shadows/shadow_volumes")),
           toonOutline(kernel(context, "styles/toon_outline")),
           frameConstants(context, sizeof(shared::DrawFrame), vk::MemoryUsage::DeviceLocal,
                          VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT),
@@ -102,11 +103,14 @@ struct Renderer::Resources {
     UniqueRenderPass renderPass;
     DrawPipelines pipelines;
     vk::ComputePipeline drawArgs;
+    vk::ComputePipeline leafShapes;
     vk::ComputePipeline shadowVolumes;
     vk::ComputePipeline toonOutline;
     // Written by each frame's own commands (vkCmdUpdateBuffer), so frames in flight each draw with theirs.
     vk::Buffer frameConstants;
-    std::vector<vk::Buffer> drawCommands; // one per part of the organs, added as frames need them
+    // One of each per part of the organs, added as frames need them: the indirect draws (the kinds', then a leaf
+    // shape's each), each leaf shape's count and next place, and the leaves' order by shape (one word an instance).
+    std::vector<vk::Buffer> drawCommands, leafBuckets, leafOrders;
     vk::Buffer volumeDraw;
     vk::Buffer volumeVertices;
     std::uint32_t volumeCapacity = 0; // vertices
@@ -136,6 +140,9 @@ CameraView frameCamera(const Bounds& bounds, const RenderSettings& settings) {
 Renderer::Renderer(const vk::Context& context, const ir::DrawAssets& assets) : context_(context) {
     requireFeatures(context);
     resources_ = std::make_unique<Resources>(context, assets);
+    if (resources_->meshes.data().leafShapeTriangles.size() > shared::kDrawMaxLeafShapes)
+        throw std::invalid_argument(fmt::format("a frame draws at most {} leaf models",
+                                                shared::kDrawMaxLeafShapes - shared::kSurfaceLastShape - 1));
 }
 
 Renderer::~Renderer() = default;
@@ -266,6 +273,16 @@ void Renderer::Resources::recordDrawInputs(VkCommandBuffer cmd, const std::vecto
         args.vertexOffset[kind] = mesh.organs[kind].vertexOffset;
     }
     args.volumeCapacity = shadows ? r.volumeCapacity : 0;
+    args.leafShapes = static_cast<std::uint32_t>(mesh.leafShapeTriangles.size());
+    // The leaves of each part by shape: counted, laid out by draw_args.comp, then written in their places. Sized by
+    // the parts' instance buffers: the counts may be the device's alone.
+    auto leafPass = [&](std::uint32_t pass) {
+        for (size_t p = 0; p < parts.size(); ++p) {
+            const std::uint64_t capacity = parts[p].instances->size() / sizeof(shared::OrganInstance);
+            r.leafShapes.dispatch(cmd, {*parts[p].instances, *parts[p].table, r.leafBuckets[p], r.leafOrders[p]},
+                                  shared::LeafShapesPush{pass, args.leafShapes, 0, 0}, r.leafShapes.groupsFor(capacity));
+        }
+    };
 
     // The instances and table come from earlier submissions of other passes.
     memoryDependency(cmd, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_ACCESS_MEMORY_WRITE_BIT,
@@ -273,11 +290,13 @@ void Renderer::Resources::recordDrawInputs(VkCommandBuffer cmd, const std::vecto
                          VK_PIPELINE_STAGE_VERTEX_SHADER_BIT,
                      VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT);
     vk::cmdFill(cmd, r.volumeDraw, 0);
+    for (size_t p = 0; p < parts.size(); ++p) vk::cmdFill(cmd, r.leafBuckets[p], 0);
     vkCmdUpdateBuffer(cmd, r.frameConstants.handle(), 0, sizeof(frame), &frame);
     memoryDependency(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
                      VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_VERTEX_SHADER_BIT |
                          VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
                      VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_UNIFORM_READ_BIT);
+    leafPass(shared::kLeafShapesCount);
     if (shadows) {
         // Where the ground receives the shadows, below everything drawn above it, the volumes end a little under
         // it: far enough that their far caps stay behind it in depth, unless the camera looks from below.
@@ -305,18 +324,29 @@ void Renderer::Resources::recordDrawInputs(VkCommandBuffer cmd, const std::vecto
                 push.capHeight = capHeight;
                 r.shadowVolumes.dispatch(cmd,
                                          {*parts[p].instances, *parts[p].table, r.meshes.vertices(), r.meshes.indices(),
-                                          r.volumeDraw, r.volumeVertices, r.meshes.leafShapeTriangles()},
+                                          r.volumeDraw, r.volumeVertices, r.meshes.leafShapeTriangles(),
+                                          r.meshes.interiorEdges()},
                                          push, r.shadowVolumes.groupsFor(counts.count[kind]));
             }
         }
         memoryDependency(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
                          VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
     }
-    for (size_t p = 0; p < parts.size(); ++p)
-        r.drawArgs.dispatch(cmd, {*parts[p].table, r.drawCommands[p], r.volumeDraw}, args, 1);
     memoryDependency(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
-                     VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_VERTEX_INPUT_BIT,
-                     VK_ACCESS_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_VERTEX_ATTRIBUTE_READ_BIT);
+                     VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+    for (size_t p = 0; p < parts.size(); ++p)
+        r.drawArgs.dispatch(cmd,
+                            {*parts[p].table, r.drawCommands[p], r.volumeDraw, r.leafBuckets[p],
+                             r.meshes.leafShapeTriangles()},
+                            args, 1);
+    memoryDependency(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
+                     VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+    leafPass(shared::kLeafShapesScatter);
+    memoryDependency(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
+                     VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_VERTEX_INPUT_BIT |
+                         VK_PIPELINE_STAGE_VERTEX_SHADER_BIT,
+                     VK_ACCESS_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_VERTEX_ATTRIBUTE_READ_BIT |
+                         VK_ACCESS_SHADER_READ_BIT);
 }
 
 void Renderer::Resources::recordScene(VkCommandBuffer cmd, const RenderTarget& into,
@@ -353,17 +383,22 @@ void Renderer::Resources::recordScene(VkCommandBuffer cmd, const RenderTarget& i
             vkCmdPushConstants(cmd, r.pipelines.layout(), VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
                                sizeof(constants), &constants);
         };
+        const auto shapes = static_cast<std::uint32_t>(mesh.leafShapeTriangles.size());
         auto drawKind = [&](std::uint32_t kind, size_t part) {
             push(kind);
-            vkCmdDrawIndexedIndirect(cmd, r.drawCommands[part].handle(), kind * kDrawCommandSize, 1,
-                                     static_cast<std::uint32_t>(kDrawCommandSize));
+            // Leaves by shape: the kind's own record draws nothing.
+            const std::uint32_t first = kind == shared::kOrganLeaf ? kOrganKinds : kind;
+            const std::uint32_t draws = kind == shared::kOrganLeaf ? shapes : 1;
+            for (std::uint32_t d = first; d < first + draws; ++d)
+                vkCmdDrawIndexedIndirect(cmd, r.drawCommands[part].handle(), d * kDrawCommandSize, 1,
+                                         static_cast<std::uint32_t>(kDrawCommandSize));
         };
         for (Culling culling : {Culling::Back, Culling::None}) {
             vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
                               sunPass ? r.pipelines.sun(culling) : r.pipelines.base(culling));
             for (size_t part = 0; part < parts.size(); ++part) {
                 r.pipelines.pushDescriptors(cmd, *parts[part].instances, r.frameConstants,
-                                            r.textures.descriptor());
+                                            r.textures.descriptor(), r.leafOrders[part]);
                 for (std::uint32_t kind = 0; kind < kOrganKinds; ++kind) {
                     if (mesh.closedHull[kind] == (culling == Culling::Back)) {
                         drawKind(kind, part);
@@ -423,9 +458,21 @@ void Renderer::record(VkCommandBuffer cmd, const RenderTarget& target, const vk:
 void Renderer::record(VkCommandBuffer cmd, const RenderTarget& target, const std::vector<OrganPart>& parts,
                       const FrameSetup& setup) {
     Resources& r = *resources_;
-    while (r.drawCommands.size() < parts.size())
-        r.drawCommands.emplace_back(context_, kOrganKinds * kDrawCommandSize, vk::MemoryUsage::DeviceLocal,
-                                    VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT);
+    while (r.drawCommands.size() < parts.size()) {
+        r.drawCommands.emplace_back(context_, (kOrganKinds + shared::kDrawMaxLeafShapes) * kDrawCommandSize,
+                                    vk::MemoryUsage::DeviceLocal, VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT);
+        r.leafBuckets.emplace_back(context_, 2 * shared::kDrawMaxLeafShapes * sizeof(std::uint32_t),
+                                   vk::MemoryUsage::DeviceLocal);
+        r.leafOrders.emplace_back();
+    }
+    // A part's leaf order holds a word for each instance its buffer can hold.
+    for (size_t p = 0; p < parts.size(); ++p) {
+        const VkDeviceSize bytes =
+            std::max<VkDeviceSize>(parts[p].instances->size() / sizeof(shared::OrganInstance), 1) * sizeof(std::uint32_t);
+        if (r.leafOrders[p] && r.leafOrders[p].size() >= bytes) continue;
+        if (r.leafOrders[p]) r.retired.emplace_back(r.framesPrepared, std::move(r.leafOrders[p]));
+        r.leafOrders[p] = vk::Buffer(context_, bytes, vk::MemoryUsage::DeviceLocal);
+    }
     r.recordDrawInputs(cmd, parts, setup);
     r.recordScene(cmd, target, parts, setup);
     target.cmdCopyToBuffers(cmd);

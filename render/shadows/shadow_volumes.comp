@@ -52,6 +52,41 @@ OrganVertex hullVertex(OrganInstance o, uint corner) {
                        false);
 }
 
+// The volume of triangle (a, b, c), wound so that (a, c, b) looks towards the sun, with the sides of the edges
+// `inside` marks (bit k: the edge from corner k to the next) left out.
+void castVolume(vec3 a, vec3 b, vec3 c, uint inside, vec3 away, bool capped) {
+    // The capacity is a multiple of the vertices per triangle, so a claim either fits whole or starts past
+    // the end; draw_args.comp clamps the draw to the capacity.
+    uint base = atomicAdd(volumes.allocated, kVolumeVerticesPerTriangle);
+    if (base + kVolumeVerticesPerTriangle > push.capacity) {
+        return;
+    }
+    // shadow_volume.vert makes the faces. A triangle reaching below the plane goes to infinity whole. A near
+    // corner's w says whether the side from it to the next corner is left out (3) or drawn (1).
+    volumeVertices[base + 0u] = vec4(a, (inside & 1u) != 0u ? 3.0 : 1.0);
+    volumeVertices[base + 1u] = vec4(b, (inside & 2u) != 0u ? 3.0 : 1.0);
+    volumeVertices[base + 2u] = vec4(c, (inside & 4u) != 0u ? 3.0 : 1.0);
+    bool toPlane = capped && min(a.y, min(b.y, c.y)) > push.capHeight;
+    vec3 corners[3] = vec3[](a, b, c);
+    for (uint k = 0u; k < 3u; ++k) {
+        vec3 p = corners[k];
+        volumeVertices[base + 3u + k] = toPlane ? vec4(p + away * ((p.y - push.capHeight) / -away.y), 1.0)
+                                                : vec4(away, 0.0);
+    }
+}
+
+// A triangle of a sheet with nothing to keep it off lit surfaces (a stem's ribbon, inside the stem), turned to
+// look away from the sun.
+void castSheet(vec3 a, vec3 b, vec3 c, uint inside, vec3 away, bool capped) {
+    float facing = dot(cross(b - a, c - a), away);
+    if (facing == 0.0 || isnan(facing)) return;
+    if (facing < 0.0) {
+        castVolume(a, c, b, ((inside >> 2u) & 1u) | (inside & 2u) | ((inside & 1u) << 2u), away, capped);
+    } else {
+        castVolume(a, b, c, inside, away, capped);
+    }
+}
+
 void main() {
     uint group = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
     uint index = group * gl_WorkGroupSize.x + gl_LocalInvocationID.x;
@@ -64,8 +99,24 @@ void main() {
         return;
     }
     vec3 away = push.awayFromSun.xyz;
-    vec4 infinity = vec4(away, 0.0);
     bool capped = push.capped != 0u && away.y < 0.0;
+    // A round stem casts the shadow of its silhouette: the ribbon through its axis across the light, as wide as the
+    // drawn stem is across its flats, in two triangles (their shared diagonal's sides cancel). Along the light it
+    // casts from its hull.
+    if (push.kind == kOrganStem && o.shape == kLineCylinder) {
+        vec3 across = cross(o.heading.xyz, away);
+        float width = length(across);
+        if (width > 1e-3) {
+            across *= kStemRibbonHalfWidth / width;
+            vec3 p0 = o.position.xyz;
+            vec3 p1 = p0 + o.position.w * o.heading.xyz;
+            vec3 a0 = p0 - o.heading.w * across, b0 = p0 + o.heading.w * across;
+            vec3 a1 = p1 - o.up.w * across, b1 = p1 + o.up.w * across;
+            castSheet(a0, a1, b1, 4u, away, capped);
+            castSheet(a0, b1, b0, 1u, away, capped);
+            return;
+        }
+    }
 
     // A leaf casts from its own shape's triangles of the mesh all shapes share.
     uvec2 triangles = uvec2(0u, push.triangleCount);
@@ -108,24 +159,6 @@ void main() {
             b += shift;
             c += shift;
         }
-        // The capacity is a multiple of the vertices per triangle, so a claim either fits whole or starts past
-        // the end; draw_args.comp clamps the draw to the capacity.
-        uint base = atomicAdd(volumes.allocated, kVolumeVerticesPerTriangle);
-        if (base + kVolumeVerticesPerTriangle > push.capacity) {
-            continue;
-        }
-        // Wound so that (a, c, b) looks towards the sun (shadow_volume.vert makes the faces of it). A triangle
-        // reaching below the plane goes to infinity whole.
-        // A near corner's w says whether the side from it to the next corner is left out (3) or drawn (1).
-        volumeVertices[base + 0u] = vec4(a, (inside & 1u) != 0u ? 3.0 : 1.0);
-        volumeVertices[base + 1u] = vec4(b, (inside & 2u) != 0u ? 3.0 : 1.0);
-        volumeVertices[base + 2u] = vec4(c, (inside & 4u) != 0u ? 3.0 : 1.0);
-        bool toPlane = capped && min(a.y, min(b.y, c.y)) > push.capHeight;
-        vec3 corners[3] = vec3[](a, b, c);
-        for (uint k = 0u; k < 3u; ++k) {
-            vec3 p = corners[k];
-            volumeVertices[base + 3u + k] = toPlane ? vec4(p + away * ((p.y - push.capHeight) / -away.y), 1.0)
-                                                    : infinity;
-        }
+        castVolume(a, b, c, inside, away, capped);
     }
 }

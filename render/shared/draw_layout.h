@@ -24,6 +24,10 @@ SIMECO_CONST_FLOAT kBlossomEyeRed = 0.92f;
 SIMECO_CONST_FLOAT kBlossomEyeGreen = 0.62f;
 SIMECO_CONST_FLOAT kBlossomEyeBlue = 0.04f;
 
+// A round stem's shadow is cast by a ribbon through its axis this many radii wide on either side: cos(pi / 12), the
+// distance of the flats of the 12-sided drawn stem (kStemSides), so that the ribbon stays inside it.
+SIMECO_CONST_FLOAT kStemRibbonHalfWidth = 0.96592583f;
+
 // DrawPush.kind beyond the organ kinds: the ground plane, which reads no instance.
 SIMECO_CONST kDrawGround = kOrganKinds;
 

@@ -304,7 +304,10 @@ void Renderer::Resources::recordDrawInputs(VkCommandBuffer cmd, const std::vecto
         const float capHeight = groundHeight - kVolumeCapDepth * frame.groundPlane.w;
         const bool capped = setup.settings.ground && setup.camera.position.y > groundHeight;
         for (size_t p = 0; p < parts.size(); ++p) {
-            for (std::uint32_t kind = 0; kind < kOrganKinds; ++kind) {
+            // The broad shadows first (leaves, polygons, spheres, discs, then stems): volumes past the buffer's
+            // room are dropped.
+            for (const std::uint32_t kind : {shared::kOrganLeaf, shared::kOrganTriangle, shared::kOrganSphere,
+                                             shared::kOrganDisc, shared::kOrganStem}) {
                 const shared::OrganTable& counts = setup.partCounts.empty() ? setup.counts : setup.partCounts[p];
                 if (counts.count[kind] == 0) {
                     continue;

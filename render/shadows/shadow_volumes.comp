@@ -36,8 +36,8 @@ layout(std430, binding = 4) buffer Volumes {
 layout(std430, binding = 5) writeonly buffer VolumeVertices {
     vec4 volumeVertices[];
 };
-layout(std430, binding = 6) readonly buffer LeafShapeTriangles {
-    uvec2 leafShapeTriangles[];  // per leaf shape: its first triangle in the leaf hull, and its count
+layout(std430, binding = 6) readonly buffer LeafHullTriangles {
+    uvec2 leafHullTriangles[];  // per leaf shape: its first triangle in the leaf hull, and its count
 };
 layout(std430, binding = 7) readonly buffer InteriorEdges {
     uint interiorEdges[];  // per triangle of the index buffer: bit k, its edge k is inside a flat sheet
@@ -118,10 +118,10 @@ void main() {
         }
     }
 
-    // A leaf casts from its own shape's triangles of the mesh all shapes share.
+    // A leaf casts from its own shape's triangles of the hull all shapes share.
     uvec2 triangles = uvec2(0u, push.triangleCount);
     if (push.kind == kOrganLeaf) {
-        triangles = o.shape < uint(leafShapeTriangles.length()) ? leafShapeTriangles[o.shape] : uvec2(0u);
+        triangles = o.shape < uint(leafHullTriangles.length()) ? leafHullTriangles[o.shape] : uvec2(0u);
     }
     for (uint t = triangles.x; t < triangles.x + triangles.y; ++t) {
         OrganVertex va = hullVertex(o, 3u * t);

@@ -66,6 +66,9 @@ public:
         triangle(middle, previous, first);
     }
 
+    // Triangles in the index buffer so far.
+    std::uint32_t triangles() const { return static_cast<std::uint32_t>(data_.indices.size()) / 3; }
+
     MeshRange end() const {
         return {firstIndex_, static_cast<std::uint32_t>(data_.indices.size()) - firstIndex_,
                 static_cast<std::int32_t>(base_)};
@@ -228,8 +231,12 @@ void addStalk(MeshBuilder& b, float end, float halfWidth, float shape) {
     b.triangle(s0, s2, s3);
 }
 
+// How finely a surface is cut: as drawn, or the few triangles its shadow is cast from (a shadow on the ground or
+// on another organ hardly shows a leaf's teeth, and each casting triangle is a volume the device must draw).
+enum class Detail { Drawn, Shadow };
+
 // A pinnate compound leaf: a rachis with two pairs of leaflets and a terminal one.
-void addCompound(MeshBuilder& b, float shape) {
+void addCompound(MeshBuilder& b, float shape, Detail detail) {
     const float rachisEnd = 0.62f;
     addStalk(b, rachisEnd, 0.03f, shape);
 
@@ -246,7 +253,7 @@ void addCompound(MeshBuilder& b, float shape) {
         {{0.42f, 0}, -0.8f, 0.45f, 0.30f},
         {{rachisEnd - 0.02f, 0}, 0.0f, 0.40f, 0.55f},
     };
-    std::vector<glm::vec2> unit = bladeOutline(ovateHalfWidth, 6);
+    std::vector<glm::vec2> unit = bladeOutline(ovateHalfWidth, detail == Detail::Drawn ? 6 : 2);
     for (const Leaflet& leaflet : leaflets) {
         glm::vec2 along(std::cos(leaflet.angle), std::sin(leaflet.angle));
         glm::vec2 across(-along.y, along.x);
@@ -260,11 +267,11 @@ void addCompound(MeshBuilder& b, float shape) {
 
 // Oxalis' leaf: a long petiole and, at its end, three obcordate leaflets (notched at their tips) spread like
 // a clover's.
-void addTrifoliate(MeshBuilder& b, float shape) {
+void addTrifoliate(MeshBuilder& b, float shape, Detail detail) {
     const float petioleEnd = 0.58f;
     addStalk(b, petioleEnd, 0.018f, shape);
     // The cordate outline reversed along its midrib: narrow at the petiole, notched at the tip.
-    std::vector<glm::vec2> obcordate = cordateOutline(24);
+    std::vector<glm::vec2> obcordate = cordateOutline(detail == Detail::Drawn ? 24 : 8);
     float reach = 0.0f; // the lobes reach past the notch: the leaflet spans [0, reach] before it is scaled
     for (glm::vec2& p : obcordate) reach = std::max(reach, p.x = 1.0f - p.x);
     for (glm::vec2& p : obcordate) p /= reach;
@@ -315,10 +322,11 @@ float roundHalfWidth(float x) {
 }
 
 // Oxalis' flower: five obovate petals spreading from a shallow funnel around a yellow eye.
-void addStarBlossom(MeshBuilder& b, float shape) {
-    const std::vector<glm::vec2> petal = bladeOutline(obovateHalfWidth, 3);
+void addStarBlossom(MeshBuilder& b, float shape, Detail detail) {
+    const std::vector<glm::vec2> petal = bladeOutline(obovateHalfWidth, detail == Detail::Drawn ? 3 : 2);
     for (int k = 0; k < 5; ++k)
         addPetal(b, glm::vec3(0), 2.0f * kPi * float(k) / 5.0f, 0.35f, 0.5f, 0.36f, petal, shape, 0.0f);
+    if (detail == Detail::Shadow) return; // the eye lies in the petals' shadow
     std::vector<glm::vec2> eye;
     for (int k = 0; k < 6; ++k) eye.push_back(0.1f * glm::vec2(std::cos(kPi * k / 3.0f), std::sin(kPi * k / 3.0f)));
     b.fanIn({0.03f, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0, 0}, eye, shape, 1.0f);
@@ -326,9 +334,9 @@ void addStarBlossom(MeshBuilder& b, float shape) {
 
 // Lantana's flower head: florets on a dome, the inner ones yellow, the outer ones of the organ's colour, each a
 // small cross of four rounded lobes.
-void addHeadBlossom(MeshBuilder& b, float shape) {
-    std::vector<glm::vec2> floret;
-    for (int k = 0; k < 8; ++k) {
+void addHeadBlossom(MeshBuilder& b, float shape, Detail detail) {
+    std::vector<glm::vec2> floret; // the shadow's: the four lobes' tips
+    for (int k = 0; k < 8; k += detail == Detail::Drawn ? 1 : 2) {
         const float angle = kPi * float(k) / 4.0f, radius = k % 2 == 0 ? 0.2f : 0.13f;
         floret.push_back(radius * glm::vec2(std::cos(angle), std::sin(angle)));
     }
@@ -351,8 +359,9 @@ void addHeadBlossom(MeshBuilder& b, float shape) {
 }
 
 // A rose: three rings of rounded petals, each ring smaller and more upright than the one outside it.
-void addRoseBlossom(MeshBuilder& b, float shape) {
-    const std::vector<glm::vec2> petal = bladeOutline(roundHalfWidth, 3), small = bladeOutline(roundHalfWidth, 2);
+void addRoseBlossom(MeshBuilder& b, float shape, Detail detail) {
+    const std::vector<glm::vec2> petal = bladeOutline(roundHalfWidth, detail == Detail::Drawn ? 3 : 2),
+                                 small = bladeOutline(roundHalfWidth, 2);
     for (int k = 0; k < 5; ++k) {
         const float around = 2.0f * kPi * float(k) / 5.0f;
         addPetal(b, glm::vec3(0), around, 0.45f, 0.5f, 0.42f, petal, shape, 0.0f);
@@ -361,6 +370,43 @@ void addRoseBlossom(MeshBuilder& b, float shape) {
     for (int k = 0; k < 3; ++k)
         addPetal(b, glm::vec3(0.04f, 0, 0), 2.0f * kPi * float(k) / 3.0f + 0.3f, 1.3f, 0.26f, 0.26f, small, shape,
                  0.0f);
+}
+
+// Every surface shape in one mesh (the built-in leaves and blossoms, then the models), each vertex tagged with its
+// shape, at the given detail; `shapes` gets each shape's first triangle (counted from the mesh's first) and count.
+MeshRange addSurfaces(MeshBuilder& b, const std::vector<ir::LeafModel>& leafModels, Detail detail,
+                      std::vector<std::array<std::uint32_t, 2>>& shapes) {
+    const bool drawn = detail == Detail::Drawn;
+    b.begin();
+    const std::uint32_t first = b.triangles();
+    auto add = [&](auto&& build) {
+        const std::uint32_t before = b.triangles();
+        build(static_cast<float>(shapes.size()));
+        shapes.push_back({before - first, b.triangles() - before});
+    };
+    add([&](float s) { addBlade(b, bladeOutline(lanceolateHalfWidth, drawn ? 12 : 3), {0.35f, 0}, s); });
+    add([&](float s) { addBlade(b, bladeOutline(ovateHalfWidth, drawn ? 12 : 3), {0.45f, 0}, s); });
+    add([&](float s) { addBlade(b, cordateOutline(drawn ? 32 : 10), {0.4f, 0}, s); });
+    add([&](float s) { addCompound(b, s, detail); });
+    add([&](float s) { addTrifoliate(b, s, detail); });
+    add([&](float s) { addBlade(b, drawn ? serrateOutline(24) : bladeOutline(ovateHalfWidth, 4), {0.45f, 0}, s); });
+    add([&](float s) { addStarBlossom(b, s, detail); });
+    add([&](float s) { addHeadBlossom(b, s, detail); });
+    add([&](float s) { addRoseBlossom(b, s, detail); });
+    for (const ir::LeafModel& model : leafModels) {
+        add([&](float s) {
+            for (std::size_t t = 0; t < model.normals.size(); ++t) {
+                const auto& n = model.normals[t];
+                std::uint32_t corner[3];
+                for (std::size_t c = 0; c < 3; ++c) {
+                    const auto& p = model.corners[3 * t + c];
+                    corner[c] = b.vertex({p[0], p[1], p[2]}, {n[0], n[1], n[2]}, 0, s);
+                }
+                b.triangle(corner[0], corner[1], corner[2]);
+            }
+        });
+    }
+    return b.end();
 }
 
 // Marks the edges two of the triangles [first, first + count) share (by their vertices, as a fan shares them).
@@ -392,62 +438,12 @@ OrganMeshData buildOrganMeshes(const std::vector<ir::LeafModel>& leafModels) {
     data.organs[kOrganDisc] = addDisc(b, 20);
     data.hulls[kOrganDisc] = data.organs[kOrganDisc];
 
-    b.begin();
-    std::array<std::uint32_t, kSurfaceLastShape + 1> leafTriangles{};
-    const auto leafFirst = static_cast<std::uint32_t>(data.indices.size()) / 3;
-    auto count = [&](std::uint32_t shape, std::uint32_t before) {
-        leafTriangles[shape] = static_cast<std::uint32_t>(data.indices.size()) / 3 - before;
-        data.leafShapeTriangles.push_back({before - leafFirst, leafTriangles[shape]});
-    };
-    std::uint32_t before = static_cast<std::uint32_t>(data.indices.size()) / 3;
-    addBlade(b, bladeOutline(lanceolateHalfWidth, 12), {0.35f, 0}, static_cast<float>(kLeafLanceolate));
-    count(kLeafLanceolate, before);
-    before = static_cast<std::uint32_t>(data.indices.size()) / 3;
-    addBlade(b, bladeOutline(ovateHalfWidth, 12), {0.45f, 0}, static_cast<float>(kLeafOvate));
-    count(kLeafOvate, before);
-    before = static_cast<std::uint32_t>(data.indices.size()) / 3;
-    addBlade(b, cordateOutline(32), {0.4f, 0}, static_cast<float>(kLeafCordate));
-    count(kLeafCordate, before);
-    before = static_cast<std::uint32_t>(data.indices.size()) / 3;
-    addCompound(b, static_cast<float>(kLeafCompound));
-    count(kLeafCompound, before);
-    before = static_cast<std::uint32_t>(data.indices.size()) / 3;
-    addTrifoliate(b, static_cast<float>(kLeafTrifoliate));
-    count(kLeafTrifoliate, before);
-    before = static_cast<std::uint32_t>(data.indices.size()) / 3;
-    addBlade(b, serrateOutline(24), {0.45f, 0}, static_cast<float>(kLeafSerrate));
-    count(kLeafSerrate, before);
-    before = static_cast<std::uint32_t>(data.indices.size()) / 3;
-    addStarBlossom(b, static_cast<float>(kBlossomStar));
-    count(kBlossomStar, before);
-    before = static_cast<std::uint32_t>(data.indices.size()) / 3;
-    addHeadBlossom(b, static_cast<float>(kBlossomHead));
-    count(kBlossomHead, before);
-    before = static_cast<std::uint32_t>(data.indices.size()) / 3;
-    addRoseBlossom(b, static_cast<float>(kBlossomRose));
-    count(kBlossomRose, before);
-    std::uint32_t mostModelTriangles = 0;
-    for (std::size_t k = 0; k < leafModels.size(); ++k) {
-        const ir::LeafModel& model = leafModels[k];
-        const float shape = static_cast<float>(kSurfaceLastShape + 1 + k);
-        data.leafShapeTriangles.push_back({static_cast<std::uint32_t>(data.indices.size()) / 3 - leafFirst,
-                                           static_cast<std::uint32_t>(model.normals.size())});
-        for (std::size_t t = 0; t < model.normals.size(); ++t) {
-            const auto& n = model.normals[t];
-            std::uint32_t corner[3];
-            for (std::size_t c = 0; c < 3; ++c) {
-                const auto& p = model.corners[3 * t + c];
-                corner[c] = b.vertex({p[0], p[1], p[2]}, {n[0], n[1], n[2]}, 0, shape);
-            }
-            b.triangle(corner[0], corner[1], corner[2]);
-        }
-        mostModelTriangles = std::max(mostModelTriangles, static_cast<std::uint32_t>(model.normals.size()));
-    }
-    data.organs[kOrganLeaf] = b.end();
-    data.hulls[kOrganLeaf] = data.organs[kOrganLeaf];
+    data.organs[kOrganLeaf] = addSurfaces(b, leafModels, Detail::Drawn, data.leafShapeTriangles);
+    data.hulls[kOrganLeaf] = addSurfaces(b, leafModels, Detail::Shadow, data.leafHullTriangles);
     data.interiorEdges.assign(data.indices.size() / 3, 0);
+    const std::uint32_t hullFirst = data.hulls[kOrganLeaf].firstIndex / 3;
     for (std::uint32_t shape = 0; shape <= kLeafLastShape; ++shape)
-        markInteriorEdges(data, leafFirst + data.leafShapeTriangles[shape][0], data.leafShapeTriangles[shape][1]);
+        markInteriorEdges(data, hullFirst + data.leafHullTriangles[shape][0], data.leafHullTriangles[shape][1]);
 
     b.begin();
     for (int corner = 0; corner < 3; ++corner) {
@@ -471,8 +467,9 @@ OrganMeshData buildOrganMeshes(const std::vector<ir::LeafModel>& leafModels) {
         data.closedHull[kind] = kind == kOrganStem || kind == kOrganSphere;
         data.castingTriangles[kind] = data.hulls[kind].triangleCount();
     }
-    data.castingTriangles[kOrganLeaf] =
-        std::max(*std::max_element(leafTriangles.begin(), leafTriangles.end()), mostModelTriangles);
+    data.castingTriangles[kOrganLeaf] = 0;
+    for (const std::array<std::uint32_t, 2>& shape : data.leafHullTriangles)
+        data.castingTriangles[kOrganLeaf] = std::max(data.castingTriangles[kOrganLeaf], shape[1]);
     return data;
 }
 
@@ -485,6 +482,8 @@ OrganMeshes::OrganMeshes(const vk::Context& context, const std::vector<ir::LeafM
     vk::uploadSpan(context, indices_, std::span<const std::uint32_t>(data_.indices));
     leafShapeTriangles_ =
         vk::deviceBufferWith(context, std::span<const std::array<std::uint32_t, 2>>(data_.leafShapeTriangles));
+    leafHullTriangles_ =
+        vk::deviceBufferWith(context, std::span<const std::array<std::uint32_t, 2>>(data_.leafHullTriangles));
     interiorEdges_ = vk::deviceBufferWith(context, std::span<const std::uint32_t>(data_.interiorEdges));
 }
 

@@ -36,14 +36,15 @@ struct OrganMeshData {
     std::array<MeshRange, shared::kOrganKinds> hulls;  // cast shadows, by kind
     // Whether a kind's hull is closed (casts from the faces turned away from the sun) or an open sheet.
     std::array<bool, shared::kOrganKinds> closedHull{};
-    // Per leaf shape (the built-in ones, then the models), its triangles within the leaf mesh: the first, counted
-    // from the leaf range's first, and how many. A leaf casts only its own shape's.
-    std::vector<std::array<std::uint32_t, 2>> leafShapeTriangles;
+    // Per leaf shape (the built-in ones, then the models), its triangles within the drawn leaf mesh and within the
+    // leaf hull (a shape cut coarser, which its shadow is cast from): the first, counted from the range's first, and
+    // how many. A leaf is drawn, and casts, from its own shape's alone.
+    std::vector<std::array<std::uint32_t, 2>> leafShapeTriangles, leafHullTriangles;
     // Per triangle of the index buffer: bit k set where its edge k (corner k to corner k + 1) is shared with another
     // triangle of the same flat leaf shape. The shadow volumes of a flat sheet's triangles meet there with opposite
     // sides, which cancel in the stencil, so they leave them out (shadow_volume.vert). Zero elsewhere.
     std::vector<std::uint32_t> interiorEdges;
-    // Hull triangles one instance of a kind can cast at most (the leaf hull holds every shape, one is cast).
+    // Hull triangles one instance of a kind can cast at most (a leaf's: its shape's in the leaf hull).
     std::array<std::uint32_t, shared::kOrganKinds> castingTriangles{};
     MeshRange ground; // the square [-1, 1]^2 in x and z at y = 0, facing +y
 };
@@ -67,6 +68,7 @@ public:
     const vk::Buffer& vertices() const { return vertices_; }
     const vk::Buffer& indices() const { return indices_; }
     const vk::Buffer& leafShapeTriangles() const { return leafShapeTriangles_; }
+    const vk::Buffer& leafHullTriangles() const { return leafHullTriangles_; }
     const vk::Buffer& interiorEdges() const { return interiorEdges_; }
 
 private:
@@ -74,6 +76,7 @@ private:
     vk::Buffer vertices_;
     vk::Buffer indices_;
     vk::Buffer leafShapeTriangles_;
+    vk::Buffer leafHullTriangles_;
     vk::Buffer interiorEdges_;
 };
 

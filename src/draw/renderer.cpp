@@ -327,7 +327,7 @@ void Renderer::Resources::recordDrawInputs(VkCommandBuffer cmd, const std::vecto
                 push.capHeight = capHeight;
                 r.shadowVolumes.dispatch(cmd,
                                          {*parts[p].instances, *parts[p].table, r.meshes.vertices(), r.meshes.indices(),
-                                          r.volumeDraw, r.volumeVertices, r.meshes.leafShapeTriangles(),
+                                          r.volumeDraw, r.volumeVertices, r.meshes.leafHullTriangles(),
                                           r.meshes.interiorEdges()},
                                          push, r.shadowVolumes.groupsFor(counts.count[kind]));
             }

@@ -1,11 +1,13 @@
 // The procedural organ meshes on the CPU: closed meshes wound outwards and watertight, hulls inside what is
 // drawn, leaf blades flat in the heading-left plane.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <set>
 #include <tuple>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 #include <gtest/gtest.h>
@@ -135,12 +137,52 @@ TEST(OrganMeshesTest, LeafBladesLieInTheHeadingLeftPlaneFacingUp) {
     ASSERT_EQ(trianglesPerShape.size(), shared::kLeafLastShape + 1);
     for (std::uint32_t shape = 0; shape <= shared::kLeafLastShape; ++shape) {
         EXPECT_GT(trianglesPerShape[static_cast<int>(shape)], 8u) << "shape " << shape;
-        EXPECT_LE(trianglesPerShape[static_cast<int>(shape)], d.castingTriangles[shared::kOrganLeaf]);
+        EXPECT_EQ(trianglesPerShape[static_cast<int>(shape)], d.leafShapeTriangles[shape][1]) << "shape " << shape;
     }
 }
 
-// Blossoms: each of its own shape within a unit diameter about the heading, turned to face along it, no more
-// triangles than a leaf instance casts; the star's and the head's centres are tinted to the eye's yellow, the
+// Each leaf shape casts its shadow from a coarser cut of itself in the leaf hull: fewer triangles, tagged with its
+// shape, within the drawn shape's extent and covering most of its area (a flat blade's, in its plane).
+TEST(OrganMeshesTest, LeafHullsAreCoarserCutsOfTheDrawnShapes) {
+    OrganMeshData d = draw::buildOrganMeshes();
+    ASSERT_EQ(d.leafHullTriangles.size(), d.leafShapeTriangles.size());
+    struct Extent {
+        glm::vec3 min{1e9f}, max{-1e9f};
+        float area = 0.0f; // in the heading-left plane
+    };
+    auto extentOf = [&](const MeshRange& range, std::array<std::uint32_t, 2> triangles, std::uint32_t shape) {
+        Extent e;
+        for (std::uint32_t t = triangles[0]; t < triangles[0] + triangles[1]; ++t) {
+            glm::vec3 p[3];
+            for (int k = 0; k < 3; ++k) {
+                const shared::MeshVertex& v =
+                    d.vertices[static_cast<std::size_t>(range.vertexOffset) + d.indices[range.firstIndex + 3 * t + k]];
+                EXPECT_EQ(std::lround(v.normal.w), shape);
+                p[k] = {v.position.x, v.position.y, v.position.z};
+                e.min = glm::min(e.min, p[k]);
+                e.max = glm::max(e.max, p[k]);
+            }
+            e.area += 0.5f * glm::cross(p[1] - p[0], p[2] - p[0]).z;
+        }
+        return e;
+    };
+    for (std::uint32_t shape = 0; shape <= shared::kSurfaceLastShape; ++shape) {
+        const Extent drawn = extentOf(d.organs[shared::kOrganLeaf], d.leafShapeTriangles[shape], shape);
+        const Extent hull = extentOf(d.hulls[shared::kOrganLeaf], d.leafHullTriangles[shape], shape);
+        EXPECT_GT(d.leafHullTriangles[shape][1], 0u) << "shape " << shape;
+        EXPECT_LT(d.leafHullTriangles[shape][1], d.leafShapeTriangles[shape][1]) << "shape " << shape;
+        EXPECT_LE(d.leafHullTriangles[shape][1], d.castingTriangles[shared::kOrganLeaf]);
+        for (int axis = 0; axis < 3; ++axis) {
+            EXPECT_GE(hull.min[axis], drawn.min[axis] - 1e-5f) << "shape " << shape;
+            EXPECT_LE(hull.max[axis], drawn.max[axis] + 1e-5f) << "shape " << shape;
+        }
+        if (shape <= shared::kLeafLastShape) {
+            EXPECT_GT(hull.area, 0.75f * drawn.area) << "shape " << shape;
+        }
+    }
+}
+
+// Blossoms: each of its own shape within a unit diameter about the heading, turned to face along it; the star's and the head's centres are tinted to the eye's yellow, the
 // rose's petals keep the organ's colour.
 TEST(OrganMeshesTest, BlossomsFaceAlongTheHeadingWithinAUnitDiameter) {
     OrganMeshData d = draw::buildOrganMeshes();
@@ -177,7 +219,7 @@ TEST(OrganMeshesTest, BlossomsFaceAlongTheHeadingWithinAUnitDiameter) {
     ASSERT_EQ(blossoms.size(), std::size_t(shared::kSurfaceLastShape - shared::kLeafLastShape));
     for (const auto& [shape, b] : blossoms) {
         EXPECT_GT(b.triangles, 30u) << shape;
-        EXPECT_LE(b.triangles, d.castingTriangles[shared::kOrganLeaf]) << shape;
+        EXPECT_EQ(b.triangles, d.leafShapeTriangles[shape][1]) << shape;
         EXPECT_GT(b.facing, 0.1f) << shape;
     }
     EXPECT_GT(blossoms[shared::kBlossomStar].tinted, 0u);

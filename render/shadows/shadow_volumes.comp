@@ -33,8 +33,18 @@ layout(std430, binding = 3) readonly buffer MeshIndices {
 layout(std430, binding = 4) buffer Volumes {
     VolumeDraw volumes;
 };
-layout(std430, binding = 5) writeonly buffer VolumeVertices {
-    vec4 volumeVertices[];
+// The volume buffer in kVolumeWindows windows of push.window vertices each.
+layout(std430, binding = 5) writeonly buffer VolumeWindow0 {
+    vec4 volumeWindow0[];
+};
+layout(std430, binding = 8) writeonly buffer VolumeWindow1 {
+    vec4 volumeWindow1[];
+};
+layout(std430, binding = 9) writeonly buffer VolumeWindow2 {
+    vec4 volumeWindow2[];
+};
+layout(std430, binding = 10) writeonly buffer VolumeWindow3 {
+    vec4 volumeWindow3[];
 };
 layout(std430, binding = 6) readonly buffer LeafHullTriangles {
     uvec2 leafHullTriangles[];  // per leaf shape: its first triangle in the leaf hull, and its count
@@ -52,6 +62,15 @@ OrganVertex hullVertex(OrganInstance o, uint corner) {
                        false);
 }
 
+void writeVolumeVertex(uint at, vec4 corner) {
+    const uint window = at / push.window;
+    const uint local = at - window * push.window;
+    if (window == 0u) volumeWindow0[local] = corner;
+    else if (window == 1u) volumeWindow1[local] = corner;
+    else if (window == 2u) volumeWindow2[local] = corner;
+    else volumeWindow3[local] = corner;
+}
+
 // The volume of triangle (a, b, c), wound so that (a, c, b) looks towards the sun, with the sides of the edges
 // `inside` marks (bit k: the edge from corner k to the next) left out.
 void castVolume(vec3 a, vec3 b, vec3 c, uint inside, vec3 away, bool capped) {
@@ -63,15 +82,15 @@ void castVolume(vec3 a, vec3 b, vec3 c, uint inside, vec3 away, bool capped) {
     }
     // shadow_volume.vert makes the faces. A triangle reaching below the plane goes to infinity whole. A near
     // corner's w says whether the side from it to the next corner is left out (3) or drawn (1).
-    volumeVertices[base + 0u] = vec4(a, (inside & 1u) != 0u ? 3.0 : 1.0);
-    volumeVertices[base + 1u] = vec4(b, (inside & 2u) != 0u ? 3.0 : 1.0);
-    volumeVertices[base + 2u] = vec4(c, (inside & 4u) != 0u ? 3.0 : 1.0);
+    writeVolumeVertex(base + 0u, vec4(a, (inside & 1u) != 0u ? 3.0 : 1.0));
+    writeVolumeVertex(base + 1u, vec4(b, (inside & 2u) != 0u ? 3.0 : 1.0));
+    writeVolumeVertex(base + 2u, vec4(c, (inside & 4u) != 0u ? 3.0 : 1.0));
     bool toPlane = capped && min(a.y, min(b.y, c.y)) > push.capHeight;
     vec3 corners[3] = vec3[](a, b, c);
     for (uint k = 0u; k < 3u; ++k) {
         vec3 p = corners[k];
-        volumeVertices[base + 3u + k] = toPlane ? vec4(p + away * ((p.y - push.capHeight) / -away.y), 1.0)
-                                                : vec4(away, 0.0);
+        writeVolumeVertex(base + 3u + k, toPlane ? vec4(p + away * ((p.y - push.capHeight) / -away.y), 1.0)
+                                                 : vec4(away, 0.0));
     }
 }
 

@@ -138,7 +138,15 @@ struct ShadowVolumePush {
     uint closedHull;     // 1: a closed hull (casts from the faces turned away from the sun); 0: an open surface
     uint capped;         // 1: extrude to the plane y = capHeight below the ground; 0: to infinity
     float capHeight;
+    uint window;         // vertices in each of the volume buffer's kVolumeWindows bindings (a multiple of 6)
+    uint pad0;
+    uint pad1;
+    uint pad2;
 };
+
+// The volume buffer is written through this many storage bindings of one window each, so that it may hold more than
+// one binding does (maxStorageBufferRange: 128 MiB on lavapipe); it is drawn from as one vertex buffer.
+SIMECO_CONST kVolumeWindows = 4u;
 
 // present/display_bytes.comp: a frame's colours as bytes for a window.
 struct DisplayPush {
@@ -169,7 +177,7 @@ static_assert(sizeof(DrawPush) == 8);
 static_assert(sizeof(DrawArgsPush) == 68);
 static_assert(sizeof(LeafShapesPush) == 16);
 static_assert(sizeof(VolumeDraw) == 32);
-static_assert(sizeof(ShadowVolumePush) == 80);
+static_assert(sizeof(ShadowVolumePush) == 96);
 static_assert(sizeof(OutlinePush) == 48);
 #endif
 SIMECO_SHARED_END

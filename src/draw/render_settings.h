@@ -57,9 +57,12 @@ struct RenderSettings {
     glm::vec3 outlineColor{0.02f, 0.02f, 0.02f};
     // Paper-cut: where the sun's cosine on a surface falls below this, the paper shows through.
     float paperCutThreshold = 0.02f;
-    // Shadow volume vertices take 16 bytes each; a scene needing more than this (or than the device binds in one
-    // storage buffer) draws the volumes that fit.
-    std::uint64_t maxShadowVolumeBytes = 256ull << 20;
+    // Shadow volume vertices take 16 bytes each; a scene needing more than this (or than the device binds in
+    // shared::kVolumeWindows storage buffers) draws the volumes that fit.
+    std::uint64_t maxShadowVolumeBytes = 512ull << 20;
+    // The bytes of each storage binding the volumes are written through; 0: as many as the device binds (its
+    // maxStorageBufferRange). Smaller, the same volumes spread over more windows (for tests).
+    std::uint64_t shadowVolumeWindowBytes = 0;
 };
 
 } // namespace simeco::draw

@@ -114,6 +114,11 @@ struct Renderer::Resources {
     vk::Buffer volumeDraw;
     vk::Buffer volumeVertices;
     std::uint32_t volumeCapacity = 0; // vertices
+    std::uint32_t volumeWindow = 0;   // vertices a binding of the volume buffer holds
+    std::uint32_t volumeLimit = 0;    // vertices the frame may write (its settings' bytes, its windows)
+    // The vertices a frame writes: the buffer's, within the frame's limit (a buffer grown for a frame before may
+    // hold more).
+    std::uint32_t volumesWritten() const { return std::min(volumeCapacity, volumeLimit); }
     std::unique_ptr<RenderTarget> target;
     // Shadow volume buffers outgrown while frames that draw with them may be in flight: each is kept until
     // kFramesInFlight more frames have been prepared, by when the caller has waited for the frames before.
@@ -128,8 +133,10 @@ struct Renderer::Resources {
                      const FrameSetup& setup);
     void recordOutlines(VkCommandBuffer cmd, const RenderTarget& target, const FrameSetup& setup);
 
-    // Room for the shadow volumes of `triangles` casting triangles (at most maxBytes); returns the capacity.
-    std::uint32_t volumeVerticesFor(const vk::Context& context, std::uint64_t triangles, std::uint64_t maxBytes);
+    // Room for the shadow volumes of `triangles` casting triangles (at most settings.maxShadowVolumeBytes, in
+    // windows of settings.shadowVolumeWindowBytes); returns the capacity.
+    std::uint32_t volumeVerticesFor(const vk::Context& context, std::uint64_t triangles,
+                                    const RenderSettings& settings);
 };
 
 CameraView frameCamera(const Bounds& bounds, const RenderSettings& settings) {
@@ -147,13 +154,27 @@ Renderer::Renderer(const vk::Context& context, const ir::DrawAssets& assets) : c
 
 Renderer::~Renderer() = default;
 
+// Volume vertices one storage binding holds (or the settings' smaller window), whole volumes only.
+std::uint32_t volumeWindowFor(const vk::Context& context, const RenderSettings& settings) {
+    std::uint64_t bytes = context.limits().maxStorageBufferRange;
+    if (settings.shadowVolumeWindowBytes > 0) bytes = std::min(bytes, settings.shadowVolumeWindowBytes);
+    const std::uint64_t vertices = std::max<std::uint64_t>(bytes / sizeof(shared::vec4),
+                                                           shared::kVolumeVerticesPerTriangle);
+    const std::uint64_t held = std::min<std::uint64_t>(vertices, std::numeric_limits<std::uint32_t>::max() / 8);
+    return static_cast<std::uint32_t>(held / shared::kVolumeVerticesPerTriangle * shared::kVolumeVerticesPerTriangle);
+}
+
 std::uint32_t Renderer::Resources::volumeVerticesFor(const vk::Context& context, std::uint64_t triangles,
-                                                     std::uint64_t maxBytes) {
+                                                     const RenderSettings& settings) {
     std::uint64_t needed = triangles * shared::kVolumeVerticesPerTriangle;
-    // The shadow kernel binds the whole buffer: no more than one storage binding holds.
-    std::uint64_t affordable =
-        std::min<std::uint64_t>(maxBytes, context.limits().maxStorageBufferRange) / sizeof(shared::vec4);
+    // The shadow kernel writes the buffer through kVolumeWindows bindings of a window each: no more than they hold.
+    volumeWindow = volumeWindowFor(context, settings);
+    std::uint64_t affordable = std::min<std::uint64_t>(settings.maxShadowVolumeBytes / sizeof(shared::vec4),
+                                                       std::uint64_t{volumeWindow} * shared::kVolumeWindows);
     std::uint64_t limit = std::min<std::uint64_t>(affordable, std::numeric_limits<std::uint32_t>::max());
+    limit = std::max<std::uint64_t>(limit - limit % shared::kVolumeVerticesPerTriangle,
+                                    shared::kVolumeVerticesPerTriangle);
+    volumeLimit = static_cast<std::uint32_t>(limit);
     needed = std::clamp<std::uint64_t>(needed, shared::kVolumeVerticesPerTriangle, limit);
     needed -= needed % shared::kVolumeVerticesPerTriangle;
     if (needed > volumeCapacity) {
@@ -196,7 +217,7 @@ FrameSetup Renderer::prepare(const std::vector<OrganPart>& parts, const Bounds& 
         std::uint64_t triangles = 0;
         for (std::uint32_t kind = 0; kind < kOrganKinds; ++kind)
             triangles += std::uint64_t{setup.counts.count[kind]} * r.meshes.data().castingTriangles[kind];
-        r.volumeVerticesFor(context_, triangles, settings.maxShadowVolumeBytes);
+        r.volumeVerticesFor(context_, triangles, settings);
     }
     return setup;
 }
@@ -208,7 +229,7 @@ FrameSetup Renderer::prepareWithin(std::uint32_t organs, const Bounds& bounds, c
         const OrganMeshData& data = r.meshes.data();
         std::uint64_t most = *std::max_element(data.castingTriangles.begin(), data.castingTriangles.end());
         for (std::uint32_t kind = 0; kind < kOrganKinds; ++kind) setup.counts.count[kind] = organs;
-        r.volumeVerticesFor(context_, std::uint64_t{organs} * most, settings.maxShadowVolumeBytes);
+        r.volumeVerticesFor(context_, std::uint64_t{organs} * most, settings);
     }
     return setup;
 }
@@ -272,7 +293,7 @@ void Renderer::Resources::recordDrawInputs(VkCommandBuffer cmd, const std::vecto
         args.firstIndex[kind] = mesh.organs[kind].firstIndex;
         args.vertexOffset[kind] = mesh.organs[kind].vertexOffset;
     }
-    args.volumeCapacity = shadows ? r.volumeCapacity : 0;
+    args.volumeCapacity = shadows ? r.volumesWritten() : 0;
     args.leafShapes = static_cast<std::uint32_t>(mesh.leafShapeTriangles.size());
     // The leaves of each part by shape: counted, laid out by draw_args.comp, then written in their places. Sized by
     // the parts' instance buffers: the counts may be the device's alone.
@@ -280,7 +301,8 @@ void Renderer::Resources::recordDrawInputs(VkCommandBuffer cmd, const std::vecto
         for (size_t p = 0; p < parts.size(); ++p) {
             const std::uint64_t capacity = parts[p].instances->size() / sizeof(shared::OrganInstance);
             r.leafShapes.dispatch(cmd, {*parts[p].instances, *parts[p].table, r.leafBuckets[p], r.leafOrders[p]},
-                                  shared::LeafShapesPush{pass, args.leafShapes, 0, 0}, r.leafShapes.groupsFor(capacity));
+                                  shared::LeafShapesPush{pass, args.leafShapes, 0, 0},
+                                  r.leafShapes.groupsFor(capacity));
         }
     };
 
@@ -303,6 +325,17 @@ void Renderer::Resources::recordDrawInputs(VkCommandBuffer cmd, const std::vecto
         const float groundHeight = frame.groundPlane.y;
         const float capHeight = groundHeight - kVolumeCapDepth * frame.groundPlane.w;
         const bool capped = setup.settings.ground && setup.camera.position.y > groundHeight;
+        // The volume buffer's windows; those past its end bind its first (nothing is written there).
+        std::array<vk::BufferRange, shared::kVolumeWindows> volumeWindows{
+            r.volumeVertices, r.volumeVertices, r.volumeVertices, r.volumeVertices};
+        const VkDeviceSize windowBytes = VkDeviceSize{r.volumeWindow} * sizeof(shared::vec4);
+        const VkDeviceSize volumeBytes = r.volumeVertices.size();
+        for (std::uint32_t w = 0; w < shared::kVolumeWindows; ++w) {
+            const VkDeviceSize first = std::min(w * windowBytes, volumeBytes);
+            const VkDeviceSize bytes = std::min(windowBytes, volumeBytes - first);
+            volumeWindows[w] = bytes > 0 ? vk::BufferRange(r.volumeVertices, first, bytes)
+                                         : vk::BufferRange(r.volumeVertices, 0, std::min(windowBytes, volumeBytes));
+        }
         for (size_t p = 0; p < parts.size(); ++p) {
             // The broad shadows first (leaves, polygons, spheres, discs, then stems): volumes past the buffer's
             // room are dropped.
@@ -321,14 +354,16 @@ void Renderer::Resources::recordDrawInputs(VkCommandBuffer cmd, const std::vecto
                 push.firstIndex = hull.firstIndex;
                 push.triangleCount = hull.triangleCount();
                 push.vertexOffset = hull.vertexOffset;
-                push.capacity = r.volumeCapacity;
+                push.capacity = r.volumesWritten();
                 push.closedHull = mesh.closedHull[kind] ? 1u : 0u;
                 push.capped = capped ? 1u : 0u;
                 push.capHeight = capHeight;
+                push.window = r.volumeWindow;
                 r.shadowVolumes.dispatch(cmd,
                                          {*parts[p].instances, *parts[p].table, r.meshes.vertices(), r.meshes.indices(),
-                                          r.volumeDraw, r.volumeVertices, r.meshes.leafHullTriangles(),
-                                          r.meshes.interiorEdges()},
+                                          r.volumeDraw, volumeWindows[0], r.meshes.leafHullTriangles(),
+                                          r.meshes.interiorEdges(), volumeWindows[1], volumeWindows[2],
+                                          volumeWindows[3]},
                                          push, r.shadowVolumes.groupsFor(counts.count[kind]));
             }
         }
@@ -470,8 +505,8 @@ void Renderer::record(VkCommandBuffer cmd, const RenderTarget& target, const std
     }
     // A part's leaf order holds a word for each instance its buffer can hold.
     for (size_t p = 0; p < parts.size(); ++p) {
-        const VkDeviceSize bytes =
-            std::max<VkDeviceSize>(parts[p].instances->size() / sizeof(shared::OrganInstance), 1) * sizeof(std::uint32_t);
+        const VkDeviceSize instances = parts[p].instances->size() / sizeof(shared::OrganInstance);
+        const VkDeviceSize bytes = std::max<VkDeviceSize>(instances, 1) * sizeof(std::uint32_t);
         if (r.leafOrders[p] && r.leafOrders[p].size() >= bytes) continue;
         if (r.leafOrders[p]) r.retired.emplace_back(r.framesPrepared, std::move(r.leafOrders[p]));
         r.leafOrders[p] = vk::Buffer(context_, bytes, vk::MemoryUsage::DeviceLocal);

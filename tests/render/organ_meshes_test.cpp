@@ -182,8 +182,8 @@ TEST(OrganMeshesTest, LeafHullsAreCoarserCutsOfTheDrawnShapes) {
     }
 }
 
-// Blossoms: each of its own shape within a unit diameter about the heading, turned to face along it; the star's and the head's centres are tinted to the eye's yellow, the
-// rose's petals keep the organ's colour.
+// Blossoms: each of its own shape within a unit diameter about the heading, turned to face along it; the star's
+// and the head's centres are tinted to the eye's yellow, the rose's petals keep the organ's colour.
 TEST(OrganMeshesTest, BlossomsFaceAlongTheHeadingWithinAUnitDiameter) {
     OrganMeshData d = draw::buildOrganMeshes();
     const MeshRange& leaf = d.organs[shared::kOrganLeaf];

@@ -1,6 +1,7 @@
 // Stencil shadow volumes of the sun: a tall stem lit from the side shadows the ground behind it, and an organ
 // in its way; without shadows the same places are as bright as their surroundings.
 #include <memory>
+#include <vector>
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
@@ -71,9 +72,10 @@ TEST_F(ShadowTest, TallStemShadowsTheGroundOnTheFarSideOnly) {
     }
 }
 
-// A frame made ready for more shadow volumes than one storage binding holds gets no more room than that binding:
-// the shadow kernel binds the whole buffer (any validation message fails the test), and the shadow still falls.
-TEST_F(ShadowTest, ShadowVolumesNeverOutgrowABinding) {
+// A frame made ready for more shadow volumes than its storage bindings hold gets no more room than they do: the
+// shadow kernel binds each window within the device's limit (any validation message fails the test), and the
+// shadow still falls.
+TEST_F(ShadowTest, ShadowVolumesNeverOutgrowTheirBindings) {
     TestScene scene = uploadScene(context(), {makeStem({0, 0, 0}, {0, 1, 0}, {0, 0, 1}, 2.0f, 0.1f, 0, 1)});
     draw::RenderSettings s = sideLitSettings(draw::Shadows::Volume);
     s.maxShadowVolumeBytes = uint64_t(context().limits().maxStorageBufferRange) * 4;
@@ -85,6 +87,28 @@ TEST_F(ShadowTest, ShadowVolumesNeverOutgrowABinding) {
     const draw::CameraView view = draw::frameCamera(scene.bounds, s);
     const float g = scene.bounds.min.y;
     EXPECT_LT(luminanceAt(frame, view, {1.5f, g, 0}), 0.6f * luminanceAt(frame, view, {1.5f, g, -0.6f}));
+}
+
+// The volumes are written through several bindings (windows) of one buffer, so that a field may cast more than one
+// binding holds: with windows of two volumes each, four stems' volumes fill four windows and shade exactly as when
+// one window holds them all.
+TEST_F(ShadowTest, VolumesWrittenThroughSeveralWindowsShadeAsThroughOne) {
+    std::vector<shared::OrganInstance> stems;
+    for (int k = 0; k < 4; ++k)
+        stems.push_back(makeStem({-0.6f + 0.4f * float(k), 0, 0}, {0, 1, 0}, {0, 0, 1}, 1.5f, 0.1f, 0, 1 + k));
+    TestScene scene = uploadScene(context(), stems);
+    draw::RenderSettings s = sideLitSettings(draw::Shadows::Volume);
+    const Frame whole = renderer().render(scene.instances, scene.table, scene.bounds, s);
+    // Each stem casts from its two-triangle ribbon: two volumes of six vertices.
+    s.shadowVolumeWindowBytes = 2 * 6 * 16;
+    const Frame windowed = renderer().render(scene.instances, scene.table, scene.bounds, s);
+    maybeSavePreview(windowed, "stems_windowed_shadows");
+    EXPECT_EQ(windowed.rgba, whole.rgba);
+    // And with room for three windows' volumes, the fourth stem's shadow is the one missing: the ground behind it
+    // is lit.
+    s.maxShadowVolumeBytes = 3 * 2 * 6 * 16;
+    const Frame short3 = renderer().render(scene.instances, scene.table, scene.bounds, s);
+    EXPECT_NE(short3.rgba, whole.rgba);
 }
 
 TEST_F(ShadowTest, StemShadowsAnOrganInItsWayAndTheSunSideOfItselfIsLit) {

@@ -10,7 +10,7 @@ packages=(
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools spirv-tools
   glslang-tools glslang-dev
   libglm-dev libglfw3-dev libimgui-dev libopenexr-dev libpng-dev libtinyobjloader-dev
-  xvfb xauth
+  xvfb xauth xdotool
   libgtest-dev libcli11-dev nlohmann-json3-dev libfmt-dev liblzma-dev
   gnuplot-nox
   clang libclang-rt-dev

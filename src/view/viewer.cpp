@@ -20,6 +20,7 @@
 #include "view/overlay.h"
 #include "view/panel.h"
 #include "view/presenter.h"
+#include "view/steering.h"
 #include "view/swapchain.h"
 #include "view/view_controls.h"
 #include "view/window.h"
@@ -34,11 +35,6 @@ using Clock = std::chrono::steady_clock;
 
 // Ticks of leaf area and light the panel's plot shows.
 constexpr size_t kHistoryLength = 240;
-
-// What the mouse wheel did since the last frame (GLFW's scroll callback adds to it).
-struct MouseInput {
-    double scroll = 0;
-};
 
 // A growing field and what draws it.
 struct LiveField {
@@ -169,6 +165,22 @@ struct CommandPool {
     ~CommandPool() { vkDestroyCommandPool(device, pool, nullptr); }
 };
 
+// A reloaded scene's controls with the user's kept: how the field runs, and the sun and the species' factors where
+// the scene keeps its species.
+ViewControls keptControls(ViewControls scene, const ViewControls& user) {
+    if (scene.species.size() == user.species.size()) {
+        for (size_t s = 0; s < scene.species.size(); ++s) scene.species[s].factors = user.species[s].factors;
+        scene.sunAzimuth = user.sunAzimuth;
+        scene.sunElevation = user.sunElevation;
+    }
+    scene.timeScale = user.timeScale;
+    scene.paused = user.paused;
+    scene.seed = user.seed;
+    scene.plants = user.plants;
+    scene.renderScale = user.renderScale;
+    return scene;
+}
+
 std::string loadError(const std::exception& e) {
     if (const auto* input = dynamic_cast<const ir::InputError*>(&e)) return input->formatted();
     return fmt::format("simeco: error: {}", e.what());
@@ -178,11 +190,7 @@ std::string loadError(const std::exception& e) {
 
 void runViewer(const ViewOptions& options) {
     Window window(options.width, options.height, "simeco view: " + options.simulation.file);
-    MouseInput mouse;
-    glfwSetWindowUserPointer(window.handle(), &mouse);
-    glfwSetScrollCallback(window.handle(), [](GLFWwindow* w, double, double y) {
-        static_cast<MouseInput*>(glfwGetWindowUserPointer(w))->scroll += y;
-    });
+    Steering steering(window.handle());
 
     vk::ContextOptions contextOptions;
     contextOptions.device = options.device;
@@ -243,12 +251,8 @@ void runViewer(const ViewOptions& options) {
     double frameSeconds = 0;
     std::vector<double> frameTimes; // every frame's after the first
     auto lastFrame = Clock::now();
-    double lastX = 0, lastY = 0;
-    glfwGetCursorPos(window.handle(), &lastX, &lastY);
-    bool dragged = false, leftBefore = false;
     std::optional<std::uint32_t> pickedPlant;
-    bool picking = false; // a click at (pickX, pickY) to look up once its frame is drawn
-    double pickX = 0, pickY = 0;
+    std::optional<glm::dvec2> click; // to look up once its frame is drawn
     while (!window.closing()) {
         glfwPollEvents();
         const auto now = Clock::now();
@@ -265,20 +269,9 @@ void runViewer(const ViewOptions& options) {
                 seen = written;
                 try {
                     replaceField(live, makeField(context, options, simulationOptions));
-                    ViewControls fresh =
-                        controlsFor(live.simulation->environment(), live.settings, speciesNames(*live.simulation));
-                    // The user's controls stay where the scene keeps its species.
-                    if (fresh.species.size() == controls.species.size()) {
-                        for (size_t s = 0; s < fresh.species.size(); ++s)
-                            fresh.species[s].factors = controls.species[s].factors;
-                        fresh.sunAzimuth = controls.sunAzimuth;
-                        fresh.sunElevation = controls.sunElevation;
-                    }
-                    fresh.timeScale = controls.timeScale;
-                    fresh.paused = controls.paused;
-                    fresh.seed = controls.seed;
-                    fresh.plants = controls.plants;
-                    controls = fresh;
+                    controls = keptControls(
+                        controlsFor(live.simulation->environment(), live.settings, speciesNames(*live.simulation)),
+                        controls);
                     live.simulation->setEnvironment(environmentOf(controls, live.simulation->environment()));
                     drawAgain(live);
                     error.clear();
@@ -325,43 +318,10 @@ void runViewer(const ViewOptions& options) {
             }
         }
 
-        // The camera: drag with the left button to orbit, the right or middle to pan, the wheel or +/- to zoom,
-        // the arrow keys to orbit; a click without a drag picks a plant.
-        double x = 0, y = 0;
-        glfwGetCursorPos(window.handle(), &x, &y);
         const VkExtent2D extent = swapchain.extent();
-        if (!overlay.wantsMouse()) {
-            const bool left = glfwGetMouseButton(window.handle(), GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
-            const bool right = glfwGetMouseButton(window.handle(), GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS ||
-                               glfwGetMouseButton(window.handle(), GLFW_MOUSE_BUTTON_MIDDLE) == GLFW_PRESS;
-            if (left && (x != lastX || y != lastY)) {
-                orbit.orbit(float(x - lastX), float(y - lastY));
-                dragged = true;
-            }
-            if (right) orbit.pan(float(x - lastX), float(y - lastY), float(extent.height));
-            if (leftBefore && !left && !dragged) {
-                picking = true;
-                pickX = x;
-                pickY = y;
-            }
-            if (!left) dragged = false;
-            leftBefore = left;
-            orbit.zoom(float(mouse.scroll));
-        } else {
-            leftBefore = false;
-        }
-        mouse.scroll = 0;
-        lastX = x;
-        lastY = y;
-        if (!overlay.wantsKeyboard()) {
-            const auto key = [&](int k) { return glfwGetKey(window.handle(), k) == GLFW_PRESS; };
-            if (key(GLFW_KEY_LEFT)) orbit.orbit(-6, 0);
-            if (key(GLFW_KEY_RIGHT)) orbit.orbit(6, 0);
-            if (key(GLFW_KEY_UP)) orbit.orbit(0, 6);
-            if (key(GLFW_KEY_DOWN)) orbit.orbit(0, -6);
-            if (key(GLFW_KEY_EQUAL) || key(GLFW_KEY_KP_ADD)) orbit.zoom(0.2f);
-            if (key(GLFW_KEY_MINUS) || key(GLFW_KEY_KP_SUBTRACT)) orbit.zoom(-0.2f);
-        }
+        const std::optional<glm::dvec2> at =
+            steering.steer(orbit, overlay.wantsMouse(), overlay.wantsKeyboard(), float(extent.height));
+        if (at) click = at;
 
         // The field grows: its organs are drawn again once the frames reading them are done.
         const std::uint32_t ticks = controls.paused ? (actions.step ? 1u : 0u) : controls.timeScale;
@@ -434,17 +394,21 @@ void runViewer(const ViewOptions& options) {
         if (frames == 1) std::fprintf(stderr, "%s: the first frame is drawn\n", simulationOptions.file.c_str());
 
         // A click picks the plant under it, read from the frame's plant ids once it is drawn.
-        if (picking) {
+        if (click) {
             waitFor(device, slot);
             int windowWidth = 1, windowHeight = 1;
             glfwGetWindowSize(window.handle(), &windowWidth, &windowHeight);
             const std::uint32_t w = slot.target->width(), h = slot.target->height();
-            const auto px = std::uint32_t(std::clamp(pickX * w / std::max(windowWidth, 1), 0.0, double(w - 1)));
-            const auto py = std::uint32_t(std::clamp(pickY * h / std::max(windowHeight, 1), 0.0, double(h - 1)));
+            const auto px = std::uint32_t(std::clamp(click->x * w / std::max(windowWidth, 1), 0.0, double(w - 1)));
+            const auto py = std::uint32_t(std::clamp(click->y * h / std::max(windowHeight, 1), 0.0, double(h - 1)));
             const auto* ids = reinterpret_cast<const std::uint32_t*>(slot.target->plant().mapped());
             const std::uint32_t plant = ids[size_t(py) * w + px];
             pickedPlant = plant == draw::Frame::kNoId ? std::nullopt : std::optional<std::uint32_t>(plant);
-            picking = false;
+            if (pickedPlant)
+                std::fprintf(stderr, "picked plant %u (%s)\n", plant, live.simulation->speciesName(plant).c_str());
+            else
+                std::fprintf(stderr, "picked no plant\n");
+            click.reset();
         }
         const bool last = options.frames > 0 && frames >= options.frames;
         if ((actions.screenshot || last) && !options.screenshot.empty()) {

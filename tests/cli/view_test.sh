@@ -94,6 +94,43 @@ edit_while_viewing reload 30 '\n// edited while the viewer runs\n' 'garden.eco: 
 ok=$?
 check "an edit that loads starts the field again (exit $code: $(grep -v warning "$work/reload.txt" | head -c 300))" $ok
 
+# The mouse, as xdotool moves it in the virtual display: a click on a plant picks it, a drag turns the camera.
+# mouse_view NAME [XDOTOOL-ARGS...]: a paused 800x480 view of 80 frames, the mouse used once its first frame is drawn;
+# its screenshot NAME.png, its output NAME.txt.
+mouse_view() {
+  local name=$1
+  shift
+  xvfb-run -a -s "-screen 0 1024x768x24" bash -c '
+    simeco=$1 scene=$2 shot=$3 log=$4
+    shift 4
+    "$simeco" view "$scene" --plants 4 --size 800x480 --time 12 --set paused=on --frames 80 --screenshot "$shot" \
+      >"$log" 2>&1 &
+    viewer=$!
+    for _ in $(seq 600); do grep -q "the first frame is drawn" "$log" && break; sleep 0.2; done
+    [ $# -gt 0 ] && xdotool search --sync --name "simeco view" "$@"
+    wait $viewer' _ "$simeco" "$scene" "$work/$name.png" "$work/$name.txt" "$@"
+}
+mouse_view still
+# The middle of the plant most leaves gather at, right of the panel.
+read -r px py < <(python3 - "$work/still.png" <<'PY'
+import sys
+from png_pixels import read_png, is_leafy
+width, height, rows = read_png(sys.argv[1])
+leafy = {(x, y) for y in range(height) for x in range(440, width) if is_leafy(rows[y][x])}
+best = max(leafy, key=lambda p: sum((p[0] + dx, p[1] + dy) in leafy for dx in range(-3, 4) for dy in range(-3, 4)))
+print(*best)
+PY
+)
+[ -n "$px" ] && [ -n "$py" ]
+check "a paused view shows a plant right of the panel ($(tail -n 1 "$work/still.txt"))" $?
+mouse_view click mousemove --window %1 --sync "$px" "$py" click 1
+grep -qE 'picked plant [0-3] \(' "$work/click.txt"
+check "a click on a plant picks it ($(grep -a picked "$work/click.txt" | head -c 200))" $?
+mouse_view drag mousemove --window %1 --sync 600 300 mousedown 1 sleep 0.5 mousemove --window %1 --sync 700 300 \
+  sleep 0.5 mouseup 1
+[ -s "$work/drag.png" ] && ! cmp -s "$work/still.png" "$work/drag.png" && ! grep -q picked "$work/drag.txt"
+check "a drag turns the camera and picks nothing ($(tail -n 1 "$work/drag.txt"))" $?
+
 # Bad settings and screenshots: exit 2, nothing written.
 cp "$source_dir/scenes/garden.eco" "$scene"
 view "$work/bad.txt" --frames 2 --screenshot "$work/bad.png" --set sun.colour=red

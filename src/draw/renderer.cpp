@@ -154,6 +154,8 @@ Renderer::Renderer(const vk::Context& context, const ir::DrawAssets& assets) : c
 
 Renderer::~Renderer() = default;
 
+namespace {
+
 // Volume vertices one storage binding holds (or the settings' smaller window), whole volumes only.
 std::uint32_t volumeWindowFor(const vk::Context& context, const RenderSettings& settings) {
     std::uint64_t bytes = context.limits().maxStorageBufferRange;
@@ -163,6 +165,8 @@ std::uint32_t volumeWindowFor(const vk::Context& context, const RenderSettings& 
     const std::uint64_t held = std::min<std::uint64_t>(vertices, std::numeric_limits<std::uint32_t>::max() / 8);
     return static_cast<std::uint32_t>(held / shared::kVolumeVerticesPerTriangle * shared::kVolumeVerticesPerTriangle);
 }
+
+} // namespace
 
 std::uint32_t Renderer::Resources::volumeVerticesFor(const vk::Context& context, std::uint64_t triangles,
                                                      const RenderSettings& settings) {

@@ -91,8 +91,7 @@ void renderGrowth(const RenderArgs& args, bool exr) {
     const auto start = std::chrono::steady_clock::now();
     field::Simulation simulation(options, &context);
     simulation.setTickSeconds(float(simulation.grownBy() / args.frames));
-    draw::RenderSettings settings = renderSettings(args.picture, simulation.species().species.front().view);
-    if (simulation.species().scene) applySceneLight(simulation.species().scene->light, settings);
+    draw::RenderSettings settings = grownFieldSettings(args.picture, simulation.species());
     draw::Renderer renderer(context, simulation.species().assets);
     draw::Bounds framed = simulation.grownBounds();
     if (framed.empty()) framed = draw::Bounds{};

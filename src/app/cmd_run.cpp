@@ -181,8 +181,7 @@ void runRun(RunArgs args) {
     vk::Context context(contextOptions);
     if (args.profile) context.enableKernelProfile();
     field::Simulation simulation(args.simulation, &context);
-    draw::RenderSettings settings = renderSettings(args.picture, simulation.species().species.front().view);
-    if (simulation.species().scene) applySceneLight(simulation.species().scene->light, settings);
+    draw::RenderSettings settings = grownFieldSettings(args.picture, simulation.species());
     if (saved) {
         try {
             simulation.resume(saved->state);

@@ -44,9 +44,7 @@ void runView(ViewArgs args) {
     v.height = height;
     const PictureOptions picture = args.picture;
     v.settingsFor = [picture](const field::Simulation& simulation) {
-        draw::RenderSettings settings = renderSettings(picture, simulation.species().species.front().view);
-        if (simulation.species().scene) applySceneLight(simulation.species().scene->light, settings);
-        return settings;
+        return grownFieldSettings(picture, simulation.species());
     };
     try {
         view::runViewer(v);

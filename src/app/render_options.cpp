@@ -128,4 +128,10 @@ void applySceneLight(const ir::EcoLight& light, draw::RenderSettings& settings) 
     if (light.groundSize) settings.groundSize = *light.groundSize;
 }
 
+draw::RenderSettings grownFieldSettings(const PictureOptions& options, const grow::GrowingSpecies& species) {
+    draw::RenderSettings settings = renderSettings(options, species.species.front().view);
+    if (species.scene) applySceneLight(species.scene->light, settings);
+    return settings;
+}
+
 } // namespace simeco::app

@@ -10,6 +10,7 @@
 
 #include "draw/render_settings.h"
 #include "ir/eco_field.h"
+#include "grow/growing_species.h"
 #include "ir/grammar.h"
 
 namespace simeco::app {
@@ -41,5 +42,8 @@ draw::RenderSettings renderSettings(const PictureOptions& options, const ir::Vie
 
 // A scene's sun, sky and ground (ir::EcoLight) in the settings: what it leaves unset stays as it is.
 void applySceneLight(const ir::EcoLight& light, draw::RenderSettings& settings);
+
+// The picture of a growing field: the options over its first species' view, then its scene's light.
+draw::RenderSettings grownFieldSettings(const PictureOptions& options, const grow::GrowingSpecies& species);
 
 } // namespace simeco::app

@@ -51,7 +51,6 @@ precise gl_Position;
 
 void main() {
     precise vec3 world;
-    bool present = true;
     if (push.kind == kDrawGround) {
         world = frame.groundPlane.xyz + frame.groundPlane.w * vec3(inPosition.x, 0.0, inPosition.z);
         outNormal = vec3(0.0, 1.0, 0.0);
@@ -65,7 +64,6 @@ void main() {
         OrganVertex v = organVertex(o, push.kind, inPosition, inNormal, frame.cameraRight.xyz, frame.cameraUp.xyz,
                                     frame.cameraPosition, frame.options.w != 0u);
         world = v.position;
-        present = v.present;
         outNormal = v.normal;
         outAlbedo = o.color.rgb;
         if (push.kind == kOrganLeaf)
@@ -77,8 +75,4 @@ void main() {
     }
     outWorld = world;
     gl_Position = frame.viewProj * vec4(world, 1.0);
-    // A vertex of another leaf shape goes outside the view, past its right side: a triangle of another shape then
-    // lies wholly outside, which the rasterizer drops at once, where a triangle of no area on the base would still be
-    // set up (the cost of most of a field's frame on a CPU's Vulkan, whose leaves share a mesh of many shapes).
-    if (!present) gl_Position = vec4(2.0, 0.0, 0.5, 1.0);
 }

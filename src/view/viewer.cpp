@@ -44,6 +44,7 @@ struct LiveField {
     draw::Bounds framed; // the grown field's bounds: the camera stays put while it grows
     std::vector<const turtle::DeviceOrgans*> organs;
     std::vector<shared::PlantStatistics> statistics;
+    std::vector<std::uint64_t> plantModules; // read from the device when a picked plant needs them, once a drawing
     std::vector<SpeciesHistory> history;
     double tickSeconds = 0; // wall-clock seconds of the last frame's ticks, and how many
     std::uint32_t ticked = 0;
@@ -71,6 +72,7 @@ std::vector<std::string> speciesNames(const field::Simulation& s) {
 void drawAgain(LiveField& f) {
     f.organs = f.simulation->interpretParts();
     f.statistics = f.simulation->statistics();
+    f.plantModules.clear();
     const std::vector<std::string> names = speciesNames(*f.simulation);
     if (f.history.size() != names.size()) {
         f.history.clear();
@@ -295,9 +297,10 @@ void runViewer(const ViewOptions& options) {
         figures.error = error;
         if (pickedPlant && *pickedPlant < live.statistics.size()) {
             const shared::PlantStatistics& s = live.statistics[*pickedPlant];
+            if (live.plantModules.empty()) live.plantModules = live.simulation->plantModules();
             figures.picked = PickedPlant{*pickedPlant, live.simulation->speciesName(*pickedPlant),
-                                         live.simulation->time(), live.simulation->plantModules()[*pickedPlant],
-                                         s.light, s.leafArea, s.height};
+                                         live.simulation->time(), live.plantModules[*pickedPlant], s.light,
+                                         s.leafArea, s.height};
         }
         const PanelActions actions = drawPanel(controls, figures);
         if (actions.environmentChanged)

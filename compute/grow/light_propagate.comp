@@ -1,9 +1,10 @@
 // The light grid, second pass: the light reaching each voxel's centre from every direction light comes from,
 // through the leaf area of the voxels on the way (Beer–Lambert, compute/shared/light_layout.h), and the direction
 // most of it comes from. A ray steps a voxel's length at a time from the voxel's centre until it leaves the grid,
-// through the leaf area of the voxels it lands in; the voxel's own does not shade it (the organs in a voxel share
-// its light, as in Palubicki's shadow propagation); a voxel an obstacle fills stops it. Above the highest layer
-// with leaf area or an obstacle a rising ray meets nothing more, and stops.
+// through the leaf area of the voxels it lands in (counted in voxels, where the CPU reference counts too); the
+// voxel's own does not shade it (the organs in a voxel share its light, as in Palubicki's shadow propagation); a
+// voxel an obstacle fills stops it. Above the highest layer with leaf area or an obstacle a rising ray meets nothing
+// more, and stops.
 #version 450
 #extension GL_GOOGLE_include_directive : require
 #include "compute/shared/light_layout.h"
@@ -34,19 +35,20 @@ void main() {
     // Leaf area density times the extinction, per unit of path, of a voxel's area count.
     float perUnit = kLeafExtinction / (kAreaFixedPoint * side * side * side);
     uvec3 cell = uvec3(v % pc.sizeX, (v / pc.sizeX) % pc.sizeY, v / (pc.sizeX * pc.sizeY));
-    vec3 centre = pc.origin.xyz + (vec3(cell) + 0.5) * side;
-    float total = 0.0;
-    vec3 most = vec3(0.0);
+    vec3 centre = vec3(cell) + 0.5; // in voxels
+    precise float total = 0.0;
+    precise vec3 most = vec3(0.0);
     float filled = float(max(top, pc.obstacleTop)); // layers at or above it are empty
     for (uint d = 0u; d < pc.directions; ++d) {
         vec4 from = directions[d].towardAndIntensity;
         if (from.w <= 0.0) continue;
-        float depth = 0.0;
+        precise float depth = 0.0;
         bool blocked = false;
         for (uint step = 1u; step < 4096u; ++step) {
-            vec3 cell = cellAt(centre + from.xyz * (float(step) * side));
-            if (from.y > 0.0 && cell.y >= filled) break;
-            int u = voxelOfCell(cell);
+            precise vec3 at = centre + from.xyz * float(step);
+            vec3 landed = floor(at);
+            if (from.y > 0.0 && landed.y >= filled) break;
+            int u = voxelOfCell(landed);
             if (u < 0) break;
             if (obstacle[u] != 0u) {
                 blocked = true;

@@ -20,6 +20,7 @@ SIMECO_CONST kLightWorkgroupSize = 64u;
 SIMECO_CONST_FLOAT kAreaFixedPoint = 4096.0f; // a voxel's splatted area counts in 1/4096 square units
 // Leaves facing every way (a spherical leaf angle distribution) block half their area along any direction.
 SIMECO_CONST_FLOAT kLeafExtinction = 0.5f;
+SIMECO_CONST_FLOAT kOneThird = 0.333333343f; // a triangle's centroid, multiplied rather than divided (below)
 // Where the gather also writes an organ's light (LightGridPush::derived): nowhere else, the derived string's
 // particle of the same index (a string drawn as derived), or that of the drawn module's origin (the homomorphism's).
 SIMECO_CONST kLightToDrawnOnly = 0u;
@@ -42,7 +43,13 @@ struct LightGridPush {
     uint count;      // queries: the drawn modules
     uint stride;     // queries: parameters per module of the derived string
     uint obstacleTop; // propagate: the layers up to the highest an obstacle fills (0: none)
+    float inverseSide; // 1 / origin.w, rounded on the host: a point's voxel is found by multiplying by it
 };
+
+// The device must find the same voxel for a point as the CPU reference, also for points on a voxel's face (a sky
+// direction at 30 or 60 degrees of elevation steps onto faces, every voxel a face). So the shaders compute where
+// rays and organs fall with `precise` arithmetic (no fused multiply-adds) and no division (a device may divide to
+// within a few units in the last place), in the same order as src/grow/light_grid.cpp.
 
 // Light comes from above the horizon only, so a ray that has risen past the highest layer with leaf area or an
 // obstacle (the splat's `top` word, `obstacleTop`) meets nothing more: propagate stops it there.

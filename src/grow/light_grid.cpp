@@ -28,7 +28,7 @@ glm::vec3 xyz(const shared::vec4& v) {
 glm::vec3 organCentre(const shared::OrganInstance& o) {
     if (o.kind == shared::kOrganStem || o.kind == shared::kOrganLeaf)
         return xyz(o.position) + 0.5f * o.position.w * xyz(o.heading);
-    if (o.kind == shared::kOrganTriangle) return (xyz(o.position) + xyz(o.heading) + xyz(o.up)) / 3.0f;
+    if (o.kind == shared::kOrganTriangle) return (xyz(o.position) + xyz(o.heading) + xyz(o.up)) * shared::kOneThird;
     return xyz(o.position);
 }
 
@@ -171,7 +171,9 @@ void LightGridCpu::propagate() {
             light_[v] = glm::vec4(0, 1, 0, 0);
             continue;
         }
-        const glm::vec3 centre = spec_.centre(v);
+        const glm::vec3 centre = glm::vec3(float(v % spec_.size[0]), float((v / spec_.size[0]) % spec_.size[1]),
+                                           float(v / (uint64_t(spec_.size[0]) * spec_.size[1]))) +
+                                 0.5f; // in voxels
         float total = 0.0f;
         glm::vec3 most(0.0f);
         for (const shared::LightDirection& d : directions_) {
@@ -180,9 +182,9 @@ void LightGridCpu::propagate() {
             float depth = 0.0f;
             bool blocked = false;
             for (uint32_t step = 1; step < 4096; ++step) {
-                const glm::vec3 cell = spec_.cellAt(centre + toward * (float(step) * side));
-                if (toward.y > 0.0f && cell.y >= filled) break;
-                const int64_t u = spec_.voxelOfCell(cell);
+                const glm::vec3 landed = glm::floor(centre + toward * float(step));
+                if (toward.y > 0.0f && landed.y >= filled) break;
+                const int64_t u = spec_.voxelOfCell(landed);
                 if (u < 0) break;
                 if (obstacles_[size_t(u)] != 0) {
                     blocked = true;
@@ -271,6 +273,7 @@ shared::LightGridPush GpuLightGrid::push() const {
     p.sizeZ = spec_.size[2];
     p.directions = directionCount_;
     p.obstacleTop = obstacleTop_;
+    p.inverseSide = spec_.inverseSide();
     return p;
 }
 

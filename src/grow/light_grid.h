@@ -34,8 +34,10 @@ struct LightGridSpec {
 
     uint64_t voxels() const { return uint64_t(size[0]) * size[1] * size[2]; }
     glm::vec3 centre(uint64_t voxel) const;
+    // What the shaders multiply by where they would divide by the side (compute/shared/light_layout.h).
+    float inverseSide() const { return 1.0f / side; }
     // The grid coordinates of the voxel holding p, whole numbers, outside the grid or not.
-    glm::vec3 cellAt(glm::vec3 p) const { return glm::floor((p - origin) / side); }
+    glm::vec3 cellAt(glm::vec3 p) const { return glm::floor((p - origin) * inverseSide()); }
     // The voxel of a cell, or -1 outside the grid.
     int64_t voxelOfCell(glm::vec3 cell) const;
     // The voxel holding p, or -1 outside (compute/grow/light_grid.glsl's voxelAt).

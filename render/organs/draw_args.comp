@@ -1,9 +1,8 @@
 #version 460
-// The indirect draw records of a frame, from the organ table on the device: one indexed draw per organ kind
-// (its mesh's index range, the kind's instance count and first instance), then one per leaf shape (the shape's
-// triangles of the leaf mesh, its leaves' count and first place in the leaf order, which the same invocation lays
-// out: leaf_shapes.comp), and the shadow volumes' draw, so the host never reads instance counts. The leaf kind's own
-// record draws nothing.
+// The indirect draw records of a frame, from its draw lists on the device (organs/draw_lists.comp): one indexed draw
+// per bucket, a kind or a leaf shape at a level of detail (the mesh's index range for it: for a leaf shape, its
+// triangles of the leaf mesh or of the leaf hull; the bucket's count and first place in the order, which the same
+// invocation lays out), and the shadow volumes' draw, so the host never reads instance counts.
 #extension GL_GOOGLE_include_directive : require
 
 #include "render/shared/draw_layout.h"
@@ -28,36 +27,44 @@ layout(std430, binding = 2) buffer Volumes {
     VolumeDraw volumes;
 };
 layout(std430, binding = 3) buffer Buckets {
-    uint counts[kDrawMaxLeafShapes];
-    uint cursors[kDrawMaxLeafShapes];
+    uint counts[kDrawBuckets];
+    uint cursors[kDrawBuckets];
 };
 layout(std430, binding = 4) readonly buffer LeafShapeTriangles {
     uvec2 leafShapeTriangles[];  // per shape: its first triangle in the leaf mesh, and its count
+};
+layout(std430, binding = 5) readonly buffer LeafHullTriangles {
+    uvec2 leafHullTriangles[];  // the same in the leaf hull
 };
 layout(push_constant) uniform Push {
     DrawArgsPush push;
 };
 
 void main() {
-    uint kind = gl_GlobalInvocationID.x;
-    if (kind < kOrganKinds) {
-        uint count = kind == kOrganLeaf ? 0u : table.count[kind];
-        commands[kind] = DrawIndexedCommand(push.indexCount[kind], count, push.firstIndex[kind],
-                                            push.vertexOffset[kind], count > 0u ? table.first[kind] : 0u);
-    }
-    if (kind == 0u) {
-        uint first = 0u;
-        for (uint shape = 0u; shape < push.leafShapes; ++shape) {
-            const uvec2 triangles = leafShapeTriangles[shape];
-            commands[kOrganKinds + shape] =
-                DrawIndexedCommand(3u * triangles.y, counts[shape], push.firstIndex[kOrganLeaf] + 3u * triangles.x,
-                                   push.vertexOffset[kOrganLeaf], first);
-            cursors[shape] = first;
-            first += counts[shape];
+    if (gl_GlobalInvocationID.x != 0u) return;
+    uint first = 0u;
+    for (uint level = kDrawLevelNear; level <= kDrawLevelFar; ++level) {
+        const bool far = level == kDrawLevelFar;
+        for (uint slot = 0u; slot < kOrganKinds + push.leafShapes; ++slot) {
+            const uint bucket = slot + level * kDrawSlots;
+            const uint kind = slot < kOrganKinds ? slot : kOrganLeaf;
+            DrawIndexedCommand command = DrawIndexedCommand(
+                far ? push.farIndexCount[kind] : push.indexCount[kind], counts[bucket],
+                far ? push.farFirstIndex[kind] : push.firstIndex[kind],
+                far ? push.farVertexOffset[kind] : push.vertexOffset[kind], first);
+            if (slot >= kOrganKinds) {
+                const uvec2 triangles = far ? leafHullTriangles[slot - kOrganKinds]
+                                            : leafShapeTriangles[slot - kOrganKinds];
+                command.indexCount = 3u * triangles.y;
+                command.firstIndex += 3u * triangles.x;
+            }
+            commands[bucket] = command;
+            cursors[bucket] = first;
+            first += counts[bucket];
         }
-        volumes.vertexCount = kVolumeCorners;
-        volumes.instanceCount = min(volumes.allocated, push.volumeCapacity) / kVolumeVerticesPerTriangle;
-        volumes.firstVertex = 0u;
-        volumes.firstInstance = 0u;
     }
+    volumes.vertexCount = kVolumeCorners;
+    volumes.instanceCount = min(volumes.allocated, push.volumeCapacity) / kVolumeVerticesPerTriangle;
+    volumes.firstVertex = 0u;
+    volumes.firstInstance = 0u;
 }

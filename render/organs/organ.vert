@@ -1,7 +1,7 @@
 #version 460
-// Organs, instanced: one draw per organ kind whose instances come from the instance buffer by gl_InstanceIndex
-// (the draw's firstInstance is the kind's first instance), but leaves: a draw per leaf shape, whose instances come
-// through the leaf order (organs/leaf_shapes.comp). The ground plane is drawn with the same shader.
+// Organs, instanced: a draw per draw list (a kind or a leaf shape at a level of detail, organs/draw_lists.comp),
+// whose instances come through the frame's order by gl_InstanceIndex (the draw's firstInstance is the list's first
+// place). The ground plane is drawn with the same shader.
 #extension GL_GOOGLE_include_directive : require
 
 #include "render/shared/draw_layout.h"
@@ -16,8 +16,8 @@ layout(std430, set = 0, binding = 0) readonly buffer Instances {
 layout(std140, set = 0, binding = 1) uniform Frame {
     DrawFrame frame;
 };
-layout(std430, set = 0, binding = 3) readonly buffer LeafOrder {
-    uint leafOrder[];
+layout(std430, set = 0, binding = 3) readonly buffer Order {
+    uint order[];
 };
 layout(push_constant) uniform Push {
     DrawPush push;
@@ -60,7 +60,7 @@ void main() {
         outUv = vec2(0.0);
         outTexture = -1;
     } else {
-        OrganInstance o = instances[push.kind == kOrganLeaf ? leafOrder[gl_InstanceIndex] : gl_InstanceIndex];
+        OrganInstance o = instances[order[gl_InstanceIndex]];
         OrganVertex v = organVertex(o, push.kind, inPosition, inNormal, frame.cameraRight.xyz, frame.cameraUp.xyz,
                                     frame.cameraPosition, frame.options.w != 0u);
         world = v.position;

@@ -88,28 +88,48 @@ struct DrawPush {
     uint pass;  // kPass*
 };
 
-// draw_args.comp: the index range of each kind's mesh, and how many volume vertices fit in their buffer.
+// draw_args.comp: the index ranges of each kind's meshes (drawn near, and far: the kind's shadow hull, a coarser
+// mesh of the same organ), and how many volume vertices fit in their buffer.
 struct DrawArgsPush {
     uint indexCount[kOrganKinds];
     uint firstIndex[kOrganKinds];
     int vertexOffset[kOrganKinds];
+    uint farIndexCount[kOrganKinds];
+    uint farFirstIndex[kOrganKinds];
+    int farVertexOffset[kOrganKinds];
     uint volumeCapacity;  // vertices; a multiple of kVolumeVerticesPerTriangle
     uint leafShapes;      // shapes in the leaf mesh, each drawn by a draw of its own after the kinds' draws
 };
 
-// Leaf shapes a frame draws apart (the built-in ones and the models after them): each shape's leaves are gathered
-// into an order of their own (organs/leaf_shapes.comp) and drawn with that shape's triangles alone.
+// Leaf shapes a frame draws apart (the built-in ones and the models after them): each shape's leaves are drawn with
+// that shape's triangles alone.
 SIMECO_CONST kDrawMaxLeafShapes = 128u;
 
-// organs/leaf_shapes.comp: counts the leaves of each shape (kLeafShapesCount), then, once draw_args.comp has made
-// the counts into each shape's first place in the order, writes every leaf's instance there (kLeafShapesScatter).
-SIMECO_CONST kLeafShapesCount = 0u;
-SIMECO_CONST kLeafShapesScatter = 1u;
-struct LeafShapesPush {
+// A frame's organs are drawn from lists (organs/draw_lists.comp): one per organ kind and one per leaf shape (a
+// slot), each at two levels of detail, near (the drawn meshes) and far (the coarser hulls, for organs a few pixels
+// across); organs wholly outside the view are in none. A list's draw reads its instances through the frame's
+// order, where each list has its places (draw_args.comp lays them out from the counts). A bucket is a slot at a
+// level: slot + level * kDrawSlots. The leaf kind's own slot stays empty.
+SIMECO_CONST kDrawSlots = kOrganKinds + kDrawMaxLeafShapes;
+SIMECO_CONST kDrawLevelNear = 0u;
+SIMECO_CONST kDrawLevelFar = 1u;
+SIMECO_CONST kDrawBuckets = 2u * kDrawSlots;
+
+// organs/draw_lists.comp: counts each bucket's organs (kDrawListsCount), then, once draw_args.comp has made the
+// counts into each bucket's first place in the order, writes every organ's instance there (kDrawListsScatter).
+SIMECO_CONST kDrawListsCount = 0u;
+SIMECO_CONST kDrawListsScatter = 1u;
+struct DrawListsPush {
     uint pass;
     uint shapes;
+    uint levels;  // 1: organs a few pixels across are drawn far; 0: all near
+    uint cull;    // 1: organs wholly outside the view are left out
+    // Far below these sizes on screen, in pixels: a stem's width, a leaf's length or width, a sphere's or disc's
+    // diameter.
+    float farStemPixels;
+    float farLeafPixels;
+    float farRoundPixels;
     uint pad0;
-    uint pad1;
 };
 
 // The indirect draw of the shadow volumes, preceded by the counter the volume kernel allocates with.
@@ -174,8 +194,8 @@ static_assert(sizeof(MeshVertex) == 32);
 static_assert(sizeof(DrawFrame) == 64 + 11 * 16);
 static_assert(sizeof(DisplayPush) == 16);
 static_assert(sizeof(DrawPush) == 8);
-static_assert(sizeof(DrawArgsPush) == 68);
-static_assert(sizeof(LeafShapesPush) == 16);
+static_assert(sizeof(DrawArgsPush) == 128);
+static_assert(sizeof(DrawListsPush) == 32);
 static_assert(sizeof(VolumeDraw) == 32);
 static_assert(sizeof(ShadowVolumePush) == 96);
 static_assert(sizeof(OutlinePush) == 48);

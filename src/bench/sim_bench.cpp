@@ -88,6 +88,13 @@ SimEntry measure(const SimBenchOptions& o, const std::string& scene, std::uint32
             (shadows == draw::Shadows::Volume ? e.growingFramesPerSecondShadows : e.growingFramesPerSecondNoShadows) =
                 growing;
         }
+        for (size_t part = 0; part < parts.size(); ++part) {
+            const draw::DrawnOrgans drawn = renderer.drawnOrgans(part);
+            for (std::uint32_t kind = 0; kind < shared::kOrganKinds; ++kind) {
+                e.drawnNear[kind] += drawn.near[kind];
+                e.drawnFar[kind] += drawn.far[kind];
+            }
+        }
     }
     if (e.stages.grow > 0) {
         e.particlesPerSecond = double(simulation.modules()) / e.stages.grow;

@@ -5,6 +5,7 @@
 // copy bandwidth, and each stage's wall time (medians). See docs/BENCHMARKS.md.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -14,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "bench/copy_bandwidth.h"
+#include "compute/shared/organ_layout.h"
 
 namespace simeco::bench {
 
@@ -53,6 +55,9 @@ struct SimEntry {
     // second of a field that ticks once a frame, as `simeco view` grows it: 1 / (the tick's other stages + a frame).
     double frameShadowsSeconds = 0, frameNoShadowsSeconds = 0;
     double growingFramesPerSecondShadows = 0, growingFramesPerSecondNoShadows = 0;
+    // The frame's organs by kind (kOrgan*) drawn with the finer meshes and the coarser ones; the rest were outside
+    // the view.
+    std::array<std::uint64_t, shared::kOrganKinds> drawnNear{}, drawnFar{};
 };
 
 struct SimBenchReport {

@@ -1,6 +1,7 @@
 #include <fmt/format.h>
 
 #include "bench/sim_bench.h"
+#include "export/organ_geometry.h"
 
 namespace simeco::bench {
 
@@ -44,6 +45,12 @@ nlohmann::json simReportJson(const SimBenchReport& report) {
                                                  {"no_shadows", e.frameNoShadowsSeconds}};
                 entry["growing_frames_per_second"] = {{"shadow_volumes", e.growingFramesPerSecondShadows},
                                                       {"no_shadows", e.growingFramesPerSecondNoShadows}};
+                nlohmann::json near, far;
+                for (std::uint32_t kind = 0; kind < shared::kOrganKinds; ++kind) {
+                    near[exporter::organKindName(kind)] = e.drawnNear[kind];
+                    far[exporter::organKindName(kind)] = e.drawnFar[kind];
+                }
+                entry["drawn_organs"] = {{"near", near}, {"far", far}};
             }
         }
         entries.push_back(std::move(entry));
@@ -76,6 +83,14 @@ std::string formatSimTable(const SimBenchReport& report) {
                                "{:.2f} and {:.2f} frames/s\n",
                                "", e.frameShadowsSeconds, e.frameNoShadowsSeconds, e.growingFramesPerSecondShadows,
                                e.growingFramesPerSecondNoShadows);
+        if (e.notDrawn.empty()) {
+            std::uint64_t near = 0, far = 0;
+            for (std::uint32_t kind = 0; kind < shared::kOrganKinds; ++kind) {
+                near += e.drawnNear[kind];
+                far += e.drawnFar[kind];
+            }
+            out += fmt::format("{:>7} organs drawn: {} with the finer meshes, {} with the coarser\n", "", near, far);
+        }
     }
     return out;
 }

@@ -200,12 +200,12 @@ DrawPipelines::DrawPipelines(const vk::Context& context, VkRenderPass renderPass
 
 void DrawPipelines::pushDescriptors(VkCommandBuffer cmd, const vk::Buffer& instances,
                                     const vk::Buffer& frameConstants, const VkDescriptorImageInfo& textures,
-                                    const vk::Buffer& leafOrder) const {
+                                    const vk::Buffer& order) const {
     std::array<VkDescriptorBufferInfo, 4> infos{{
         {instances.handle(), 0, instances.bindingRange()},
         {frameConstants.handle(), 0, frameConstants.bindingRange()},
         {},
-        {leafOrder.handle(), 0, leafOrder.bindingRange()},
+        {order.handle(), 0, order.bindingRange()},
     }};
     std::array<VkWriteDescriptorSet, 4> writes{};
     for (std::uint32_t i = 0; i < writes.size(); ++i) {

@@ -33,10 +33,10 @@ public:
     VkPipeline sun(Culling culling) const { return culling == Culling::Back ? sunCulled_.get() : sun_.get(); }
     VkPipeline volume() const { return volume_.get(); }
 
-    // The organs' instances, the frame's constants, the textures (draw::TextureArray) and the leaves' order by shape
-    // (organs/leaf_shapes.comp) for the draws after it.
+    // The organs' instances, the frame's constants, the textures (draw::TextureArray) and the frame's order of the
+    // instances by draw list (organs/draw_lists.comp) for the draws after it.
     void pushDescriptors(VkCommandBuffer cmd, const vk::Buffer& instances, const vk::Buffer& frameConstants,
-                         const VkDescriptorImageInfo& textures, const vk::Buffer& leafOrder) const;
+                         const VkDescriptorImageInfo& textures, const vk::Buffer& order) const;
 
 private:
     PFN_vkCmdPushDescriptorSetKHR cmdPushDescriptorSet_ = nullptr;

@@ -57,6 +57,11 @@ struct RenderSettings {
     glm::vec3 outlineColor{0.02f, 0.02f, 0.02f};
     // Paper-cut: where the sun's cosine on a surface falls below this, the paper shows through.
     float paperCutThreshold = 0.02f;
+    // Organs a few pixels across on screen drawn with coarser meshes (their kind's shadow hull: a 6-sided stem, a
+    // leaf's coarser cut, a sphere of fewer bands); off: every organ with the finest.
+    bool levelsOfDetail = true;
+    // Organs wholly outside the view left out of the draws (their shadows are still cast).
+    bool cullOutsideView = true;
     // Shadow volume vertices take 16 bytes each; a scene needing more than this (or than the device binds in
     // shared::kVolumeWindows storage buffers) draws the volumes that fit.
     std::uint64_t maxShadowVolumeBytes = 512ull << 20;

@@ -37,6 +37,11 @@ static_assert(kDrawCommandSize == 20);
 constexpr float kOpenSurfaceShift = 0.02f;
 // Capped shadow volumes end this fraction of the ground's half side below it.
 constexpr float kVolumeCapDepth = 0.01f;
+// Organs smaller on screen than these (pixels: a stem's width, a leaf's length, a sphere's or disc's diameter) are
+// drawn with their kind's coarser mesh (draw_lists.comp): below them the finer mesh's extra detail is under a pixel.
+constexpr float kFarStemPixels = 2.0f;
+constexpr float kFarLeafPixels = 12.0f;
+constexpr float kFarRoundPixels = 8.0f;
 // Line half-width of toon outlines per 600 pixels of image height, and what counts as a depth edge.
 constexpr float kOutlinePixelsPer600 = 1.0f;
 constexpr float kOutlineThreshold = 0.02f;
@@ -90,7 +95,7 @@ void requireFeatures(const vk::Context& context) {
 struct Renderer::Resources {
     Resources(const vk::Context& context, const ir::DrawAssets& assets)
         : meshes(context, assets.models), textures(context, assets.textures), renderPass(createRenderPass(context)), pipelines(context, renderPass.get()),
-          drawArgs(kernel(context, "organs/draw_args")), leafShapes(kernel(context, "organs/leaf_shapes")),
+          drawArgs(kernel(context, "organs/draw_args")), drawLists(kernel(context, "organs/draw_lists")),
           shadowVolumes(kernel(context, "shadows/shadow_volumes")),
           toonOutline(kernel(context, "styles/toon_outline")),
           frameConstants(context, sizeof(shared::DrawFrame), vk::MemoryUsage::DeviceLocal,
@@ -103,14 +108,14 @@ struct Renderer::Resources {
     UniqueRenderPass renderPass;
     DrawPipelines pipelines;
     vk::ComputePipeline drawArgs;
-    vk::ComputePipeline leafShapes;
+    vk::ComputePipeline drawLists;
     vk::ComputePipeline shadowVolumes;
     vk::ComputePipeline toonOutline;
     // Written by each frame's own commands (vkCmdUpdateBuffer), so frames in flight each draw with theirs.
     vk::Buffer frameConstants;
-    // One of each per part of the organs, added as frames need them: the indirect draws (the kinds', then a leaf
-    // shape's each), each leaf shape's count and next place, and the leaves' order by shape (one word an instance).
-    std::vector<vk::Buffer> drawCommands, leafBuckets, leafOrders;
+    // One of each per part of the organs, added as frames need them: the indirect draws (a draw list's each),
+    // each list's count and next place, and the instances' order by list (one word an instance).
+    std::vector<vk::Buffer> drawCommands, drawBuckets, drawOrders;
     vk::Buffer volumeDraw;
     vk::Buffer volumeVertices;
     std::uint32_t volumeCapacity = 0; // vertices
@@ -297,16 +302,33 @@ void Renderer::Resources::recordDrawInputs(VkCommandBuffer cmd, const std::vecto
         args.firstIndex[kind] = mesh.organs[kind].firstIndex;
         args.vertexOffset[kind] = mesh.organs[kind].vertexOffset;
     }
+    for (std::uint32_t kind = 0; kind < kOrganKinds; ++kind) {
+        args.farIndexCount[kind] = mesh.hulls[kind].indexCount;
+        args.farFirstIndex[kind] = mesh.hulls[kind].firstIndex;
+        args.farVertexOffset[kind] = mesh.hulls[kind].vertexOffset;
+    }
     args.volumeCapacity = shadows ? r.volumesWritten() : 0;
     args.leafShapes = static_cast<std::uint32_t>(mesh.leafShapeTriangles.size());
-    // The leaves of each part by shape: counted, laid out by draw_args.comp, then written in their places. Sized by
-    // the parts' instance buffers: the counts may be the device's alone.
-    auto leafPass = [&](std::uint32_t pass) {
+    const RenderSettings& settings = setup.settings;
+    shared::DrawListsPush lists{};
+    lists.shapes = args.leafShapes;
+    lists.levels = settings.levelsOfDetail ? 1u : 0u;
+    lists.cull = settings.cullOutsideView ? 1u : 0u;
+    // In the frame's own pixels: a supersampled frame's are smaller.
+    const float samples = static_cast<float>(std::max(settings.antialias, 1u));
+    lists.farStemPixels = kFarStemPixels * samples;
+    lists.farLeafPixels = kFarLeafPixels * samples;
+    lists.farRoundPixels = kFarRoundPixels * samples;
+    // Each part's organs into their draw lists: counted, laid out by draw_args.comp, then written in their places.
+    // Sized by the parts' instance buffers: the counts may be the device's alone.
+    auto listPass = [&](std::uint32_t pass) {
+        lists.pass = pass;
         for (size_t p = 0; p < parts.size(); ++p) {
             const std::uint64_t capacity = parts[p].instances->size() / sizeof(shared::OrganInstance);
-            r.leafShapes.dispatch(cmd, {*parts[p].instances, *parts[p].table, r.leafBuckets[p], r.leafOrders[p]},
-                                  shared::LeafShapesPush{pass, args.leafShapes, 0, 0},
-                                  r.leafShapes.groupsFor(capacity));
+            r.drawLists.dispatch(cmd,
+                                 {*parts[p].instances, *parts[p].table, r.drawBuckets[p], r.drawOrders[p],
+                                  r.frameConstants},
+                                 lists, r.drawLists.groupsFor(capacity));
         }
     };
 
@@ -316,13 +338,13 @@ void Renderer::Resources::recordDrawInputs(VkCommandBuffer cmd, const std::vecto
                          VK_PIPELINE_STAGE_VERTEX_SHADER_BIT,
                      VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT);
     vk::cmdFill(cmd, r.volumeDraw, 0);
-    for (size_t p = 0; p < parts.size(); ++p) vk::cmdFill(cmd, r.leafBuckets[p], 0);
+    for (size_t p = 0; p < parts.size(); ++p) vk::cmdFill(cmd, r.drawBuckets[p], 0);
     vkCmdUpdateBuffer(cmd, r.frameConstants.handle(), 0, sizeof(frame), &frame);
     memoryDependency(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
                      VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_VERTEX_SHADER_BIT |
                          VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
                      VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_UNIFORM_READ_BIT);
-    leafPass(shared::kLeafShapesCount);
+    listPass(shared::kDrawListsCount);
     if (shadows) {
         // Where the ground receives the shadows, below everything drawn above it, the volumes end a little under
         // it: far enough that their far caps stay behind it in depth, unless the camera looks from below.
@@ -378,12 +400,12 @@ void Renderer::Resources::recordDrawInputs(VkCommandBuffer cmd, const std::vecto
                      VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
     for (size_t p = 0; p < parts.size(); ++p)
         r.drawArgs.dispatch(cmd,
-                            {*parts[p].table, r.drawCommands[p], r.volumeDraw, r.leafBuckets[p],
-                             r.meshes.leafShapeTriangles()},
+                            {*parts[p].table, r.drawCommands[p], r.volumeDraw, r.drawBuckets[p],
+                             r.meshes.leafShapeTriangles(), r.meshes.leafHullTriangles()},
                             args, 1);
     memoryDependency(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
                      VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
-    leafPass(shared::kLeafShapesScatter);
+    listPass(shared::kDrawListsScatter);
     memoryDependency(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
                      VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_VERTEX_INPUT_BIT |
                          VK_PIPELINE_STAGE_VERTEX_SHADER_BIT,
@@ -428,19 +450,21 @@ void Renderer::Resources::recordScene(VkCommandBuffer cmd, const RenderTarget& i
         const auto shapes = static_cast<std::uint32_t>(mesh.leafShapeTriangles.size());
         auto drawKind = [&](std::uint32_t kind, size_t part) {
             push(kind);
-            // Leaves by shape: the kind's own record draws nothing.
+            // Leaves by shape: the kind's own list is empty.
             const std::uint32_t first = kind == shared::kOrganLeaf ? kOrganKinds : kind;
-            const std::uint32_t draws = kind == shared::kOrganLeaf ? shapes : 1;
-            for (std::uint32_t d = first; d < first + draws; ++d)
-                vkCmdDrawIndexedIndirect(cmd, r.drawCommands[part].handle(), d * kDrawCommandSize, 1,
-                                         static_cast<std::uint32_t>(kDrawCommandSize));
+            const std::uint32_t slots = kind == shared::kOrganLeaf ? shapes : 1;
+            for (std::uint32_t level : {shared::kDrawLevelNear, shared::kDrawLevelFar})
+                for (std::uint32_t slot = first; slot < first + slots; ++slot)
+                    vkCmdDrawIndexedIndirect(cmd, r.drawCommands[part].handle(),
+                                             (slot + level * shared::kDrawSlots) * kDrawCommandSize, 1,
+                                             static_cast<std::uint32_t>(kDrawCommandSize));
         };
         for (Culling culling : {Culling::Back, Culling::None}) {
             vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
                               sunPass ? r.pipelines.sun(culling) : r.pipelines.base(culling));
             for (size_t part = 0; part < parts.size(); ++part) {
                 r.pipelines.pushDescriptors(cmd, *parts[part].instances, r.frameConstants,
-                                            r.textures.descriptor(), r.leafOrders[part]);
+                                            r.textures.descriptor(), r.drawOrders[part]);
                 for (std::uint32_t kind = 0; kind < kOrganKinds; ++kind) {
                     if (mesh.closedHull[kind] == (culling == Culling::Back)) {
                         drawKind(kind, part);
@@ -501,19 +525,19 @@ void Renderer::record(VkCommandBuffer cmd, const RenderTarget& target, const std
                       const FrameSetup& setup) {
     Resources& r = *resources_;
     while (r.drawCommands.size() < parts.size()) {
-        r.drawCommands.emplace_back(context_, (kOrganKinds + shared::kDrawMaxLeafShapes) * kDrawCommandSize,
-                                    vk::MemoryUsage::DeviceLocal, VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT);
-        r.leafBuckets.emplace_back(context_, 2 * shared::kDrawMaxLeafShapes * sizeof(std::uint32_t),
+        r.drawCommands.emplace_back(context_, shared::kDrawBuckets * kDrawCommandSize, vk::MemoryUsage::DeviceLocal,
+                                    VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT);
+        r.drawBuckets.emplace_back(context_, 2 * shared::kDrawBuckets * sizeof(std::uint32_t),
                                    vk::MemoryUsage::DeviceLocal);
-        r.leafOrders.emplace_back();
+        r.drawOrders.emplace_back();
     }
-    // A part's leaf order holds a word for each instance its buffer can hold.
+    // A part's order holds a word for each instance its buffer can hold.
     for (size_t p = 0; p < parts.size(); ++p) {
         const VkDeviceSize instances = parts[p].instances->size() / sizeof(shared::OrganInstance);
         const VkDeviceSize bytes = std::max<VkDeviceSize>(instances, 1) * sizeof(std::uint32_t);
-        if (r.leafOrders[p] && r.leafOrders[p].size() >= bytes) continue;
-        if (r.leafOrders[p]) r.retired.emplace_back(r.framesPrepared, std::move(r.leafOrders[p]));
-        r.leafOrders[p] = vk::Buffer(context_, bytes, vk::MemoryUsage::DeviceLocal);
+        if (r.drawOrders[p] && r.drawOrders[p].size() >= bytes) continue;
+        if (r.drawOrders[p]) r.retired.emplace_back(r.framesPrepared, std::move(r.drawOrders[p]));
+        r.drawOrders[p] = vk::Buffer(context_, bytes, vk::MemoryUsage::DeviceLocal);
     }
     r.recordDrawInputs(cmd, parts, setup);
     r.recordScene(cmd, target, parts, setup);
@@ -522,6 +546,20 @@ void Renderer::record(VkCommandBuffer cmd, const RenderTarget& target, const std
                      VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_HOST_BIT,
                      VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_HOST_READ_BIT);
     if (hasOutlines(setup.settings.style)) r.recordOutlines(cmd, target, setup);
+}
+
+DrawnOrgans Renderer::drawnOrgans(size_t part) const {
+    const Resources& r = *resources_;
+    DrawnOrgans drawn;
+    if (part >= r.drawBuckets.size()) return drawn;
+    const std::vector<std::uint32_t> counts =
+        vk::downloadVector<std::uint32_t>(context_, r.drawBuckets[part], shared::kDrawBuckets);
+    for (std::uint32_t bucket = 0; bucket < shared::kDrawBuckets; ++bucket) {
+        const std::uint32_t slot = bucket % shared::kDrawSlots;
+        const std::uint32_t kind = slot < kOrganKinds ? slot : shared::kOrganLeaf;
+        (bucket < shared::kDrawSlots ? drawn.near : drawn.far)[kind] += counts[bucket];
+    }
+    return drawn;
 }
 
 const vk::Buffer& Renderer::finalColor(const RenderTarget& target, const FrameSetup& setup) {

@@ -9,6 +9,7 @@
 // Frames may be in flight (kFramesInFlight): nothing the host writes for a frame is shared with the next.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -48,6 +49,12 @@ struct FrameSetup {
     // prepareWithin gave room for any count: then each part dispatches for `counts`).
     shared::OrganTable counts{};
     std::vector<shared::OrganTable> partCounts;
+};
+
+// The organs of a part a frame drew, by kind (kOrgan*), with the finer meshes and the coarser ones; those in neither
+// were outside the view (RenderSettings::levelsOfDetail, cullOutsideView).
+struct DrawnOrgans {
+    std::array<std::uint32_t, shared::kOrganKinds> near{}, far{};
 };
 
 // The camera a frame is rendered with: settings.camera, or the default angles framed on `bounds`.
@@ -99,6 +106,8 @@ public:
     static const vk::Buffer& finalColor(const RenderTarget& target, const FrameSetup& setup);
     // The frame `record` drew into `target`, once its submission has completed.
     Frame readBack(const RenderTarget& target, const FrameSetup& setup) const;
+    // What the last frame recorded drew of part `part`, once its submission has completed (reads the device).
+    DrawnOrgans drawnOrgans(size_t part = 0) const;
     // The offscreen target of the given size, made on first use and kept while the size stays.
     RenderTarget& offscreenTarget(std::uint32_t width, std::uint32_t height);
     // Another offscreen target, for a frame in flight beside the one drawing into the first.

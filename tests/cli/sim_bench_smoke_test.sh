@@ -40,5 +40,9 @@ for e in entries:
     for key in ("frame_median_seconds", "growing_frames_per_second"):
         for shadows in ("shadow_volumes", "no_shadows"):
             positive(e.get(key, {}), shadows, f"{where}: {key}")
+    drawn = e.get("drawn_organs", {})
+    counts = [n for level in ("near", "far") for n in drawn.get(level, {}).values()]
+    check(len(counts) == 10 and 0 < sum(counts) <= e.get("organs", 0),
+          f"{where}: drawn_organs {drawn} against {e.get('organs')} organs")
 finish(f"sim bench smoke test: {len(entries)} fields")
 PY

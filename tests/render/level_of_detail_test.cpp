@@ -1,0 +1,123 @@
+// Levels of detail and culling: organs a few pixels across are drawn with their kind's coarser mesh and look as they
+// did; organs wholly outside the view are left out of the draws and the frame is the same, their shadows too.
+#include <cstdint>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "compute/shared/organ_layout.h"
+#include "draw/renderer.h"
+#include "test_scene.h"
+
+namespace simeco::test {
+namespace {
+
+using draw::Frame;
+
+class LevelOfDetailTest : public RenderTest {};
+
+// A small plant: a stem, a serrate leaf on it and a fruit at its top.
+std::vector<OrganInstance> smallPlant() {
+    return {makeStem({0, 0, 0}, {0, 1, 0}, {0, 0, 1}, 1.0f, 0.05f, 0, 1),
+            makeLeaf({0, 0.5f, 0}, {1, 0, 0}, {0, 1, 0}, 0.8f, 0.45f, shared::kLeafSerrate, 0, 2),
+            makeSphere({0, 1.05f, 0}, 0.2f, 0, 3)};
+}
+
+draw::RenderSettings viewFrom(float distance, bool levels) {
+    draw::RenderSettings s;
+    s.width = 160;
+    s.height = 120;
+    s.shadows = draw::Shadows::None;
+    s.levelsOfDetail = levels;
+    draw::Camera camera;
+    camera.distance = distance;
+    camera.target = glm::vec3(0.2f, 0.5f, 0.0f);
+    s.camera = camera;
+    return s;
+}
+
+std::size_t organPixelCount(const Frame& frame, std::uint32_t organ) {
+    return organPixels(frame, organ).pixels;
+}
+
+TEST_F(LevelOfDetailTest, NearOrgansAreDrawnWithTheFinestMeshesAndDistantOnesWithCoarserOnesThatLookAlike) {
+    TestScene scene = uploadScene(context(), smallPlant());
+    // Close (the leaf about 90 pixels long): every organ near.
+    renderer().render(scene.instances, scene.table, scene.bounds, viewFrom(2.0f, true));
+    draw::DrawnOrgans close = renderer().drawnOrgans();
+    for (std::uint32_t kind : {shared::kOrganStem, shared::kOrganLeaf, shared::kOrganSphere}) {
+        EXPECT_EQ(close.near[kind], 1u) << "kind " << kind;
+        EXPECT_EQ(close.far[kind], 0u) << "kind " << kind;
+    }
+
+    // Far (the leaf about 8 pixels long, the stem under a pixel wide, the fruit 2 pixels across): every organ far.
+    const Frame coarse = renderer().render(scene.instances, scene.table, scene.bounds, viewFrom(24.0f, true));
+    draw::DrawnOrgans distant = renderer().drawnOrgans();
+    for (std::uint32_t kind : {shared::kOrganStem, shared::kOrganLeaf, shared::kOrganSphere}) {
+        EXPECT_EQ(distant.near[kind], 0u) << "kind " << kind;
+        EXPECT_EQ(distant.far[kind], 1u) << "kind " << kind;
+    }
+    // Off, the same view draws them near, and they cover about the same pixels.
+    const Frame fine = renderer().render(scene.instances, scene.table, scene.bounds, viewFrom(24.0f, false));
+    EXPECT_EQ(renderer().drawnOrgans().near[shared::kOrganLeaf], 1u);
+    maybeSavePreview(coarse, "lod_far");
+    maybeSavePreview(fine, "lod_fine");
+    for (std::uint32_t organ : {1u, 2u}) {
+        const std::size_t coarsePixels = organPixelCount(coarse, organ), finePixels = organPixelCount(fine, organ);
+        ASSERT_GT(finePixels, 0u) << "organ " << organ;
+        EXPECT_GE(coarsePixels, finePixels * 6 / 10) << "organ " << organ;
+        EXPECT_LE(coarsePixels, finePixels * 11 / 10 + 1) << "organ " << organ;
+    }
+}
+
+TEST_F(LevelOfDetailTest, OrgansOutsideTheViewAreLeftOutAndTheFrameAndItsShadowsStayTheSame) {
+    // A row of fruits on stems along x, the camera on the ground beside it (to -x) and the sun low from +x: no organ
+    // is in the frame, but their shadows stretch into it.
+    std::vector<OrganInstance> row;
+    for (std::uint32_t i = 0; i < 12; ++i) {
+        const glm::vec3 base(0.6f * static_cast<float>(i), 0, 0);
+        row.push_back(makeStem(base, {0, 1, 0}, {0, 0, 1}, 1.0f, 0.08f, i, 2 * i));
+        row.push_back(makeSphere(base + glm::vec3(0, 1.2f, 0), 0.25f, i, 2 * i + 1));
+    }
+    TestScene scene = uploadScene(context(), row);
+    draw::RenderSettings s;
+    s.width = 160;
+    s.height = 120;
+    s.sunDirection = {1.0f, 0.35f, 0.0f};
+    draw::Camera camera;
+    camera.azimuthDegrees = 0.0f;
+    camera.elevationDegrees = 15.0f;
+    camera.distance = 3.0f;
+    camera.target = glm::vec3(-1.7f, 0.3f, 0.0f);
+    s.camera = camera;
+
+    s.cullOutsideView = true;
+    const Frame culled = renderer().render(scene.instances, scene.table, scene.bounds, s);
+    const draw::DrawnOrgans drawn = renderer().drawnOrgans();
+    s.cullOutsideView = false;
+    const Frame all = renderer().render(scene.instances, scene.table, scene.bounds, s);
+    const draw::DrawnOrgans allDrawn = renderer().drawnOrgans();
+    maybeSavePreview(culled, "culled_row");
+
+    // The bounds are generous (a stem's reach past its ends where it is mitred): the first stems may be drawn.
+    EXPECT_EQ(drawn.near[shared::kOrganSphere] + drawn.far[shared::kOrganSphere], 0u);
+    EXPECT_LE(drawn.near[shared::kOrganStem] + drawn.far[shared::kOrganStem], 2u);
+    for (std::uint32_t kind : {shared::kOrganStem, shared::kOrganSphere})
+        EXPECT_EQ(allDrawn.near[kind] + allDrawn.far[kind], 12u) << "kind " << kind;
+    // The frame is the same, pixel for pixel, with the row's shadows on the ground (cast from every organ).
+    ASSERT_EQ(culled.rgba.size(), all.rgba.size());
+    EXPECT_EQ(culled.rgba, all.rgba);
+    EXPECT_EQ(culled.organ, all.organ);
+    EXPECT_TRUE(organPixels(culled).empty());
+    std::size_t shaded = 0, lit = 0;
+    for (std::uint32_t y = 0; y < culled.height; ++y)
+        for (std::uint32_t x = 0; x < culled.width; ++x) {
+            if (culled.rgba[4 * (y * culled.width + x) + 3] == 0.0f) continue; // the sky
+            (luminance(culled, x, y) < 0.7f * luminance(culled, 0, culled.height - 1) ? shaded : lit) += 1;
+        }
+    EXPECT_GT(shaded, 100u);
+    EXPECT_GT(lit, shaded);
+}
+
+} // namespace
+} // namespace simeco::test

@@ -26,6 +26,8 @@ layout(set = 0, binding = 2) uniform sampler2DArray textures;
 layout(location = 0) out vec4 outColor;
 layout(location = 1) out uint outPlant;
 layout(location = 2) out uint outOrgan;
+// With shadow volumes, the sun's light on the surface, which the sunlit pass adds where the sun reaches it.
+layout(location = 3) out vec4 outSun;
 
 void main() {
     vec3 albedo = inAlbedo;
@@ -47,6 +49,7 @@ void main() {
         outColor = vec4(cut ? frame.background.rgb : albedo, 1.0);
         outPlant = inPlant;
         outOrgan = inOrgan;
+        outSun = vec4(0.0);
         return;
     }
     float skyWeight = 0.5 + 0.5 * normal.y;  // world up is +y
@@ -55,15 +58,10 @@ void main() {
         sun = min(floor(sun * bands + 0.5), bands) / bands;
         skyWeight = skyWeight > 0.5 ? 1.0 : 0.5;
     }
-    vec3 light = vec3(0.0);
-    if (push.pass != kPassSun) {
-        light += mix(frame.groundBounce.rgb, frame.skyColor.rgb, skyWeight);
-    }
-    if (push.pass != kPassAmbient) {
-        light += sun * frame.sunColor.rgb;
-    }
-    // The sun pass adds to the ambient pass's colour, alpha included, so it adds no alpha.
-    outColor = vec4(light * albedo, push.pass == kPassSun ? 0.0 : 1.0);
+    vec3 ambient = mix(frame.groundBounce.rgb, frame.skyColor.rgb, skyWeight);
+    vec3 sunlight = sun * frame.sunColor.rgb;
+    outColor = vec4((push.pass == kPassAmbient ? ambient : ambient + sunlight) * albedo, 1.0);
+    outSun = vec4(push.pass == kPassAmbient ? sunlight * albedo : vec3(0.0), 0.0);
     outPlant = inPlant;
     outOrgan = inOrgan;
 }

@@ -44,10 +44,9 @@ vec2 organUv(uint kind, vec4 local, vec4 localNormal) {
     return 0.5 + 0.5 * (kind == kOrganDisc ? local.xy : local.yz);
 }
 
-// The sun pass redraws with depth test EQUAL, so positions must come out the same in every pass: no fused or
-// reordered arithmetic that one pipeline's compilation could choose differently from another's.
+// Positions without fused or reordered arithmetic: the same in every pipeline built from this shader (with and
+// without back-face culling), whatever one pipeline's compilation would choose.
 precise gl_Position;
-
 
 void main() {
     precise vec3 world;

@@ -31,11 +31,11 @@ SIMECO_CONST_FLOAT kStemRibbonHalfWidth = 0.96592583f;
 // DrawPush.kind beyond the organ kinds: the ground plane, which reads no instance.
 SIMECO_CONST kDrawGround = kOrganKinds;
 
-// DrawPush.pass: which light a draw adds. Without shadows one pass adds both; with shadow volumes the ambient
-// pass lays down depth and ids, and the sun pass adds the sun where the stencil says a point is lit.
+// DrawPush.pass: which light a draw adds. Without shadows one pass adds both; with shadow volumes the organs' pass
+// lays down the ambient colour, depth and ids, and the sun's light beside them, which the sunlit pass
+// (shadows/sunlit.frag) adds where the stencil says a point is lit.
 SIMECO_CONST kPassFull = 0u;
 SIMECO_CONST kPassAmbient = 1u;
-SIMECO_CONST kPassSun = 2u;
 
 // DrawFrame.options.x
 SIMECO_CONST kStyleLit = 0u;

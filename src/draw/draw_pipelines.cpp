@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "compute/shaders.h"
+#include "draw/render_target.h"
 #include "render/shared/draw_layout.h"
 #include "vk/buffer.h"
 #include "vk/context.h"
@@ -15,7 +16,7 @@
 namespace simeco::draw {
 namespace {
 
-enum class PassKind { Base, Volume, Sun };
+enum class PassKind { Base, Volume, Sunlit };
 
 vk::UniqueShaderModule shaderModule(VkDevice device, std::string_view name) {
     std::span<const std::uint32_t> words = shaders::spirv(name);
@@ -28,14 +29,14 @@ vk::UniqueShaderModule shaderModule(VkDevice device, std::string_view name) {
     return vk::UniqueShaderModule(device, module);
 }
 
-// The base pass writes depth; shadow volumes count their faces in the stencil (Carmack's reverse); the sun's pass
-// lights the surfaces in front of the base pass's depth whose stencil count is zero.
+// The base pass writes depth; shadow volumes count their faces in the stencil (Carmack's reverse); the sunlit pass
+// adds the sun's light to the pixels whose stencil count is zero.
 VkPipelineDepthStencilStateCreateInfo depthStencilState(PassKind pass) {
     VkPipelineDepthStencilStateCreateInfo depth{};
     depth.sType = VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO;
-    depth.depthTestEnable = VK_TRUE;
+    depth.depthTestEnable = pass == PassKind::Sunlit ? VK_FALSE : VK_TRUE;
     depth.depthWriteEnable = pass == PassKind::Base ? VK_TRUE : VK_FALSE;
-    depth.depthCompareOp = pass == PassKind::Sun ? VK_COMPARE_OP_EQUAL : VK_COMPARE_OP_LESS;
+    depth.depthCompareOp = VK_COMPARE_OP_LESS;
     if (pass == PassKind::Volume) {
         // Carmack's reverse: count the volume faces behind the visible surface, back faces up, front faces down.
         depth.stencilTestEnable = VK_TRUE;
@@ -53,7 +54,7 @@ VkPipelineDepthStencilStateCreateInfo depthStencilState(PassKind pass) {
                       0xFF,
                       0xFF,
                       0};
-    } else if (pass == PassKind::Sun) {
+    } else if (pass == PassKind::Sunlit) {
         depth.stencilTestEnable = VK_TRUE;
         depth.front = {VK_STENCIL_OP_KEEP, VK_STENCIL_OP_KEEP, VK_STENCIL_OP_KEEP, VK_COMPARE_OP_EQUAL, 0xFF, 0, 0};
         depth.back = depth.front;
@@ -61,15 +62,16 @@ VkPipelineDepthStencilStateCreateInfo depthStencilState(PassKind pass) {
     return depth;
 }
 
-// The base pass writes its three colour attachments; volumes write none; the sun's pass adds its light to the first.
-std::array<VkPipelineColorBlendAttachmentState, 3> colorBlendAttachments(PassKind pass) {
+// The base pass writes its four colour attachments (colour, ids, the sun's light); volumes write none; the sunlit
+// pass, in the next subpass, adds the sun's light to the colour, its only attachment.
+std::vector<VkPipelineColorBlendAttachmentState> colorBlendAttachments(PassKind pass) {
     const VkColorComponentFlags all =
         VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
-    std::array<VkPipelineColorBlendAttachmentState, 3> blend{};
+    std::vector<VkPipelineColorBlendAttachmentState> blend(pass == PassKind::Sunlit ? 1 : 4);
     for (VkPipelineColorBlendAttachmentState& b : blend) {
         b.colorWriteMask = pass == PassKind::Base ? all : 0;
     }
-    if (pass == PassKind::Sun) {
+    if (pass == PassKind::Sunlit) {
         VkPipelineColorBlendAttachmentState& add = blend[0];
         add.blendEnable = VK_TRUE;
         add.srcColorBlendFactor = VK_BLEND_FACTOR_ONE;
@@ -86,7 +88,10 @@ std::array<VkPipelineColorBlendAttachmentState, 3> colorBlendAttachments(PassKin
 vk::UniquePipeline createPipeline(VkDevice device, VkPipelineLayout layout, VkRenderPass renderPass, PassKind pass,
                                   Culling culling) {
     bool volume = pass == PassKind::Volume;
-    vk::UniqueShaderModule vertex = shaderModule(device, volume ? "shadows/shadow_volume.vert" : "organs/organ.vert");
+    bool sunlit = pass == PassKind::Sunlit;
+    vk::UniqueShaderModule vertex = shaderModule(device, volume   ? "shadows/shadow_volume.vert"
+                                                         : sunlit ? "shadows/sunlit.vert"
+                                                                  : "organs/organ.vert");
     vk::UniqueShaderModule fragment;
     std::vector<VkPipelineShaderStageCreateInfo> stages(1);
     stages[0].sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
@@ -94,7 +99,7 @@ vk::UniquePipeline createPipeline(VkDevice device, VkPipelineLayout layout, VkRe
     stages[0].module = vertex.get();
     stages[0].pName = "main";
     if (!volume) { // volumes only touch the stencil
-        fragment = shaderModule(device, "organs/organ.frag");
+        fragment = shaderModule(device, sunlit ? "shadows/sunlit.frag" : "organs/organ.frag");
         VkPipelineShaderStageCreateInfo stage = stages[0];
         stage.stage = VK_SHADER_STAGE_FRAGMENT_BIT;
         stage.module = fragment.get();
@@ -112,9 +117,10 @@ vk::UniquePipeline createPipeline(VkDevice device, VkPipelineLayout layout, VkRe
         attributes[k] = {k, 0, VK_FORMAT_R32G32B32A32_SFLOAT, 16 * k};
     VkPipelineVertexInputStateCreateInfo vertexInput{};
     vertexInput.sType = VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO;
-    vertexInput.vertexBindingDescriptionCount = 1;
+    // The sunlit pass's triangle comes from its vertex indices alone.
+    vertexInput.vertexBindingDescriptionCount = sunlit ? 0u : 1u;
     vertexInput.pVertexBindingDescriptions = &binding;
-    vertexInput.vertexAttributeDescriptionCount = volume ? shared::kVolumeVerticesPerTriangle : 2u;
+    vertexInput.vertexAttributeDescriptionCount = sunlit ? 0u : (volume ? shared::kVolumeVerticesPerTriangle : 2u);
     vertexInput.pVertexAttributeDescriptions = attributes.data();
 
     VkPipelineInputAssemblyStateCreateInfo assembly{};
@@ -142,7 +148,7 @@ vk::UniquePipeline createPipeline(VkDevice device, VkPipelineLayout layout, VkRe
     multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
 
     VkPipelineDepthStencilStateCreateInfo depth = depthStencilState(pass);
-    std::array<VkPipelineColorBlendAttachmentState, 3> blend = colorBlendAttachments(pass);
+    std::vector<VkPipelineColorBlendAttachmentState> blend = colorBlendAttachments(pass);
     VkPipelineColorBlendStateCreateInfo colorBlend{};
     colorBlend.sType = VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO;
     colorBlend.attachmentCount = static_cast<std::uint32_t>(blend.size());
@@ -168,7 +174,7 @@ vk::UniquePipeline createPipeline(VkDevice device, VkPipelineLayout layout, VkRe
     info.pDynamicState = &dynamic;
     info.layout = layout;
     info.renderPass = renderPass;
-    info.subpass = 0;
+    info.subpass = sunlit ? kSunlitSubpass : kOrganSubpass;
     VkPipeline pipeline = VK_NULL_HANDLE;
     VK_CHECK(vkCreateGraphicsPipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline));
     return vk::UniquePipeline(device, pipeline);
@@ -179,11 +185,12 @@ vk::UniquePipeline createPipeline(VkDevice device, VkPipelineLayout layout, VkRe
 DrawPipelines::DrawPipelines(const vk::Context& context, VkRenderPass renderPass)
     : cmdPushDescriptorSet_(context.cmdPushDescriptorSet()) {
     VkDevice device = context.device();
-    std::array<VkDescriptorSetLayoutBinding, 4> bindings{{
+    std::array<VkDescriptorSetLayoutBinding, 5> bindings{{
         {0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr},
         {1, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
         {2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
         {3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr},
+        {4, VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
     }};
     setLayout_ = vk::createPushDescriptorSetLayout(device, bindings);
     layout_ = vk::createPipelineLayout(device, setLayout_.get(),
@@ -193,8 +200,7 @@ DrawPipelines::DrawPipelines(const vk::Context& context, VkRenderPass renderPass
 
     base_ = createPipeline(device, layout, renderPass, PassKind::Base, Culling::None);
     baseCulled_ = createPipeline(device, layout, renderPass, PassKind::Base, Culling::Back);
-    sun_ = createPipeline(device, layout, renderPass, PassKind::Sun, Culling::None);
-    sunCulled_ = createPipeline(device, layout, renderPass, PassKind::Sun, Culling::Back);
+    sunlit_ = createPipeline(device, layout, renderPass, PassKind::Sunlit, Culling::None);
     volume_ = createPipeline(device, layout, renderPass, PassKind::Volume, Culling::None);
 }
 
@@ -220,6 +226,17 @@ void DrawPipelines::pushDescriptors(VkCommandBuffer cmd, const vk::Buffer& insta
     }
     cmdPushDescriptorSet_(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.get(), 0,
                           static_cast<std::uint32_t>(writes.size()), writes.data());
+}
+
+void DrawPipelines::pushSunLight(VkCommandBuffer cmd, VkImageView sunLight) const {
+    VkDescriptorImageInfo image{VK_NULL_HANDLE, sunLight, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    VkWriteDescriptorSet write{};
+    write.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
+    write.dstBinding = 4;
+    write.descriptorCount = 1;
+    write.descriptorType = VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT;
+    write.pImageInfo = &image;
+    cmdPushDescriptorSet_(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.get(), 0, 1, &write);
 }
 
 } // namespace simeco::draw

@@ -1,10 +1,11 @@
 // The graphics pipelines of a frame. All share one layout — push descriptors for the instance buffer
-// (binding 0) and the DrawFrame uniform block (binding 1), and DrawPush constants — so the descriptors are
-// pushed once per frame.
+// (binding 0), the DrawFrame uniform block (binding 1), the textures (2), the draw lists' order (3) and the sun's
+// light (4, an input attachment), and DrawPush constants — so the descriptors are pushed once per frame.
 //
-//   base    depth LESS with writes, all attachments written (the lit pass, or the ambient pass before shadows)
+//   base    depth LESS with writes, all attachments written (the lit pass, or before shadows the ambient colour,
+//           ids and the sun's light)
 //   volume  shadow volumes: no colour or depth writes, depth clamp, z-fail stencil counting on both faces
-//   sun     depth EQUAL, stencil EQUAL 0, colour added, ids kept (the sun where no volume covers a point)
+//   sunlit  the second subpass: a full-frame triangle, stencil EQUAL 0, the sun's light added to the colour
 #pragma once
 
 #include <vulkan/vulkan.h>
@@ -30,13 +31,16 @@ public:
 
     VkPipelineLayout layout() const { return layout_.get(); }
     VkPipeline base(Culling culling) const { return culling == Culling::Back ? baseCulled_.get() : base_.get(); }
-    VkPipeline sun(Culling culling) const { return culling == Culling::Back ? sunCulled_.get() : sun_.get(); }
+    // The sunlit pass (the render pass's second subpass): the sun's light added where the stencil is clear.
+    VkPipeline sunlit() const { return sunlit_.get(); }
     VkPipeline volume() const { return volume_.get(); }
 
     // The organs' instances, the frame's constants, the textures (draw::TextureArray) and the frame's order of the
     // instances by draw list (organs/draw_lists.comp) for the draws after it.
     void pushDescriptors(VkCommandBuffer cmd, const vk::Buffer& instances, const vk::Buffer& frameConstants,
                          const VkDescriptorImageInfo& textures, const vk::Buffer& order) const;
+    // The sun's light attachment (RenderTarget::sunLight) for the sunlit pass.
+    void pushSunLight(VkCommandBuffer cmd, VkImageView sunLight) const;
 
 private:
     PFN_vkCmdPushDescriptorSetKHR cmdPushDescriptorSet_ = nullptr;
@@ -44,8 +48,7 @@ private:
     vk::UniquePipelineLayout layout_;
     vk::UniquePipeline base_;
     vk::UniquePipeline baseCulled_;
-    vk::UniquePipeline sun_;
-    vk::UniquePipeline sunCulled_;
+    vk::UniquePipeline sunlit_;
     vk::UniquePipeline volume_;
 };
 

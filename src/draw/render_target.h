@@ -1,6 +1,8 @@
 // The offscreen frame: colour (RGBA32F), plant and organ ids (R32_UINT, cleared to 0xFFFFFFFF), depth and
-// stencil (the stencil counts shadow volumes), the render pass that draws into them, and the host-visible
-// buffers they are copied to for reading back.
+// stencil (the stencil counts shadow volumes), the sun's light on the visible surfaces (RGBA32F, within the render
+// pass only), the render pass that draws into them, and the host-visible buffers they are copied to for reading
+// back. The render pass has two subpasses: the organs and the shadow volumes, then the sunlit pass, which adds the
+// sun's light where the stencil is clear.
 #pragma once
 
 #include <cstdint>
@@ -18,7 +20,16 @@ inline constexpr VkFormat kIdFormat = VK_FORMAT_R32_UINT;
 inline constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT_S8_UINT;
 
 // Attachment order in the render pass and in the fragment shader's outputs.
-enum AttachmentIndex : std::uint32_t { kColorAttachment = 0, kPlantAttachment, kOrganAttachment, kDepthAttachment };
+enum AttachmentIndex : std::uint32_t {
+    kColorAttachment = 0,
+    kPlantAttachment,
+    kOrganAttachment,
+    kDepthAttachment,
+    kSunAttachment,
+    kAttachments
+};
+// The subpasses of the render pass.
+enum SubpassIndex : std::uint32_t { kOrganSubpass = 0, kSunlitSubpass };
 
 // Throws VulkanError when the device cannot render into the formats above.
 void checkRenderFormats(const vk::Context& context);
@@ -32,6 +43,8 @@ public:
     std::uint32_t width() const { return width_; }
     std::uint32_t height() const { return height_; }
     VkFramebuffer framebuffer() const { return framebuffer_.get(); }
+    // The sun's light attachment, which the sunlit subpass reads.
+    VkImageView sunLight() const { return sun_.view.get(); }
 
     // Copies every attachment into its buffer; the images must be in TRANSFER_SRC_OPTIMAL (the render pass's
     // final layout). The caller orders the host or kernels reading the buffers after it.
@@ -50,6 +63,7 @@ private:
     Attachment plant_;
     Attachment organ_;
     Attachment depth_;
+    Attachment sun_;
     UniqueFramebuffer framebuffer_;
     vk::Buffer colorCopy_;
     vk::Buffer depthCopy_;

@@ -131,7 +131,8 @@ struct Renderer::Resources {
     std::deque<std::pair<std::uint64_t, vk::Buffer>> retired;
 
     // A frame's commands: the shadow volumes and the indirect draws from the instances and their table; the
-    // render pass (ground and organs, with shadow volumes in the stencil between an ambient and a sun pass);
+    // render pass (ground and organs; with shadow volumes, the organs' ambient colour and the sun's light beside it,
+    // the volumes in the stencil, then the sunlit subpass adding the sun's light where the stencil is clear);
     // the toon style's outlines over the copied target.
     void recordDrawInputs(VkCommandBuffer cmd, const std::vector<OrganPart>& parts, const FrameSetup& setup);
     void recordScene(VkCommandBuffer cmd, const RenderTarget& target, const std::vector<OrganPart>& parts,
@@ -419,7 +420,7 @@ void Renderer::Resources::recordScene(VkCommandBuffer cmd, const RenderTarget& i
     const OrganMeshData& mesh = r.meshes.data();
     const RenderSettings& settings = setup.settings;
     bool shadows = settings.shadows == Shadows::Volume;
-    std::array<VkClearValue, 4> clears{};
+    std::array<VkClearValue, kAttachments> clears{};
     clears[kColorAttachment].color = {{settings.background.r, settings.background.g, settings.background.b, 0}};
     clears[kPlantAttachment].color.uint32[0] = Frame::kNoId;
     clears[kOrganAttachment].color.uint32[0] = Frame::kNoId;
@@ -437,7 +438,6 @@ void Renderer::Resources::recordScene(VkCommandBuffer cmd, const RenderTarget& i
     vkCmdSetViewport(cmd, 0, 1, &viewport);
     vkCmdSetScissor(cmd, 0, 1, &scissor);
     auto drawScene = [&](std::uint32_t pass) {
-        bool sunPass = pass == shared::kPassSun;
         VkDeviceSize zero = 0;
         VkBuffer meshVertices = r.meshes.vertices().handle();
         vkCmdBindVertexBuffers(cmd, 0, 1, &meshVertices, &zero);
@@ -460,8 +460,7 @@ void Renderer::Resources::recordScene(VkCommandBuffer cmd, const RenderTarget& i
                                              static_cast<std::uint32_t>(kDrawCommandSize));
         };
         for (Culling culling : {Culling::Back, Culling::None}) {
-            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
-                              sunPass ? r.pipelines.sun(culling) : r.pipelines.base(culling));
+            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, r.pipelines.base(culling));
             for (size_t part = 0; part < parts.size(); ++part) {
                 r.pipelines.pushDescriptors(cmd, *parts[part].instances, r.frameConstants,
                                             r.textures.descriptor(), r.drawOrders[part]);
@@ -485,9 +484,14 @@ void Renderer::Resources::recordScene(VkCommandBuffer cmd, const RenderTarget& i
         vkCmdBindVertexBuffers(cmd, 0, 1, &volumes, &zero);
         vkCmdDrawIndirect(cmd, r.volumeDraw.handle(), offsetof(shared::VolumeDraw, vertexCount), 1,
                           sizeof(VkDrawIndirectCommand));
-        drawScene(shared::kPassSun);
     } else {
         drawScene(shared::kPassFull);
+    }
+    vkCmdNextSubpass(cmd, VK_SUBPASS_CONTENTS_INLINE);
+    if (shadows) {
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, r.pipelines.sunlit());
+        r.pipelines.pushSunLight(cmd, into.sunLight());
+        vkCmdDraw(cmd, 3, 1, 0, 0);
     }
     vkCmdEndRenderPass(cmd);
 }

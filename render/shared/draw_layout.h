@@ -159,9 +159,13 @@ struct ShadowVolumePush {
     uint capped;         // 1: extrude to the plane y = capHeight below the ground; 0: to infinity
     float capHeight;
     uint window;         // vertices in each of the volume buffer's kVolumeWindows bindings (a multiple of 6)
+    // A leaf whose length and width are under farLeafPixels on screen casts from its shape's far cut: a pixel's
+    // size there is pixelAtUnitDepth times the organ's depth, dot(viewDepth, (position, 1)) (viewProj's last row).
+    // farLeafPixels 0: every leaf from its shadow cut.
+    float pixelAtUnitDepth;
+    float farLeafPixels;
     uint pad0;
-    uint pad1;
-    uint pad2;
+    vec4 viewDepth;
 };
 
 // The volume buffer is written through this many storage bindings of one window each, so that it may hold more than
@@ -197,7 +201,7 @@ static_assert(sizeof(DrawPush) == 8);
 static_assert(sizeof(DrawArgsPush) == 128);
 static_assert(sizeof(DrawListsPush) == 32);
 static_assert(sizeof(VolumeDraw) == 32);
-static_assert(sizeof(ShadowVolumePush) == 96);
+static_assert(sizeof(ShadowVolumePush) == 112);
 static_assert(sizeof(OutlinePush) == 48);
 #endif
 SIMECO_SHARED_END

@@ -87,6 +87,7 @@ SimEntry measure(const SimBenchOptions& o, const std::string& scene, std::uint32
             (shadows == draw::Shadows::Volume ? e.frameShadowsSeconds : e.frameNoShadowsSeconds) = frame;
             (shadows == draw::Shadows::Volume ? e.growingFramesPerSecondShadows : e.growingFramesPerSecondNoShadows) =
                 growing;
+            if (shadows == draw::Shadows::Volume) e.shadowVolumes = renderer.drawnOrgans().shadowVolumes;
         }
         for (size_t part = 0; part < parts.size(); ++part) {
             const draw::DrawnOrgans drawn = renderer.drawnOrgans(part);

@@ -58,6 +58,7 @@ struct SimEntry {
     // The frame's organs by kind (kOrgan*) drawn with the finer meshes and the coarser ones; the rest were outside
     // the view.
     std::array<std::uint64_t, shared::kOrganKinds> drawnNear{}, drawnFar{};
+    std::uint64_t shadowVolumes = 0; // in the frame with shadow volumes
 };
 
 struct SimBenchReport {

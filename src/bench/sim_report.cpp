@@ -51,6 +51,7 @@ nlohmann::json simReportJson(const SimBenchReport& report) {
                     far[exporter::organKindName(kind)] = e.drawnFar[kind];
                 }
                 entry["drawn_organs"] = {{"near", near}, {"far", far}};
+                entry["shadow_volumes"] = e.shadowVolumes;
             }
         }
         entries.push_back(std::move(entry));
@@ -89,7 +90,8 @@ std::string formatSimTable(const SimBenchReport& report) {
                 near += e.drawnNear[kind];
                 far += e.drawnFar[kind];
             }
-            out += fmt::format("{:>7} organs drawn: {} with the finer meshes, {} with the coarser\n", "", near, far);
+            out += fmt::format("{:>7} organs drawn: {} with the finer meshes, {} with the coarser; {} shadow volumes\n",
+                               "", near, far, e.shadowVolumes);
         }
     }
     return out;

@@ -35,18 +35,13 @@ public:
         data_.indices.insert(data_.indices.end(), {a, b, c});
     }
 
+    // Whether polygons are fanned from their first outline point (n - 2 triangles, for the coarsest cuts) rather
+    // than from an interior point (n triangles). The first point must see the whole polygon.
+    void fanFromOutline(bool fromOutline) { fanFromOutline_ = fromOutline; }
+
     // A polygon given counter-clockwise around +z, fanned from an interior point that sees all of it.
     void fan(glm::vec2 centre, std::span<const glm::vec2> outline, float normalW) {
-        const glm::vec3 normal(0, 0, 1);
-        std::uint32_t middle = vertex(glm::vec3(centre, 0), normal, 0, normalW);
-        std::uint32_t first = vertex(glm::vec3(outline[0], 0), normal, 0, normalW);
-        std::uint32_t previous = first;
-        for (std::size_t i = 1; i < outline.size(); ++i) {
-            std::uint32_t next = vertex(glm::vec3(outline[i], 0), normal, 0, normalW);
-            triangle(middle, previous, next);
-            previous = next;
-        }
-        triangle(middle, previous, first);
+        fanIn(glm::vec3(0), glm::vec3(1, 0, 0), glm::vec3(0, 1, 0), centre, outline, normalW, 0.0f);
     }
 
     // The same in the plane through `origin` spanned by `a` and `b` (outline point (u, v) at origin + u a + v b),
@@ -55,6 +50,16 @@ public:
                float normalW, float tint) {
         const glm::vec3 normal = glm::normalize(glm::cross(a, b));
         auto at = [&](glm::vec2 p) { return vertex(origin + p.x * a + p.y * b, normal, tint, normalW); };
+        if (fanFromOutline_) {
+            const std::uint32_t first = at(outline[0]);
+            std::uint32_t previous = at(outline[1]);
+            for (std::size_t i = 2; i < outline.size(); ++i) {
+                const std::uint32_t next = at(outline[i]);
+                triangle(first, previous, next);
+                previous = next;
+            }
+            return;
+        }
         std::uint32_t middle = at(centre);
         std::uint32_t first = at(outline[0]);
         std::uint32_t previous = first;
@@ -76,6 +81,7 @@ public:
 
 private:
     OrganMeshData& data_;
+    bool fanFromOutline_ = false;
     std::uint32_t firstIndex_ = 0;
     std::uint32_t base_ = 0;
 };
@@ -231,14 +237,16 @@ void addStalk(MeshBuilder& b, float end, float halfWidth, float shape) {
     b.triangle(s0, s2, s3);
 }
 
-// How finely a surface is cut: as drawn, or the few triangles its shadow is cast from (a shadow on the ground or
-// on another organ hardly shows a leaf's teeth, and each casting triangle is a volume the device must draw).
-enum class Detail { Drawn, Shadow };
+// How finely a surface is cut: as drawn, the few triangles its shadow is cast from (a shadow on the ground or on
+// another organ hardly shows a leaf's teeth, and each casting triangle is a volume the device must draw), or fewer
+// still for the shadow of a surface a few pixels across (Far: stalks left out, the fewest outline points, polygons
+// fanned from their first point).
+enum class Detail { Drawn, Shadow, Far };
 
 // A pinnate compound leaf: a rachis with two pairs of leaflets and a terminal one.
 void addCompound(MeshBuilder& b, float shape, Detail detail) {
     const float rachisEnd = 0.62f;
-    addStalk(b, rachisEnd, 0.03f, shape);
+    if (detail != Detail::Far) addStalk(b, rachisEnd, 0.03f, shape);
 
     struct Leaflet {
         glm::vec2 base;
@@ -269,13 +277,18 @@ void addCompound(MeshBuilder& b, float shape, Detail detail) {
 // a clover's.
 void addTrifoliate(MeshBuilder& b, float shape, Detail detail) {
     const float petioleEnd = 0.58f;
-    addStalk(b, petioleEnd, 0.018f, shape);
+    if (detail != Detail::Far) addStalk(b, petioleEnd, 0.018f, shape);
     // The cordate outline reversed along its midrib: narrow at the petiole, notched at the tip.
-    std::vector<glm::vec2> obcordate = cordateOutline(detail == Detail::Drawn ? 24 : 8);
-    float reach = 0.0f; // the lobes reach past the notch: the leaflet spans [0, reach] before it is scaled
-    for (glm::vec2& p : obcordate) reach = std::max(reach, p.x = 1.0f - p.x);
-    for (glm::vec2& p : obcordate) p /= reach;
+    std::vector<glm::vec2> obcordate = cordateOutline(detail == Detail::Drawn ? 24 : (detail == Detail::Far ? 6 : 8));
+    // The lobes reach past the notch: the drawn leaflet spans [0, reach] before it is scaled, and the coarser cuts
+    // are scaled as it is, so that they stay inside it.
+    float reach = 0.0f;
+    for (glm::vec2 p : cordateOutline(24)) reach = std::max(reach, 1.0f - p.x);
+    for (glm::vec2& p : obcordate) p = glm::vec2(1.0f - p.x, p.y) / reach;
     std::reverse(obcordate.begin(), obcordate.end()); // counter-clockwise again
+    // The notch last now: first for the far cut, which is fanned from its first point and only the notch sees the
+    // whole leaflet.
+    if (detail == Detail::Far) std::rotate(obcordate.begin(), obcordate.end() - 1, obcordate.end());
     const glm::vec2 base(petioleEnd, 0.0f);
     const float length = 0.42f, width = 0.5f;
     for (float angle : {0.0f, 2.1f, -2.1f}) {
@@ -326,7 +339,7 @@ void addStarBlossom(MeshBuilder& b, float shape, Detail detail) {
     const std::vector<glm::vec2> petal = bladeOutline(obovateHalfWidth, detail == Detail::Drawn ? 3 : 2);
     for (int k = 0; k < 5; ++k)
         addPetal(b, glm::vec3(0), 2.0f * kPi * float(k) / 5.0f, 0.35f, 0.5f, 0.36f, petal, shape, 0.0f);
-    if (detail == Detail::Shadow) return; // the eye lies in the petals' shadow
+    if (detail != Detail::Drawn) return; // the eye lies in the petals' shadow
     std::vector<glm::vec2> eye;
     for (int k = 0; k < 6; ++k) eye.push_back(0.1f * glm::vec2(std::cos(kPi * k / 3.0f), std::sin(kPi * k / 3.0f)));
     b.fanIn({0.03f, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0, 0}, eye, shape, 1.0f);
@@ -374,22 +387,23 @@ void addRoseBlossom(MeshBuilder& b, float shape, Detail detail) {
 
 // Every surface shape in one mesh (the built-in leaves and blossoms, then the models), each vertex tagged with its
 // shape, at the given detail; `shapes` gets each shape's first triangle (counted from the mesh's first) and count.
-MeshRange addSurfaces(MeshBuilder& b, const std::vector<ir::LeafModel>& leafModels, Detail detail,
-                      std::vector<std::array<std::uint32_t, 2>>& shapes) {
-    const bool drawn = detail == Detail::Drawn;
-    b.begin();
-    const std::uint32_t first = b.triangles();
+void addSurfaceShapes(MeshBuilder& b, const std::vector<ir::LeafModel>& leafModels, Detail detail,
+                      std::vector<std::array<std::uint32_t, 2>>& shapes, std::uint32_t first) {
+    const bool drawn = detail == Detail::Drawn, far = detail == Detail::Far;
     auto add = [&](auto&& build) {
         const std::uint32_t before = b.triangles();
         build(static_cast<float>(shapes.size()));
         shapes.push_back({before - first, b.triangles() - before});
     };
-    add([&](float s) { addBlade(b, bladeOutline(lanceolateHalfWidth, drawn ? 12 : 3), {0.35f, 0}, s); });
-    add([&](float s) { addBlade(b, bladeOutline(ovateHalfWidth, drawn ? 12 : 3), {0.45f, 0}, s); });
-    add([&](float s) { addBlade(b, cordateOutline(drawn ? 32 : 10), {0.4f, 0}, s); });
+    const std::uint32_t bladePoints = drawn ? 12 : (far ? 2 : 3);
+    add([&](float s) { addBlade(b, bladeOutline(lanceolateHalfWidth, bladePoints), {0.35f, 0}, s); });
+    add([&](float s) { addBlade(b, bladeOutline(ovateHalfWidth, bladePoints), {0.45f, 0}, s); });
+    add([&](float s) { addBlade(b, cordateOutline(drawn ? 32 : (far ? 5 : 10)), {0.4f, 0}, s); });
     add([&](float s) { addCompound(b, s, detail); });
     add([&](float s) { addTrifoliate(b, s, detail); });
-    add([&](float s) { addBlade(b, drawn ? serrateOutline(24) : bladeOutline(ovateHalfWidth, 4), {0.45f, 0}, s); });
+    add([&](float s) {
+        addBlade(b, drawn ? serrateOutline(24) : bladeOutline(ovateHalfWidth, far ? 2 : 4), {0.45f, 0}, s);
+    });
     add([&](float s) { addStarBlossom(b, s, detail); });
     add([&](float s) { addHeadBlossom(b, s, detail); });
     add([&](float s) { addRoseBlossom(b, s, detail); });
@@ -406,6 +420,12 @@ MeshRange addSurfaces(MeshBuilder& b, const std::vector<ir::LeafModel>& leafMode
             }
         });
     }
+}
+
+MeshRange addSurfaces(MeshBuilder& b, const std::vector<ir::LeafModel>& leafModels, Detail detail,
+                      std::vector<std::array<std::uint32_t, 2>>& shapes) {
+    b.begin();
+    addSurfaceShapes(b, leafModels, detail, shapes, b.triangles());
     return b.end();
 }
 
@@ -439,11 +459,20 @@ OrganMeshData buildOrganMeshes(const std::vector<ir::LeafModel>& leafModels) {
     data.hulls[kOrganDisc] = data.organs[kOrganDisc];
 
     data.organs[kOrganLeaf] = addSurfaces(b, leafModels, Detail::Drawn, data.leafShapeTriangles);
-    data.hulls[kOrganLeaf] = addSurfaces(b, leafModels, Detail::Shadow, data.leafHullTriangles);
+    // The leaf hull: every shape's shadow cut, then every shape's far cut, in one range.
+    b.begin();
+    const std::uint32_t hullFirst = b.triangles();
+    addSurfaceShapes(b, leafModels, Detail::Shadow, data.leafHullTriangles, hullFirst);
+    b.fanFromOutline(true);
+    addSurfaceShapes(b, leafModels, Detail::Far, data.leafFarHullTriangles, hullFirst);
+    b.fanFromOutline(false);
+    data.hulls[kOrganLeaf] = b.end();
     data.interiorEdges.assign(data.indices.size() / 3, 0);
-    const std::uint32_t hullFirst = data.hulls[kOrganLeaf].firstIndex / 3;
-    for (std::uint32_t shape = 0; shape <= kLeafLastShape; ++shape)
+    for (std::uint32_t shape = 0; shape <= kLeafLastShape; ++shape) {
         markInteriorEdges(data, hullFirst + data.leafHullTriangles[shape][0], data.leafHullTriangles[shape][1]);
+        markInteriorEdges(data, hullFirst + data.leafFarHullTriangles[shape][0],
+                          data.leafFarHullTriangles[shape][1]);
+    }
 
     b.begin();
     for (int corner = 0; corner < 3; ++corner) {
@@ -484,6 +513,8 @@ OrganMeshes::OrganMeshes(const vk::Context& context, const std::vector<ir::LeafM
         vk::deviceBufferWith(context, std::span<const std::array<std::uint32_t, 2>>(data_.leafShapeTriangles));
     leafHullTriangles_ =
         vk::deviceBufferWith(context, std::span<const std::array<std::uint32_t, 2>>(data_.leafHullTriangles));
+    leafFarHullTriangles_ =
+        vk::deviceBufferWith(context, std::span<const std::array<std::uint32_t, 2>>(data_.leafFarHullTriangles));
     interiorEdges_ = vk::deviceBufferWith(context, std::span<const std::uint32_t>(data_.interiorEdges));
 }
 

@@ -40,6 +40,9 @@ struct OrganMeshData {
     // leaf hull (a shape cut coarser, which its shadow is cast from): the first, counted from the range's first, and
     // how many. A leaf is drawn, and casts, from its own shape's alone.
     std::vector<std::array<std::uint32_t, 2>> leafShapeTriangles, leafHullTriangles;
+    // The same for the far cut of each shape, also within the leaf hull's range: fewer triangles still, which a leaf
+    // a few pixels across on screen casts from.
+    std::vector<std::array<std::uint32_t, 2>> leafFarHullTriangles;
     // Per triangle of the index buffer: bit k set where its edge k (corner k to corner k + 1) is shared with another
     // triangle of the same flat leaf shape. The shadow volumes of a flat sheet's triangles meet there with opposite
     // sides, which cancel in the stencil, so they leave them out (shadow_volume.vert). Zero elsewhere.
@@ -69,6 +72,7 @@ public:
     const vk::Buffer& indices() const { return indices_; }
     const vk::Buffer& leafShapeTriangles() const { return leafShapeTriangles_; }
     const vk::Buffer& leafHullTriangles() const { return leafHullTriangles_; }
+    const vk::Buffer& leafFarHullTriangles() const { return leafFarHullTriangles_; }
     const vk::Buffer& interiorEdges() const { return interiorEdges_; }
 
 private:
@@ -77,6 +81,7 @@ private:
     vk::Buffer indices_;
     vk::Buffer leafShapeTriangles_;
     vk::Buffer leafHullTriangles_;
+    vk::Buffer leafFarHullTriangles_;
     vk::Buffer interiorEdges_;
 };
 

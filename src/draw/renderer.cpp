@@ -386,11 +386,15 @@ void Renderer::Resources::recordDrawInputs(VkCommandBuffer cmd, const std::vecto
                 push.capped = capped ? 1u : 0u;
                 push.capHeight = capHeight;
                 push.window = r.volumeWindow;
+                push.pixelAtUnitDepth = frame.cameraPosition.w;
+                push.farLeafPixels = settings.levelsOfDetail ? lists.farLeafPixels : 0.0f;
+                const shared::mat4& m = frame.viewProj;
+                push.viewDepth = {m.columns[0].w, m.columns[1].w, m.columns[2].w, m.columns[3].w};
                 r.shadowVolumes.dispatch(cmd,
                                          {*parts[p].instances, *parts[p].table, r.meshes.vertices(), r.meshes.indices(),
                                           r.volumeDraw, volumeWindows[0], r.meshes.leafHullTriangles(),
                                           r.meshes.interiorEdges(), volumeWindows[1], volumeWindows[2],
-                                          volumeWindows[3]},
+                                          volumeWindows[3], r.meshes.leafFarHullTriangles()},
                                          push, r.shadowVolumes.groupsFor(counts.count[kind]));
             }
         }
@@ -563,6 +567,8 @@ DrawnOrgans Renderer::drawnOrgans(size_t part) const {
         const std::uint32_t kind = slot < kOrganKinds ? slot : shared::kOrganLeaf;
         (bucket < shared::kDrawSlots ? drawn.near : drawn.far)[kind] += counts[bucket];
     }
+    const shared::VolumeDraw volumes = vk::downloadVector<shared::VolumeDraw>(context_, r.volumeDraw, 1)[0];
+    drawn.shadowVolumes = volumes.instanceCount;
     return drawn;
 }
 

@@ -55,6 +55,7 @@ struct FrameSetup {
 // were outside the view (RenderSettings::levelsOfDetail, cullOutsideView).
 struct DrawnOrgans {
     std::array<std::uint32_t, shared::kOrganKinds> near{}, far{};
+    std::uint32_t shadowVolumes = 0; // the frame's, of every part (0 without shadow volumes)
 };
 
 // The camera a frame is rendered with: settings.camera, or the default angles framed on `bounds`.

@@ -44,5 +44,6 @@ for e in entries:
     counts = [n for level in ("near", "far") for n in drawn.get(level, {}).values()]
     check(len(counts) == 10 and 0 < sum(counts) <= e.get("organs", 0),
           f"{where}: drawn_organs {drawn} against {e.get('organs')} organs")
+    positive(e, "shadow_volumes", where)
 finish(f"sim bench smoke test: {len(entries)} fields")
 PY

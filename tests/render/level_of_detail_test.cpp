@@ -1,5 +1,6 @@
 // Levels of detail and culling: organs a few pixels across are drawn with their kind's coarser mesh and look as they
 // did; organs wholly outside the view are left out of the draws and the frame is the same, their shadows too.
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -70,6 +71,70 @@ TEST_F(LevelOfDetailTest, NearOrgansAreDrawnWithTheFinestMeshesAndDistantOnesWit
     }
 }
 
+// A scene drawn with one of the settings' switches on, then off, and what each frame drew.
+struct OnAndOff {
+    Frame on, off;
+    draw::DrawnOrgans drawnOn, drawnOff;
+};
+OnAndOff renderOnAndOff(draw::Renderer& renderer, const TestScene& scene, draw::RenderSettings s,
+                        bool draw::RenderSettings::*setting) {
+    OnAndOff result;
+    s.*setting = true;
+    result.on = renderer.render(scene.instances, scene.table, scene.bounds, s);
+    result.drawnOn = renderer.drawnOrgans();
+    s.*setting = false;
+    result.off = renderer.render(scene.instances, scene.table, scene.bounds, s);
+    result.drawnOff = renderer.drawnOrgans();
+    return result;
+}
+
+// The pixels of the ground (no organ there) darker than `share` of the frame's brightest ground pixel.
+std::size_t shadedGround(const Frame& frame, float share) {
+    float lit = 0.0f;
+    for (std::uint32_t y = 0; y < frame.height; ++y)
+        for (std::uint32_t x = 0; x < frame.width; ++x)
+            if (frame.organ[y * frame.width + x] == Frame::kNoId && frame.rgba[4 * (y * frame.width + x) + 3] > 0.0f)
+                lit = std::max(lit, luminance(frame, x, y));
+    std::size_t shaded = 0;
+    for (std::uint32_t y = 0; y < frame.height; ++y)
+        for (std::uint32_t x = 0; x < frame.width; ++x)
+            if (frame.organ[y * frame.width + x] == Frame::kNoId && frame.rgba[4 * (y * frame.width + x) + 3] > 0.0f &&
+                luminance(frame, x, y) < share * lit)
+                ++shaded;
+    return shaded;
+}
+
+TEST_F(LevelOfDetailTest, DistantLeavesCastFromCoarserCutsAndTheirShadowsLookAlike) {
+    // A row of serrate leaves held flat above the ground, the sun high: seen from afar each is a few pixels long.
+    std::vector<OrganInstance> leaves;
+    for (std::uint32_t i = 0; i < 6; ++i)
+        leaves.push_back(makeLeaf({1.2f * static_cast<float>(i), 1.0f, 0}, {1, 0, 0}, {0, 1, 0}, 1.0f, 0.6f,
+                                  shared::kLeafSerrate, i, i));
+    TestScene scene = uploadScene(context(), leaves);
+    draw::RenderSettings s;
+    s.width = 160;
+    s.height = 120;
+    s.sunDirection = {0.3f, 1.0f, 0.2f};
+    draw::Camera camera;
+    camera.elevationDegrees = 50.0f;
+    camera.distance = 30.0f;
+    camera.target = glm::vec3(3.0f, 0.5f, 0.0f);
+    s.camera = camera;
+
+    const OnAndOff frames = renderOnAndOff(renderer(), scene, s, &draw::RenderSettings::levelsOfDetail);
+    const Frame &coarse = frames.on, &fine = frames.off;
+    const draw::DrawnOrgans &coarseDrawn = frames.drawnOn, &fineDrawn = frames.drawnOff;
+    maybeSavePreview(coarse, "lod_far_leaf_shadows");
+
+    EXPECT_EQ(coarseDrawn.far[shared::kOrganLeaf], 6u);
+    EXPECT_GT(fineDrawn.shadowVolumes, 0u);
+    EXPECT_LT(coarseDrawn.shadowVolumes, fineDrawn.shadowVolumes * 3 / 4);
+    const std::size_t coarseShade = shadedGround(coarse, 0.7f), fineShade = shadedGround(fine, 0.7f);
+    ASSERT_GT(fineShade, 30u);
+    EXPECT_GE(coarseShade, fineShade * 6 / 10);
+    EXPECT_LE(coarseShade, fineShade * 12 / 10);
+}
+
 TEST_F(LevelOfDetailTest, OrgansOutsideTheViewAreLeftOutAndTheFrameAndItsShadowsStayTheSame) {
     // A row of fruits on stems along x, the camera on the ground beside it (to -x) and the sun low from +x: no organ
     // is in the frame, but their shadows stretch into it.
@@ -91,12 +156,9 @@ TEST_F(LevelOfDetailTest, OrgansOutsideTheViewAreLeftOutAndTheFrameAndItsShadows
     camera.target = glm::vec3(-1.7f, 0.3f, 0.0f);
     s.camera = camera;
 
-    s.cullOutsideView = true;
-    const Frame culled = renderer().render(scene.instances, scene.table, scene.bounds, s);
-    const draw::DrawnOrgans drawn = renderer().drawnOrgans();
-    s.cullOutsideView = false;
-    const Frame all = renderer().render(scene.instances, scene.table, scene.bounds, s);
-    const draw::DrawnOrgans allDrawn = renderer().drawnOrgans();
+    const OnAndOff frames = renderOnAndOff(renderer(), scene, s, &draw::RenderSettings::cullOutsideView);
+    const Frame &culled = frames.on, &all = frames.off;
+    const draw::DrawnOrgans &drawn = frames.drawnOn, &allDrawn = frames.drawnOff;
     maybeSavePreview(culled, "culled_row");
 
     // The bounds are generous (a stem's reach past its ends where it is mitred): the first stems may be drawn.

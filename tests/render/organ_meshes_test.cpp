@@ -141,14 +141,17 @@ TEST(OrganMeshesTest, LeafBladesLieInTheHeadingLeftPlaneFacingUp) {
     }
 }
 
-// Each leaf shape casts its shadow from a coarser cut of itself in the leaf hull: fewer triangles, tagged with its
-// shape, within the drawn shape's extent and covering most of its area (a flat blade's, in its plane).
-TEST(OrganMeshesTest, LeafHullsAreCoarserCutsOfTheDrawnShapes) {
+// Each leaf shape casts its shadow from a coarser cut of itself in the leaf hull, and from a coarser one still when
+// it is a few pixels across (its far cut): fewer triangles each, tagged with its shape, within the drawn shape's
+// extent and covering most of its area (a flat blade's, in its plane).
+TEST(OrganMeshesTest, LeafHullsAndFarCutsAreCoarserCutsOfTheDrawnShapes) {
     OrganMeshData d = draw::buildOrganMeshes();
     ASSERT_EQ(d.leafHullTriangles.size(), d.leafShapeTriangles.size());
+    ASSERT_EQ(d.leafFarHullTriangles.size(), d.leafShapeTriangles.size());
     struct Extent {
         glm::vec3 min{1e9f}, max{-1e9f};
         float area = 0.0f; // in the heading-left plane
+        std::uint32_t turned = 0; // triangles wound clockwise in it: a flat blade's cut must have none
     };
     auto extentOf = [&](const MeshRange& range, std::array<std::uint32_t, 2> triangles, std::uint32_t shape) {
         Extent e;
@@ -162,7 +165,9 @@ TEST(OrganMeshesTest, LeafHullsAreCoarserCutsOfTheDrawnShapes) {
                 e.min = glm::min(e.min, p[k]);
                 e.max = glm::max(e.max, p[k]);
             }
-            e.area += 0.5f * glm::cross(p[1] - p[0], p[2] - p[0]).z;
+            const float area = 0.5f * glm::cross(p[1] - p[0], p[2] - p[0]).z;
+            e.area += area;
+            if (area < 0.0f) ++e.turned;
         }
         return e;
     };
@@ -178,6 +183,20 @@ TEST(OrganMeshesTest, LeafHullsAreCoarserCutsOfTheDrawnShapes) {
         }
         if (shape <= shared::kLeafLastShape) {
             EXPECT_GT(hull.area, 0.75f * drawn.area) << "shape " << shape;
+        }
+
+        const Extent far = extentOf(d.hulls[shared::kOrganLeaf], d.leafFarHullTriangles[shape], shape);
+        EXPECT_GT(d.leafFarHullTriangles[shape][1], 0u) << "shape " << shape;
+        EXPECT_LT(d.leafFarHullTriangles[shape][1], d.leafHullTriangles[shape][1]) << "shape " << shape;
+        for (int axis = 0; axis < 3; ++axis) {
+            EXPECT_GE(far.min[axis], drawn.min[axis] - 1e-5f) << "shape " << shape;
+            EXPECT_LE(far.max[axis], drawn.max[axis] + 1e-5f) << "shape " << shape;
+        }
+        if (shape <= shared::kLeafLastShape) {
+            EXPECT_GT(far.area, 0.5f * drawn.area) << "shape " << shape;
+            // Its volumes' sides inside the sheet cancel only between triangles wound alike.
+            EXPECT_EQ(hull.turned, 0u) << "shape " << shape;
+            EXPECT_EQ(far.turned, 0u) << "shape " << shape;
         }
     }
 }

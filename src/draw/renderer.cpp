@@ -302,8 +302,6 @@ void Renderer::Resources::recordDrawInputs(VkCommandBuffer cmd, const std::vecto
         args.indexCount[kind] = mesh.organs[kind].indexCount;
         args.firstIndex[kind] = mesh.organs[kind].firstIndex;
         args.vertexOffset[kind] = mesh.organs[kind].vertexOffset;
-    }
-    for (std::uint32_t kind = 0; kind < kOrganKinds; ++kind) {
         args.farIndexCount[kind] = mesh.hulls[kind].indexCount;
         args.farFirstIndex[kind] = mesh.hulls[kind].firstIndex;
         args.farVertexOffset[kind] = mesh.hulls[kind].vertexOffset;

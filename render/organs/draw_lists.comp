@@ -8,6 +8,7 @@
 #extension GL_GOOGLE_include_directive : require
 
 #include "render/shared/draw_layout.h"
+#include "render/organs/view_sides.glsl"
 
 layout(local_size_x = kDrawWorkgroupSize) in;
 
@@ -30,40 +31,6 @@ layout(std430, binding = 4) readonly buffer Frame {
 layout(push_constant) uniform Push {
     DrawListsPush push;
 };
-
-// A sphere around everything an organ may draw: a stem's ends are cut on the planes between its segment and the
-// next (organ_transform.glsl), up to five radii along it; a leaf model may reach past its length and width.
-vec4 organBounds(OrganInstance o) {
-    if (o.kind == kOrganTriangle) {
-        const vec3 centre = (o.position.xyz + o.heading.xyz + o.up.xyz) / 3.0;
-        const float reach = max(distance(centre, o.position.xyz),
-                                max(distance(centre, o.heading.xyz), distance(centre, o.up.xyz)));
-        return vec4(centre, reach);
-    }
-    if (o.kind == kOrganStem) {
-        const float radius = max(o.heading.w, o.up.w);
-        return vec4(o.position.xyz + 0.5 * o.position.w * o.heading.xyz, 0.5 * o.position.w + 6.0 * radius);
-    }
-    if (o.kind == kOrganLeaf)
-        return vec4(o.position.xyz, 2.0 * (o.position.w + o.heading.w + abs(o.up.w)));
-    return vec4(o.position.xyz, o.heading.w);
-}
-
-// Whether a sphere lies wholly outside one of the view's sides (the planes of viewProj's rows, Gribb and Hartmann);
-// not its near and far planes: the depth is clamped there, so organs beyond them are still drawn.
-bool outsideView(vec4 sphere) {
-    const mat4 m = frame.viewProj;
-    const vec4 w = vec4(m[0][3], m[1][3], m[2][3], m[3][3]);
-    for (uint axis = 0u; axis < 2u; ++axis) {
-        const vec4 row = vec4(m[0][axis], m[1][axis], m[2][axis], m[3][axis]);
-        for (int side = -1; side <= 1; side += 2) {
-            const vec4 plane = w + float(side) * row;
-            const float reach = length(plane.xyz);
-            if (reach > 0.0 && dot(plane.xyz, sphere.xyz) + plane.w < -sphere.w * reach) return true;
-        }
-    }
-    return false;
-}
 
 // Whether an organ is drawn far: its size on screen below its kind's threshold. A stem drawn flat (cpfg's lines and
 // polygons) is the same band with either mesh, so always far.
@@ -95,7 +62,8 @@ void main() {
         slot = kOrganKinds + o.shape;
     }
     const vec4 sphere = organBounds(o);
-    if (push.cull != 0u && (o.kind != kOrganStem || o.shape != kLinePixel) && outsideView(sphere)) return;
+    const bool pixelLine = o.kind == kOrganStem && o.shape == kLinePixel; // as wide as the picture says
+    if (push.cull != 0u && !pixelLine && sidesOutside(frame.viewProj, sphere) != 0u) return;
     const uint bucket = slot + (drawnFar(o, sphere) ? kDrawLevelFar : kDrawLevelNear) * kDrawSlots;
     if (push.pass == kDrawListsCount) {
         atomicAdd(counts[bucket], 1u);

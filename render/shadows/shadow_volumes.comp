@@ -15,6 +15,7 @@
 
 #include "render/shared/draw_layout.h"
 #include "render/organs/organ_transform.glsl"
+#include "render/organs/view_sides.glsl"
 
 layout(local_size_x = kDrawWorkgroupSize) in;
 
@@ -54,6 +55,9 @@ layout(std430, binding = 11) readonly buffer LeafFarHullTriangles {
 };
 layout(std430, binding = 7) readonly buffer InteriorEdges {
     uint interiorEdges[];  // per triangle of the index buffer: bit k, its edge k is inside a flat sheet
+};
+layout(std430, binding = 12) readonly buffer Frame {
+    DrawFrame frame;
 };
 layout(push_constant) uniform Push {
     ShadowVolumePush push;
@@ -122,6 +126,15 @@ void main() {
     }
     vec3 away = push.awayFromSun.xyz;
     bool capped = push.capped != 0u && away.y < 0.0;
+    // Ended at the plane below the ground, an organ's volumes lie within its bounding sphere swept along the light
+    // to the plane, where the sphere's shadow is stretched by the light's slant: outside the view when both ends are
+    // outside one of its sides.
+    if (push.cull != 0u && capped) {
+        const vec4 sphere = organBounds(o);
+        const vec3 end = sphere.xyz + away * (max(sphere.y - push.capHeight, 0.0) / -away.y);
+        const vec4 shadow = vec4(end, sphere.w / max(-away.y, 0.05));
+        if ((sidesOutside(frame.viewProj, sphere) & sidesOutside(frame.viewProj, shadow)) != 0u) return;
+    }
     // A round stem casts the shadow of its silhouette: the ribbon through its axis across the light, as wide as the
     // drawn stem is across its flats, in two triangles (their shared diagonal's sides cancel). Along the light it
     // casts from its hull.

@@ -164,7 +164,7 @@ struct ShadowVolumePush {
     // farLeafPixels 0: every leaf from its shadow cut.
     float pixelAtUnitDepth;
     float farLeafPixels;
-    uint pad0;
+    uint cull;  // 1: organs whose volumes lie wholly outside the view (by the frame's DrawFrame) cast none
     vec4 viewDepth;
 };
 

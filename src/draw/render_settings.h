@@ -60,7 +60,8 @@ struct RenderSettings {
     // Organs a few pixels across on screen drawn with coarser meshes (their kind's shadow hull: a 6-sided stem, a
     // leaf's coarser cut, a sphere of fewer bands); off: every organ with the finest.
     bool levelsOfDetail = true;
-    // Organs wholly outside the view left out of the draws (their shadows are still cast).
+    // Organs wholly outside the view left out of the draws, and their shadow volumes where their shadows fall
+    // outside it too.
     bool cullOutsideView = true;
     // Shadow volume vertices take 16 bytes each; a scene needing more than this (or than the device binds in
     // shared::kVolumeWindows storage buffers) draws the volumes that fit.

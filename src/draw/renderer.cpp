@@ -386,13 +386,14 @@ void Renderer::Resources::recordDrawInputs(VkCommandBuffer cmd, const std::vecto
                 push.window = r.volumeWindow;
                 push.pixelAtUnitDepth = frame.cameraPosition.w;
                 push.farLeafPixels = settings.levelsOfDetail ? lists.farLeafPixels : 0.0f;
+                push.cull = lists.cull;
                 const shared::mat4& m = frame.viewProj;
                 push.viewDepth = {m.columns[0].w, m.columns[1].w, m.columns[2].w, m.columns[3].w};
                 r.shadowVolumes.dispatch(cmd,
                                          {*parts[p].instances, *parts[p].table, r.meshes.vertices(), r.meshes.indices(),
                                           r.volumeDraw, volumeWindows[0], r.meshes.leafHullTriangles(),
                                           r.meshes.interiorEdges(), volumeWindows[1], volumeWindows[2],
-                                          volumeWindows[3], r.meshes.leafFarHullTriangles()},
+                                          volumeWindows[3], r.meshes.leafFarHullTriangles(), r.frameConstants},
                                          push, r.shadowVolumes.groupsFor(counts.count[kind]));
             }
         }

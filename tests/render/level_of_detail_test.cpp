@@ -137,10 +137,12 @@ TEST_F(LevelOfDetailTest, DistantLeavesCastFromCoarserCutsAndTheirShadowsLookAli
 
 TEST_F(LevelOfDetailTest, OrgansOutsideTheViewAreLeftOutAndTheFrameAndItsShadowsStayTheSame) {
     // A row of fruits on stems along x, the camera on the ground beside it (to -x) and the sun low from +x: no organ
-    // is in the frame, but their shadows stretch into it.
+    // is in the frame, but their shadows stretch into it. Four more far beyond the frame's other side (at x = -12 and
+    // on), whose shadows fall away from it: their volumes are left out too.
     std::vector<OrganInstance> row;
-    for (std::uint32_t i = 0; i < 12; ++i) {
-        const glm::vec3 base(0.6f * static_cast<float>(i), 0, 0);
+    for (std::uint32_t i = 0; i < 16; ++i) {
+        const float x = i < 12 ? 0.6f * static_cast<float>(i) : -12.0f - 0.6f * static_cast<float>(i - 12);
+        const glm::vec3 base(x, 0, 0);
         row.push_back(makeStem(base, {0, 1, 0}, {0, 0, 1}, 1.0f, 0.08f, i, 2 * i));
         row.push_back(makeSphere(base + glm::vec3(0, 1.2f, 0), 0.25f, i, 2 * i + 1));
     }
@@ -165,7 +167,9 @@ TEST_F(LevelOfDetailTest, OrgansOutsideTheViewAreLeftOutAndTheFrameAndItsShadows
     EXPECT_EQ(drawn.near[shared::kOrganSphere] + drawn.far[shared::kOrganSphere], 0u);
     EXPECT_LE(drawn.near[shared::kOrganStem] + drawn.far[shared::kOrganStem], 2u);
     for (std::uint32_t kind : {shared::kOrganStem, shared::kOrganSphere})
-        EXPECT_EQ(allDrawn.near[kind] + allDrawn.far[kind], 12u) << "kind " << kind;
+        EXPECT_EQ(allDrawn.near[kind] + allDrawn.far[kind], 16u) << "kind " << kind;
+    EXPECT_GT(drawn.shadowVolumes, 0u);
+    EXPECT_LT(drawn.shadowVolumes, allDrawn.shadowVolumes);
     // The frame is the same, pixel for pixel, with the row's shadows on the ground (cast from every organ).
     ASSERT_EQ(culled.rgba.size(), all.rgba.size());
     EXPECT_EQ(culled.rgba, all.rgba);

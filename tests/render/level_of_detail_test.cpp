@@ -24,16 +24,23 @@ std::vector<OrganInstance> smallPlant() {
             makeSphere({0, 1.05f, 0}, 0.2f, 0, 3)};
 }
 
-draw::RenderSettings viewFrom(float distance, bool levels) {
+// A small frame from `camera`, with shadow volumes of the sun from `sun`.
+draw::RenderSettings smallFrame(const draw::Camera& camera, glm::vec3 sun) {
     draw::RenderSettings s;
     s.width = 160;
     s.height = 120;
-    s.shadows = draw::Shadows::None;
-    s.levelsOfDetail = levels;
+    s.sunDirection = sun;
+    s.camera = camera;
+    return s;
+}
+
+draw::RenderSettings viewFrom(float distance, bool levels) {
     draw::Camera camera;
     camera.distance = distance;
     camera.target = glm::vec3(0.2f, 0.5f, 0.0f);
-    s.camera = camera;
+    draw::RenderSettings s = smallFrame(camera, draw::RenderSettings{}.sunDirection);
+    s.shadows = draw::Shadows::None;
+    s.levelsOfDetail = levels;
     return s;
 }
 
@@ -111,15 +118,11 @@ TEST_F(LevelOfDetailTest, DistantLeavesCastFromCoarserCutsAndTheirShadowsLookAli
         leaves.push_back(makeLeaf({1.2f * static_cast<float>(i), 1.0f, 0}, {1, 0, 0}, {0, 1, 0}, 1.0f, 0.6f,
                                   shared::kLeafSerrate, i, i));
     TestScene scene = uploadScene(context(), leaves);
-    draw::RenderSettings s;
-    s.width = 160;
-    s.height = 120;
-    s.sunDirection = {0.3f, 1.0f, 0.2f};
     draw::Camera camera;
     camera.elevationDegrees = 50.0f;
     camera.distance = 30.0f;
     camera.target = glm::vec3(3.0f, 0.5f, 0.0f);
-    s.camera = camera;
+    const draw::RenderSettings s = smallFrame(camera, {0.3f, 1.0f, 0.2f});
 
     const OnAndOff frames = renderOnAndOff(renderer(), scene, s, &draw::RenderSettings::levelsOfDetail);
     const Frame &coarse = frames.on, &fine = frames.off;
@@ -147,16 +150,12 @@ TEST_F(LevelOfDetailTest, OrgansOutsideTheViewAreLeftOutAndTheFrameAndItsShadows
         row.push_back(makeSphere(base + glm::vec3(0, 1.2f, 0), 0.25f, i, 2 * i + 1));
     }
     TestScene scene = uploadScene(context(), row);
-    draw::RenderSettings s;
-    s.width = 160;
-    s.height = 120;
-    s.sunDirection = {1.0f, 0.35f, 0.0f};
     draw::Camera camera;
     camera.azimuthDegrees = 0.0f;
     camera.elevationDegrees = 15.0f;
     camera.distance = 3.0f;
     camera.target = glm::vec3(-1.7f, 0.3f, 0.0f);
-    s.camera = camera;
+    const draw::RenderSettings s = smallFrame(camera, {1.0f, 0.35f, 0.0f});
 
     const OnAndOff frames = renderOnAndOff(renderer(), scene, s, &draw::RenderSettings::cullOutsideView);
     const Frame &culled = frames.on, &all = frames.off;

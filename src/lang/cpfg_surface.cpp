@@ -150,7 +150,8 @@ ir::SurfaceModel parseCpfgSurface(const std::string& text, const std::string& fi
     if (in.peekIs("PRECISION")) {
         in.expect("PRECISION", "");
         in.expect("S:", "in the precision");
-        fileSteps = static_cast<int>(in.number("the S precision"));
+        // Held within the range before the cast: a precision past int's range is a file's, not undefined.
+        fileSteps = static_cast<int>(std::clamp(in.number("the S precision"), 0.0, double{kSurfaceMostSteps}));
         in.expect("T:", "in the precision");
         in.number("the T precision"); // cpfg takes the S precision for both
     }

@@ -34,6 +34,10 @@ TEST(CpfgSurface, APatchIsCutAsTheViewOrTheFileSays) {
     EXPECT_EQ(lang::parseCpfgSurface(squareSurface(), "sq.s", 1.0f).mesh.corners.size(), 3u * 2u * 5u * 5u);
     EXPECT_EQ(lang::parseCpfgSurface(squareSurface(), "sq.s", 1.0f, 40, 40).mesh.corners.size(),
               3u * 2u * 10u * 10u); // at most ten
+    EXPECT_EQ(lang::parseCpfgSurface(squareSurface("PRECISION S: 5e21 T: 1\n"), "sq.s", 1.0f).mesh.corners.size(),
+              3u * 2u * 10u * 10u);
+    EXPECT_EQ(lang::parseCpfgSurface(squareSurface("PRECISION S: -5e21 T: 1\n"), "sq.s", 1.0f).mesh.corners.size(),
+              3u * 2u * 1u * 1u); // at least one
 }
 
 TEST(CpfgSurface, ItStandsOnItsContactPointInTheTurtlesFrameAtTheViewsSize) {

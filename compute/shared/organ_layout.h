@@ -42,6 +42,9 @@ SIMECO_CONST kDiscFacesViewer = 1u;
 SIMECO_CONST kLineCylinder = 0u;
 SIMECO_CONST kLinePolygon = 1u;
 SIMECO_CONST kLinePixel = 2u;
+// OrganInstance.shape for kOrganTriangle: a triangle of a generalized cylinder's mesh (cpfg's `line style:
+// cylinder`), not of a polygon.
+SIMECO_CONST kTriangleOfCylinder = 1u;
 
 // OrganInstance.color.w: kColorUntextured for an organ drawn in its colour, kColorFirstTexture + k for one whose
 // colour tints texture layer k (a SimEco stage's Texture; ir::DrawAssets).

@@ -65,7 +65,12 @@ SIMECO_CONST kTurtleMoveNoVertex = 50u;  // g(l): as f, but no vertex of a polyg
 SIMECO_CONST kTurtleRollUpright = 51u;   // @v: cpfg's roll so that H and its U share a vertical plane, its U
                                         // closest to up (ours, its reverse, closest to down)
 SIMECO_CONST kTurtleElasticityStep = 52u; // _(e): cpfg's, the elasticity increased by the view's increment, or set
-SIMECO_CONST kTurtleCommands = 53u;
+SIMECO_CONST kTurtleContour = 53u;        // @#(id): cpfg's, the contour of a generalized cylinder's next rings
+SIMECO_CONST kTurtleCylinderTangents = 54u; // @Gt(a[,b]): cpfg's, the cylinder's tangents at the next control point,
+                                          // a times the chord into it, b out of it (both 1.2 at first)
+SIMECO_CONST kTurtleRadiusTangents = 55u; // @Gr(s) or @Gr(a1,l1[,a2,l2]): cpfg's, how the cylinder's radius runs
+                                          // into and out of the next control point (contour_ring.h, CylinderShape)
+SIMECO_CONST kTurtleCommands = 56u;
 
 // F and G draw a segment; f and g move without one. Inside a polygon F, f and `.` add vertices, G and g none, and
 // F and G still draw their segments, as cpfg draws them.

@@ -15,6 +15,7 @@
 
 #include "ir/expr.h"
 #include "ir/contour_curve.h"
+#include "ir/cylinder_contour.h"
 #include "ir/function_curve.h"
 #include "ir/leaf_model.h"
 #include "ir/picture_look.h"
@@ -160,6 +161,14 @@ struct ViewSettings {
     // Whether `~` of a name the view defines no surface for draws a built-in blade chosen by the name (simeco's
     // and the quick grammars' way) or nothing, as cpfg does in .l files.
     bool undefinedSurfacesDrawn = true;
+    // Generalized cylinders as cpfg draws them (in .l files): with `line style: cylinder`, meshes of rings around
+    // the contours `@#(id)` selects, `cylinderSides` points each (`contour sides:`, `polygonization level:`), the
+    // rings turning with the turtle's roll where `twist of cylinders: on`; otherwise, and elsewhere, tubes of
+    // segments.
+    bool cpfgCylinders = false;
+    int cylinderSides = 8;
+    bool cylinderTwist = false;
+    std::vector<CylinderContour> contours; // `contour: id file` lines, in the view's order
     PictureLook look; // simeco's own lines: the picture's style, ground and background
     bool present = false;
 };

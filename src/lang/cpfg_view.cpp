@@ -14,6 +14,7 @@
 
 #include "lang/color_map.h"
 #include "lang/cpfg_contour.h"
+#include "lang/cpfg_cylinder_contour.h"
 #include "lang/cpfg_surface.h"
 #include "lang/source_text.h"
 
@@ -68,6 +69,8 @@ constexpr long kMostControlPoints = 1 << 16;
 // product is 400.
 constexpr uint64_t kMostSampledPoints = 1 << 17;
 constexpr long kMostFunctions = 4096;
+constexpr long kMostContourId = 1 << 16;
+constexpr long kMostCylinderSides = 512;
 
 // The file a view line names, in the view's folder; when it cannot be opened, the error points at that line.
 std::string namedFile(const std::filesystem::path& dir, const std::string& name, const std::string& view,
@@ -258,6 +261,7 @@ ir::ViewSettings cpfgDefaultView() {
     view.lineStyle = ir::LineStyle::Pixel;
     view.dollarRolls = false;
     view.undefinedSurfacesDrawn = false;
+    view.cpfgCylinders = true;
     return view;
 }
 
@@ -304,6 +308,22 @@ CpfgView readCpfgView(const std::string& path) {
                                      fmt::format("{} samples of a curve of {} points: their product may be at most {}",
                                                  samples, points, kMostSampledPoints));
             if (samples > 1) ir::sampleContourCurve(out.curves.back(), samples);
+        } else if (field(line, "contour", value)) {
+            std::istringstream in(value);
+            std::string id, name;
+            in >> id >> name;
+            ir::CylinderContour contour =
+                readCylinderContour(namedFile(dir, name, path, lines[i], i, "contour"));
+            contour.id = wholeNumber(id, path, i, "contour id", 1, kMostContourId);
+            out.view.contours.push_back(std::move(contour));
+        } else if (field(line, "contour sides", value)) {
+            out.view.cylinderSides = wholeNumber(firstWord(value), path, i, "contour sides", 3, kMostCylinderSides);
+        } else if (field(line, "polygonization level", value)) {
+            // cpfg's sides: 2 to the power of the level plus one.
+            const int level = wholeNumber(firstWord(value), path, i, "polygonization level", 0, 8);
+            out.view.cylinderSides = std::max(3, 1 << (level + 1));
+        } else if (field(line, "twist of cylinders", value)) {
+            out.view.cylinderTwist = firstWord(value) == "on";
         } else if (field(line, "angle increment", value)) {
             viewNumber(value, path, i, "angle increment", out.view.angleIncrement);
             out.view.present = true;

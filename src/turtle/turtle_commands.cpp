@@ -34,7 +34,7 @@ uint32_t atCommand(std::string_view name) {
         {"O", kTurtleSphere},       {"c", kTurtleDisc},          {"o", kTurtleDiscFacing},
         {"M", kTurtleSetPosition},  {"R", kTurtleSetHeading},    {"v", kTurtleRollUpright},
         {"D", kTurtleScaleSet},     {"T", kTurtleElasticityUp},  {"!", kTurtleIgnored},
-        {"#", kTurtleIgnored},      {";", kTurtleIgnored},       {",", kTurtleIgnored},
+        {"#", kTurtleContour},      {";", kTurtleIgnored},       {",", kTurtleIgnored},
         {"L", kTurtleIgnored},      {"I", kTurtleIgnored},
     };
     auto it = kCommands.find(name);
@@ -55,7 +55,8 @@ uint32_t pairCommand(uint32_t prefix, std::string_view name) {
     case kPairG:
         if (name == "s") return kTurtleCylinderStart;
         if (name == "c" || name == "e") return kTurtleCylinderPoint;
-        if (name == "t" || name == "r") return kTurtleIgnored;
+        if (name == "t") return kTurtleCylinderTangents;
+        if (name == "r") return kTurtleRadiusTangents;
         break;
     case kPairT:
         if (name == "s") return kTurtleElasticitySet;

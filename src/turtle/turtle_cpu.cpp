@@ -8,6 +8,7 @@
 
 #include "compute/shared/turtle_layout.h"
 #include "compute/shared/turtle_state_layout.h"
+#include "turtle/cylinder_mesh.h"
 #include "turtle/finite_organs.h"
 #include "turtle/frame.h"
 #include "turtle/turtle_commands.h"
@@ -29,11 +30,11 @@ struct TurtleState {
     float elasticity = 0.0f;
     // The last stem segment this branch drew, while the next one continues it (no move or branch between).
     int64_t lastStem = -1;
-    // The generalized cylinder's last control point, when one is open.
+    // The generalized cylinder's last control point, when one is open, and the settings `@#`, `@Gt` and `@Gr`
+    // made for the next one.
     bool cylinderOpen = false;
-    glm::vec3 anchor{0.0f};
-    glm::vec3 anchorHeading{0.0f, 1.0f, 0.0f};
-    float anchorWidth = 0.0f;
+    CylinderPoint anchor;
+    CylinderPoint cylinderSettings;
     int64_t lastTube = -1;
     // The last segment drawn while its end narrows (cpfg's tapered lines): until the next command that ends it.
     int64_t tapering = -1;
@@ -46,6 +47,13 @@ bool endsTaper(uint32_t command) {
 }
 
 shared::vec4 v4(glm::vec3 v, float w) { return {v.x, v.y, v.z, w}; }
+
+// cpfg's strips of a mesh's stretch: as many as `@Gc(n)` asks (n truncated, at least one), four without n.
+int cylinderRings(bool given, float requested) {
+    if (!given) return 4;
+    if (!(requested >= 1.0f)) return 1;
+    return int(std::min(std::trunc(requested), float(kTubeMaxSegments)));
+}
 
 uint32_t tubeSegments(float requested) {
     return uint32_t(std::clamp(std::floor(requested + 0.5f), 1.0f, float(kTubeMaxSegments)));
@@ -153,21 +161,47 @@ private:
         st.lastStem = index;
     }
 
-    // A tube from the last control point along the curve the headings there and here describe, in as many
-    // segments as the point asks for, each joined to the one before.
+    CylinderPoint controlPoint(const TurtleState& st) const {
+        CylinderPoint p = st.cylinderSettings;
+        p.position = st.position;
+        p.frame = st.frame;
+        p.width = st.width;
+        return p;
+    }
+
+    // The generalized cylinder from the last control point to this one: a mesh around its contours (cpfg's
+    // cylinder line style), or a tube along the curve the headings there and here describe in as many segments as
+    // the point asks for, each joined to the one before.
     void cylinderPoint(TurtleState& st, size_t module) {
         if (!st.cylinderOpen) return;
-        glm::vec3 chord = st.position - st.anchor;
+        CylinderPoint here = controlPoint(st);
+        const float shortest = kTubeEpsilon * (1.0f + glm::length(st.anchor.position));
+        if (t_.cylinderMeshes) {
+            float twist = 0.0f;
+            if (t_.cylinderTwist) twist = cylinderTwist(st.anchor, here);
+            else here.frame = carriedFrame(st.anchor.frame, here.frame);
+            cylinderMesh(st.anchor, here, cylinderRings(hasParam(module), param(module, 0, 0.0f)), twist, t_.cylinderSides,
+                         t_.contourRings, shortest, [&](glm::vec3 a, glm::vec3 b, glm::vec3 c) {
+                             OrganInstance& o = emit(kOrganTriangle, module, st);
+                             o.position = v4(a, 0);
+                             o.heading = v4(b, 0);
+                             o.up = v4(c, 0);
+                             o.shape = kTriangleOfCylinder;
+                         });
+            st.anchor = here;
+            return;
+        }
+        glm::vec3 chord = st.position - st.anchor.position;
         float length = glm::length(chord);
-        if (length > kTubeEpsilon * (1.0f + glm::length(st.anchor))) {
+        if (length > shortest) {
             uint32_t segments = tubeSegments(param(module, 0, 1.0f));
-            float r0 = 0.5f * st.anchorWidth, r1 = 0.5f * st.width;
-            glm::vec3 from = st.anchor;
+            float r0 = 0.5f * st.anchor.width, r1 = 0.5f * st.width;
+            glm::vec3 from = st.anchor.position;
             for (uint32_t k = 0; k < segments; ++k) {
                 float t0 = float(k) / float(segments), t1 = float(k + 1) / float(segments);
-                glm::vec3 to = k + 1 == segments
-                                   ? st.position
-                                   : tubeCurve(st.anchor, st.anchorHeading, st.position, st.frame.heading, length, t1);
+                glm::vec3 to = k + 1 == segments ? st.position
+                                                 : tubeCurve(st.anchor.position, st.anchor.frame.heading, st.position,
+                                                             st.frame.heading, length, t1);
                 glm::vec3 d = to - from;
                 float l = glm::length(d);
                 glm::vec3 heading = l > 0.0f ? d / l : chord / length;
@@ -184,9 +218,7 @@ private:
                 from = to;
             }
         }
-        st.anchor = st.position;
-        st.anchorHeading = st.frame.heading;
-        st.anchorWidth = st.width;
+        st.anchor = here;
     }
 
     void move(TurtleState& st, size_t i, uint32_t command) {
@@ -316,11 +348,28 @@ private:
             break;
         case kTurtleCylinderStart:
             st.cylinderOpen = true;
-            st.anchor = st.position;
-            st.anchorHeading = st.frame.heading;
-            st.anchorWidth = st.width;
+            st.anchor = controlPoint(st);
             st.lastTube = -1;
             break;
+        case kTurtleContour: {
+            // An id no `contour:` line gives selects the circle, as in cpfg.
+            const float id = param(i, 0, 0.0f);
+            st.cylinderSettings.contour = 0;
+            for (size_t k = 1; k < t_.contourIds.size(); ++k)
+                if (float(t_.contourIds[k]) == id) {
+                    st.cylinderSettings.contour = uint32_t(k);
+                    break;
+                }
+            break;
+        }
+        case kTurtleCylinderTangents:
+            if (hasParam(i)) st.cylinderSettings.tangents = {param(i, 0, 0.0f), param(i, 1, param(i, 0, 0.0f))};
+            break;
+        case kTurtleRadiusTangents: {
+            std::vector<float> params(s_.paramsOf(i), s_.paramsOf(i) + s_.paramCount[i]);
+            setRadiusTangents(st.cylinderSettings, params);
+            break;
+        }
         case kTurtleCylinderPoint: cylinderPoint(st, i); break;
         default: break;
         }

@@ -8,6 +8,7 @@
 
 #include "compute/shared/organ_layout.h"
 #include "compute/shared/turtle_state_layout.h"
+#include "turtle/contour_ring.h"
 
 namespace simeco::turtle {
 
@@ -96,6 +97,16 @@ TurtleSettings turtleSettings(const ir::Grammar& grammar, const ir::Alphabet& al
     t.tropismRule = v.tropismRule;
     t.lineStyle = v.lineStyle;
     t.dollarRolls = v.dollarRolls;
+    t.cylinderMeshes = v.cpfgCylinders && v.lineStyle == ir::LineStyle::Cylinder;
+    t.cylinderTwist = v.cylinderTwist;
+    t.cylinderSides = v.cylinderSides;
+    t.contourIds = {0};
+    t.contourRings = contourRing(nullptr, t.cylinderSides);
+    for (const ir::CylinderContour& c : v.contours) {
+        t.contourIds.push_back(c.id);
+        const std::vector<glm::vec3> ring = contourRing(&c, t.cylinderSides);
+        t.contourRings.insert(t.contourRings.end(), ring.begin(), ring.end());
+    }
     if (v.palette.empty()) {
         t.palette = defaultPalette();
     } else {

@@ -30,6 +30,14 @@ struct TurtleSettings {
     ir::LineStyle lineStyle = ir::LineStyle::Cylinder;
     bool taperedLines = false; // ir::ViewSettings::taperedLines
     bool dollarRolls = true;   // ir::ViewSettings::dollarRolls
+    // ir::ViewSettings' generalized cylinders: meshes (cpfg's `line style: cylinder`) or tubes of segments. Contour
+    // index k (0 the circle, then the view's in its order) has the id contourIds[k] and its ring at
+    // contourRings[k * (cylinderSides + 1)], as contour_ring.h samples it.
+    bool cylinderMeshes = false;
+    bool cylinderTwist = false;
+    int cylinderSides = 8;
+    std::vector<int> contourIds;
+    std::vector<glm::vec3> contourRings;
     std::vector<glm::vec4> palette;       // kPaletteSize linear RGBA colours
     // Per symbol id, for `~` and that symbol: the surface's scale and leaf shape (kLeaf*), how it draws (kSurface*)
     // and where it leaves the turtle (per unit of its first scale and the turtle's, in its heading, left and up).

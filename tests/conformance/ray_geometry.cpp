@@ -105,7 +105,7 @@ RayGeometry readRayGeometry(const std::filesystem::path& xzFile) {
         while (i < w.size() && isNumber(w[i])) ++i;
     };
     // A triangle's corners, each followed by its normal (and texture coordinates for `triangleuv`).
-    auto triangle = [&]() {
+    auto triangle = [&](bool plants) {
         if (i < w.size() && !isNumber(w[i])) ++i; // a surface
         size_t numbers = 0;
         while (i + numbers < w.size() && isNumber(w[i + numbers])) ++numbers;
@@ -113,7 +113,7 @@ RayGeometry readRayGeometry(const std::filesystem::path& xzFile) {
         RayTriangle t;
         for (glm::vec3& corner : t.corners) {
             const size_t next = i + perCorner;
-            corner = vector();
+            corner = plants ? point() : vector();
             i = next;
         }
         i = end;
@@ -128,7 +128,7 @@ RayGeometry readRayGeometry(const std::filesystem::path& xzFile) {
             std::vector<RayTriangle>& mesh = g.surfaceMeshes[w[i++]];
             while (i < w.size() && w[i] != "end") {
                 const std::string word = w[i++];
-                if (word == "triangle" || word == "triangleuv") mesh.push_back(triangle());
+                if (word == "triangle" || word == "triangleuv") mesh.push_back(triangle(false));
             }
             ++i;
         } else if (keyword == "cylinder" || keyword == "cone") {
@@ -173,8 +173,9 @@ RayGeometry readRayGeometry(const std::filesystem::path& xzFile) {
                 s.position = point();
             }
             g.surfaces.push_back(s);
+        } else if (keyword == "triangle" || keyword == "triangleuv") {
+            g.cylinderTriangles.push_back(triangle(true));
         } else {
-            if (keyword == "triangle" || keyword == "triangleuv") ++g.triangles;
             if (i < w.size() && !isNumber(w[i])) ++i; // a surface or a name
             skipNumbers();
         }

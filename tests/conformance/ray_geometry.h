@@ -26,7 +26,8 @@ struct RaySphere {
 // A disc (`@c`, `@o`): its centre and radius (its normal, for `@o` turned to cpfg's viewer, is not kept).
 using RayDisc = RaySphere;
 
-// A polygon `{ ... }` as a fan of triangles from its first vertex, as simeco draws it.
+// A polygon `{ ... }` as a fan of triangles from its first vertex, as simeco draws it; or a generalized
+// cylinder's triangle.
 struct RayTriangle {
     glm::vec3 corners[3];
 };
@@ -48,7 +49,8 @@ struct RayGeometry {
     std::vector<RaySurface> surfaces;
     // The triangles of each surface the file defines (`name id grid ... end`), in the surface's own frame.
     std::map<std::string, std::vector<RayTriangle>> surfaceMeshes;
-    size_t triangles = 0; // the plant's own (generalized cylinders): counted, not compared yet
+    // The plant's own triangles: its generalized cylinders' meshes, strip after strip.
+    std::vector<RayTriangle> cylinderTriangles;
     glm::vec3 min{1e30f}, max{-1e30f}; // of every point the plant draws (not the surfaces' own frames)
     float size() const;                // the largest side of the box
 };

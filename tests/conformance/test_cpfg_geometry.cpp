@@ -48,6 +48,7 @@ struct Drawn {
     std::vector<RaySphere> spheres;
     std::vector<RayDisc> discs;
     std::vector<RayTriangle> polygonFans;
+    std::vector<RayTriangle> cylinderTriangles;
     std::vector<RaySurface> surfaces; // in cpfg's frame and units (the surface's reach taken out of its scales)
     // The triangles of each surface the view reads, in cpfg's frame of the surface at its view's size.
     std::map<std::string, std::vector<RayTriangle>> surfaceMeshes;
@@ -98,9 +99,9 @@ Drawn simecoDrawing(const fs::path& file) {
         }
     for (uint32_t k = 0; k < drawn.count[shared::kOrganTriangle]; ++k) {
         const shared::OrganInstance& o = drawn.organs[drawn.first[shared::kOrganTriangle] + k];
-        out.polygonFans.push_back({{glm::vec3(o.position.x, o.position.y, o.position.z),
-                                    glm::vec3(o.heading.x, o.heading.y, o.heading.z),
-                                    glm::vec3(o.up.x, o.up.y, o.up.z)}});
+        (o.shape == shared::kTriangleOfCylinder ? out.cylinderTriangles : out.polygonFans)
+            .push_back({{glm::vec3(o.position.x, o.position.y, o.position.z),
+                         glm::vec3(o.heading.x, o.heading.y, o.heading.z), glm::vec3(o.up.x, o.up.y, o.up.z)}});
     }
     return out;
 }
@@ -182,6 +183,17 @@ std::string firstDifference(const RayGeometry& cpfg, const Drawn& drawn) {
         for (int c = 0; c < 3; ++c)
             if (glm::distance(cpfg.polygonFans[k].corners[c], drawn.polygonFans[k].corners[c]) > tolerance)
                 return fmt::format("polygon triangle {}: corner {} differs", k, c);
+    if (cpfg.cylinderTriangles.size() != drawn.cylinderTriangles.size())
+        return fmt::format("{} generalized cylinder triangles, cpfg draws {}", drawn.cylinderTriangles.size(),
+                           cpfg.cylinderTriangles.size());
+    for (size_t k = 0; k < drawn.cylinderTriangles.size(); ++k)
+        for (int c = 0; c < 3; ++c) {
+            const glm::vec3 a = cpfg.cylinderTriangles[k].corners[c], b = drawn.cylinderTriangles[k].corners[c];
+            if (glm::distance(a, b) > tolerance)
+                return fmt::format("generalized cylinder triangle {}: corner {} at ({:.5g},{:.5g},{:.5g}), cpfg's "
+                                   "({:.5g},{:.5g},{:.5g})",
+                                   k, c, b.x, b.y, b.z, a.x, a.y, a.z);
+        }
     for (size_t k = 0; k < got.size(); ++k) {
         const RaySegment &a = cpfg.segments[k], &b = got[k];
         if (glm::distance(a.from, b.from) > tolerance || glm::distance(a.to, b.to) > tolerance)
@@ -220,6 +232,7 @@ const std::set<std::string> kMatching = {
     "02-Mod-vis-3D/09-monopodial-spiral",
     "02-Mod-vis-3D/10-sympodial",
     "02-Mod-vis-3D/11-sympodial-asym",
+    "03-inverse-modeling/01-herb-lily",
     "03-inverse-modeling/02-fern-leaf",
     "03-inverse-modeling/06-phyllotaxis-ridley",
     "04-Signaling/01-hormone-up",
@@ -250,7 +263,8 @@ TEST_F(CpfgGeometry, SegmentsSpheresDiscsAndPolygonsMatchCpfgsDrawing) {
     std::erase_if(models, [](const CorpusModel& m) { return m.compare != "exact"; });
     ASSERT_EQ(models.size(), 44u) << "the corpus manifest was not found or is incomplete at " << kCorpus;
     std::vector<std::string> matching, differing;
-    size_t segments = 0, spheres = 0, discs = 0, triangles = 0, surfaces = 0; // compared in the models that match
+    // Compared in the models that match.
+    size_t segments = 0, spheres = 0, discs = 0, triangles = 0, cylinderTriangles = 0, surfaces = 0;
     for (const CorpusModel& model : models) {
         std::string name = model.folder;
         std::replace(name.begin(), name.end(), '/', '_');
@@ -265,6 +279,7 @@ TEST_F(CpfgGeometry, SegmentsSpheresDiscsAndPolygonsMatchCpfgsDrawing) {
             matching.push_back(model.folder);
             segments += cpfg.segments.size(), spheres += cpfg.spheres.size(), discs += cpfg.discs.size();
             triangles += cpfg.polygonFans.size();
+            cylinderTriangles += cpfg.cylinderTriangles.size();
             surfaces += std::count_if(cpfg.surfaces.begin(), cpfg.surfaces.end(),
                                       [&](const RaySurface& r) { return cpfg.surfaceMeshes.contains(r.id); });
         } else {
@@ -272,14 +287,16 @@ TEST_F(CpfgGeometry, SegmentsSpheresDiscsAndPolygonsMatchCpfgsDrawing) {
         }
     }
     for (const std::string& d : differing) std::printf("differs from cpfg: %s\n", d.c_str());
-    std::printf("exact models drawn as cpfg draws their segments, spheres, discs, polygons and surfaces: %zu of %zu "
-                "(%zu segments, %zu spheres, %zu discs, %zu polygon triangles, %zu surfaces)\n",
-                matching.size(), models.size(), segments, spheres, discs, triangles, surfaces);
+    std::printf("exact models drawn as cpfg draws their segments, spheres, discs, polygons, generalized cylinders and "
+                "surfaces: %zu of %zu (%zu segments, %zu spheres, %zu discs, %zu polygon triangles, %zu cylinder "
+                "triangles, %zu surfaces)\n",
+                matching.size(), models.size(), segments, spheres, discs, triangles, cylinderTriangles, surfaces);
     // Every kind was compared somewhere.
     EXPECT_GT(segments, 0u);
     EXPECT_GT(spheres, 0u);
     EXPECT_GT(discs, 0u);
     EXPECT_GT(triangles, 0u);
+    EXPECT_GT(cylinderTriangles, 0u);
     EXPECT_GT(surfaces, 0u);
     for (const std::string& m : matching) std::printf("  %s\n", m.c_str());
     for (const std::string& m : kMatching)

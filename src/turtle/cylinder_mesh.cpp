@@ -1,0 +1,137 @@
+#include "turtle/cylinder_mesh.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
+
+namespace simeco::turtle {
+
+namespace {
+
+using dvec3 = glm::dvec3;
+
+// cpfg's frames have our up reversed: the mesh is built in cpfg's, where a contour's x runs along up and its y
+// against left.
+struct CpfgFrame {
+    dvec3 heading, left, up;
+};
+CpfgFrame cpfgFrame(const Frame& f) { return {dvec3(f.heading), dvec3(f.left), -dvec3(f.up)}; }
+
+dvec3 rotateAboutAxis(dvec3 v, dvec3 axis, double radians) {
+    const double c = std::cos(radians), s = std::sin(radians);
+    return v * c + glm::cross(axis, v) * s + axis * (glm::dot(axis, v) * (1.0 - c));
+}
+
+// cpfg's smallest rotation taking heading a to b, applied to v: about a x b by the arcsine of |a x b| (so by less
+// than the angle between them where it is over 90 degrees, as cpfg turns).
+dvec3 turnedWithHeading(dvec3 a, dvec3 b, dvec3 v, double least) {
+    const dvec3 axis = glm::cross(a, b);
+    const double s = glm::length(axis);
+    if (!(s > least)) return v;
+    return rotateAboutAxis(v, axis / s, std::asin(std::min(s, 1.0)));
+}
+
+// The ring of `sides` + 1 vertices around `centre`: each contour point p (the two contours blended by `blend`,
+// times `radius`) at p.x along up, p.y against left, and its z along `depth`.
+std::vector<glm::vec3> ring(dvec3 centre, const CpfgFrame& f, dvec3 depth, double radius, double blend,
+                            const glm::vec3* first, const glm::vec3* second, int sides) {
+    std::vector<glm::vec3> out(static_cast<size_t>(sides) + 1);
+    for (int i = 0; i <= sides; ++i) {
+        const dvec3 p = radius * ((1.0 - blend) * dvec3(first[i]) + blend * dvec3(second[i]));
+        out[size_t(i)] = glm::vec3(centre + p.x * f.up - p.y * f.left + p.z * depth);
+    }
+    return out;
+}
+
+} // namespace
+
+void setRadiusTangents(CylinderPoint& p, const std::vector<float>& params) {
+    if (params.empty()) return;
+    if (params.size() == 1) {
+        p.scaleRadius = params[0];
+        return;
+    }
+    constexpr double kRadians = 3.14159265358979323846 / 180.0;
+    auto tangent = [&](size_t k) {
+        return glm::vec2(float(std::cos(params[k] * kRadians) * params[k + 1]),
+                         float(std::sin(params[k] * kRadians) * params[k + 1]));
+    };
+    p.radiusIn = p.radiusOut = tangent(0);
+    if (params.size() >= 4) p.radiusOut = tangent(2);
+}
+
+float cylinderTwist(const CylinderPoint& from, const CylinderPoint& to) {
+    const CpfgFrame s = cpfgFrame(from.frame), t = cpfgFrame(to.frame);
+    const dvec3 carried = turnedWithHeading(s.heading, t.heading, s.up, 1e-6);
+    double angle = std::asin(std::min(1.0, glm::length(glm::cross(t.up, carried))));
+    if (glm::dot(t.up, carried) < 0.0) angle = 3.14159265358979323846 - angle;
+    if (glm::dot(t.left, carried) < 0.0) angle = -angle;
+    return float(angle);
+}
+
+Frame carriedFrame(const Frame& from, const Frame& to) {
+    const CpfgFrame s = cpfgFrame(from), t = cpfgFrame(to);
+    const dvec3 up = turnedWithHeading(s.heading, t.heading, s.up, 0.0);
+    Frame out;
+    out.heading = to.heading;
+    out.up = glm::vec3(-up);
+    out.left = glm::vec3(glm::cross(t.heading, up));
+    return out;
+}
+
+void cylinderMesh(const CylinderPoint& a, const CylinderPoint& b, int rings, float twist, int sides,
+                  const std::vector<glm::vec3>& contourRings, float shortest,
+                  const std::function<void(glm::vec3, glm::vec3, glm::vec3)>& triangle) {
+    const dvec3 pa(a.position), pb(b.position);
+    const double len = glm::length(pb - pa);
+    if (!(len > shortest)) return;
+    const CpfgFrame fa = cpfgFrame(a.frame), fb = cpfgFrame(b.frame);
+    // The Hermite curve, its coefficients in float as cpfg keeps them.
+    const glm::vec3 t0 = glm::vec3(fa.heading * (len * a.tangents.y)), t1 = glm::vec3(fb.heading * (len * b.tangents.x));
+    const glm::vec3 d = a.position - b.position;
+    const glm::vec3 c0 = a.position, c1 = t0, c2 = -3.0f * d - 2.0f * t0 - t1, c3 = 2.0f * d + t0 + t1;
+    // The radius as a second Hermite curve over (t, radius), whose parameter r spaces the rings.
+    const float half = 0.5f * (b.width - a.width);
+    glm::vec2 r0 = a.radiusOut, r1 = b.radiusIn;
+    if (b.scaleRadius != 0.0f) r0.y *= float(len), r1.y *= float(len);
+    if (r0 == glm::vec2(0.0f)) r0 = {1.0f, half};
+    if (r1 == glm::vec2(0.0f)) r1 = {1.0f, half};
+    auto curveParameter = [&](float r) {
+        return r * r0.x + r * r * (3 - 2 * r0.x - r1.x) + r * r * r * (-2 + r0.x + r1.x);
+    };
+    auto radiusAt = [&](float r) {
+        return 0.5f * a.width + r * r0.y + r * r * (3 * half - 2 * r0.y - r1.y) + r * r * r * (-2 * half + r0.y + r1.y);
+    };
+    const size_t stride = static_cast<size_t>(sides) + 1;
+    const glm::vec3* ca = &contourRings[a.contour * stride];
+    const glm::vec3* cb = &contourRings[b.contour * stride];
+
+    std::vector<glm::vec3> previous =
+        ring(pa, fa, fa.heading * double(a.tangents.y), 0.5 * a.width, 0.0, ca, cb, sides);
+    auto strip = [&](const std::vector<glm::vec3>& next) {
+        for (int i = 1; i <= sides; ++i) {
+            triangle(next[size_t(i - 1)], next[size_t(i)], previous[size_t(i - 1)]);
+            triangle(previous[size_t(i - 1)], next[size_t(i)], previous[size_t(i)]);
+        }
+    };
+    const float step = 1.0f / float(rings);
+    float r = step;
+    for (int k = 1; k < rings; ++k, r += step) {
+        const float t = curveParameter(r);
+        const glm::vec3 p = ((c3 * t + c2) * t + c1) * t + c0;
+        const glm::vec3 slope = (3.0f * c3 * t + 2.0f * c2) * t + c1;
+        CpfgFrame f;
+        f.heading = glm::normalize(dvec3(slope));
+        f.up = rotateAboutAxis(turnedWithHeading(fa.heading, f.heading, fa.up, 0.0), f.heading, -double(twist) * t);
+        f.left = glm::cross(f.heading, f.up);
+        std::vector<glm::vec3> next = ring(dvec3(p), f, f.heading / len, radiusAt(r), t, ca, cb, sides);
+        strip(next);
+        previous = std::move(next);
+    }
+    const std::vector<glm::vec3> last = ring(pb, fb, fb.heading * double(b.tangents.x), 0.5 * b.width, 1.0, ca, cb, sides);
+    strip(last);
+}
+
+} // namespace simeco::turtle

@@ -1,0 +1,45 @@
+// cpfg's generalized cylinders drawn as meshes (`line style: cylinder`): between two control points, rings of the
+// contours the points select, placed along the Hermite curve their headings and tangent settings describe, their
+// radius along the curve the points' radius settings give, joined by strips of triangles.
+#pragma once
+
+#include <functional>
+#include <vector>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include "turtle/frame.h"
+
+namespace simeco::turtle {
+
+// A control point as cpfg keeps it: where the turtle was, its frame (with the roll cpfg carries along the cylinder
+// where the view does not twist it), its width and the settings `@#`, `@Gt` and `@Gr` had made.
+struct CylinderPoint {
+    glm::vec3 position{0.0f};
+    Frame frame;
+    float width = 0.0f;
+    uint32_t contour = 0;                        // index into the species' contours, 0 the circle
+    glm::vec2 tangents{kTubeTangentParameter};   // into this point (x) and out of it (y), times the chord
+    glm::vec2 radiusIn{0.0f}, radiusOut{0.0f};   // the radius curve's tangents into and out of it; zero: linear
+    float scaleRadius = 0.0f;                    // non-zero: the tangents' radius parts are per unit of the chord
+};
+
+// `@Gr(s)` sets whether the radius tangents scale with the chord; `@Gr(a1, l1[, a2, l2])` the tangents, angles in
+// degrees and lengths (a1, l1 into the point and out of it, unless a2, l2 give the latter).
+void setRadiusTangents(CylinderPoint& p, const std::vector<float>& params);
+
+// The roll of the frame the turtle brought to `to` against the one carried from `from` by the smallest rotation
+// of its heading: what `twist of cylinders: on` spreads along the cylinder.
+float cylinderTwist(const CylinderPoint& from, const CylinderPoint& to);
+
+// `to`'s frame with the roll of `from`'s carried to its heading: what cpfg keeps where the view does not twist.
+Frame carriedFrame(const Frame& from, const Frame& to);
+
+// The triangles from `a` to `b` in `rings` strips, each contour's ring at `contourRings[k * (sides + 1)]`, to
+// `triangle(p0, p1, p2)` in cpfg's order. Draws nothing where the points lie closer than `shortest`.
+void cylinderMesh(const CylinderPoint& a, const CylinderPoint& b, int rings, float twist, int sides,
+                  const std::vector<glm::vec3>& contourRings, float shortest,
+                  const std::function<void(glm::vec3, glm::vec3, glm::vec3)>& triangle);
+
+} // namespace simeco::turtle

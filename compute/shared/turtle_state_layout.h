@@ -67,9 +67,17 @@ struct TurtleSpecies {
     // the turtle to per unit of its first scale (float bits, in heading, left and up) and how it draws (kSurface*).
     uint surfaces;
     float initialScale; // the scale before any `@D` (cpfg's `initial scale:`)
-    uint pad1;
-    uint pad2;
+    // Generalized cylinders (TurtleSettings): kCylinderMeshes and kCylinderTwist, the rings' sides from bit
+    // kCylinderSidesShift, the contours from bit kCylinderContoursShift; contour k's ring is at contourRings[
+    // contourFirst + k * (sides + 1)], its points' w the contour's id.
+    uint cylinders;
+    uint contourFirst;
 };
+SIMECO_CONST kCylinderMeshes = 1u;
+SIMECO_CONST kCylinderTwist = 2u;
+SIMECO_CONST kCylinderSidesShift = 2u; // 10 bits: at most kMostCylinderSides
+SIMECO_CONST kCylinderContoursShift = 12u;
+SIMECO_CONST kMostCylinderSides = 1023u;
 SIMECO_CONST kSurfaceWords = 4u;
 // How `~` draws a surface: not at all (an id a cpfg view does not define), along the heading (a built-in blade or
 // blossom, a model), or around its base (a cpfg surface from its contact point).
@@ -92,6 +100,10 @@ SIMECO_CONST kMarkTube = 32u;          // a cylinder point that drew a tube segm
 SIMECO_CONST kMarkTubeBreak = 64u;     // `[`, @Gs: the next tube segment does not continue the last one
 SIMECO_CONST kMarkPolygon = 128u;      // `{`: a polygon's first module
 SIMECO_CONST kMarkBranchClose = 256u;  // `]`: with kMarkStemBreak, where a tapering segment's end stops narrowing
+SIMECO_CONST kMarkContour = 512u;             // @#: a cylinder's contour
+SIMECO_CONST kMarkCylinderTangents = 1024u;   // @Gt with parameters
+SIMECO_CONST kMarkRadiusScale = 2048u;        // @Gr(s)
+SIMECO_CONST kMarkRadiusTangents = 4096u;     // @Gr(a1, l1[, a2, l2])
 
 // A cylinder point `@Gc(n)` draws the tube from the last one as n segments (at most this many) along the
 // Hermite curve whose tangents are the turtle's headings at the two points, each 1.2 times as long as the chord

@@ -43,9 +43,15 @@ void main() {
         // A tube from the last control point, once a cylinder has started on the path to this module.
         vec3 from = states[cylinderAnchors[i]].position.xyz;
         if (length(states[i].position.xyz - from) > kTubeEpsilon * (1.0 + length(from))) {
-            kind = kOrganStem;
-            organs = tubeSegments(paramAt(i, 0u, 1.0));
-            marks[i] |= kMarkTube;
+            TurtleSpecies sp = speciesTable[speciesOf(plantOf(i))];
+            if ((sp.cylinders & kCylinderMeshes) != 0u) { // a mesh (emit.comp, cylinder_mesh.glsl)
+                kind = kOrganTriangle;
+                organs = cylinderRings(i) * cylinderSides(sp) * 2u;
+            } else {
+                kind = kOrganStem;
+                organs = tubeSegments(paramAt(i, 0u, 1.0));
+                marks[i] |= kMarkTube;
+            }
         }
     }
     kinds[i] = kind;

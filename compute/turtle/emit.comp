@@ -26,11 +26,20 @@ layout(set = 0, binding = 19, std430) buffer PlantBounds { int plantBounds[]; };
 layout(set = 0, binding = 20, std430) writeonly buffer LastSlots { uint lastSlots[]; };
 #define TURTLE_STATUS_BINDING 21
 #include "compute/turtle/module_count.glsl"
+// Generalized cylinders drawn as meshes: the marks, each species' contours, and each module's nearest setters of
+// the cylinder's settings (kNoModule: none).
+layout(set = 0, binding = 22, std430) readonly buffer Marks { uint marks[]; };
+layout(set = 0, binding = 23, std430) readonly buffer ContourRings { vec4 contourRings[]; };
+layout(set = 0, binding = 24, std430) readonly buffer ContourSetters { uint contourSetters[]; };
+layout(set = 0, binding = 25, std430) readonly buffer TangentSetters { uint tangentSetters[]; };
+layout(set = 0, binding = 26, std430) readonly buffer RadiusScaleSetters { uint radiusScaleSetters[]; };
+layout(set = 0, binding = 27, std430) readonly buffer RadiusTangentSetters { uint radiusTangentSetters[]; };
 
 #include "compute/turtle/turtle_math.glsl"
 #include "compute/turtle/turtle_modules.glsl"
 #include "compute/turtle/organ_bounds.glsl"
 #include "compute/turtle/plant_bounds.glsl"
+#include "compute/turtle/cylinder_mesh.glsl"
 
 // An up vector for a segment along `heading`: the turtle's up with its heading component removed.
 vec3 perpendicularUp(vec3 heading, TurtleState s) {
@@ -83,6 +92,28 @@ void emitTube(OrganInstance o, uint i, uint slot, TurtleState after) {
     lastSlots[i] = slot + segments - 1u;
 }
 
+// The mesh from the last control point to this one (classify.comp counted its triangles).
+void emitCylinderMesh(OrganInstance o, uint i, uint slot, TurtleState after, TurtleSpecies sp) {
+    uint rings = cylinderRings(i);
+    uint count = rings * cylinderSides(sp) * 2u;
+    if (slot + count > pc.organCapacity) return; // the organs outgrew their buffer (field.comp tells)
+    uint anchor = cylinderAnchors[i];
+    CylinderPoint a = controlPointAt(anchor, states[anchor], sp), b = controlPointAt(i, after, sp);
+    float twist = 0.0;
+    if ((sp.cylinders & kCylinderTwist) != 0u) {
+        twist = cylinderTwist(a, b);
+    } else { // the frames carried from the cylinder's start
+        a.up = carriedUp(anchor);
+        a.left = cross(a.heading, a.up);
+        b.up = turnedWithHeading(a.heading, b.heading, a.up, 0.0);
+        b.left = cross(b.heading, b.up);
+    }
+    o.shape = kTriangleOfCylinder;
+    cylinderMesh(o, slot, a, b, rings, twist, sp);
+    slots[i] = slot;
+    lastSlots[i] = slot + count - 1u;
+}
+
 void main() {
     uint i = invocationIndex();
     if (i >= moduleCount()) return;
@@ -113,11 +144,14 @@ void main() {
     float colorIndex = clamp(after.left.w, -1.0, float(kPaletteEntries));
     o.color = palettes[species * kPaletteEntries + uint(clamp(int(floor(colorIndex + 0.5)), 0, int(kPaletteEntries) - 1))];
 
-    if (kind == kOrganTriangle) {
-        o = triangleOf(o, i, after);
+    if (command == kTurtleCylinderPoint && (sp.cylinders & kCylinderMeshes) != 0u) {
+        emitCylinderMesh(o, i, offsets[kind * pc.count + i], after, sp);
+        return;
     } else if (command == kTurtleCylinderPoint) {
         emitTube(o, i, offsets[kind * pc.count + i], after);
         return;
+    } else if (kind == kOrganTriangle) {
+        o = triangleOf(o, i, after);
     } else if (kind == kOrganStem) {
         float radius = 0.5 * before.heading.w;
         Frame f = frameOf(before);

@@ -56,6 +56,11 @@ uint setUpModule(uint i) {
     if (command == kTurtleBranchOpen) mark |= kMarkTubeBreak;
     if (command == kTurtlePolygonBegin) mark |= kMarkPolygon;
     if (command == kTurtleBranchClose) mark |= kMarkBranchClose;
+    // The settings of a generalized cylinder's next control point, which its mesh looks back for.
+    if (command == kTurtleContour) mark |= kMarkContour;
+    if (command == kTurtleCylinderTangents && hasParam(i)) mark |= kMarkCylinderTangents;
+    if (command == kTurtleRadiusTangents && paramCountAt(i) == 1u) mark |= kMarkRadiusScale;
+    if (command == kTurtleRadiusTangents && paramCountAt(i) >= 2u) mark |= kMarkRadiusTangents;
 
     commands[i] = command;
     parents[i] = parent;

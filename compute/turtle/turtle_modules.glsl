@@ -32,6 +32,16 @@ uint plantOf(uint i) {
 
 uint speciesOf(uint plant) { return plant % pc.species; }
 
+// A generalized cylinder's mesh (cylinder_mesh.glsl): its rings' sides, and the strips of the stretch that ends
+// at control point i, as many as `@Gc(n)` asks (n truncated, at least one), four without n.
+uint cylinderSides(TurtleSpecies sp) { return (sp.cylinders >> kCylinderSidesShift) & kMostCylinderSides; }
+uint cylinderRings(uint i) {
+    if (!hasParam(i)) return 4u;
+    float n = paramAt(i, 0u, 1.0);
+    if (!(n >= 1.0)) return 1u;
+    return uint(min(trunc(n), float(kTubeMaxSegments)));
+}
+
 uint commandAt(uint i, uint begin, uint end) {
     uint sym = symbolAt(i);
     if (sym >= pc.symbols) return kTurtleNone;

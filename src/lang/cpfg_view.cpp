@@ -70,7 +70,7 @@ constexpr long kMostControlPoints = 1 << 16;
 constexpr uint64_t kMostSampledPoints = 1 << 17;
 constexpr long kMostFunctions = 4096;
 constexpr long kMostContourId = 1 << 16;
-constexpr long kMostCylinderSides = 512;
+constexpr long kMostContourSides = 512;
 
 // The file a view line names, in the view's folder; when it cannot be opened, the error points at that line.
 std::string namedFile(const std::filesystem::path& dir, const std::string& name, const std::string& view,
@@ -317,7 +317,7 @@ CpfgView readCpfgView(const std::string& path) {
             contour.id = wholeNumber(id, path, i, "contour id", 1, kMostContourId);
             out.view.contours.push_back(std::move(contour));
         } else if (field(line, "contour sides", value)) {
-            out.view.cylinderSides = wholeNumber(firstWord(value), path, i, "contour sides", 3, kMostCylinderSides);
+            out.view.cylinderSides = wholeNumber(firstWord(value), path, i, "contour sides", 3, kMostContourSides);
         } else if (field(line, "polygonization level", value)) {
             // cpfg's sides: 2 to the power of the level plus one.
             const int level = wholeNumber(firstWord(value), path, i, "polygonization level", 0, 8);

@@ -85,7 +85,26 @@ TurtleSpecies speciesOf(const turtle::TurtleSettings& t, bool elasticityCommands
                     : t.tropismRule == ir::TropismRule::CpfgTropism ? kTropismCpfgTropism
                                                                      : kTropismTorque;
     s.lineStyle = turtle::lineStyleCode(t.lineStyle);
+    s.cylinders = (t.cylinderMeshes ? kCylinderMeshes : 0u) | (t.cylinderTwist ? kCylinderTwist : 0u) |
+                  (std::min(std::uint32_t(t.cylinderSides), kMostCylinderSides) << kCylinderSidesShift) |
+                  (std::uint32_t(t.contourIds.size()) << kCylinderContoursShift);
     return s;
+}
+
+// Every species' contour rings (TurtleSpecies::contourFirst), each point's w its contour's id.
+std::vector<shared::vec4> contourRingsOf(const std::vector<turtle::TurtleSettings>& species,
+                                         std::vector<TurtleSpecies>& table) {
+    std::vector<shared::vec4> rings;
+    for (size_t s = 0; s < species.size(); ++s) {
+        const turtle::TurtleSettings& t = species[s];
+        table[s].contourFirst = std::uint32_t(rings.size());
+        const size_t stride = size_t(t.cylinderSides) + 1;
+        for (size_t k = 0; k < t.contourRings.size(); ++k) {
+            const glm::vec3& p = t.contourRings[k];
+            rings.push_back({p.x, p.y, p.z, float(t.contourIds[k / stride])});
+        }
+    }
+    return rings;
 }
 
 
@@ -125,7 +144,8 @@ struct GpuTurtle::Impl {
     // For strings counted only on the device: the workgroups of the bracket tree's dispatches, as a recorded
     // derivation step sizes them (made on the first such recording).
     std::optional<vk::ComputePipeline> stepSizes;
-    vk::Buffer commandTable, speciesTable, palettes, surfaceScales, surfaceShapes;
+    vk::Buffer commandTable, speciesTable, palettes, surfaceScales, surfaceShapes, contourRings;
+    bool cylinderMeshes = false; // some species draws its generalized cylinders as meshes
     // Each plant's placement in the field, where the caller gives them (FieldOptions::placements).
     vk::Buffer placements;
     // Takes the field's placements, kept while they are the same; refused when they change under a recording.
@@ -141,6 +161,8 @@ struct GpuTurtle::Impl {
         vk::Buffer states;
         vk::Buffer triangleFirst, trianglePrevious;
         vk::Buffer stemBelow, tubeBelow, cylinderAnchors, cylinderStarts;
+        // Each module's nearest `@#`, `@Gt(...)`, `@Gr(s)` and `@Gr(a, l, ...)` above it, for cylinder meshes.
+        vk::Buffer contourSetters, tangentSetters, radiusScaleSetters, radiusTangentSetters;
         vk::Buffer taperBelow; // the segment whose end may still narrow: a search over every command that ends it
         vk::Buffer stepTargets, searchTargets, searchChunk;
         vk::Buffer searchJumps[2];
@@ -208,6 +230,7 @@ struct GpuTurtle::Impl {
         for (const turtle::TurtleSettings& t : species) {
             table.push_back(speciesOf(t, elastic));
             tapers = tapers || t.taperedLines;
+            cylinderMeshes = cylinderMeshes || t.cylinderMeshes;
             std::vector<float> s = t.surfaceScale;
             std::vector<std::uint32_t> k = t.surfaceShape;
             s.resize(commands.symbols, 1.0f);
@@ -219,6 +242,8 @@ struct GpuTurtle::Impl {
                 colors.push_back({v.r, v.g, v.b, v.a});
             }
         }
+        const std::vector<shared::vec4> rings = contourRingsOf(species, table);
+        contourRings = vk::deviceBufferWith(c, std::span<const shared::vec4>(rings));
         std::vector<std::uint32_t> commandWords = commandTableOf(commands, species, table);
         commandTable = vk::deviceBufferWith(c, std::span<const std::uint32_t>(commandWords));
         speciesTable = vk::deviceBufferWith(c, std::span<const TurtleSpecies>(table));
@@ -580,6 +605,13 @@ void GpuTurtle::Impl::recordComposition(VkCommandBuffer cmd, const Run& run) {
     if (run.marked & (kMarkCylinderStart | kMarkCylinderPoint)) {
         recordSearch(cmd, run, kGateCylinders, kMarkCylinderStart | kMarkCylinderPoint, 0, b.cylinderAnchors);
         recordSearch(cmd, run, kGateCylinders, kMarkCylinderStart, 0, b.cylinderStarts);
+        // The settings a mesh's control points were made with, where some species draws meshes.
+        if (cylinderMeshes) {
+            recordSearch(cmd, run, kGateCylinders, kMarkContour, 0, b.contourSetters);
+            recordSearch(cmd, run, kGateCylinders, kMarkCylinderTangents, 0, b.tangentSetters);
+            recordSearch(cmd, run, kGateCylinders, kMarkRadiusScale, 0, b.radiusScaleSetters);
+            recordSearch(cmd, run, kGateCylinders, kMarkRadiusTangents, 0, b.radiusTangentSetters);
+        }
     }
     if (run.marked & kMarkNonlinear) {
         // Round 0 walks the modules and lists the non-linear ones; the later rounds walk the lists.
@@ -654,7 +686,8 @@ void GpuTurtle::Impl::recordOrgans(VkCommandBuffer cmd, const Run& run, std::uin
     dispatchPass(cmd, emit,
                  {run.symbols, run.params, run.starts, commandTable, speciesTable, b.commands, b.parents, b.plantOf,
                   b.states, b.kinds, b.offsets, b.triangleFirst, b.trianglePrevious, b.cylinderAnchors, palettes,
-                  surfaceScales, surfaceShapes, organs.instances, b.slots, plantBounds, b.lastSlots, status},
+                  surfaceScales, surfaceShapes, organs.instances, b.slots, plantBounds, b.lastSlots, status, b.marks,
+                  contourRings, b.contourSetters, b.tangentSetters, b.radiusScaleSetters, b.radiusTangentSetters},
                  run.push, run, kGateModules, Over::Modules);
     vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
     dispatchPass(cmd, links,
@@ -707,6 +740,7 @@ void GpuTurtle::Impl::reserve(std::uint64_t n, std::uint64_t plants) {
     for (vk::Buffer* one : {&b.commands, &b.parents, &b.plantOf, &b.marks, &b.kinds, &b.slots, &b.lastSlots,
                             &b.pointers[0], &b.pointers[1], &b.triangleFirst, &b.trianglePrevious, &b.stemBelow,
                             &b.taperBelow, &b.tubeBelow, &b.cylinderAnchors, &b.cylinderStarts, &b.stepTargets,
+                            &b.contourSetters, &b.tangentSetters, &b.radiusScaleSetters, &b.radiusTangentSetters,
                             &b.searchTargets,
                             &b.searchChunk, &b.searchJumps[0], &b.searchJumps[1], &b.order})
         *one = deviceBuffer(capacity, 4);

@@ -1,0 +1,165 @@
+// cpfg's generalized cylinders drawn as meshes (`line style: cylinder`), as turtle/cylinder_mesh.cpp draws them:
+// rings of the points' contours along the Hermite curve between two control points, joined by strips of
+// triangles. Needs turtle_math.glsl, turtle_modules.glsl, plant_bounds.glsl and these buffers: states, marks,
+// cylinderAnchors, contourRings, the four setters' searches (contourSetters, tangentSetters, radiusScaleSetters,
+// radiusTangentSetters) and instances.
+
+// A control point as cpfg keeps it, in cpfg's frame (its up is ours reversed): where a contour's x runs along up
+// and its y against left.
+struct CylinderPoint {
+    vec3 position;
+    vec3 heading;
+    vec3 left;
+    vec3 up;
+    float width;
+    uint contour;
+    vec2 tangents; // into the point, out of it
+    vec2 radiusIn;
+    vec2 radiusOut;
+    float scaleRadius;
+};
+
+uint cylinderContours(TurtleSpecies sp) { return sp.cylinders >> kCylinderContoursShift; }
+
+// cpfg's smallest rotation taking heading a to b, applied to v: by the arcsine of |a x b|.
+vec3 turnedWithHeading(vec3 a, vec3 b, vec3 v, float least) {
+    vec3 axis = cross(a, b);
+    float s = length(axis);
+    if (!(s > least)) return v;
+    return rotateAbout(v, axis / s, asin(min(s, 1.0)));
+}
+
+vec2 radiusTangent(uint j, uint k) {
+    float radians = paramAt(j, k, 0.0) * (3.14159265358979 / 180.0), l = paramAt(j, k + 1u, 0.0);
+    return vec2(cos(radians) * l, sin(radians) * l);
+}
+
+// The control point the turtle makes at module m (state s): the settings `@#`, `@Gt` and `@Gr` made before it.
+CylinderPoint controlPointAt(uint m, TurtleState s, TurtleSpecies sp) {
+    CylinderPoint p;
+    p.position = s.position.xyz;
+    p.heading = s.heading.xyz;
+    p.left = s.left.xyz;
+    p.up = -s.up.xyz;
+    p.width = s.heading.w;
+    p.contour = 0u;
+    uint j = contourSetters[m];
+    if (j != kNoModule) { // an id no `contour:` line gives selects the circle
+        float id = paramAt(j, 0u, 0.0);
+        uint stride = cylinderSides(sp) + 1u;
+        for (uint k = 1u; k < cylinderContours(sp); ++k)
+            if (contourRings[sp.contourFirst + k * stride].w == id) {
+                p.contour = k;
+                break;
+            }
+    }
+    p.tangents = vec2(1.2); // cpfg's before any `@Gt`
+    j = tangentSetters[m];
+    if (j != kNoModule) p.tangents = vec2(paramAt(j, 0u, 0.0), paramAt(j, 1u, paramAt(j, 0u, 0.0)));
+    j = radiusScaleSetters[m];
+    p.scaleRadius = j != kNoModule ? paramAt(j, 0u, 0.0) : 0.0;
+    p.radiusIn = vec2(0.0);
+    p.radiusOut = vec2(0.0);
+    j = radiusTangentSetters[m];
+    if (j != kNoModule) {
+        p.radiusIn = radiusTangent(j, 0u);
+        p.radiusOut = paramCountAt(j) >= 4u ? radiusTangent(j, 2u) : p.radiusIn;
+    }
+    return p;
+}
+
+// The longest chain of control points a carried frame is followed back along: far beyond any model's.
+const uint kMostCarriedPoints = 1u << 16;
+
+// cpfg's up at control point a where the view does not twist: the cylinder's first up carried from point to point
+// by the smallest rotations of the headings (turtle_cpu.cpp keeps it as it goes; here it is followed back).
+vec3 carriedUp(uint a) {
+    mat3 carried = mat3(1.0);
+    uint j = a;
+    for (uint steps = 0u; (marks[j] & kMarkCylinderStart) == 0u && steps < kMostCarriedPoints; ++steps) {
+        uint previous = cylinderAnchors[j];
+        if (previous == kNoModule) break;
+        vec3 from = states[previous].heading.xyz, to = states[j].heading.xyz;
+        carried = carried * mat3(turnedWithHeading(from, to, vec3(1, 0, 0), 0.0),
+                                 turnedWithHeading(from, to, vec3(0, 1, 0), 0.0),
+                                 turnedWithHeading(from, to, vec3(0, 0, 1), 0.0));
+        j = previous;
+    }
+    return carried * -states[j].up.xyz;
+}
+
+// The roll of `to`'s frame against `from`'s carried to its heading (turtle/cylinder_mesh.cpp cylinderTwist).
+float cylinderTwist(CylinderPoint from, CylinderPoint to) {
+    vec3 carried = turnedWithHeading(from.heading, to.heading, from.up, 1e-6);
+    float angle = asin(min(1.0, length(cross(to.up, carried))));
+    if (dot(to.up, carried) < 0.0) angle = 3.14159265358979 - angle;
+    if (dot(to.left, carried) < 0.0) angle = -angle;
+    return angle;
+}
+
+// A ring: its contours' points (blended by `blend`, times `radius`) at x along up, y against left, z along depth.
+struct CylinderRing {
+    vec3 centre;
+    vec3 up;
+    vec3 left;
+    vec3 depth;
+    float radius;
+    float blend;
+};
+
+vec3 ringVertex(CylinderRing r, uint first, uint second, uint k) {
+    vec3 p = r.radius * ((1.0 - r.blend) * contourRings[first + k].xyz + r.blend * contourRings[second + k].xyz);
+    return r.centre + p.x * r.up - p.y * r.left + p.z * r.depth;
+}
+
+void writeCylinderTriangle(inout OrganInstance o, inout uint slot, vec3 a, vec3 b, vec3 c) {
+    o.position = vec4(a, 0);
+    o.heading = vec4(b, 0);
+    o.up = vec4(c, 0);
+    instances[slot] = o;
+    growPlantBounds(o.plant, o);
+    ++slot;
+}
+
+// The mesh from control point `a` to `b` in `rings` strips of 2 `sides` triangles each, from `slot` on.
+void cylinderMesh(OrganInstance o, uint slot, CylinderPoint a, CylinderPoint b, uint rings, float twist,
+                  TurtleSpecies sp) {
+    float len = length(b.position - a.position);
+    vec3 t0 = a.heading * (len * a.tangents.y), t1 = b.heading * (len * b.tangents.x);
+    vec3 d = a.position - b.position;
+    vec3 c0 = a.position, c1 = t0, c2 = -3.0 * d - 2.0 * t0 - t1, c3 = 2.0 * d + t0 + t1;
+    float half_ = 0.5 * (b.width - a.width);
+    vec2 r0 = a.radiusOut, r1 = b.radiusIn;
+    if (b.scaleRadius != 0.0) {
+        r0.y *= len;
+        r1.y *= len;
+    }
+    if (r0 == vec2(0.0)) r0 = vec2(1.0, half_);
+    if (r1 == vec2(0.0)) r1 = vec2(1.0, half_);
+    uint sides = cylinderSides(sp), stride = sides + 1u;
+    uint first = sp.contourFirst + a.contour * stride, second = sp.contourFirst + b.contour * stride;
+
+    CylinderRing previous = CylinderRing(a.position, a.up, a.left, a.heading * a.tangents.y, 0.5 * a.width, 0.0);
+    float step = 1.0 / float(rings), r = step;
+    for (uint k = 1u; k <= rings; ++k) {
+        CylinderRing next;
+        if (k == rings) {
+            next = CylinderRing(b.position, b.up, b.left, b.heading * b.tangents.x, 0.5 * b.width, 1.0);
+        } else {
+            float t = r * r0.x + r * r * (3.0 - 2.0 * r0.x - r1.x) + r * r * r * (-2.0 + r0.x + r1.x);
+            float radius = 0.5 * a.width + r * r0.y + r * r * (3.0 * half_ - 2.0 * r0.y - r1.y) +
+                           r * r * r * (-2.0 * half_ + r0.y + r1.y);
+            vec3 heading = normalize((3.0 * c3 * t + 2.0 * c2) * t + c1);
+            vec3 up = rotateAbout(turnedWithHeading(a.heading, heading, a.up, 0.0), heading, -twist * t);
+            next = CylinderRing(((c3 * t + c2) * t + c1) * t + c0, up, cross(heading, up), heading / len, radius, t);
+            r += step;
+        }
+        for (uint i = 1u; i <= sides; ++i) {
+            vec3 b0 = ringVertex(next, first, second, i - 1u), b1 = ringVertex(next, first, second, i);
+            vec3 a0 = ringVertex(previous, first, second, i - 1u), a1 = ringVertex(previous, first, second, i);
+            writeCylinderTriangle(o, slot, b0, b1, a0);
+            writeCylinderTriangle(o, slot, a0, b1, a1);
+        }
+        previous = next;
+    }
+}

@@ -232,6 +232,30 @@ TEST_F(TurtleGpuTest, ACpfgViewsSurfacesScaleAndTropismDrawAsOnTheCpu) {
     EXPECT_EQ(tally.organs, 3 * (6 + 3 + 1)); // per plant six segments, three surfaces and a sphere
 }
 
+// Generalized cylinders drawn as cpfg's meshes (`line style: cylinder`): a contour and the circle (an id no
+// `contour:` line gives), `@Gt` tangents, both kinds of `@Gr`, a branch that continues from the cylinder's last
+// point, turns and rolls between points; with the frame carried along the cylinder and with the view's twist.
+TEST_F(TurtleGpuTest, CpfgCylinderMeshesDrawAsOnTheCpu) {
+    const fs::path folder = fs::temp_directory_path() / ("simeco-gpu-cylinder-" + std::to_string(::getpid()));
+    fs::create_directories(folder);
+    std::ofstream(folder / "c.con") << "cver 1 3\nname: c\npoints: 5 5\ntype: cr\nsamples: 5\n"
+                                       "1 0 0 1\n0.2 1 0 1\n-1 0.5 0 1\n-0.5 -1 0 1\n0.6 -0.8 0 1\n";
+    std::ofstream(folder / "m.l")
+        << "Lsystem: 1\nAxiom: #(0.2)@Gs F(1)+(30)/(40)@Gc(3)@#(3)@Gt(0.8,1.5)F(1)&(25)\\(15)#(0.3)@Gc(2)"
+           "[+(60)@Gr(0,0,-45,0.1)F(1)@Gc(4)@#(7)F(1)/(90)@Ge]@Gr(2)@Gr(30,0.2,10,0.1)-(40)F(1)^(20)@Ge(5)\n"
+           "endlsystem\n";
+    for (const char* twist : {"off", "on"}) {
+        std::ofstream(folder / "m.v") << "line style: cylinder\ncontour sides: 6\ncontour: 3 c.con\n"
+                                      << "twist of cylinders: " << twist << "\n";
+        Tally tally;
+        compareTurtles(context(), folder / "m.l", std::string("cylinders, twist ") + twist, 2, tally);
+        EXPECT_EQ(tally.compared, 1);
+        // Per plant 18 strips of 12 triangles, and five segments.
+        EXPECT_EQ(tally.organs, 2 * (18 * 12 + 5));
+    }
+    fs::remove_all(folder);
+}
+
 // Many plants in one stream: each plant keeps its own root and the field places them as the CPU does.
 TEST_F(TurtleGpuTest, AFieldOfPlantsMatchesTheCpuTurtle) {
     Tally tally;

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# Fuzzes the readers of user files (cpfg .l, SimEco .eco, quick .lsys, view .v, .func, .fset, .con, .s) with
-# libFuzzer, AddressSanitizer and UBSan: builds them with clang into build-fuzz/, seeds each reader with the
-# project's grammars and scenes and the shared cpfg corpus, and runs each for a while. Inputs that reach new code
+# Fuzzes the readers of user files (cpfg .l, SimEco .eco, quick .lsys, view .v, .func, .fset, both kinds of .con,
+# .s) with libFuzzer, AddressSanitizer and UBSan: builds them with clang into build-fuzz/, seeds each reader with
+# the project's grammars and scenes and the shared cpfg corpus, and runs each for a while. Inputs that reach new code
 # are kept in build-fuzz/corpus/READER/ for the next run; a crash, sanitizer report, hang (an input over 30 s:
 # the sanitizers run about ten times slower than a release build) or runaway memory (> 2 GiB) leaves its input
 # in build-fuzz/findings/READER/ and fails the run.
@@ -23,7 +23,8 @@ elif [ "${1:-}" = "--seconds" ]; then
 fi
 readers=("$@")
 [ ${#readers[@]} -eq 0 ] &&
-  readers=(cpfg eco quick view function function_set contour surface skeleton skeleton_obj three_views)
+  readers=(cpfg eco quick view function function_set contour cylinder_contour surface skeleton skeleton_obj
+    three_views)
 
 if ! command -v clang++ >/dev/null; then
   echo "fuzz: clang++ is needed (Debian packages clang and libclang-rt-dev; tools/setup.sh installs them)" >&2
@@ -43,7 +44,7 @@ seedFiles() {
   view) ls grammars/*/*.v "$shared"/corpus/cpfg-vlab/models/*/*/*.v ;;
   function) ls "$shared"/corpus/cpfg-vlab/models/*/*/*.func ;;
   function_set) ls "$shared"/corpus/cpfg-vlab/models/*/*/*.fset ;;
-  contour) ls "$shared"/corpus/cpfg-vlab/models/*/*/*.con ;;
+  contour | cylinder_contour) ls "$shared"/corpus/cpfg-vlab/models/*/*/*.con ;;
   surface) ls grammars/*/*.s "$shared"/corpus/cpfg-vlab/models/*/*/*.s ;;
   skeleton) ls scenes/skeletons/*.json ;;
   skeleton_obj) ls scenes/skeletons/*.obj ;;

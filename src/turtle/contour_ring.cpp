@@ -1,5 +1,6 @@
 #include "turtle/contour_ring.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <glm/geometric.hpp>
@@ -10,6 +11,8 @@ namespace {
 
 // The point at t of the uniform cubic B-spline through the contour's points (wrapping past the last one).
 glm::vec3 splinePoint(const ir::CylinderContour& c, float t) {
+    // Held on the curve: a contour of enormous coordinates can make the arc-length table's steps infinite.
+    t = std::isnan(t) ? 0.0f : std::clamp(t, 0.0f, static_cast<float>(c.points.size()));
     const float first = std::floor(t), u = t - first;
     const float u2 = u * u, u3 = u2 * u;
     const float w[4] = {(-u3 + 3 * u2 - 3 * u + 1) / 6.0f, (3 * u3 - 6 * u2 + 4) / 6.0f,

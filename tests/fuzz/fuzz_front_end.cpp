@@ -38,7 +38,7 @@ fs::path write(const std::string& name, const uint8_t* data, size_t size) {
     return path;
 }
 
-// A view file that names the fuzzed function, function set or surface, so they are read as a model reads them.
+// A view file that names the fuzzed function, function set, cylinder contour or surface, so they are read as a model reads them.
 fs::path viewNaming(const std::string& line) {
     fs::path path = folder() / "fuzz.v";
     std::ofstream(path, std::ios::trunc) << "angle factor: 8\n" << line << "\n";
@@ -63,6 +63,9 @@ void readInput(const uint8_t* data, size_t size) {
         simeco::lang::readCpfgView(viewNaming("function set: fuzz.fset").string());
     } else if (reader == "contour") {
         simeco::lang::parseContourFile(write("fuzz.con", data, size).string());
+    } else if (reader == "cylinder_contour") {
+        write("fuzz.con", data, size);
+        simeco::lang::readCpfgView(viewNaming("contour: 1 fuzz.con").string());
     } else if (reader == "surface") {
         write("fuzz.s", data, size);
         simeco::lang::readCpfgView(viewNaming("surface: s fuzz.s 1 10 10").string());

@@ -43,7 +43,8 @@ SIMECO_CONST kLineCylinder = 0u;
 SIMECO_CONST kLinePolygon = 1u;
 SIMECO_CONST kLinePixel = 2u;
 // OrganInstance.shape for kOrganTriangle: a triangle of a generalized cylinder's mesh (cpfg's `line style:
-// cylinder`), not of a polygon.
+// cylinder`), not of a polygon. Its corners' normals, across the cylinder's surface (zero where none is defined),
+// are in previousHeading.xyz, nextHeading.xyz and (position.w, heading.w, up.w), so it is shaded smooth.
 SIMECO_CONST kTriangleOfCylinder = 1u;
 
 // OrganInstance.color.w: kColorUntextured for an organ drawn in its colour, kColorFirstTexture + k for one whose

@@ -107,15 +107,35 @@ struct CylinderRing {
     float blend;
 };
 
+vec3 contourPoint(CylinderRing r, uint first, uint second, uint k) {
+    return r.radius * ((1.0 - r.blend) * contourRings[first + k].xyz + r.blend * contourRings[second + k].xyz);
+}
+
 vec3 ringVertex(CylinderRing r, uint first, uint second, uint k) {
-    vec3 p = r.radius * ((1.0 - r.blend) * contourRings[first + k].xyz + r.blend * contourRings[second + k].xyz);
+    vec3 p = contourPoint(r, first, second, k);
     return r.centre + p.x * r.up - p.y * r.left + p.z * r.depth;
 }
 
-void writeCylinderTriangle(inout OrganInstance o, inout uint slot, vec3 a, vec3 b, vec3 c) {
-    o.position = vec4(a, 0);
-    o.heading = vec4(b, 0);
-    o.up = vec4(c, 0);
+// The normal across the ring at point k, from its neighbours (around the seam of a closed contour, whose last
+// point repeats its first); zero where the ring has no width.
+vec3 ringNormal(CylinderRing r, uint first, uint second, uint k, uint sides) {
+    bool closed = contourRings[first] == contourRings[first + sides] &&
+                  contourRings[second] == contourRings[second + sides];
+    uint before = k > 0u ? k - 1u : (closed ? sides - 1u : 0u), after = k < sides ? k + 1u : (closed ? 1u : sides);
+    vec3 along = contourPoint(r, first, second, after) - contourPoint(r, first, second, before);
+    vec3 across = along.y * r.up + along.x * r.left;
+    float n = length(across);
+    return n > 0.0 ? across / n : vec3(0.0);
+}
+
+// A triangle and its corners' normals (organ_layout.h kTriangleOfCylinder).
+void writeCylinderTriangle(inout OrganInstance o, inout uint slot, vec3 a, vec3 b, vec3 c, vec3 na, vec3 nb,
+                           vec3 nc) {
+    o.position = vec4(a, nc.x);
+    o.heading = vec4(b, nc.y);
+    o.up = vec4(c, nc.z);
+    o.previousHeading = vec4(na, 0);
+    o.nextHeading = vec4(nb, 0);
     instances[slot] = o;
     growPlantBounds(o.plant, o);
     ++slot;
@@ -157,8 +177,11 @@ void cylinderMesh(OrganInstance o, uint slot, CylinderPoint a, CylinderPoint b, 
         for (uint i = 1u; i <= sides; ++i) {
             vec3 b0 = ringVertex(next, first, second, i - 1u), b1 = ringVertex(next, first, second, i);
             vec3 a0 = ringVertex(previous, first, second, i - 1u), a1 = ringVertex(previous, first, second, i);
-            writeCylinderTriangle(o, slot, b0, b1, a0);
-            writeCylinderTriangle(o, slot, a0, b1, a1);
+            vec3 nb0 = ringNormal(next, first, second, i - 1u, sides), nb1 = ringNormal(next, first, second, i, sides);
+            vec3 na0 = ringNormal(previous, first, second, i - 1u, sides);
+            vec3 na1 = ringNormal(previous, first, second, i, sides);
+            writeCylinderTriangle(o, slot, b0, b1, a0, nb0, nb1, na0);
+            writeCylinderTriangle(o, slot, a0, b1, a1, na0, nb1, na1);
         }
         previous = next;
     }

@@ -37,6 +37,14 @@ void main() {
         if (o.kind == kOrganTriangle) {
             o.heading.xyz = placePoint(m, o.heading.xyz);
             o.up.xyz = placePoint(m, o.up.xyz);
+            if (o.shape == kTriangleOfCylinder) { // its corners' normals
+                o.previousHeading.xyz = turnDirection(m, o.previousHeading.xyz);
+                o.nextHeading.xyz = turnDirection(m, o.nextHeading.xyz);
+                vec3 n = turnDirection(m, vec3(o.position.w, o.heading.w, o.up.w));
+                o.position.w = n.x;
+                o.heading.w = n.y;
+                o.up.w = n.z;
+            }
         } else {
             o.heading.xyz = turnDirection(m, o.heading.xyz);
             o.up.xyz = turnDirection(m, o.up.xyz);

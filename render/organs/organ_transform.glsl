@@ -110,6 +110,11 @@ OrganVertex organVertex(OrganInstance o, uint kind, vec4 local, vec4 localNormal
         uint corner = uint(local.x + 0.5);
         v.position = corner == 0u ? a : (corner == 1u ? b : c);
         v.normal = cross(b - a, c - a);
+        if (o.shape == kTriangleOfCylinder) { // smooth across the cylinder, turned to the triangle's side
+            vec3 n = corner == 0u ? o.previousHeading.xyz
+                                  : (corner == 1u ? o.nextHeading.xyz : vec3(o.position.w, o.heading.w, o.up.w));
+            if (dot(n, n) > 0.0) v.normal = dot(n, v.normal) < 0.0 ? -n : n;
+        }
     }
     return v;
 }

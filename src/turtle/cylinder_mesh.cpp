@@ -33,14 +33,22 @@ dvec3 turnedWithHeading(dvec3 a, dvec3 b, dvec3 v, double least) {
     return rotateAboutAxis(v, axis / s, std::asin(std::min(s, 1.0)));
 }
 
-// The ring of `sides` + 1 vertices around `centre`: each contour point p (the two contours blended by `blend`,
-// times `radius`) at p.x along up, p.y against left, and its z along `depth`.
-std::vector<glm::vec3> ring(dvec3 centre, const CpfgFrame& f, dvec3 depth, double radius, double blend,
-                            const glm::vec3* first, const glm::vec3* second, int sides) {
-    std::vector<glm::vec3> out(static_cast<size_t>(sides) + 1);
+// The ring of `sides` + 1 corners around `centre`: each contour point p (the two contours blended by `blend`,
+// times `radius`) at p.x along up, p.y against left, and its z along `depth`; its normal across the contour
+// between its neighbours (around the seam of a closed contour, whose last point repeats its first), placed alike.
+std::vector<MeshCorner> ring(dvec3 centre, const CpfgFrame& f, dvec3 depth, double radius, double blend,
+                             const glm::vec3* first, const glm::vec3* second, int sides) {
+    std::vector<dvec3> p(static_cast<size_t>(sides) + 1);
+    for (int i = 0; i <= sides; ++i) p[size_t(i)] = radius * ((1.0 - blend) * dvec3(first[i]) + blend * dvec3(second[i]));
+    const bool closed = first[0] == first[sides] && second[0] == second[sides];
+    std::vector<MeshCorner> out(p.size());
     for (int i = 0; i <= sides; ++i) {
-        const dvec3 p = radius * ((1.0 - blend) * dvec3(first[i]) + blend * dvec3(second[i]));
-        out[size_t(i)] = glm::vec3(centre + p.x * f.up - p.y * f.left + p.z * depth);
+        const int before = i > 0 ? i - 1 : (closed ? sides - 1 : 0), after = i < sides ? i + 1 : (closed ? 1 : sides);
+        const dvec3 along = p[size_t(after)] - p[size_t(before)];
+        const dvec3 across = along.y * f.up + along.x * f.left; // (along.y, -along.x) placed as a point is
+        const double n = glm::length(across);
+        out[size_t(i)] = {glm::vec3(centre + p[size_t(i)].x * f.up - p[size_t(i)].y * f.left + p[size_t(i)].z * depth),
+                          n > 0.0 ? glm::vec3(across / n) : glm::vec3(0.0f)};
     }
     return out;
 }
@@ -83,7 +91,7 @@ Frame carriedFrame(const Frame& from, const Frame& to) {
 
 void cylinderMesh(const CylinderPoint& a, const CylinderPoint& b, int rings, float twist, int sides,
                   const std::vector<glm::vec3>& contourRings, float shortest,
-                  const std::function<void(glm::vec3, glm::vec3, glm::vec3)>& triangle) {
+                  const std::function<void(const MeshCorner&, const MeshCorner&, const MeshCorner&)>& triangle) {
     const dvec3 pa(a.position), pb(b.position);
     const double len = glm::length(pb - pa);
     if (!(len > shortest)) return;
@@ -108,9 +116,9 @@ void cylinderMesh(const CylinderPoint& a, const CylinderPoint& b, int rings, flo
     const glm::vec3* ca = &contourRings[a.contour * stride];
     const glm::vec3* cb = &contourRings[b.contour * stride];
 
-    std::vector<glm::vec3> previous =
+    std::vector<MeshCorner> previous =
         ring(pa, fa, fa.heading * double(a.tangents.y), 0.5 * a.width, 0.0, ca, cb, sides);
-    auto strip = [&](const std::vector<glm::vec3>& next) {
+    auto strip = [&](const std::vector<MeshCorner>& next) {
         for (int i = 1; i <= sides; ++i) {
             triangle(next[size_t(i - 1)], next[size_t(i)], previous[size_t(i - 1)]);
             triangle(previous[size_t(i - 1)], next[size_t(i)], previous[size_t(i)]);
@@ -126,11 +134,11 @@ void cylinderMesh(const CylinderPoint& a, const CylinderPoint& b, int rings, flo
         f.heading = glm::normalize(dvec3(slope));
         f.up = rotateAboutAxis(turnedWithHeading(fa.heading, f.heading, fa.up, 0.0), f.heading, -double(twist) * t);
         f.left = glm::cross(f.heading, f.up);
-        std::vector<glm::vec3> next = ring(dvec3(p), f, f.heading / len, radiusAt(r), t, ca, cb, sides);
+        std::vector<MeshCorner> next = ring(dvec3(p), f, f.heading / len, radiusAt(r), t, ca, cb, sides);
         strip(next);
         previous = std::move(next);
     }
-    const std::vector<glm::vec3> last = ring(pb, fb, fb.heading * double(b.tangents.x), 0.5 * b.width, 1.0, ca, cb, sides);
+    const std::vector<MeshCorner> last = ring(pb, fb, fb.heading * double(b.tangents.x), 0.5 * b.width, 1.0, ca, cb, sides);
     strip(last);
 }
 

@@ -36,10 +36,17 @@ float cylinderTwist(const CylinderPoint& from, const CylinderPoint& to);
 // `to`'s frame with the roll of `from`'s carried to its heading: what cpfg keeps where the view does not twist.
 Frame carriedFrame(const Frame& from, const Frame& to);
 
+// A mesh's corner: where it is and the normal across the cylinder's surface there (zero where the ring has no
+// width to turn about).
+struct MeshCorner {
+    glm::vec3 position{0.0f};
+    glm::vec3 normal{0.0f};
+};
+
 // The triangles from `a` to `b` in `rings` strips, each contour's ring at `contourRings[k * (sides + 1)]`, to
-// `triangle(p0, p1, p2)` in cpfg's order. Draws nothing where the points lie closer than `shortest`.
+// `triangle(c0, c1, c2)` in cpfg's order. Draws nothing where the points lie closer than `shortest`.
 void cylinderMesh(const CylinderPoint& a, const CylinderPoint& b, int rings, float twist, int sides,
                   const std::vector<glm::vec3>& contourRings, float shortest,
-                  const std::function<void(glm::vec3, glm::vec3, glm::vec3)>& triangle);
+                  const std::function<void(const MeshCorner&, const MeshCorner&, const MeshCorner&)>& triangle);
 
 } // namespace simeco::turtle

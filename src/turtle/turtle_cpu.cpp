@@ -181,11 +181,14 @@ private:
             if (t_.cylinderTwist) twist = cylinderTwist(st.anchor, here);
             else here.frame = carriedFrame(st.anchor.frame, here.frame);
             cylinderMesh(st.anchor, here, cylinderRings(hasParam(module), param(module, 0, 0.0f)), twist, t_.cylinderSides,
-                         t_.contourRings, shortest, [&](glm::vec3 a, glm::vec3 b, glm::vec3 c) {
+                         t_.contourRings, shortest,
+                         [&](const MeshCorner& a, const MeshCorner& b, const MeshCorner& c) {
                              OrganInstance& o = emit(kOrganTriangle, module, st);
-                             o.position = v4(a, 0);
-                             o.heading = v4(b, 0);
-                             o.up = v4(c, 0);
+                             o.position = v4(a.position, c.normal.x);
+                             o.heading = v4(b.position, c.normal.y);
+                             o.up = v4(c.position, c.normal.z);
+                             o.previousHeading = v4(a.normal, 0);
+                             o.nextHeading = v4(b.normal, 0);
                              o.shape = kTriangleOfCylinder;
                          });
             st.anchor = here;
@@ -401,6 +404,13 @@ void place(OrganInstance& o, const shared::PlantPlacement& m) {
     if (o.kind == kOrganTriangle) {
         placePoint(m, o.heading);
         placePoint(m, o.up);
+        if (o.shape == kTriangleOfCylinder) { // its corners' normals
+            turnDirection(m, o.previousHeading);
+            turnDirection(m, o.nextHeading);
+            shared::vec4 n{o.position.w, o.heading.w, o.up.w, 0.0f};
+            turnDirection(m, n);
+            o.position.w = n.x, o.heading.w = n.y, o.up.w = n.z;
+        }
         return;
     }
     turnDirection(m, o.heading);

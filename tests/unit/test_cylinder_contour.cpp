@@ -107,11 +107,22 @@ TEST(CylinderMesh, RingsOfTheContourGoAroundTheCurveInCpfgsFrame) {
     b.position = {0, 3, 0};
     const std::vector<glm::vec3> circle = turtle::contourRing(nullptr, 6);
     std::vector<glm::vec3> corners;
-    turtle::cylinderMesh(a, b, 3, 0.0f, 6, circle, 1e-5f, [&](glm::vec3 p, glm::vec3 q, glm::vec3 r) {
-        corners.insert(corners.end(), {p, q, r});
-    });
+    std::vector<glm::vec3> normals;
+    using turtle::MeshCorner;
+    turtle::cylinderMesh(a, b, 3, 0.0f, 6, circle, 1e-5f,
+                         [&](const MeshCorner& p, const MeshCorner& q, const MeshCorner& r) {
+                             for (const MeshCorner* c : {&p, &q, &r}) {
+                                 corners.push_back(c->position);
+                                 normals.push_back(c->normal);
+                             }
+                         });
     ASSERT_EQ(corners.size(), 3u * 3u * 6u * 2u);
-    for (const glm::vec3& c : corners) EXPECT_NEAR(std::hypot(c.x, c.z), 1.0f, 1e-5f); // radius: half the width
+    for (size_t k = 0; k < corners.size(); ++k) {
+        const glm::vec3 c = corners[k];
+        EXPECT_NEAR(std::hypot(c.x, c.z), 1.0f, 1e-5f); // radius: half the width
+        // Smooth: each corner's normal points straight out from the axis.
+        EXPECT_NEAR(glm::distance(normals[k], glm::vec3(c.x, 0.0f, c.z)), 0.0f, 1e-5f);
+    }
     // The first triangle: the second ring's first two points, then the first ring's first, whose contour point
     // (1, 0) lies along cpfg's up, ours (+z at first) reversed.
     EXPECT_NEAR(glm::distance(corners[2], glm::vec3(0, 0, -1)), 0.0f, 1e-6f);
@@ -120,7 +131,8 @@ TEST(CylinderMesh, RingsOfTheContourGoAroundTheCurveInCpfgsFrame) {
     // Closer than the shortest stretch: nothing.
     b.position = {0, 1e-6f, 0};
     size_t drawn = 0;
-    turtle::cylinderMesh(a, b, 3, 0.0f, 6, circle, 1e-5f, [&](glm::vec3, glm::vec3, glm::vec3) { ++drawn; });
+    turtle::cylinderMesh(a, b, 3, 0.0f, 6, circle, 1e-5f,
+                         [&](const MeshCorner&, const MeshCorner&, const MeshCorner&) { ++drawn; });
     EXPECT_EQ(drawn, 0u);
 }
 
@@ -143,8 +155,10 @@ TEST(CylinderMesh, RadiusTangentsShapeTheRadiusAlongTheCurve) {
     turtle::setRadiusTangents(b, {-90.0f, 1.0f, 0.0f, 0.0f});
     float widest = 0.0f;
     turtle::cylinderMesh(a, b, 2, 0.0f, 6, turtle::contourRing(nullptr, 6), 1e-5f,
-                         [&](glm::vec3 p0, glm::vec3 p1, glm::vec3 p2) {
-                             for (glm::vec3 c : {p0, p1, p2}) widest = std::max(widest, std::hypot(c.x, c.z));
+                         [&](const turtle::MeshCorner& p0, const turtle::MeshCorner& p1,
+                             const turtle::MeshCorner& p2) {
+                             for (const turtle::MeshCorner* c : {&p0, &p1, &p2})
+                                 widest = std::max(widest, std::hypot(c->position.x, c->position.z));
                          });
     EXPECT_GT(widest, 0.2f);
 }

@@ -60,6 +60,7 @@ uint32_t pairCommand(uint32_t prefix, std::string_view name) {
         break;
     case kPairT:
         if (name == "s") return kTurtleElasticitySet;
+        if (name == "i") return kTurtleElasticityUp;
         if (name == "d") return kTurtleElasticityDown;
         if (name == "p" || name == "f" || name == "x") return kTurtleIgnored;
         break;

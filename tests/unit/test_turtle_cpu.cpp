@@ -292,6 +292,19 @@ TEST(TurtleCpu, CpfgsTropismLinesBendBeforeEveryMoveByAtMostARadian) {
     expectNear(xyz(r.organs[0].position), {-std::sin(1.0f), std::cos(1.0f), 0});
 }
 
+TEST(TurtleCpu, CpfgsElasticityCommandsSetRaiseAndLowerTheTropismsElasticity) {
+    // Elasticity 0 at first: `@Ti(1, 0.5)` raises it to 0.5, so before f the heading turns by 0.5 rad toward -x;
+    // `@Td(1, 0.5)` lowers it to 0 again, so F goes on straight; `@Ts(1, 0.5)` sets it for the last F.
+    ir::Grammar g = grammarFromText(lsystem("@Ti(1,0.5)f@Td(1,0.5)F@Ts(1,0.5)F", "", 0));
+    g.view.tropismRule = ir::TropismRule::CpfgTropism;
+    g.view.tropismDirection = {-1, 0, 0};
+    const turtle::Interpretation r = interpretGrammar(g);
+    ASSERT_EQ(r.count[shared::kOrganStem], 2u);
+    expectNear(xyz(r.organs[0].heading), {-std::sin(0.5f), std::cos(0.5f), 0});
+    const float angle = 0.5f + 0.5f * std::cos(0.5f);
+    expectNear(xyz(r.organs[1].heading), {-std::sin(angle), std::cos(angle), 0});
+}
+
 TEST(TurtleCpu, TheViewsInitialScaleScalesTheSteps) {
     ir::Grammar g = grammarFromText(lsystem("fF(2)", "", 0));
     g.view.initialScale = 1.5f;

@@ -1,3 +1,4 @@
+angle increment: 10
 line style: cylinder
 contour: 1 leaf-section.con
 contour sides: 12

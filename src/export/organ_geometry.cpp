@@ -131,6 +131,12 @@ PlacedVertex placeVertex(const OrganInstance& o, std::uint32_t kind, const MeshV
         auto corner = static_cast<std::uint32_t>(local.position.x + 0.5f);
         v.position = corner == 0 ? a : (corner == 1 ? b : c);
         v.normal = unitOr(glm::cross(b - a, c - a), glm::vec3(0, 1, 0));
+        if (o.shape == kTriangleOfCylinder) { // smooth across the cylinder, turned to the triangle's side
+            const glm::vec3 n = corner == 0   ? xyz(o.previousHeading)
+                                : corner == 1 ? xyz(o.nextHeading)
+                                              : glm::vec3(o.position.w, o.heading.w, o.up.w);
+            if (glm::dot(n, n) > 0.0f) v.normal = glm::dot(n, v.normal) < 0.0f ? -n : n;
+        }
     }
     return v;
 }
@@ -146,7 +152,7 @@ const char* organKindName(std::uint32_t kind) {
     case kOrganLeaf:
         return "leaf";
     case kOrganTriangle:
-        return "polygon";
+        return "polygon"; // a polygon's or a generalized cylinder's triangle
     default:
         return "organ";
     }

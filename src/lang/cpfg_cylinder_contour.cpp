@@ -67,7 +67,7 @@ public:
         const double v = number(ws, k, what);
         if (v != std::floor(v) || v < double(least) || v > double(most))
             fail(lineNumber() - 1, ws[k].col,
-                 fmt::format("{} is a whole number from {} to {}, found {}", what, least, most, std::string(ws[k].text)));
+                 fmt::format("{} is a whole number from {} to {}, found {}", what, least, most, ws[k].text));
         return static_cast<long>(v);
     }
     // The line `key: ...`'s words after the key.

@@ -232,6 +232,32 @@ TEST(MeshExport, StemVerticesLieAtTheirRadiusAndJointsShareTheirPlane) {
     EXPECT_EQ(ringVertices, 2 * 4 * static_cast<int>(draw::kStemSides));
 }
 
+TEST(MeshExport, AGeneralizedCylindersCornersHaveSmoothNormals) {
+    // A straight round cylinder of width 2 (cpfg's mesh, `line style: cylinder`): every corner's normal points
+    // straight out from the axis, on whichever triangle it lies, not along the triangle's own facing.
+    ir::Grammar g = grammarFromText(lsystem("#(2)@GsF(3)@Ge(2)", "", 0));
+    g.view.cpfgCylinders = true;
+    g.view.lineStyle = ir::LineStyle::Cylinder;
+    g.view.cylinderSides = 8;
+    turtle::Interpretation interp = interpret(g, 1);
+    ASSERT_EQ(interp.count[shared::kOrganTriangle], 2u * 2u * 8u);
+    draw::OrganMeshData data = draw::buildOrganMeshes();
+    exporter::OrganMeshSet meshes(data);
+    const exporter::OrganMesh& triangle = meshes.mesh(shared::kOrganTriangle);
+    int corners = 0;
+    for (uint32_t k = 0; k < interp.count[shared::kOrganTriangle]; ++k) {
+        const OrganInstance& o = interp.organs[interp.first[shared::kOrganTriangle] + k];
+        ASSERT_EQ(o.shape, shared::kTriangleOfCylinder);
+        for (const shared::MeshVertex& local : triangle.vertices) {
+            const exporter::PlacedVertex v = exporter::placeVertex(o, shared::kOrganTriangle, local);
+            const glm::vec3 out = glm::normalize(glm::vec3(v.position.x, 0.0f, v.position.z));
+            EXPECT_NEAR(glm::distance(v.normal, out), 0.0f, 1e-5f);
+            ++corners;
+        }
+    }
+    EXPECT_EQ(corners, 3 * 2 * 2 * 8);
+}
+
 TEST(MeshExport, AffineKindsPlaceTheirMeshByTheirInstanceTransform) {
     turtle::Interpretation interp = everyKind(1);
     exporter::OrganMeshSet meshes(draw::buildOrganMeshes());

@@ -253,9 +253,12 @@ TEST(TurtleCpu, AScatteredFieldMovesEachPlantInItsCellAndTurnsIt) {
 }
 
 // A generalized cylinder bends along the Hermite curve of the headings at its control points: from the
-// origin heading up to (-1, 1, 0) heading -x, in the four segments @Gc(4) asks for, joined end to end.
+// origin heading up to (-1, 1, 0) heading -x, in the four segments @Gc(4) asks for, joined end to end (as tubes:
+// cpfg's polygon lines; with its cylinder lines a cylinder is a mesh, test_cylinder_contour.cpp).
 TEST(TurtleCpu, GeneralizedCylindersFollowTheHeadingsInSegments) {
-    turtle::Interpretation r = interpret(lsystem("@GsF(1)+(90)F(1)@Gc(4)", "", 0));
+    ir::Grammar g = grammarFromText(lsystem("@GsF(1)+(90)F(1)@Gc(4)", "", 0));
+    g.view.lineStyle = ir::LineStyle::Polygon;
+    turtle::Interpretation r = interpretGrammar(g);
     ASSERT_EQ(r.count[shared::kOrganStem], 6u); // two F segments, four tube segments
     const shared::OrganInstance* tube = &r.organs[r.first[shared::kOrganStem] + 2];
     expectNear(xyz(tube[0].position), {0, 0, 0});

@@ -740,10 +740,12 @@ void GpuTurtle::Impl::reserve(std::uint64_t n, std::uint64_t plants) {
     for (vk::Buffer* one : {&b.commands, &b.parents, &b.plantOf, &b.marks, &b.kinds, &b.slots, &b.lastSlots,
                             &b.pointers[0], &b.pointers[1], &b.triangleFirst, &b.trianglePrevious, &b.stemBelow,
                             &b.taperBelow, &b.tubeBelow, &b.cylinderAnchors, &b.cylinderStarts, &b.stepTargets,
-                            &b.contourSetters, &b.tangentSetters, &b.radiusScaleSetters, &b.radiusTangentSetters,
                             &b.searchTargets,
                             &b.searchChunk, &b.searchJumps[0], &b.searchJumps[1], &b.order})
         *one = deviceBuffer(capacity, 4);
+    // Only read where a species draws its cylinders as meshes.
+    for (vk::Buffer* one : {&b.contourSetters, &b.tangentSetters, &b.radiusScaleSetters, &b.radiusTangentSetters})
+        *one = deviceBuffer(cylinderMeshes ? capacity : 1, 4);
     b.steps[0] = deviceBuffer(capacity, sizeof(TurtleStep));
     b.steps[1] = deviceBuffer(capacity, sizeof(TurtleStep));
     b.states = deviceBuffer(capacity, sizeof(TurtleState));

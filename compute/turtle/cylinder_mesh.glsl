@@ -118,9 +118,7 @@ vec3 ringVertex(CylinderRing r, uint first, uint second, uint k) {
 
 // The normal across the ring at point k, from its neighbours (around the seam of a closed contour, whose last
 // point repeats its first); zero where the ring has no width.
-vec3 ringNormal(CylinderRing r, uint first, uint second, uint k, uint sides) {
-    bool closed = contourRings[first] == contourRings[first + sides] &&
-                  contourRings[second] == contourRings[second + sides];
+vec3 ringNormal(CylinderRing r, uint first, uint second, uint k, uint sides, bool closed) {
     uint before = k > 0u ? k - 1u : (closed ? sides - 1u : 0u), after = k < sides ? k + 1u : (closed ? 1u : sides);
     vec3 along = contourPoint(r, first, second, after) - contourPoint(r, first, second, before);
     vec3 across = along.y * r.up + along.x * r.left;
@@ -158,6 +156,8 @@ void cylinderMesh(OrganInstance o, uint slot, CylinderPoint a, CylinderPoint b, 
     if (r1 == vec2(0.0)) r1 = vec2(1.0, half_);
     uint sides = cylinderSides(sp), stride = sides + 1u;
     uint first = sp.contourFirst + a.contour * stride, second = sp.contourFirst + b.contour * stride;
+    bool closed = contourRings[first] == contourRings[first + sides] &&
+                  contourRings[second] == contourRings[second + sides];
 
     CylinderRing previous = CylinderRing(a.position, a.up, a.left, a.heading * a.tangents.y, 0.5 * a.width, 0.0);
     float step = 1.0 / float(rings), r = step;
@@ -174,14 +174,20 @@ void cylinderMesh(OrganInstance o, uint slot, CylinderPoint a, CylinderPoint b, 
             next = CylinderRing(((c3 * t + c2) * t + c1) * t + c0, up, cross(heading, up), heading / len, radius, t);
             r += step;
         }
+        // Each corner once a strip, carried on to the quad after it.
+        vec3 a0 = ringVertex(previous, first, second, 0u), b0 = ringVertex(next, first, second, 0u);
+        vec3 na0 = ringNormal(previous, first, second, 0u, sides, closed);
+        vec3 nb0 = ringNormal(next, first, second, 0u, sides, closed);
         for (uint i = 1u; i <= sides; ++i) {
-            vec3 b0 = ringVertex(next, first, second, i - 1u), b1 = ringVertex(next, first, second, i);
-            vec3 a0 = ringVertex(previous, first, second, i - 1u), a1 = ringVertex(previous, first, second, i);
-            vec3 nb0 = ringNormal(next, first, second, i - 1u, sides), nb1 = ringNormal(next, first, second, i, sides);
-            vec3 na0 = ringNormal(previous, first, second, i - 1u, sides);
-            vec3 na1 = ringNormal(previous, first, second, i, sides);
+            vec3 a1 = ringVertex(previous, first, second, i), b1 = ringVertex(next, first, second, i);
+            vec3 na1 = ringNormal(previous, first, second, i, sides, closed);
+            vec3 nb1 = ringNormal(next, first, second, i, sides, closed);
             writeCylinderTriangle(o, slot, b0, b1, a0, nb0, nb1, na0);
             writeCylinderTriangle(o, slot, a0, b1, a1, na0, nb1, na1);
+            a0 = a1;
+            b0 = b1;
+            na0 = na1;
+            nb0 = nb1;
         }
         previous = next;
     }

@@ -19,18 +19,13 @@ struct CpfgFrame {
 };
 CpfgFrame cpfgFrame(const Frame& f) { return {dvec3(f.heading), dvec3(f.left), -dvec3(f.up)}; }
 
-dvec3 rotateAboutAxis(dvec3 v, dvec3 axis, double radians) {
-    const double c = std::cos(radians), s = std::sin(radians);
-    return v * c + glm::cross(axis, v) * s + axis * (glm::dot(axis, v) * (1.0 - c));
-}
-
 // cpfg's smallest rotation taking heading a to b, applied to v: about a x b by the arcsine of |a x b| (so by less
 // than the angle between them where it is over 90 degrees, as cpfg turns).
 dvec3 turnedWithHeading(dvec3 a, dvec3 b, dvec3 v, double least) {
     const dvec3 axis = glm::cross(a, b);
     const double s = glm::length(axis);
     if (!(s > least)) return v;
-    return rotateAboutAxis(v, axis / s, std::asin(std::min(s, 1.0)));
+    return rotateAbout(v, axis / s, std::asin(std::min(s, 1.0)));
 }
 
 // The ring of `sides` + 1 corners around `centre`: each contour point p (the two contours blended by `blend`,
@@ -132,7 +127,7 @@ void cylinderMesh(const CylinderPoint& a, const CylinderPoint& b, int rings, flo
         const glm::vec3 slope = (3.0f * c3 * t + 2.0f * c2) * t + c1;
         CpfgFrame f;
         f.heading = glm::normalize(dvec3(slope));
-        f.up = rotateAboutAxis(turnedWithHeading(fa.heading, f.heading, fa.up, 0.0), f.heading, -double(twist) * t);
+        f.up = rotateAbout(turnedWithHeading(fa.heading, f.heading, fa.up, 0.0), f.heading, -double(twist) * t);
         f.left = glm::cross(f.heading, f.up);
         std::vector<MeshCorner> next = ring(dvec3(p), f, f.heading / len, radiusAt(r), t, ca, cb, sides);
         strip(next);

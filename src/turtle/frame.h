@@ -30,10 +30,12 @@ inline void turnToward(glm::vec3& a, glm::vec3& b, float radians) {
     b = nb;
 }
 
-// Rotates v about the unit axis by `radians` (Rodrigues).
-inline glm::vec3 rotateAbout(glm::vec3 v, glm::vec3 axis, float radians) {
-    float c = std::cos(radians), s = std::sin(radians);
-    return v * c + glm::cross(axis, v) * s + axis * (glm::dot(axis, v) * (1.0f - c));
+// Rotates v about the unit axis by `radians` (Rodrigues), in float as the kernels do, or in double.
+template <typename Vector>
+inline Vector rotateAbout(Vector v, Vector axis, typename Vector::value_type radians) {
+    using Scalar = typename Vector::value_type;
+    Scalar c = std::cos(radians), s = std::sin(radians);
+    return v * c + glm::cross(axis, v) * s + axis * (glm::dot(axis, v) * (Scalar(1) - c));
 }
 
 inline void rotateFrame(Frame& f, glm::vec3 axis, float radians) {

@@ -70,7 +70,9 @@ SIMECO_CONST kTurtleCylinderTangents = 54u; // @Gt(a[,b]): cpfg's, the cylinder'
                                           // a times the chord into it, b out of it (both 1.2 at first)
 SIMECO_CONST kTurtleRadiusTangents = 55u; // @Gr(s) or @Gr(a1,l1[,a2,l2]): cpfg's, how the cylinder's radius runs
                                           // into and out of the next control point (contour_ring.h, CylinderShape)
-SIMECO_CONST kTurtleCommands = 56u;
+SIMECO_CONST kTurtleSubLsystemCall = 56u; // ?(label, s): cpfg's sub-L-system call, lengths and widths scaled by s
+                                            // until its `$` (kTurtleRollLevel where `$` does not roll) returns
+SIMECO_CONST kTurtleCommands = 57u;
 
 // F and G draw a segment; f and g move without one. Inside a polygon F, f and `.` add vertices, G and g none, and
 // F and G still draw their segments, as cpfg draws them.

@@ -60,7 +60,7 @@ uint commandAt(uint i, uint begin, uint end) {
         if (pair != kTurtleNone) return pair;
     }
     if (previous == pc.tildeSymbol) return kTurtleSurface;
-    if (previous == pc.querySymbol) return afterQueryCommand(sym);
+    if (previous == pc.querySymbol && paramCountAt(i - 1u) == 0u) return afterQueryCommand(sym); // else a call
     return plainCommand(sym);
 }
 
@@ -98,6 +98,29 @@ bool isNonlinear(uint command, TurtleSpecies sp) {
     case kTurtleMoveNoVertex: return sp.tropism.w != 0.0 && sp.tropismRule != kTropismTorque;
     default: return false;
     }
+}
+
+// The scale a sub-L-system call `?(label, s)` at i applies: s (1 without it, or where it could not be undone).
+float callScale(uint i) {
+    float s = paramAt(i, 1u, 1.0);
+    return s != 0.0 && !isinf(s) && !isnan(s) ? s : 1.0;
+}
+
+// The scale of the call that the `$` at i returns from: the nearest call before it in the plant's string that no
+// `$` between them closes (turtle_cpu.cpp keeps the calls on a stack); 1 where none, as cpfg ignores such a `$`.
+float returnedScale(uint i) {
+    uint plant = plantOf(i);
+    uint begin = plantStarts[plant], end = plantStarts[plant + 1u];
+    uint open = 1u;
+    for (uint k = i; k > begin; --k) {
+        uint command = commandAt(k - 1u, begin, end);
+        if (command == kTurtleSubLsystemCall && hasParam(k - 1u)) {
+            if (--open == 0u) return callScale(k - 1u);
+        } else if (command == kTurtleRollLevel) {
+            ++open;
+        }
+    }
+    return 1.0;
 }
 
 // x -> x + delta, or x -> the module's first parameter when it has one.
@@ -155,6 +178,17 @@ TurtleStep commandStep(uint command, uint i, TurtleSpecies sp) {
         t.scaleElasticity.x = 1.0 / (d != 0.0 ? d : 1.0);
         break;
     }
+    // A sub-L-system's lengths and widths are its call's scale times the caller's, until its `$`.
+    case kTurtleSubLsystemCall:
+        if (hasParam(i)) {
+            t.scaleElasticity.x = callScale(i);
+            t.widthColor.x = callScale(i);
+        }
+        break;
+    case kTurtleRollLevel: // `$` where it does not roll (isNonlinear): the return from a sub-L-system
+        t.scaleElasticity.x = 1.0 / returnedScale(i);
+        t.widthColor.x = 1.0 / returnedScale(i);
+        break;
     case kTurtleElasticitySet:
         if (paramCountAt(i) > 1u) t.scaleElasticity.zw = vec2(0.0, paramAt(i, 1u, 0.0));
         break;

@@ -377,6 +377,18 @@ uint32_t moduleWord(const ir::PatternModule& m) {
     return m.sym | static_cast<uint32_t>(m.paramSlots.size()) << shared::kSymbolBits;
 }
 
+// GLSL that is true where `word`, a module's word, is not pattern module m's: of another name, or another count
+// of parameters. Matching by name, any symbol of m's name will do (a file of several L-systems gives each its
+// own, ir::Alphabet).
+std::string wordDiffers(const ir::Grammar& g, const std::string& word, const ir::PatternModule& m) {
+    const uint32_t count = static_cast<uint32_t>(m.paramSlots.size()) << shared::kSymbolBits;
+    std::vector<std::string> same;
+    for (ir::SymbolId s = 0; s < g.alphabet.size(); ++s)
+        if (g.alphabet.canonical(s) == g.alphabet.canonical(m.sym)) same.push_back(fmt::format("{} == {}u", word, s | count));
+    if (same.size() == 1) return fmt::format("{} != {}u", word, moduleWord(m));
+    return fmt::format("!({})", fmt::join(same, " || "));
+}
+
 // The parts of a production's code, in order: matching, then producing.
 // `modal`: the function has a `mode` (FrameStyle::Fresh), and mode 2 writes what an earlier pass matched.
 void emitMatch(BodyEmitter& body, const ir::Grammar& g, size_t species, const ir::Production& p, RuleKind kind,
@@ -386,8 +398,8 @@ void emitMatch(BodyEmitter& body, const ir::Grammar& g, size_t species, const ir
     for (size_t k = 1; k < p.strict.size(); ++k) {
         // The further modules of a predecessor of several modules: adjacent, nothing skipped.
         const ir::PatternModule& m = p.strict[k];
-        body.line(fmt::format("if (i + {0}u >= pEnd || symOf(i + {0}u) != {1}u || countOf(i + {0}u) != {2}u) return false;",
-                              k, m.sym, m.paramSlots.size()));
+        body.line(fmt::format("if (i + {}u >= pEnd || {}) return false;", k,
+                              wordDiffers(g, fmt::format("symInAt(i + {}u)", k), m)));
         for (size_t a = 0; a < m.paramSlots.size(); ++a)
             body.line(fmt::format("v{} = paramOf(i + {}u, {}u);", m.paramSlots[a], k, a));
     }
@@ -412,7 +424,7 @@ void emitMatch(BodyEmitter& body, const ir::Grammar& g, size_t species, const ir
             bool enters = m.sym == ir::kBranchOpen;
             if (first && prefetched && firstRightWalkPrefetched(g, p)) {
                 const char* found = enters ? "firstRightBranch" : "firstRight";
-                body.line(fmt::format("if (!{0}Found || {0}Word != {1}u) return false;", found, moduleWord(m)));
+                body.line(fmt::format("if (!{}Found || {}) return false;", found, wordDiffers(g, std::string(found) + "Word", m)));
                 body.line(fmt::format("s = {};", found));
             } else {
                 if (g.ring)
@@ -420,7 +432,7 @@ void emitMatch(BodyEmitter& body, const ir::Grammar& g, size_t species, const ir
                                           enters ? "true" : "false", skipRow));
                 else
                     body.line(fmt::format("if (!rightAdvance(s, {}u, pEnd, {}u)) return false;", m.sym, skipRow));
-                body.line(fmt::format("if (symInAt(s) != {}u) return false;", moduleWord(m)));
+                body.line(fmt::format("if ({}) return false;", wordDiffers(g, "symInAt(s)", m)));
             }
             first = false;
             for (size_t k = 0; k < m.paramSlots.size(); ++k)
@@ -435,14 +447,14 @@ void emitMatch(BodyEmitter& body, const ir::Grammar& g, size_t species, const ir
         if (g.ring) body.line("bool wrapped = false;");
         for (auto it = p.left.rbegin(); it != p.left.rend(); ++it) {
             if (it == p.left.rbegin() && prefetched && firstLeftWalkPrefetched(g, p)) {
-                body.line(fmt::format("if (!firstLeftFound || firstLeftWord != {}u) return false;", moduleWord(*it)));
+                body.line(fmt::format("if (!firstLeftFound || {}) return false;", wordDiffers(g, "firstLeftWord", *it)));
                 body.line("s = firstLeft;");
             } else {
                 if (g.ring)
                     body.line(fmt::format("if (!leftWalk(s, pBegin, pEnd, {}u, true, wrapped)) return false;", skipRow));
                 else
                     body.line(fmt::format("if (!leftAdvance(s, pBegin, {}u)) return false;", skipRow));
-                body.line(fmt::format("if (symInAt(uint(s)) != {}u) return false;", moduleWord(*it)));
+                body.line(fmt::format("if ({}) return false;", wordDiffers(g, "symInAt(uint(s))", *it)));
             }
             for (size_t k = 0; k < it->paramSlots.size(); ++k)
                 body.line(fmt::format("v{} = paramOf(uint(s), {}u);", it->paramSlots[k], k));

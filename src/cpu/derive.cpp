@@ -183,7 +183,9 @@ private:
     }
 
     bool sameModule(const ir::PatternModule& pm, size_t pos) const {
-        return cur_.sym[pos] == pm.sym && cur_.paramCount[pos] == pm.paramSlots.size();
+        // By name: a context (or a predecessor's further module) of one L-system matches another's modules.
+        const ir::Alphabet& a = g_.alphabet;
+        return a.canonical(cur_.sym[pos]) == a.canonical(pm.sym) && cur_.paramCount[pos] == pm.paramSlots.size();
     }
     void bind(const ir::PatternModule& pm, const float* params, double* frame) const {
         for (size_t k = 0; k < pm.paramSlots.size(); ++k) frame[pm.paramSlots[k]] = params[k];

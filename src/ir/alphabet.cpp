@@ -8,12 +8,17 @@ Alphabet::Alphabet() {
     intern("%");
 }
 
-SymbolId Alphabet::intern(const std::string& name) {
-    auto it = ids_.find(name);
+SymbolId Alphabet::intern(const std::string& name, uint32_t space) {
+    std::string key = space == 0 ? name : name + '\x1f' + std::to_string(space);
+    auto it = ids_.find(key);
     if (it != ids_.end()) return it->second;
     SymbolId id = static_cast<SymbolId>(names_.size());
+    auto first = firstByName_.emplace(name, id).first;
     names_.push_back(name);
-    ids_.emplace(name, id);
+    spaces_.push_back(space);
+    canonical_.push_back(first->second);
+    if (space != 0) hasSpaces_ = true;
+    ids_.emplace(std::move(key), id);
     return id;
 }
 

@@ -4,8 +4,8 @@
 
 namespace simeco::ir {
 
-SymbolId Grammar::symbol(const std::string& name) {
-    SymbolId id = alphabet.intern(name);
+SymbolId Grammar::symbol(const std::string& name, uint32_t space) {
+    SymbolId id = alphabet.intern(name, space);
     if (contextSkip.size() < alphabet.size()) contextSkip.resize(alphabet.size(), contextSkipDefault);
     return id;
 }

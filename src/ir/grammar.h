@@ -29,18 +29,30 @@ inline constexpr SymbolId kBranchOpen = 0;  // [
 inline constexpr SymbolId kBranchClose = 1; // ]
 inline constexpr SymbolId kCut = 2;         // %
 
+// Symbols by name. A file of several L-systems (cpfg's sub-L-systems) gives each L-system's modules symbols of
+// their own, in the L-system's `space` (0: the main L-system, and every other language): `B` rewritten by a
+// sub-L-system is another symbol than the main L-system's `B`, written and drawn alike, and context matches
+// them by name (canonical()).
 class Alphabet {
 public:
     Alphabet();
-    SymbolId intern(const std::string& name);
-    std::optional<SymbolId> find(const std::string& name) const;
+    SymbolId intern(const std::string& name, uint32_t space = 0);
+    std::optional<SymbolId> find(const std::string& name) const; // in space 0
     const std::string& name(SymbolId id) const { return names_[id]; }
+    uint32_t space(SymbolId id) const { return spaces_[id]; }
+    // The first symbol of this one's name: equal for symbols that context matching takes for each other.
+    SymbolId canonical(SymbolId id) const { return canonical_[id]; }
+    bool hasSpaces() const { return hasSpaces_; }
     size_t size() const { return names_.size(); }
     const std::vector<std::string>& names() const { return names_; }
 
 private:
     std::vector<std::string> names_;
-    std::unordered_map<std::string, SymbolId> ids_;
+    std::vector<uint32_t> spaces_;
+    std::vector<SymbolId> canonical_;
+    std::unordered_map<std::string, SymbolId> ids_;       // by name, and name + '\x1f' + space outside space 0
+    std::unordered_map<std::string, SymbolId> firstByName_;
+    bool hasSpaces_ = false;
 };
 
 // A module with actual parameter values: an axiom entry, or a module of a derived string.
@@ -201,7 +213,7 @@ struct Grammar {
 
     bool skippedInContext(SymbolId s) const { return s < contextSkip.size() && contextSkip[s]; }
     // A symbol by name, added to the alphabet (and the context filter) when new.
-    SymbolId symbol(const std::string& name);
+    SymbolId symbol(const std::string& name, uint32_t space = 0);
     // The largest parameter count of any module that can appear (sets the stride of the module stream).
     int maxParams() const;
 };

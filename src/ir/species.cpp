@@ -26,13 +26,13 @@ void renumber(RuleSet& rules, const std::vector<SymbolId>& to) {
 std::vector<Grammar> unifySpecies(const std::vector<Grammar>& grammars) {
     Alphabet all;
     for (const Grammar& g : grammars)
-        for (const std::string& name : g.alphabet.names()) all.intern(name);
+        for (SymbolId s = 0; s < g.alphabet.size(); ++s) all.intern(g.alphabet.name(s), g.alphabet.space(s));
     std::vector<Grammar> unified;
     unified.reserve(grammars.size());
     for (const Grammar& g : grammars) {
         Grammar u = g;
         std::vector<SymbolId> to(g.alphabet.size());
-        for (SymbolId s = 0; s < g.alphabet.size(); ++s) to[s] = *all.find(g.alphabet.name(s));
+        for (SymbolId s = 0; s < g.alphabet.size(); ++s) to[s] = all.intern(g.alphabet.name(s), g.alphabet.space(s));
         renumber(u.axiom, to);
         renumber(u.productions, to);
         renumber(u.decomposition, to);

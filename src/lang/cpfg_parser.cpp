@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <map>
 #include <set>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -21,7 +23,9 @@ bool isBlankChar(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f
 // Names of productions' frames and of the grammar's globals, for expressions.
 class Scope : public ExprScope {
 public:
-    Scope(ir::Grammar& g, ir::Production* production) : g_(g), production_(production) {}
+    // `subLsystem`: cpfg gives every L-system its own variables; a sub-L-system sees only the globals Q and Z.
+    Scope(ir::Grammar& g, ir::Production* production, bool subLsystem = false)
+        : g_(g), production_(production), subLsystem_(subLsystem) {}
 
     std::optional<ir::Expr> variable(const std::string& name) const override {
         if (production_) {
@@ -33,8 +37,9 @@ public:
                 return e;
             }
         }
-        auto it = std::find(g_.globalNames.begin(), g_.globalNames.end(), name);
-        if (it != g_.globalNames.end()) {
+        auto end = subLsystem_ ? g_.globalNames.begin() + kBuiltinGlobals : g_.globalNames.end();
+        auto it = std::find(g_.globalNames.begin(), end, name);
+        if (it != end) {
             ir::Expr e;
             e.op = ir::Op::Global;
             e.slot = static_cast<int>(it - g_.globalNames.begin());
@@ -43,6 +48,7 @@ public:
         return std::nullopt;
     }
     std::optional<int> array(const std::string& name) const override {
+        if (subLsystem_) return std::nullopt;
         for (size_t i = 0; i < g_.arrays.size(); ++i)
             if (g_.arrays[i].name == name) return static_cast<int>(i);
         return std::nullopt;
@@ -65,9 +71,12 @@ public:
         return e;
     }
 
+    static constexpr size_t kBuiltinGlobals = 2; // Q and Z
+
 private:
     ir::Grammar& g_;
     ir::Production* production_;
+    bool subLsystem_;
 };
 
 // A scope that knows no names: for values that cpfg evaluates while reading the file.
@@ -85,12 +94,34 @@ public:
 
     void parse() {
         collectModuleNames();
+        collectLabels();
         g_.globalNames = {"Q", "Z"}; // cpfg's current step and derivation length
         g_.globalInit = {0.0f, 0.0f};
         g_.symbol("[");
         cur_.skipBlanks(true);
         if (!keyword("lsystem", true)) cur_.fail("expected 'Lsystem:' at the start of the L-system");
-        restOfLine();
+        // The first L-system is the main one; those after it are its sub-L-systems. What follows the last
+        // `endlsystem` is not read.
+        for (;;) {
+            lsystem();
+            cur_.skipBlanks(true);
+            if (!keyword("lsystem", true)) break;
+            ++space_;
+        }
+        contextFilter();
+        g_.productions.present = true;
+        g_.symbol("]");
+    }
+
+private:
+    // One L-system, from after its `Lsystem:` to its `endlsystem`.
+    void lsystem() {
+        restOfLine(); // the label (collectLabels)
+        section_ = Section::Header;
+        stochastic_ = false;
+        sectionsSeen_.clear();
+        const size_t firstProduction = g_.productions.productions.size();
+        const size_t firstDecomposition = g_.decomposition.productions.size();
         bool sawAxiom = false;
         for (;;) {
             cur_.skipBlanks(true);
@@ -104,12 +135,19 @@ public:
                 float n = constantExpression("derivation length");
                 if (n < 0 || n != std::floor(n) || n > 1e9f)
                     cur_.failAt(lineStart, "derivation length must be a non-negative whole number");
-                g_.derivationLength = static_cast<int>(n);
-                g_.globalInit[1] = n;
+                if (space_ == 0) { // a sub-L-system rewrites once in each of the main L-system's steps
+                    g_.derivationLength = static_cast<int>(n);
+                    g_.globalInit[1] = n;
+                }
             } else if (keyword("axiom", true)) {
-                g_.axiomLoc = cur_.loc();
-                g_.axiom = parseModuleList(nullptr, "axiom");
-                if (g_.axiom.empty()) cur_.failAt(lineStart, "the axiom is empty");
+                // A sub-L-system's axiom is read, and used only where the L-system runs on its own.
+                ir::SourceLoc loc = cur_.loc();
+                std::vector<ir::SuccessorModule> axiom = parseModuleList(nullptr, "axiom");
+                if (axiom.empty()) cur_.failAt(lineStart, "the axiom is empty");
+                if (space_ == 0) {
+                    g_.axiomLoc = loc;
+                    g_.axiom = std::move(axiom);
+                }
                 sawAxiom = true;
             } else if (keyword("ignore", true)) {
                 contextList(true, lineStart);
@@ -118,20 +156,26 @@ public:
             } else if (keyword("seed", true)) {
                 float seed = constantExpression("seed");
                 if (section_ != Section::Homomorphism) {
-                    g_.seed = static_cast<uint32_t>(static_cast<int64_t>(seed));
+                    if (space_ == 0) g_.seed = static_cast<uint32_t>(static_cast<int64_t>(seed));
                     stochastic_ = true;
                 }
             } else if (keyword("ring lsystem", false)) {
+                mainOnly(lineStart, "'ring L-system'");
                 g_.ring = true;
             } else if (keyword("define", true)) {
+                mainOnly(lineStart, "'define:'");
                 arrayDefinitions();
             } else if (keyword("starteach", true) || keyword("start each", true)) {
+                mainOnly(lineStart, "'StartEach:'");
                 controlBlock(g_.startEachBlock);
             } else if (keyword("endeach", true) || keyword("end each", true)) {
+                mainOnly(lineStart, "'EndEach:'");
                 controlBlock(g_.endEachBlock);
             } else if (keyword("start", true)) {
+                mainOnly(lineStart, "'Start:'");
                 controlBlock(g_.startBlock);
             } else if (keyword("end", true)) {
+                mainOnly(lineStart, "'End:'");
                 controlBlock(g_.endBlock);
             } else if (keyword("decomposition", false)) {
                 enterSection(Section::Decomposition, g_.decomposition, lineStart);
@@ -142,7 +186,9 @@ public:
                 if (section_ != Section::Decomposition && section_ != Section::Homomorphism)
                     cur_.failAt(lineStart, "'maximum depth' belongs after 'decomposition' or 'homomorphism'");
                 if (depth < 0 || depth > 1e6f) cur_.failAt(lineStart, "maximum depth out of range");
-                currentRules().maxDepth = static_cast<int>(depth);
+                // One rule set holds every L-system's decomposition (homomorphism): it goes as deep as the deepest.
+                int& most = currentRules().maxDepth;
+                most = space_ == 0 ? static_cast<int>(depth) : std::max(most, static_cast<int>(depth));
             } else if (keyword("module", false)) {
                 restOfLine(); // declarations were read by collectModuleNames
             } else if (keyword("lsystem", true)) {
@@ -154,21 +200,76 @@ public:
             }
         }
         if (!sawAxiom) cur_.fail("the L-system has no 'Axiom:'");
-        g_.productions.present = true;
         if (stochastic_) {
-            for (ir::RuleSet* rules : {&g_.productions, &g_.decomposition})
-                for (ir::Production& p : rules->productions)
-                    if (p.weight < 0) p.weight = 1.0f;
+            for (auto [rules, first] : {std::pair{&g_.productions, firstProduction}, {&g_.decomposition, firstDecomposition}})
+                for (size_t i = first; i < rules->productions.size(); ++i)
+                    if (rules->productions[i].weight < 0) rules->productions[i].weight = 1.0f;
         }
-        g_.symbol("]");
     }
 
-private:
+    // What simeco reads in the main L-system only: cpfg keeps a sub-L-system's variables per call, which simeco's
+    // engines do not.
+    void mainOnly(size_t lineStart, const char* what) {
+        if (space_ != 0) cur_.failAt(lineStart, fmt::format("{} in a sub-L-system: simeco reads it in the main (first) "
+                                                            "L-system only", what));
+    }
+
+    // The labels of the file's `Lsystem:` lines, in order (cpfg reads a label as a number; other text is 0).
+    void collectLabels() {
+        const std::string& t = cur_.text();
+        for (size_t lineStart = 0; lineStart < t.size();) {
+            size_t lineEnd = std::min(t.find('\n', lineStart), t.size());
+            size_t i = t.find_first_not_of(" \t", lineStart);
+            if (i < lineEnd && lineEnd - i >= 7) {
+                std::string word = t.substr(i, 7);
+                std::transform(word.begin(), word.end(), word.begin(), [](unsigned char c) { return std::tolower(c); });
+                size_t colon = t.find_first_not_of(" \t", i + 7);
+                if (word == "lsystem" && colon < lineEnd && t[colon] == ':')
+                    labels_.push_back(static_cast<int>(std::atof(t.substr(colon + 1, lineEnd - colon - 1).c_str())));
+            }
+            lineStart = lineEnd + 1;
+        }
+    }
+
+    bool hasSubLsystems() const { return labels_.size() > 1; }
+
+    // The symbol of a module of L-system `space`. Branches, cuts, `=` and the calls' own `?` and `$` are shared.
+    ir::SymbolId symbolIn(const std::string& name, uint32_t space) {
+        static const std::set<std::string> kShared = {"[", "]", "%", "=", "?", "$"};
+        return g_.symbol(name, kShared.count(name) ? 0 : space);
+    }
+
+    // The L-system that `?(label, scale)` calls, where the list that holds it is of L-system `caller`.
+    uint32_t calledLsystem(const ir::SuccessorModule& call, const std::vector<uint32_t>& callers) {
+        std::optional<double> label = foldConstant(call.args[0]);
+        if (!label) throw ir::InputError(call.args[0].loc, "a sub-L-system's label must be a constant");
+        const int id = static_cast<int>(*label);
+        auto it = std::find(labels_.begin(), labels_.end(), id);
+        if (it == labels_.end()) throw ir::InputError(call.loc, fmt::format("no L-system is labelled {}", id));
+        const uint32_t space = static_cast<uint32_t>(it - labels_.begin());
+        if (space == 0) throw ir::InputError(call.loc, "the main L-system cannot be called as a sub-L-system");
+        if (space == space_ || std::find(callers.begin(), callers.end(), space) != callers.end())
+            throw ir::InputError(call.loc, fmt::format("L-system {} calls itself", id));
+        return space;
+    }
+
     TextCursor cur_;
     ir::Grammar& g_;
     Section section_ = Section::Header;
     bool stochastic_ = false;
     std::vector<std::string> names_; // names of several characters, longest first
+    std::vector<int> labels_;        // the L-systems' labels, in the file's order
+    uint32_t space_ = 0;             // the L-system being read: its index in labels_ (0: the main one)
+    std::set<Section> sectionsSeen_; // in the L-system being read
+    // `ignore:` / `consider:` of an L-system.
+    struct ContextFilter {
+        bool present = false;
+        bool ignore = true;
+        std::set<std::string> names;
+        size_t at = 0; // where its line starts
+    };
+    std::map<uint32_t, ContextFilter> filters_; // by L-system
+    std::set<uint32_t> contextual_;             // the L-systems with context-sensitive productions
 
     ir::RuleSet& currentRules() {
         switch (section_) {
@@ -181,7 +282,7 @@ private:
     void enterSection(Section s, ir::RuleSet& rules, size_t lineStart) {
         if (s == Section::Decomposition && section_ == Section::Homomorphism)
             cur_.failAt(lineStart, "'decomposition' must come before 'homomorphism'");
-        if (rules.present) cur_.failAt(lineStart, "section declared twice");
+        if (!sectionsSeen_.insert(s).second) cur_.failAt(lineStart, "section declared twice");
         rules.present = true;
         section_ = s;
         cur_.skipBlanks();
@@ -263,18 +364,41 @@ private:
 
     // ignore: / consider: — a list of module names on one line.
     void contextList(bool ignore, size_t lineStart) {
-        if (!g_.contextSkip.empty() && std::any_of(g_.contextSkip.begin(), g_.contextSkip.end(), [](bool b) { return b; }))
-            cur_.failAt(lineStart, "only one 'ignore:' or 'consider:' statement is allowed");
-        std::vector<ir::SymbolId> listed;
+        ContextFilter& filter = filters_[space_];
+        if (filter.present) cur_.failAt(lineStart, "only one 'ignore:' or 'consider:' statement is allowed");
         for (;;) {
             cur_.skipBlanks();
             if (cur_.atEnd() || cur_.peek() == '\n') break;
-            listed.push_back(g_.symbol(readModuleName()));
+            std::string name = readModuleName();
+            g_.symbol(name);
+            filter.names.insert(name);
         }
-        if (listed.empty()) cur_.failAt(lineStart, "empty symbol list");
-        g_.contextSkipDefault = !ignore;
-        g_.contextSkip.assign(g_.alphabet.size(), !ignore);
-        for (ir::SymbolId s : listed) g_.contextSkip[s] = ignore;
+        if (filter.names.empty()) cur_.failAt(lineStart, "empty symbol list");
+        filter.present = true;
+        filter.ignore = ignore;
+        filter.at = lineStart;
+    }
+
+    // cpfg matches a context with the list of the L-system whose production it tries; simeco keeps one list for
+    // the file: that of the L-systems with context-sensitive productions (they must agree), else the main one's.
+    void contextFilter() {
+        const ContextFilter* chosen = nullptr;
+        for (uint32_t space : contextual_) {
+            const ContextFilter& f = filters_[space];
+            if (!chosen) {
+                chosen = &f;
+            } else if (f.present != chosen->present || f.ignore != chosen->ignore || f.names != chosen->names) {
+                const ContextFilter& differing = f.present ? f : *chosen;
+                cur_.failAt(differing.at, "the L-systems with context-sensitive productions skip different modules "
+                                          "in context: simeco needs the same 'ignore:' or 'consider:' in each");
+            }
+        }
+        if (!chosen) chosen = &filters_[0];
+        g_.contextSkipDefault = chosen->present && !chosen->ignore;
+        g_.contextSkip.assign(g_.alphabet.size(), false);
+        if (!chosen->present) return;
+        for (ir::SymbolId s = 0; s < g_.alphabet.size(); ++s)
+            g_.contextSkip[s] = chosen->names.count(g_.alphabet.name(s)) ? chosen->ignore : !chosen->ignore;
     }
 
     // define: { array name[d1,d2] = {v, ...}; ... }
@@ -565,9 +689,13 @@ private:
     // A successor or axiom: modules with parameter expressions, up to the end of the line (continued onto
     // lines that start with a tab).
     std::vector<ir::SuccessorModule> parseModuleList(ir::Production* production, const char* what) {
-        Scope scope(g_, production);
+        Scope scope(g_, production, space_ != 0);
         std::vector<ir::SuccessorModule> modules;
         std::vector<ir::SourceLoc> openBrackets;
+        // The sub-L-systems this list calls, innermost last: what follows `?(label, s)` up to its `$` is rewritten
+        // by the L-system of that label.
+        std::vector<uint32_t> calls;
+        std::optional<ir::SourceLoc> returned; // a `$` ending the call this list's own L-system runs in
         for (;;) {
             cur_.skipBlanks();
             char c = cur_.peek();
@@ -587,7 +715,11 @@ private:
             if (cur_.startsWith("-->")) cur_.fail(fmt::format("unexpected arrow in the {}", what));
             ir::SuccessorModule m;
             m.loc = cur_.loc();
-            m.sym = g_.symbol(readModuleName());
+            const std::string name = readModuleName();
+            if (returned && space_ != 0)
+                throw ir::InputError(m.loc, "a module after a '$' that returns from this sub-L-system: simeco cannot "
+                                            "tell which L-system rewrites it");
+            m.sym = symbolIn(name, calls.empty() ? space_ : calls.back());
             if (m.sym == ir::kBranchOpen) openBrackets.push_back(m.loc);
             if (m.sym == ir::kBranchClose) {
                 if (openBrackets.empty()) throw ir::InputError(m.loc, fmt::format("unbalanced ']' in the {}", what));
@@ -606,6 +738,14 @@ private:
                     cur_.fail(fmt::format("expected ',' or ')' in the parameters of '{}'", g_.alphabet.name(m.sym)));
                 }
                 if (m.args.size() > kMaxParams) throw ir::InputError(m.loc, "too many parameters");
+            }
+            if (hasSubLsystems() && name == "?" && !m.args.empty()) {
+                calls.push_back(calledLsystem(m, calls));
+            } else if (hasSubLsystems() && name == "$") {
+                if (!calls.empty())
+                    calls.pop_back();
+                else
+                    returned = m.loc;
             }
             modules.push_back(std::move(m));
         }
@@ -632,7 +772,7 @@ private:
             if (c == '{') cur_.fail("expected ':' before the statement block");
             ir::PatternModule m;
             m.loc = cur_.loc();
-            m.sym = g_.symbol(readModuleName());
+            m.sym = symbolIn(readModuleName(), space_);
             if (cur_.peek() == '(') {
                 ++cur_.pos;
                 for (;;) {
@@ -673,9 +813,17 @@ private:
             p.right = parsePattern(p, "right context");
         }
         if (p.strict.empty()) throw ir::InputError(p.loc, "the strict predecessor is empty");
+        if (hasSubLsystems()) {
+            // A call's `?` is rewritten by the caller and its `$` by the callee, which simeco's symbols do not tell.
+            const std::string& rewritten = g_.alphabet.name(p.strict.front().sym);
+            if (rewritten == "?" || rewritten == "$")
+                throw ir::InputError(p.loc, fmt::format("a production of '{}' in a file of several L-systems: simeco "
+                                                        "does not rewrite a sub-L-system's '?' or '$'", rewritten));
+            if (!p.left.empty() || !p.right.empty()) contextual_.insert(space_);
+        }
         p.frameSize = static_cast<int>(p.slotNames.size());
         cur_.skipLineBlanks();
-        Scope scope(g_, &p);
+        Scope scope(g_, &p, space_ != 0);
         if (cur_.eat(":")) {
             cur_.skipLineBlanks();
             if (cur_.peek() == '{') p.before = statementBlock(scope);

@@ -23,7 +23,7 @@ uint32_t plainCommand(std::string_view name) {
         {"rotx", kTurtleRotateWorldX}, {"roty", kTurtleRotateWorldY}, {"rotz", kTurtleRotateWorldZ},
         {"rotr", kTurtlePitchRadians}, {"rotu", kTurtleRollRadians}, {"_", kTurtleElasticityStep},
         {"tropism", kTurtleTropism}, {"alive", kTurtleAlive}, {"phototropism", kTurtlePhototropism},
-        {"tilt", kTurtleTilt},
+        {"tilt", kTurtleTilt}, {"?", kTurtleSubLsystemCall},
     };
     auto it = kCommands.find(name);
     return it == kCommands.end() ? kTurtleNone : it->second;
@@ -131,7 +131,7 @@ uint32_t TurtleCommands::commandAt(const stream::ModuleString& s, size_t begin, 
         if (pair != kTurtleNone) return pair;
     }
     if (previous == tilde) return shared::kTurtleSurface;
-    if (previous == query) return afterQuery[sym];
+    if (previous == query && s.paramCount[i - 1] == 0) return afterQuery[sym]; // `?(label, s)` is a call
     return plain[sym];
 }
 

@@ -83,6 +83,7 @@ public:
         state.elasticity = t_.elasticity;
         state.scale = t_.initialScale;
         std::vector<TurtleState> stack;
+        calls_.clear();
         for (size_t i = begin; i < end; ++i) {
             uint32_t command = commands_.commandAt(s_, begin, end, i);
             if (endsTaper(command)) endTaper(state);
@@ -108,6 +109,7 @@ private:
     const TurtleCommands& commands_;
     const TurtleSettings& t_;
     uint32_t plant_;
+    std::vector<float> calls_; // the scales of the sub-L-system calls the walk is in, innermost last
     std::vector<OrganInstance>& organs_;
     std::vector<std::vector<glm::vec3>> polygons_;
 
@@ -256,7 +258,24 @@ private:
             f.left = -f.left;
             break;
         case kTurtleRollLevel:
-            if (t_.dollarRolls) rollLevel(f);
+            if (t_.dollarRolls) {
+                rollLevel(f);
+            } else { // cpfg's `$`: the return from a sub-L-system call, back to the caller's scale
+                const float back = 1.0f / (calls_.empty() ? 1.0f : calls_.back());
+                if (!calls_.empty()) calls_.pop_back();
+                st.scale *= back;
+                st.width *= back;
+            }
+            break;
+        // A sub-L-system's lengths and widths are its call's scale times the caller's, until its `$`. The calls
+        // nest in the string's order, which branches do not change.
+        case kTurtleSubLsystemCall:
+            if (hasParam(i)) {
+                const float s = param(i, 1, 1.0f);
+                calls_.push_back(s != 0.0f && std::isfinite(s) ? s : 1.0f); // compute/turtle's callScale
+                st.scale *= calls_.back();
+                st.width *= calls_.back();
+            }
             break;
         case kTurtleRollUpright: rollUpright(f); break;
         case kTurtlePitchRadians: turnToward(f.heading, f.up, -param(i, 0, 0)); break;

@@ -433,6 +433,25 @@ TEST_F(DeriveGpuTest, PredecessorsOfSeveralModulesMatchTheCpu) {
     EXPECT_EQ(firstDifference(want, deriver.derive({}), g.alphabet), "");
 }
 
+// cpfg's sub-L-systems: each L-system rewrites the modules of its calls with symbols of its own, which context
+// (and a predecessor's further modules) match by name, in parallel passes and sequentially as on the CPU.
+TEST_F(DeriveGpuTest, SubLsystemsMatchTheCpu) {
+    ir::Grammar g = simeco::testing::grammarFromText(
+        "Lsystem: 1\nderivation length: 5\nAxiom: A(0)?(2,0.5)B(0)$\nignore: ?\n"
+        "A(n) > B(m) --> A(n+1)?(2,0.5)B(m+n)$\nB(n) --> X\nC --> Y\nendlsystem\n"
+        "Lsystem: 2\nAxiom: B(0)\nignore: ?\nA(n) < B(m) --> B(m+n)C\nB(m)C --> D(m)\n"
+        "endlsystem\n");
+    stream::DeriveResult want = cpu::deriveCpu(g, {});
+    const std::string text = stream::formatModules(want.string, g.alphabet, 0, want.string.size());
+    for (const char* produced : {"D(", "C$"}) EXPECT_NE(text.find(produced), std::string::npos) << text;
+    EXPECT_EQ(text.find('X'), std::string::npos) << text; // main's B and C are never in the string
+    EXPECT_EQ(text.find('Y'), std::string::npos) << text;
+    for (gpu::GpuStrategy strategy : {gpu::GpuStrategy::Parallel, gpu::GpuStrategy::Sequential}) {
+        gpu::GpuDeriver deriver(context(), g, strategy);
+        EXPECT_EQ(firstDifference(want, deriver.derive({}), g.alphabet), "");
+    }
+}
+
 // Parameters that overflow to infinity and then become NaN (inf - inf, inf * 0) follow IEEE arithmetic on both
 // engines, as cpfg's: a driver may fold x - x to 0 unless told to keep infinities and NaN, and lavapipe folds x * 0
 // even then (the kernels multiply by a zero it cannot see). Conditions then compare NaN as false, so B(nan) takes

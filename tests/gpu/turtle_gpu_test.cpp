@@ -256,6 +256,25 @@ TEST_F(TurtleGpuTest, CpfgCylinderMeshesDrawAsOnTheCpu) {
     fs::remove_all(folder);
 }
 
+// cpfg's sub-L-system calls scale lengths and widths until their `$`, nested, across branches and with `@D`
+// scaling between them; the device finds each `$`'s call as the CPU's stack does.
+TEST_F(TurtleGpuTest, SubLsystemCallsScaleAsOnTheCpu) {
+    const fs::path folder = fs::temp_directory_path() / ("simeco-gpu-sub-lsystems-" + std::to_string(::getpid()));
+    fs::create_directories(folder);
+    std::ofstream(folder / "m.l")
+        << "Lsystem: 1\nderivation length: 4\nAxiom: !(0.4)A\nA --> F[+(40)?(2,0.6)B$]@Di(1.1)/(90)A\n"
+           "endlsystem\nLsystem: 2\nAxiom: B\nB --> F?(3,0.5)[-(30)!(0.3)C]$#B\nendlsystem\n"
+           "Lsystem: 3\nAxiom: C\nC --> F(2)C\nendlsystem\n";
+    std::ofstream(folder / "m.v") << "line style: cylinder\n";
+    Tally tally;
+    compareTurtles(context(), folder / "m.l", "sub-L-systems", 3, tally);
+    EXPECT_EQ(tally.compared, 1);
+    // Per plant: the main axis's four segments; the branches of steps 1 to 3 add three, two and one of L-system 2
+    // and three, one and none of L-system 3.
+    EXPECT_EQ(tally.organs, 3 * 14);
+    fs::remove_all(folder);
+}
+
 // Many plants in one stream: each plant keeps its own root and the field places them as the CPU does.
 TEST_F(TurtleGpuTest, AFieldOfPlantsMatchesTheCpuTurtle) {
     Tally tally;

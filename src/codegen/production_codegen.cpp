@@ -384,7 +384,8 @@ std::string wordDiffers(const ir::Grammar& g, const std::string& word, const ir:
     const uint32_t count = static_cast<uint32_t>(m.paramSlots.size()) << shared::kSymbolBits;
     std::vector<std::string> same;
     for (ir::SymbolId s = 0; s < g.alphabet.size(); ++s)
-        if (g.alphabet.canonical(s) == g.alphabet.canonical(m.sym)) same.push_back(fmt::format("{} == {}u", word, s | count));
+        if (g.alphabet.canonical(s) == g.alphabet.canonical(m.sym))
+            same.push_back(fmt::format("{} == {}u", word, s | count));
     if (same.size() == 1) return fmt::format("{} != {}u", word, moduleWord(m));
     return fmt::format("!({})", fmt::join(same, " || "));
 }
@@ -424,7 +425,8 @@ void emitMatch(BodyEmitter& body, const ir::Grammar& g, size_t species, const ir
             bool enters = m.sym == ir::kBranchOpen;
             if (first && prefetched && firstRightWalkPrefetched(g, p)) {
                 const char* found = enters ? "firstRightBranch" : "firstRight";
-                body.line(fmt::format("if (!{}Found || {}) return false;", found, wordDiffers(g, std::string(found) + "Word", m)));
+                body.line(fmt::format("if (!{}Found || {}) return false;", found,
+                                      wordDiffers(g, std::string(found) + "Word", m)));
                 body.line(fmt::format("s = {};", found));
             } else {
                 if (g.ring)
@@ -447,7 +449,8 @@ void emitMatch(BodyEmitter& body, const ir::Grammar& g, size_t species, const ir
         if (g.ring) body.line("bool wrapped = false;");
         for (auto it = p.left.rbegin(); it != p.left.rend(); ++it) {
             if (it == p.left.rbegin() && prefetched && firstLeftWalkPrefetched(g, p)) {
-                body.line(fmt::format("if (!firstLeftFound || {}) return false;", wordDiffers(g, "firstLeftWord", *it)));
+                body.line(
+                    fmt::format("if (!firstLeftFound || {}) return false;", wordDiffers(g, "firstLeftWord", *it)));
                 body.line("s = firstLeft;");
             } else {
                 if (g.ring)

@@ -21,7 +21,7 @@ SIMECO_CONST kTurtleRollLeft = 9u;      // \(a): about H
 SIMECO_CONST kTurtleRollRight = 10u;    // /(a)
 SIMECO_CONST kTurtleTurnAround = 11u;   // |: 180 degrees about U
 SIMECO_CONST kTurtleRollLevel = 12u;    // $: roll so that L is horizontal, U closest to up (not in cpfg .l files,
-                                        // where it ends a sub-L-system call: TurtleSpecies::dollarRolls)
+                                        // where it ends a sub-L-system call: TurtleSpecies::dollar)
 SIMECO_CONST kTurtleWidthUp = 13u;      // #(w): add the width increment, or set w
 SIMECO_CONST kTurtleWidthDown = 14u;    // !(w): subtract the width increment, or set w
 SIMECO_CONST kTurtleColorUp = 15u;      // ;(c): add the colour increment, or set c

@@ -60,23 +60,30 @@ struct TurtleSpecies {
     float elasticityIncrement;
     vec4 tropism; // xyz: unit direction; w: 1 when segments may bend (elasticity can be non-zero)
     uint taperedLines; // 1: a segment narrows to the width set before the command that ends it (cpfg's)
-    uint dollarRolls;  // 1: `$` rolls the turtle level; 0: it leaves the turtle alone (cpfg's .l files)
+    uint dollar;       // kDollar*: what `$` does
     uint tropismRule;  // kTropism*
     uint lineStyle;    // kLine*: how its F and G segments are drawn
     // Where its `~` surfaces start in the command table: kSurfaceWords per symbol, the end point a surface moves
     // the turtle to per unit of its first scale (float bits, in heading, left and up) and how it draws (kSurface*).
     uint surfaces;
     float initialScale; // the scale before any `@D` (cpfg's `initial scale:`)
-    // Generalized cylinders (TurtleSettings): kCylinderMeshes and kCylinderTwist, the rings' sides from bit
+    // Generalized cylinders (TurtleSettings): kCylinderMeshes, kCylinderTwist and kCylinderCpfgTubes, the rings'
+    // sides from bit
     // kCylinderSidesShift, the contours from bit kCylinderContoursShift; contour k's ring is at contourRings[
     // contourFirst + k * (sides + 1)], its points' w the contour's id.
     uint cylinders;
     uint contourFirst;
 };
+// What `$` does: roll the turtle level (the quick grammars'), return from a sub-L-system call (cpfg's .l files of
+// several L-systems), or nothing (cpfg's other .l files).
+SIMECO_CONST kDollarIgnored = 0u;
+SIMECO_CONST kDollarRolls = 1u;
+SIMECO_CONST kDollarReturns = 2u;
 SIMECO_CONST kCylinderMeshes = 1u;
 SIMECO_CONST kCylinderTwist = 2u;
-SIMECO_CONST kCylinderSidesShift = 2u; // 10 bits: at most kMostCylinderSides
-SIMECO_CONST kCylinderContoursShift = 12u;
+SIMECO_CONST kCylinderCpfgTubes = 4u;  // tubes as cpfg's pixel and polygon line styles draw them
+SIMECO_CONST kCylinderSidesShift = 3u; // 10 bits: at most kMostCylinderSides
+SIMECO_CONST kCylinderContoursShift = 13u;
 SIMECO_CONST kMostCylinderSides = 1023u;
 SIMECO_CONST kSurfaceWords = 4u;
 // How `~` draws a surface: not at all (an id a cpfg view does not define), along the heading (a built-in blade or

@@ -49,7 +49,8 @@ void main() {
                 organs = cylinderRings(i) * cylinderSides(sp) * 2u;
             } else {
                 kind = kOrganStem;
-                organs = tubeSegments(paramAt(i, 0u, 1.0));
+                organs = (sp.cylinders & kCylinderCpfgTubes) != 0u ? cylinderRings(i)
+                                                                     : tubeSegments(paramAt(i, 0u, 1.0));
                 marks[i] |= kMarkTube;
             }
         }

@@ -139,21 +139,52 @@ void writeCylinderTriangle(inout OrganInstance o, inout uint slot, vec3 a, vec3 
     ++slot;
 }
 
+// The Hermite curve between two control points and the radius curve along it, whose parameter r spaces a mesh's
+// rings and a tube's pieces (turtle/cylinder_mesh.cpp's CylinderCurve).
+struct CylinderCurve {
+    float len;
+    vec3 c0, c1, c2, c3;
+    vec2 r0, r1;
+    float startRadius, half_;
+};
+
+CylinderCurve cylinderCurve(CylinderPoint a, CylinderPoint b) {
+    CylinderCurve c;
+    c.len = length(b.position - a.position);
+    vec3 t0 = a.heading * (c.len * a.tangents.y), t1 = b.heading * (c.len * b.tangents.x);
+    vec3 d = a.position - b.position;
+    c.c0 = a.position;
+    c.c1 = t0;
+    c.c2 = -3.0 * d - 2.0 * t0 - t1;
+    c.c3 = 2.0 * d + t0 + t1;
+    c.startRadius = 0.5 * a.width;
+    c.half_ = 0.5 * (b.width - a.width);
+    c.r0 = a.radiusOut;
+    c.r1 = b.radiusIn;
+    if (b.scaleRadius != 0.0) {
+        c.r0.y *= c.len;
+        c.r1.y *= c.len;
+    }
+    if (c.r0 == vec2(0.0)) c.r0 = vec2(1.0, c.half_);
+    if (c.r1 == vec2(0.0)) c.r1 = vec2(1.0, c.half_);
+    return c;
+}
+
+float curveParameter(CylinderCurve c, float r) {
+    return r * c.r0.x + r * r * (3.0 - 2.0 * c.r0.x - c.r1.x) + r * r * r * (-2.0 + c.r0.x + c.r1.x);
+}
+vec3 curvePoint(CylinderCurve c, float t) { return ((c.c3 * t + c.c2) * t + c.c1) * t + c.c0; }
+vec3 curveSlope(CylinderCurve c, float t) { return (3.0 * c.c3 * t + 2.0 * c.c2) * t + c.c1; }
+float curveRadius(CylinderCurve c, float r) {
+    return c.startRadius + r * c.r0.y + r * r * (3.0 * c.half_ - 2.0 * c.r0.y - c.r1.y) +
+           r * r * r * (-2.0 * c.half_ + c.r0.y + c.r1.y);
+}
+
 // The mesh from control point `a` to `b` in `rings` strips of 2 `sides` triangles each, from `slot` on.
 void cylinderMesh(OrganInstance o, uint slot, CylinderPoint a, CylinderPoint b, uint rings, float twist,
                   TurtleSpecies sp) {
-    float len = length(b.position - a.position);
-    vec3 t0 = a.heading * (len * a.tangents.y), t1 = b.heading * (len * b.tangents.x);
-    vec3 d = a.position - b.position;
-    vec3 c0 = a.position, c1 = t0, c2 = -3.0 * d - 2.0 * t0 - t1, c3 = 2.0 * d + t0 + t1;
-    float half_ = 0.5 * (b.width - a.width);
-    vec2 r0 = a.radiusOut, r1 = b.radiusIn;
-    if (b.scaleRadius != 0.0) {
-        r0.y *= len;
-        r1.y *= len;
-    }
-    if (r0 == vec2(0.0)) r0 = vec2(1.0, half_);
-    if (r1 == vec2(0.0)) r1 = vec2(1.0, half_);
+    CylinderCurve curve = cylinderCurve(a, b);
+    float len = curve.len;
     uint sides = cylinderSides(sp), stride = sides + 1u;
     uint first = sp.contourFirst + a.contour * stride, second = sp.contourFirst + b.contour * stride;
     bool closed = contourRings[first] == contourRings[first + sides] &&
@@ -166,12 +197,10 @@ void cylinderMesh(OrganInstance o, uint slot, CylinderPoint a, CylinderPoint b, 
         if (k == rings) {
             next = CylinderRing(b.position, b.up, b.left, b.heading * b.tangents.x, 0.5 * b.width, 1.0);
         } else {
-            float t = r * r0.x + r * r * (3.0 - 2.0 * r0.x - r1.x) + r * r * r * (-2.0 + r0.x + r1.x);
-            float radius = 0.5 * a.width + r * r0.y + r * r * (3.0 * half_ - 2.0 * r0.y - r1.y) +
-                           r * r * r * (-2.0 * half_ + r0.y + r1.y);
-            vec3 heading = normalize((3.0 * c3 * t + 2.0 * c2) * t + c1);
+            float t = curveParameter(curve, r);
+            vec3 heading = normalize(curveSlope(curve, t));
             vec3 up = rotateAbout(turnedWithHeading(a.heading, heading, a.up, 0.0), heading, -twist * t);
-            next = CylinderRing(((c3 * t + c2) * t + c1) * t + c0, up, cross(heading, up), heading / len, radius, t);
+            next = CylinderRing(curvePoint(curve, t), up, cross(heading, up), heading / len, curveRadius(curve, r), t);
             r += step;
         }
         // Each corner once a strip, carried on to the quad after it.

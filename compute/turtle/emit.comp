@@ -59,27 +59,49 @@ OrganInstance triangleOf(OrganInstance o, uint i, TurtleState after) {
 }
 
 // A tube from the last control point along the curve the headings there and here describe (tubeCurve), in
-// the segments the point asks for, joined to each other; the join to the tube before is links.comp's.
-void emitTube(OrganInstance o, uint i, uint slot, TurtleState after) {
-    uint segments = tubeSegments(paramAt(i, 0u, 1.0));
+// the segments the point asks for, joined to each other; the join to the tube before is links.comp's. cpfg's
+// (turtle_cpu.cpp): `@Gc(n)`'s n pieces through the points a mesh's rings would have, as wide as the last control
+// point, the last narrowing to this one's where polygons taper, drawn in the line style.
+void emitTube(OrganInstance o, uint i, uint slot, TurtleState after, TurtleSpecies sp) {
+    bool cpfg = (sp.cylinders & kCylinderCpfgTubes) != 0u;
+    uint segments = cpfg ? cylinderRings(i) : tubeSegments(paramAt(i, 0u, 1.0));
     if (slot + segments > pc.organCapacity) return; // the organs outgrew their buffer (field.comp tells)
-    TurtleState anchor = states[cylinderAnchors[i]];
+    uint anchorModule = cylinderAnchors[i];
+    TurtleState anchor = states[anchorModule];
     vec3 chord = after.position.xyz - anchor.position.xyz;
     float len = length(chord);
     float r0 = 0.5 * anchor.heading.w, r1 = 0.5 * after.heading.w;
+    CylinderCurve curve;
+    if (cpfg) {
+        curve = cylinderCurve(controlPointAt(anchorModule, anchor, sp), controlPointAt(i, after, sp));
+        o.shape = sp.lineStyle;
+    }
+    bool lastTapers = sp.lineStyle == kLinePolygon && sp.taperedLines != 0u;
+    float step = 1.0 / float(segments), r = step;
     vec3 from = anchor.position.xyz;
     vec3 previous = vec3(0);
     for (uint k = 0u; k < segments; ++k) {
         float t0 = float(k) / float(segments), t1 = float(k + 1u) / float(segments);
-        vec3 to = k + 1u == segments
-                      ? after.position.xyz
-                      : tubeCurve(anchor.position.xyz, anchor.heading.xyz, after.position.xyz, after.heading.xyz, len, t1);
+        vec3 to;
+        if (k + 1u == segments) {
+            to = after.position.xyz;
+        } else if (cpfg) {
+            to = curvePoint(curve, curveParameter(curve, r));
+            r += step;
+        } else {
+            to = tubeCurve(anchor.position.xyz, anchor.heading.xyz, after.position.xyz, after.heading.xyz, len, t1);
+        }
         vec3 d = to - from;
         float l = length(d);
         vec3 heading = l > 0.0 ? d / l : chord / len;
         o.position = vec4(from, l);
-        o.heading = vec4(heading, r0 + (r1 - r0) * t0);
-        o.up = vec4(perpendicularUp(heading, after), r0 + (r1 - r0) * t1);
+        if (cpfg) {
+            o.heading = vec4(heading, r0);
+            o.up = vec4(perpendicularUp(heading, after), k + 1u == segments && lastTapers ? r1 : r0);
+        } else {
+            o.heading = vec4(heading, r0 + (r1 - r0) * t0);
+            o.up = vec4(perpendicularUp(heading, after), r0 + (r1 - r0) * t1);
+        }
         o.previousHeading = vec4(previous, 0);
         o.nextHeading = vec4(0);
         if (k > 0u) instances[slot + k - 1u].nextHeading = vec4(heading, 0);
@@ -148,7 +170,7 @@ void main() {
         emitCylinderMesh(o, i, offsets[kind * pc.count + i], after, sp);
         return;
     } else if (command == kTurtleCylinderPoint) {
-        emitTube(o, i, offsets[kind * pc.count + i], after);
+        emitTube(o, i, offsets[kind * pc.count + i], after, sp);
         return;
     } else if (kind == kOrganTriangle) {
         o = triangleOf(o, i, after);

@@ -84,7 +84,7 @@ TurtleState initialState(TurtleSpecies sp) {
 // Whether a command needs the absolute state before it (and so cannot be a step).
 bool isNonlinear(uint command, TurtleSpecies sp) {
     switch (command) {
-    case kTurtleRollLevel: return sp.dollarRolls != 0u;
+    case kTurtleRollLevel: return sp.dollar == kDollarRolls;
     case kTurtleRollUpright:
     case kTurtleSetPosition:
     case kTurtleSetHeading:
@@ -180,14 +180,17 @@ TurtleStep commandStep(uint command, uint i, TurtleSpecies sp) {
     }
     // A sub-L-system's lengths and widths are its call's scale times the caller's, until its `$`.
     case kTurtleSubLsystemCall:
-        if (hasParam(i)) {
+        if (hasParam(i) && sp.dollar == kDollarReturns) {
             t.scaleElasticity.x = callScale(i);
             t.widthColor.x = callScale(i);
         }
         break;
     case kTurtleRollLevel: // `$` where it does not roll (isNonlinear): the return from a sub-L-system
-        t.scaleElasticity.x = 1.0 / returnedScale(i);
-        t.widthColor.x = 1.0 / returnedScale(i);
+        if (sp.dollar == kDollarReturns) {
+            float back = 1.0 / returnedScale(i);
+            t.scaleElasticity.x = back;
+            t.widthColor.x = back;
+        }
         break;
     case kTurtleElasticitySet:
         if (paramCountAt(i) > 1u) t.scaleElasticity.zw = vec2(0.0, paramAt(i, 1u, 0.0));

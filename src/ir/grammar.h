@@ -191,6 +191,7 @@ struct Grammar {
     std::vector<SuccessorModule> axiom; // parameters are expressions, evaluated after the Start block
     SourceLoc axiomLoc;
     int derivationLength = 0;
+    int lsystems = 1; // cpfg's: the main L-system and its sub-L-systems
     uint32_t seed = 0;
     bool ring = false;
 

@@ -108,6 +108,7 @@ public:
             if (!keyword("lsystem", true)) break;
             ++space_;
         }
+        g_.lsystems = static_cast<int>(space_) + 1;
         contextFilter();
         g_.productions.present = true;
         g_.symbol("]");
@@ -739,7 +740,7 @@ private:
                 }
                 if (m.args.size() > kMaxParams) throw ir::InputError(m.loc, "too many parameters");
             }
-            if (hasSubLsystems() && name == "?" && !m.args.empty()) {
+            if (name == "?" && !m.args.empty()) {
                 calls.push_back(calledLsystem(m, calls));
             } else if (hasSubLsystems() && name == "$") {
                 if (!calls.empty())

@@ -84,29 +84,55 @@ Frame carriedFrame(const Frame& from, const Frame& to) {
     return out;
 }
 
+CylinderCurve::CylinderCurve(const CylinderPoint& a, const CylinderPoint& b) {
+    const dvec3 pa(a.position), pb(b.position);
+    len_ = glm::length(pb - pa);
+    const glm::vec3 t0 = glm::vec3(dvec3(a.frame.heading) * (len_ * a.tangents.y));
+    const glm::vec3 t1 = glm::vec3(dvec3(b.frame.heading) * (len_ * b.tangents.x));
+    const glm::vec3 d = a.position - b.position;
+    c0_ = a.position;
+    c1_ = t0;
+    c2_ = -3.0f * d - 2.0f * t0 - t1;
+    c3_ = 2.0f * d + t0 + t1;
+    startRadius_ = 0.5f * a.width;
+    half_ = 0.5f * (b.width - a.width);
+    r0_ = a.radiusOut;
+    r1_ = b.radiusIn;
+    if (b.scaleRadius != 0.0f) r0_.y *= float(len_), r1_.y *= float(len_);
+    if (r0_ == glm::vec2(0.0f)) r0_ = {1.0f, half_};
+    if (r1_ == glm::vec2(0.0f)) r1_ = {1.0f, half_};
+}
+
+float CylinderCurve::parameterAt(float r) const {
+    return r * r0_.x + r * r * (3 - 2 * r0_.x - r1_.x) + r * r * r * (-2 + r0_.x + r1_.x);
+}
+
+glm::vec3 CylinderCurve::pointAt(float t) const { return ((c3_ * t + c2_) * t + c1_) * t + c0_; }
+
+glm::vec3 CylinderCurve::slopeAt(float t) const { return (3.0f * c3_ * t + 2.0f * c2_) * t + c1_; }
+
+float CylinderCurve::radiusAt(float r) const {
+    return startRadius_ + r * r0_.y + r * r * (3 * half_ - 2 * r0_.y - r1_.y) +
+           r * r * r * (-2 * half_ + r0_.y + r1_.y);
+}
+
+std::vector<glm::vec3> tubePoints(const CylinderPoint& a, const CylinderPoint& b, int pieces) {
+    const CylinderCurve curve(a, b);
+    std::vector<glm::vec3> points;
+    const float step = 1.0f / float(pieces);
+    float r = step;
+    for (int k = 1; k < pieces; ++k, r += step) points.push_back(curve.pointAt(curve.parameterAt(r)));
+    return points;
+}
+
 void cylinderMesh(const CylinderPoint& a, const CylinderPoint& b, int rings, float twist, int sides,
                   const std::vector<glm::vec3>& contourRings, float shortest,
                   const std::function<void(const MeshCorner&, const MeshCorner&, const MeshCorner&)>& triangle) {
-    const dvec3 pa(a.position), pb(b.position);
-    const double len = glm::length(pb - pa);
+    const CylinderCurve curve(a, b);
+    const double len = curve.chord();
     if (!(len > shortest)) return;
+    const dvec3 pa(a.position), pb(b.position);
     const CpfgFrame fa = cpfgFrame(a.frame), fb = cpfgFrame(b.frame);
-    // The Hermite curve, its coefficients in float as cpfg keeps them.
-    const glm::vec3 t0 = glm::vec3(fa.heading * (len * a.tangents.y)), t1 = glm::vec3(fb.heading * (len * b.tangents.x));
-    const glm::vec3 d = a.position - b.position;
-    const glm::vec3 c0 = a.position, c1 = t0, c2 = -3.0f * d - 2.0f * t0 - t1, c3 = 2.0f * d + t0 + t1;
-    // The radius as a second Hermite curve over (t, radius), whose parameter r spaces the rings.
-    const float half = 0.5f * (b.width - a.width);
-    glm::vec2 r0 = a.radiusOut, r1 = b.radiusIn;
-    if (b.scaleRadius != 0.0f) r0.y *= float(len), r1.y *= float(len);
-    if (r0 == glm::vec2(0.0f)) r0 = {1.0f, half};
-    if (r1 == glm::vec2(0.0f)) r1 = {1.0f, half};
-    auto curveParameter = [&](float r) {
-        return r * r0.x + r * r * (3 - 2 * r0.x - r1.x) + r * r * r * (-2 + r0.x + r1.x);
-    };
-    auto radiusAt = [&](float r) {
-        return 0.5f * a.width + r * r0.y + r * r * (3 * half - 2 * r0.y - r1.y) + r * r * r * (-2 * half + r0.y + r1.y);
-    };
     const size_t stride = static_cast<size_t>(sides) + 1;
     const glm::vec3* ca = &contourRings[a.contour * stride];
     const glm::vec3* cb = &contourRings[b.contour * stride];
@@ -122,14 +148,14 @@ void cylinderMesh(const CylinderPoint& a, const CylinderPoint& b, int rings, flo
     const float step = 1.0f / float(rings);
     float r = step;
     for (int k = 1; k < rings; ++k, r += step) {
-        const float t = curveParameter(r);
-        const glm::vec3 p = ((c3 * t + c2) * t + c1) * t + c0;
-        const glm::vec3 slope = (3.0f * c3 * t + 2.0f * c2) * t + c1;
+        const float t = curve.parameterAt(r);
+        const glm::vec3 p = curve.pointAt(t);
+        const glm::vec3 slope = curve.slopeAt(t);
         CpfgFrame f;
         f.heading = glm::normalize(dvec3(slope));
         f.up = rotateAbout(turnedWithHeading(fa.heading, f.heading, fa.up, 0.0), f.heading, -double(twist) * t);
         f.left = glm::cross(f.heading, f.up);
-        std::vector<MeshCorner> next = ring(dvec3(p), f, f.heading / len, radiusAt(r), t, ca, cb, sides);
+        std::vector<MeshCorner> next = ring(dvec3(p), f, f.heading / len, curve.radiusAt(r), t, ca, cb, sides);
         strip(next);
         previous = std::move(next);
     }

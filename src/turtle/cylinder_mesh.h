@@ -36,6 +36,28 @@ float cylinderTwist(const CylinderPoint& from, const CylinderPoint& to);
 // `to`'s frame with the roll of `from`'s carried to its heading: what cpfg keeps where the view does not twist.
 Frame carriedFrame(const Frame& from, const Frame& to);
 
+// The Hermite curve between two control points and the radius curve along it, whose parameter r spaces a mesh's
+// rings and a tube's pieces; cpfg's coefficients, in float as it keeps them.
+class CylinderCurve {
+public:
+    CylinderCurve(const CylinderPoint& a, const CylinderPoint& b);
+    double chord() const { return len_; }
+    float parameterAt(float r) const; // the curve's t at the radius curve's r
+    glm::vec3 pointAt(float t) const;
+    glm::vec3 slopeAt(float t) const;
+    float radiusAt(float r) const;
+
+private:
+    double len_;
+    glm::vec3 c0_, c1_, c2_, c3_;
+    glm::vec2 r0_, r1_;
+    float startRadius_, half_;
+};
+
+// The points inside a tube of `pieces` pieces from a to b, where cpfg's pixel and polygon line styles draw a
+// generalized cylinder: at r = k / pieces for k = 1 .. pieces - 1, as a mesh's rings.
+std::vector<glm::vec3> tubePoints(const CylinderPoint& a, const CylinderPoint& b, int pieces);
+
 // A mesh's corner: where it is and the normal across the cylinder's surface there (zero where the ring has no
 // width to turn about).
 struct MeshCorner {

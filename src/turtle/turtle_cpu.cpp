@@ -199,12 +199,20 @@ private:
         glm::vec3 chord = st.position - st.anchor.position;
         float length = glm::length(chord);
         if (length > shortest) {
-            uint32_t segments = tubeSegments(param(module, 0, 1.0f));
-            float r0 = 0.5f * st.anchor.width, r1 = 0.5f * st.width;
+            // cpfg's (general.c): `@Gc(n)`'s n pieces (four without n) through the points a mesh's rings would
+            // have, as wide as the last control point, the last piece narrowing to this one's where polygons taper.
+            const bool cpfg = t_.cpfgTubes;
+            const uint32_t segments = cpfg ? uint32_t(cylinderRings(hasParam(module), param(module, 0, 0.0f)))
+                                           : tubeSegments(param(module, 0, 1.0f));
+            const std::vector<glm::vec3> inner =
+                cpfg ? tubePoints(st.anchor, here, int(segments)) : std::vector<glm::vec3>{};
+            const float r0 = 0.5f * st.anchor.width, r1 = 0.5f * st.width;
+            const bool lastTapers = t_.lineStyle == ir::LineStyle::Polygon && t_.taperedLines;
             glm::vec3 from = st.anchor.position;
             for (uint32_t k = 0; k < segments; ++k) {
                 float t0 = float(k) / float(segments), t1 = float(k + 1) / float(segments);
                 glm::vec3 to = k + 1 == segments ? st.position
+                               : cpfg            ? inner[k]
                                                  : tubeCurve(st.anchor.position, st.anchor.frame.heading, st.position,
                                                              st.frame.heading, length, t1);
                 glm::vec3 d = to - from;
@@ -212,8 +220,14 @@ private:
                 glm::vec3 heading = l > 0.0f ? d / l : chord / length;
                 OrganInstance& o = emit(kOrganStem, module, st);
                 o.position = v4(from, l);
-                o.heading = v4(heading, r0 + (r1 - r0) * t0);
-                o.up = v4(perpendicularUp(heading, st.frame), r0 + (r1 - r0) * t1);
+                if (cpfg) {
+                    o.heading = v4(heading, r0);
+                    o.up = v4(perpendicularUp(heading, st.frame), k + 1 == segments && lastTapers ? r1 : r0);
+                    o.shape = lineStyleCode(t_.lineStyle);
+                } else {
+                    o.heading = v4(heading, r0 + (r1 - r0) * t0);
+                    o.up = v4(perpendicularUp(heading, st.frame), r0 + (r1 - r0) * t1);
+                }
                 int64_t index = int64_t(organs_.size()) - 1;
                 if (st.lastTube >= 0) {
                     o.previousHeading = v4(v3(organs_[size_t(st.lastTube)].heading), 0);
@@ -260,7 +274,7 @@ private:
         case kTurtleRollLevel:
             if (t_.dollarRolls) {
                 rollLevel(f);
-            } else { // cpfg's `$`: the return from a sub-L-system call, back to the caller's scale
+            } else if (t_.subLsystems) { // cpfg's `$`: the return from a sub-L-system call, to the caller's scale
                 const float back = 1.0f / (calls_.empty() ? 1.0f : calls_.back());
                 if (!calls_.empty()) calls_.pop_back();
                 st.scale *= back;
@@ -270,7 +284,7 @@ private:
         // A sub-L-system's lengths and widths are its call's scale times the caller's, until its `$`. The calls
         // nest in the string's order, which branches do not change.
         case kTurtleSubLsystemCall:
-            if (hasParam(i)) {
+            if (hasParam(i) && t_.subLsystems) {
                 const float s = param(i, 1, 1.0f);
                 calls_.push_back(s != 0.0f && std::isfinite(s) ? s : 1.0f); // compute/turtle's callScale
                 st.scale *= calls_.back();

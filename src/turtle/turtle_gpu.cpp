@@ -80,12 +80,13 @@ TurtleSpecies speciesOf(const turtle::TurtleSettings& t, bool elasticityCommands
     bool mayBend = t.elasticity != 0.0f || elasticityCommands;
     s.tropism = {t.tropism.x, t.tropism.y, t.tropism.z, mayBend ? 1.0f : 0.0f};
     s.taperedLines = t.taperedLines ? 1u : 0u;
-    s.dollarRolls = t.dollarRolls ? 1u : 0u;
+    s.dollar = t.dollarRolls ? kDollarRolls : t.subLsystems ? kDollarReturns : kDollarIgnored;
     s.tropismRule = t.tropismRule == ir::TropismRule::CpfgDirection ? kTropismCpfgDirection
                     : t.tropismRule == ir::TropismRule::CpfgTropism ? kTropismCpfgTropism
                                                                      : kTropismTorque;
     s.lineStyle = turtle::lineStyleCode(t.lineStyle);
     s.cylinders = (t.cylinderMeshes ? kCylinderMeshes : 0u) | (t.cylinderTwist ? kCylinderTwist : 0u) |
+                  (t.cpfgTubes ? kCylinderCpfgTubes : 0u) |
                   (std::min(std::uint32_t(t.cylinderSides), kMostCylinderSides) << kCylinderSidesShift) |
                   (std::uint32_t(t.contourIds.size()) << kCylinderContoursShift);
     return s;
@@ -145,7 +146,9 @@ struct GpuTurtle::Impl {
     // derivation step sizes them (made on the first such recording).
     std::optional<vk::ComputePipeline> stepSizes;
     vk::Buffer commandTable, speciesTable, palettes, surfaceScales, surfaceShapes, contourRings;
-    bool cylinderMeshes = false; // some species draws its generalized cylinders as meshes
+    // Some species draws its generalized cylinders along cpfg's curves (meshes, or cpfg's tubes), which read the
+    // settings each control point was made with.
+    bool cylinderCurves = false;
     // Each plant's placement in the field, where the caller gives them (FieldOptions::placements).
     vk::Buffer placements;
     // Takes the field's placements, kept while they are the same; refused when they change under a recording.
@@ -230,7 +233,7 @@ struct GpuTurtle::Impl {
         for (const turtle::TurtleSettings& t : species) {
             table.push_back(speciesOf(t, elastic));
             tapers = tapers || t.taperedLines;
-            cylinderMeshes = cylinderMeshes || t.cylinderMeshes;
+            cylinderCurves = cylinderCurves || t.cylinderMeshes || t.cpfgTubes;
             std::vector<float> s = t.surfaceScale;
             std::vector<std::uint32_t> k = t.surfaceShape;
             s.resize(commands.symbols, 1.0f);
@@ -605,8 +608,8 @@ void GpuTurtle::Impl::recordComposition(VkCommandBuffer cmd, const Run& run) {
     if (run.marked & (kMarkCylinderStart | kMarkCylinderPoint)) {
         recordSearch(cmd, run, kGateCylinders, kMarkCylinderStart | kMarkCylinderPoint, 0, b.cylinderAnchors);
         recordSearch(cmd, run, kGateCylinders, kMarkCylinderStart, 0, b.cylinderStarts);
-        // The settings a mesh's control points were made with, where some species draws meshes.
-        if (cylinderMeshes) {
+        // The settings the control points were made with, where some species draws along cpfg's curves.
+        if (cylinderCurves) {
             recordSearch(cmd, run, kGateCylinders, kMarkContour, 0, b.contourSetters);
             recordSearch(cmd, run, kGateCylinders, kMarkCylinderTangents, 0, b.tangentSetters);
             recordSearch(cmd, run, kGateCylinders, kMarkRadiusScale, 0, b.radiusScaleSetters);
@@ -743,9 +746,9 @@ void GpuTurtle::Impl::reserve(std::uint64_t n, std::uint64_t plants) {
                             &b.searchTargets,
                             &b.searchChunk, &b.searchJumps[0], &b.searchJumps[1], &b.order})
         *one = deviceBuffer(capacity, 4);
-    // Only read where a species draws its cylinders as meshes.
+    // Only read where a species draws its cylinders along cpfg's curves.
     for (vk::Buffer* one : {&b.contourSetters, &b.tangentSetters, &b.radiusScaleSetters, &b.radiusTangentSetters})
-        *one = deviceBuffer(cylinderMeshes ? capacity : 1, 4);
+        *one = deviceBuffer(cylinderCurves ? capacity : 1, 4);
     b.steps[0] = deviceBuffer(capacity, sizeof(TurtleStep));
     b.steps[1] = deviceBuffer(capacity, sizeof(TurtleStep));
     b.states = deviceBuffer(capacity, sizeof(TurtleState));

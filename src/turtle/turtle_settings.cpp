@@ -97,7 +97,9 @@ TurtleSettings turtleSettings(const ir::Grammar& grammar, const ir::Alphabet& al
     t.tropismRule = v.tropismRule;
     t.lineStyle = v.lineStyle;
     t.dollarRolls = v.dollarRolls;
+    t.subLsystems = grammar.lsystems > 1;
     t.cylinderMeshes = v.cpfgCylinders && v.lineStyle == ir::LineStyle::Cylinder;
+    t.cpfgTubes = v.cpfgCylinders && v.lineStyle != ir::LineStyle::Cylinder;
     t.cylinderTwist = v.cylinderTwist;
     t.cylinderSides = v.cylinderSides;
     t.contourIds = {0};

@@ -30,10 +30,13 @@ struct TurtleSettings {
     ir::LineStyle lineStyle = ir::LineStyle::Cylinder;
     bool taperedLines = false; // ir::ViewSettings::taperedLines
     bool dollarRolls = true;   // ir::ViewSettings::dollarRolls
+    bool subLsystems = false;  // the grammar has sub-L-systems, whose calls `$` returns from
     // ir::ViewSettings' generalized cylinders: meshes (cpfg's `line style: cylinder`) or tubes of segments. Contour
     // index k (0 the circle, then the view's in its order) has the id contourIds[k] and its ring at
     // contourRings[k * (cylinderSides + 1)], as contour_ring.h samples it.
     bool cylinderMeshes = false;
+    // Tubes as cpfg draws them in its pixel and polygon line styles (else the quick grammars' and the scenes').
+    bool cpfgTubes = false;
     bool cylinderTwist = false;
     int cylinderSides = 8;
     std::vector<int> contourIds;

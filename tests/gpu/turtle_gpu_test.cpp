@@ -256,6 +256,24 @@ TEST_F(TurtleGpuTest, CpfgCylinderMeshesDrawAsOnTheCpu) {
     fs::remove_all(folder);
 }
 
+// cpfg's tubes in its polygon and pixel line styles: pieces through the curve's points (tangents from `@Gt`,
+// spaced by the radius curve `@Gr` gives), as wide as their start, the last tapering where polygons do.
+TEST_F(TurtleGpuTest, CpfgTubesDrawAsOnTheCpu) {
+    const fs::path folder = fs::temp_directory_path() / ("simeco-gpu-tubes-" + std::to_string(::getpid()));
+    fs::create_directories(folder);
+    std::ofstream(folder / "m.l")
+        << "Lsystem: 1\nAxiom: !(0.2)@Gt(1)@Gs f(1)+(30)/(40)!(0.15)@Gc(3)@Gt(0.8,1.5)f(1)&(25)@Gc"
+           "[+(60)@Gr(0,0,-45,0.1)f(1)!(0.05)@Gc(5)]@Gr(2)@Gr(30,0.2,10,0.1)-(40)f(1)@Ge(4.5)\nendlsystem\n";
+    for (const char* style : {"polygon", "pixel"}) {
+        std::ofstream(folder / "m.v") << "line style: " << style << "\n";
+        Tally tally;
+        compareTurtles(context(), folder / "m.l", std::string("tubes, ") + style, 2, tally);
+        EXPECT_EQ(tally.compared, 1);
+        EXPECT_EQ(tally.organs, 2 * (3 + 4 + 5 + 4)); // per plant: @Gc(3), @Gc, @Gc(5), @Ge(4.5)
+    }
+    fs::remove_all(folder);
+}
+
 // cpfg's sub-L-system calls scale lengths and widths until their `$`, nested, across branches and with `@D`
 // scaling between them; the device finds each `$`'s call as the CPU's stack does.
 TEST_F(TurtleGpuTest, SubLsystemCallsScaleAsOnTheCpu) {

@@ -92,6 +92,7 @@ TEST(SubLsystems, WhatSimecoCannotReadIsAnErrorAtItsLine) {
               std::string::npos);
     EXPECT_NE(errorOf(file("Axiom: A", "Axiom: B\nB --> ?(1,1)B$")).find("cannot be called"), std::string::npos);
     EXPECT_NE(errorOf(file("Axiom: A", "Axiom: B\nB --> ?(2,1)B$")).find("calls itself"), std::string::npos);
+    EXPECT_NE(errorOf(simeco::testing::lsystem("A", "A --> ?(1,1)B$")).find("cannot be called"), std::string::npos);
     EXPECT_NE(errorOf(file("Axiom: A", "Start: {x = 1;}\nAxiom: B")).find("in the main (first) L-system only"),
               std::string::npos);
     EXPECT_NE(errorOf(file("Axiom: A(1)\nA(n) --> ?(n,1)B$", "Axiom: B")).find("label must be a constant"),

@@ -277,6 +277,34 @@ TEST(TurtleCpu, GeneralizedCylindersFollowTheHeadingsInSegments) {
     }
 }
 
+// cpfg's tubes (its pixel and polygon line styles, general.c): `@Gt` sets the curve's tangents, `@Gc` without a
+// number draws four pieces and `@Gc(2.7)` two, every piece is as wide as the control point it starts from, and the
+// last narrows to the next point's width where polygons taper; each piece is drawn in the line style.
+TEST(TurtleCpu, CpfgTubesTakeTheirPiecesTangentsAndWidthsAsCpfg) {
+    for (ir::LineStyle style : {ir::LineStyle::Polygon, ir::LineStyle::Pixel}) {
+        ir::Grammar g = grammarFromText(lsystem("@Gt(1)!(0.2)@Gsf(1)+(90)f(1)!(0.1)@Gc(2.7)f(1)@Gc", "", 0));
+        g.view.lineStyle = style;
+        const turtle::Interpretation r = interpretGrammar(g);
+        ASSERT_EQ(r.count[shared::kOrganStem], 6u);
+        const shared::OrganInstance* tube = &r.organs[r.first[shared::kOrganStem]];
+        // The curve at r = t = 1/2 from the origin heading up to (-1, 1, 0) heading -x, tangents once the chord.
+        const float chord = std::sqrt(2.0f);
+        expectNear(xyz(tube[1].position), glm::vec3(-0.5f, 0.5f, 0.0f) + 0.125f * chord * glm::vec3(1.0f, 1.0f, 0.0f));
+        const bool tapers = style == ir::LineStyle::Polygon;
+        EXPECT_FLOAT_EQ(tube[0].heading.w, 0.1f);
+        EXPECT_FLOAT_EQ(tube[0].up.w, 0.1f);
+        EXPECT_FLOAT_EQ(tube[1].heading.w, 0.1f);
+        EXPECT_FLOAT_EQ(tube[1].up.w, tapers ? 0.05f : 0.1f);
+        for (int k = 2; k < 6; ++k) { // the next stretch, four pieces, all of the point's width
+            EXPECT_FLOAT_EQ(tube[k].heading.w, 0.05f);
+            EXPECT_FLOAT_EQ(tube[k].up.w, 0.05f);
+        }
+        for (int k = 0; k < 6; ++k) EXPECT_EQ(tube[k].shape, turtle::lineStyleCode(style));
+        const glm::vec3 end = xyz(tube[5].position) + xyz(tube[5].heading) * tube[5].position.w;
+        expectNear(end, {-2, 1, 0});
+    }
+}
+
 TEST(TurtleCpu, CpfgsTropismLinesBendBeforeEveryMoveByAtMostARadian) {
     // cpfg's `tropism:` form, toward -x with elasticity 0.5: before the move f the heading, H x T of length one,
     // turns by 0.5 rad toward -x; before F by 0.5 x |H x T| = 0.5 cos(0.5) more.

@@ -1,5 +1,7 @@
 angle increment: 45
 initial line width: 1
+line style: cylinder
+contour sides: 12
 render style: outline
 ground: off
 background: colormap

@@ -434,21 +434,27 @@ TEST_F(DeriveGpuTest, PredecessorsOfSeveralModulesMatchTheCpu) {
 }
 
 // cpfg's sub-L-systems: each L-system rewrites the modules of its calls with symbols of its own, which context
-// (and a predecessor's further modules) match by name, in parallel passes and sequentially as on the CPU.
+// (and a predecessor's further modules) match by name, in parallel passes and sequentially as on the CPU; each
+// L-system's homomorphism draws its own modules.
 TEST_F(DeriveGpuTest, SubLsystemsMatchTheCpu) {
     ir::Grammar g = simeco::testing::grammarFromText(
         "Lsystem: 1\nderivation length: 5\nAxiom: A(0)?(2,0.5)B(0)$\nignore: ?\n"
-        "A(n) > B(m) --> A(n+1)?(2,0.5)B(m+n)$\nB(n) --> X\nC --> Y\nendlsystem\n"
+        "A(n) > B(m) --> A(n+1)?(2,0.5)B(m+n)$\nB(n) --> X\nC --> Y\nhomomorphism:\nD(m) --> Z\nendlsystem\n"
         "Lsystem: 2\nAxiom: B(0)\nignore: ?\nA(n) < B(m) --> B(m+n)C\nB(m)C --> D(m)\n"
-        "endlsystem\n");
-    stream::DeriveResult want = cpu::deriveCpu(g, {});
-    const std::string text = stream::formatModules(want.string, g.alphabet, 0, want.string.size());
-    for (const char* produced : {"D(", "C$"}) EXPECT_NE(text.find(produced), std::string::npos) << text;
-    EXPECT_EQ(text.find('X'), std::string::npos) << text; // main's B and C are never in the string
-    EXPECT_EQ(text.find('Y'), std::string::npos) << text;
-    for (gpu::GpuStrategy strategy : {gpu::GpuStrategy::Parallel, gpu::GpuStrategy::Sequential}) {
-        gpu::GpuDeriver deriver(context(), g, strategy);
-        EXPECT_EQ(firstDifference(want, deriver.derive({}), g.alphabet), "");
+        "homomorphism:\nD(m) --> F(m)+F\nendlsystem\n");
+    for (bool homomorphism : {false, true}) {
+        stream::DeriveOptions options;
+        options.homomorphism = homomorphism;
+        stream::DeriveResult want = cpu::deriveCpu(g, options);
+        const std::string text = stream::formatModules(want.string, g.alphabet, 0, want.string.size());
+        for (const char* produced : {homomorphism ? "F(" : "D(", "C$"})
+            EXPECT_NE(text.find(produced), std::string::npos) << text;
+        // Main's B, C and D are never in the string.
+        for (char never : {'X', 'Y', 'Z'}) EXPECT_EQ(text.find(never), std::string::npos) << text;
+        for (gpu::GpuStrategy strategy : {gpu::GpuStrategy::Parallel, gpu::GpuStrategy::Sequential}) {
+            gpu::GpuDeriver deriver(context(), g, strategy);
+            EXPECT_EQ(firstDifference(want, deriver.derive(options), g.alphabet), "");
+        }
     }
 }
 

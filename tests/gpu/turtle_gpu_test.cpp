@@ -214,12 +214,24 @@ TEST_F(TurtleGpuTest, CorpusModelsMatchTheCpuTurtle) {
     EXPECT_GE(tally.nonlinear, 5) << "the corpus should exercise tropism and absolute commands";
 }
 
+// A folder for a test's model files, removed with it.
+struct ModelFolder {
+    fs::path path;
+    explicit ModelFolder(const std::string& name)
+        : path(fs::temp_directory_path() / ("simeco-gpu-" + name + "-" + std::to_string(::getpid()))) {
+        fs::create_directories(path);
+    }
+    ~ModelFolder() { fs::remove_all(path); }
+    ModelFolder(const ModelFolder&) = delete;
+    ModelFolder& operator=(const ModelFolder&) = delete;
+};
+
 // A cpfg view's surfaces (drawn scaled one way or three, moving the turtle to their end point, one the view does
 // not define drawing nothing), initial scale, `@D` (scaling the widths set after it) and `tropism:` line (bending
 // before every move), in a field of plants.
 TEST_F(TurtleGpuTest, ACpfgViewsSurfacesScaleAndTropismDrawAsOnTheCpu) {
-    const fs::path folder = fs::temp_directory_path() / ("simeco-gpu-surface-" + std::to_string(::getpid()));
-    fs::create_directories(folder);
+    const ModelFolder scratch("surface");
+    const fs::path& folder = scratch.path;
     std::ofstream(folder / "sq.s") << testing::squareSurface();
     std::ofstream(folder / "m.v") << "surface: s sq.s 2 3 2\nangle increment: 30\ninitial scale: 1.5\n"
                                      "tropism: T: 1,0,0 E: 0.2\n";
@@ -227,7 +239,6 @@ TEST_F(TurtleGpuTest, ACpfgViewsSurfacesScaleAndTropismDrawAsOnTheCpu) {
                                      "endlsystem\n";
     Tally tally;
     compareTurtles(context(), folder / "m.l", "surfaces", 3, tally);
-    fs::remove_all(folder);
     EXPECT_EQ(tally.compared, 1);
     EXPECT_EQ(tally.organs, 3 * (6 + 3 + 1)); // per plant six segments, three surfaces and a sphere
 }
@@ -236,8 +247,8 @@ TEST_F(TurtleGpuTest, ACpfgViewsSurfacesScaleAndTropismDrawAsOnTheCpu) {
 // `contour:` line gives), `@Gt` tangents, both kinds of `@Gr`, a branch that continues from the cylinder's last
 // point, turns and rolls between points; with the frame carried along the cylinder and with the view's twist.
 TEST_F(TurtleGpuTest, CpfgCylinderMeshesDrawAsOnTheCpu) {
-    const fs::path folder = fs::temp_directory_path() / ("simeco-gpu-cylinder-" + std::to_string(::getpid()));
-    fs::create_directories(folder);
+    const ModelFolder scratch("cylinder");
+    const fs::path& folder = scratch.path;
     std::ofstream(folder / "c.con") << "cver 1 3\nname: c\npoints: 5 5\ntype: cr\nsamples: 5\n"
                                        "1 0 0 1\n0.2 1 0 1\n-1 0.5 0 1\n-0.5 -1 0 1\n0.6 -0.8 0 1\n";
     std::ofstream(folder / "m.l")
@@ -253,14 +264,13 @@ TEST_F(TurtleGpuTest, CpfgCylinderMeshesDrawAsOnTheCpu) {
         // Per plant 18 strips of 12 triangles, and five segments.
         EXPECT_EQ(tally.organs, 2 * (18 * 12 + 5));
     }
-    fs::remove_all(folder);
 }
 
 // cpfg's tubes in its polygon and pixel line styles: pieces through the curve's points (tangents from `@Gt`,
 // spaced by the radius curve `@Gr` gives), as wide as their start, the last tapering where polygons do.
 TEST_F(TurtleGpuTest, CpfgTubesDrawAsOnTheCpu) {
-    const fs::path folder = fs::temp_directory_path() / ("simeco-gpu-tubes-" + std::to_string(::getpid()));
-    fs::create_directories(folder);
+    const ModelFolder scratch("tubes");
+    const fs::path& folder = scratch.path;
     std::ofstream(folder / "m.l")
         << "Lsystem: 1\nAxiom: !(0.2)@Gt(1)@Gs f(1)+(30)/(40)!(0.15)@Gc(3)@Gt(0.8,1.5)f(1)&(25)@Gc"
            "[+(60)@Gr(0,0,-45,0.1)f(1)!(0.05)@Gc(5)]@Gr(2)@Gr(30,0.2,10,0.1)-(40)f(1)@Ge(4.5)\nendlsystem\n";
@@ -271,14 +281,13 @@ TEST_F(TurtleGpuTest, CpfgTubesDrawAsOnTheCpu) {
         EXPECT_EQ(tally.compared, 1);
         EXPECT_EQ(tally.organs, 2 * (3 + 4 + 5 + 4)); // per plant: @Gc(3), @Gc, @Gc(5), @Ge(4.5)
     }
-    fs::remove_all(folder);
 }
 
 // cpfg's sub-L-system calls scale lengths and widths until their `$`, nested, across branches and with `@D`
 // scaling between them; the device finds each `$`'s call as the CPU's stack does.
 TEST_F(TurtleGpuTest, SubLsystemCallsScaleAsOnTheCpu) {
-    const fs::path folder = fs::temp_directory_path() / ("simeco-gpu-sub-lsystems-" + std::to_string(::getpid()));
-    fs::create_directories(folder);
+    const ModelFolder scratch("sub-lsystems");
+    const fs::path& folder = scratch.path;
     std::ofstream(folder / "m.l")
         << "Lsystem: 1\nderivation length: 4\nAxiom: !(0.4)A\nA --> F[+(40)?(2,0.6)B$]@Di(1.1)/(90)A\n"
            "endlsystem\nLsystem: 2\nAxiom: B\nB --> F?(3,0.5)[-(30)!(0.3)C]$#B\nendlsystem\n"
@@ -290,7 +299,6 @@ TEST_F(TurtleGpuTest, SubLsystemCallsScaleAsOnTheCpu) {
     // Per plant: the main axis's four segments; the branches of steps 1 to 3 add three, two and one of L-system 2
     // and three, one and none of L-system 3.
     EXPECT_EQ(tally.organs, 3 * 14);
-    fs::remove_all(folder);
 }
 
 // Many plants in one stream: each plant keeps its own root and the field places them as the CPU does.

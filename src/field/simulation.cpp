@@ -258,19 +258,31 @@ TickReport Simulation::tick() {
     report.tick = m.ticks;
     m.drawn = false; // what was drawn before describes the field before the tick
     m.time = double(m.ticks + 1) * m.options.dt;
-    std::vector<uint8_t> due(m.derive.plants, 0);
-    for (uint32_t p = 0; p < m.derive.plants; ++p)
-        if (m.time >= m.nextStep[p]) {
-            due[p] = 1;
-            m.nextStep[p] += m.deriveTimes[p];
+    // Every step that falls due within the tick: a tick longer than a plant's DeriveTime (a time-lapse of a few
+    // frames) derives as many, so that the plant is where its time has brought it. Until no plant derives more.
+    for (;;) {
+        std::vector<uint8_t> due(m.derive.plants, 0);
+        bool any = false;
+        for (uint32_t p = 0; p < m.derive.plants; ++p)
+            if (m.time >= m.nextStep[p]) {
+                due[p] = 1;
+                any = true;
+                m.nextStep[p] += m.deriveTimes[p];
+            }
+        if (!any) break;
+        uint32_t derived = 0;
+        const Clock::time_point start = Clock::now();
+        for (Batch& b : m.batches) {
+            const std::vector<uint8_t> batchDue = slice(due, b.first, b.count);
+            derived += b.deriver ? b.deriver->advance(batchDue) : b.reference->advance(batchDue);
         }
+        m.seconds.derive += secondsSince(start);
+        report.derived = std::max(report.derived, derived);
+        if (derived == 0) break; // every due plant has derived all its steps
+    }
     for (Batch& b : m.batches) {
-        const std::vector<uint8_t> batchDue = slice(due, b.first, b.count);
         const grow::TickSettings ts = m.settings(b, m.ticks);
         Clock::time_point start = Clock::now();
-        report.derived += b.deriver ? b.deriver->advance(batchDue) : b.reference->advance(batchDue);
-        m.seconds.derive += secondsSince(start);
-        start = Clock::now();
         if (b.deriver) {
             const stream::DeviceModules derived = b.deriver->current();
             b.growth->tick(derived, ts);

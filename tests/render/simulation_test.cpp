@@ -68,6 +68,29 @@ TEST_F(SimulationTest, AFieldInBatchesGrowsOnTheDeviceAsOnTheCpu) {
     EXPECT_EQ(gpu.plantModules(), cpu.plantModules());
 }
 
+// A tick longer than the plants' DeriveTime (a time-lapse of few frames) derives every step due within it: two
+// ticks of four DeriveTimes reach the string eight short ticks do, and one very long tick derives the whole
+// grammar and stops there.
+TEST_F(SimulationTest, ALongTickDerivesEveryStepDueWithinIt) {
+    auto sedge = [](float dt) {
+        field::SimulationOptions o;
+        o.file = std::string(SIMECO_SOURCE_DIR) + "/grammars/cpfg/sedge.l";
+        o.plants = 2;
+        o.dt = dt;
+        return o;
+    };
+    field::Simulation shortTicks(sedge(3.0f), &context()), longTicks(sedge(12.0f), &context());
+    for (int tick = 0; tick < 8; ++tick) shortTicks.tick();
+    for (int tick = 0; tick < 2; ++tick) EXPECT_EQ(longTicks.tick().derived, 2u);
+    EXPECT_EQ(longTicks.plantModules(), shortTicks.plantModules());
+
+    field::Simulation whole(sedge(1000.0f), &context()), stepByStep(sedge(3.0f), &context());
+    whole.tick();
+    for (int tick = 0; tick < 20; ++tick) stepByStep.tick(); // past the grammar's 16 steps
+    EXPECT_EQ(whole.plantModules(), stepByStep.plantModules());
+    EXPECT_GT(whole.plantModules()[0], 400u);
+}
+
 TEST_F(SimulationTest, AFieldInPartsDrawsAsInOnePart) {
     field::Simulation whole(garden(field::Backend::Gpu), &context());
     for (int tick = 0; tick < 30; ++tick) whole.tick();

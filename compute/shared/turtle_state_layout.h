@@ -59,6 +59,7 @@ struct TurtleSpecies {
     float elasticity;
     float elasticityIncrement;
     vec4 tropism; // xyz: unit direction; w: 1 when segments may bend (elasticity can be non-zero)
+    vec4 torque;  // xyz: cpfg's torque (TurtleSettings::torque); w: 1 when it is not zero
     uint taperedLines; // 1: a segment narrows to the width set before the command that ends it (cpfg's)
     uint dollar;       // kDollar*: what `$` does
     uint tropismRule;  // kTropism*
@@ -183,7 +184,7 @@ struct OrganMergePush {
 static_assert(sizeof(OrganMergePush) == 56);
 static_assert(sizeof(TurtleState) == 64);
 static_assert(sizeof(TurtleStep) == 112);
-static_assert(sizeof(TurtleSpecies) == 80);
+static_assert(sizeof(TurtleSpecies) == 96);
 static_assert(sizeof(TurtlePush) == 64);
 #endif
 SIMECO_SHARED_END

@@ -179,6 +179,7 @@ void main() {
         Frame f = frameOf(before);
         // cpfg's `tropism:` lines bend the heading before the segment is drawn (turtle_modules.glsl).
         if (sp.tropismRule == kTropismCpfgTropism) bendAsCpfgTropism(f, sp.tropism.xyz, before.position.w);
+        rollByTorque(f, sp.torque.xyz);
         o.position = vec4(before.position.xyz, paramAt(i, 0u, sp.step) * scale);
         o.heading = vec4(f.heading, radius);
         o.up = vec4(f.up, radius);

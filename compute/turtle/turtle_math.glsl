@@ -49,11 +49,26 @@ void bendAsCpfgDirection(inout Frame f, vec3 t, float elasticity) {
     turnToward(f.heading, f.left, asin(clamp(elasticity * dot(t, f.left), -1.0, 1.0)));
 }
 
+// turtle/frame.h's cpfgTurnAngle: x up to one radian, beyond it 2 atan(|x| tan 0.5).
+float cpfgTurnAngle(float x) { return abs(x) <= 1.0 ? x : sign(x) * (2.0 * atan(abs(x) * tan(0.5))); }
+
 void bendAsCpfgTropism(inout Frame f, vec3 t, float elasticity) {
     vec3 axis = cross(f.heading, t);
     float n = length(axis);
     if (elasticity == 0.0 || n < 1e-6) return;
-    rotateFrame(f, axis / n, sign(elasticity) * min(abs(elasticity) * n, 1.0));
+    rotateFrame(f, axis / n, cpfgTurnAngle(elasticity * n));
+}
+
+// turtle/frame.h's rollByTorque: about the heading, up turning away from w's part across it by w . L radians.
+void rollByTorque(inout Frame f, vec3 w) {
+    float len = length(w);
+    if (!(len > 0.0)) return;
+    vec3 across = cross(f.heading, w / len);
+    float a = dot(w, f.left);
+    if (!(dot(across, across) > 1e-8) || !(abs(a) >= 1e-7)) return;
+    float angle = -cpfgTurnAngle(a);
+    f.up = rotateAbout(f.up, f.heading, angle);
+    f.left = rotateAbout(f.left, f.heading, angle);
 }
 
 void bend(inout Frame f, vec3 t, float elasticity) {

@@ -92,10 +92,10 @@ bool isNonlinear(uint command, TurtleSpecies sp) {
     case kTurtleRotateWorldY:
     case kTurtleRotateWorldZ:
     case kTurtlePhototropism: return true;
-    case kTurtleDraw:
-    case kTurtleDrawNoVertex: return sp.tropism.w != 0.0; // tropism bends the heading before or after each segment
+    case kTurtleDraw: // tropism bends the heading before or after each segment, torque rolls before it
+    case kTurtleDrawNoVertex: return sp.tropism.w != 0.0 || sp.torque.w != 0.0;
     case kTurtleMove:
-    case kTurtleMoveNoVertex: return sp.tropism.w != 0.0 && sp.tropismRule != kTropismTorque;
+    case kTurtleMoveNoVertex: return (sp.tropism.w != 0.0 && sp.tropismRule != kTropismTorque) || sp.torque.w != 0.0;
     default: return false;
     }
 }
@@ -217,10 +217,10 @@ TurtleState applyNonlinear(TurtleState s, uint command, uint i, TurtleSpecies sp
     case kTurtleDrawNoVertex:
     case kTurtleMove:
     case kTurtleMoveNoVertex:
-        if (sp.tropismRule == kTropismCpfgTropism) { // bends before the move
-            bendAsCpfgTropism(f, sp.tropism.xyz, s.position.w);
-            setFrame(s, f);
-        }
+        // cpfg's tropism lines bend before the move, and its torque rolls after them.
+        if (sp.tropismRule == kTropismCpfgTropism) bendAsCpfgTropism(f, sp.tropism.xyz, s.position.w);
+        rollByTorque(f, sp.torque.xyz);
+        setFrame(s, f);
         s = applyStep(s, commandStep(command, i, sp));
         f = frameOf(s);
         if (sp.tropismRule == kTropismCpfgDirection) bendAsCpfgDirection(f, sp.tropism.xyz, s.position.w);

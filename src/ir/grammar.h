@@ -126,7 +126,8 @@ enum class TropismRule {
     // cpfg's `tropism direction:` form: after every move (F G f g) the heading turns toward T's component along
     // up, then toward its component along left, each by the arcsine of the elasticity times that component.
     CpfgDirection,
-    // cpfg's `tropism:` lines: before every move (F G f g), about H x T by elasticity x |H x T|, at most a radian.
+    // cpfg's `tropism:` lines: before every move (F G f g), about H x T by elasticity x |H x T| (beyond a radian as
+    // cpfg's quaternion turns, turtle/frame.h cpfgTurnAngle).
     CpfgTropism,
 };
 
@@ -150,6 +151,9 @@ struct ViewSettings {
     float initialScale = 1.0f; // cpfg's `initial scale:`, the turtle's scale before any `@D` (lengths and `!` widths)
     float elasticityIncrement = 0.0f;
     TropismRule tropismRule = TropismRule::Torque;
+    // cpfg's `torque:` lines: the sum of their directions times their elasticities (and intensities), which rolls
+    // the turtle before every move (F G f g).
+    std::array<float, 3> torque = {0.0f, 0.0f, 0.0f};
     LineStyle lineStyle = LineStyle::Cylinder;
     // cpfg's `tapered lines: on` (its default, and so in .l files unless the view says off): a segment narrows
     // from its width to the width set before the command that ends it (a branch, the next segment or move).

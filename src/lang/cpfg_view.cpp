@@ -168,20 +168,22 @@ void readVector(std::string text, const std::string& file, size_t line, const ch
     v = read;
 }
 
+// In a `tropism:` or `torque:` line, the text after `key` (such as `T:`) up to the next `X:` key.
+std::string movementField(const std::string& text, const char* key) {
+    size_t at = text.find(key);
+    if (at == std::string::npos) return {};
+    size_t end = at + 2;
+    while (end < text.size() &&
+           !(std::isupper(static_cast<unsigned char>(text[end])) && end + 1 < text.size() && text[end + 1] == ':'))
+        ++end;
+    return text.substr(at + 2, end - at - 2);
+}
+
 // `tropism: T: x,y,z [I: intensity] [A: degrees] [E: elasticity] [S: step]`. cpfg turns the heading toward the sum
 // of its tropism lines' directions, each times its intensity, elasticity and the cosine of its angle A (a line's
 // sine part, diatropism, is not drawn); `view` holds the sum so far as a direction and its length as elasticity.
 void readTropism(const std::string& text, const std::string& file, size_t line, ir::ViewSettings& view) {
-    // The text after `key` up to the next `X:` key.
-    auto after = [&](const char* key) -> std::string {
-        size_t at = text.find(key);
-        if (at == std::string::npos) return {};
-        size_t end = at + 2;
-        while (end < text.size() && !(std::isupper(static_cast<unsigned char>(text[end])) && end + 1 < text.size() &&
-                                      text[end + 1] == ':'))
-            ++end;
-        return text.substr(at + 2, end - at - 2);
-    };
+    auto after = [&](const char* key) { return movementField(text, key); };
     std::array<float, 3> direction = view.tropismDirection;
     float intensity = 1.0f, degrees = 0.0f, elasticity = 0.0f;
     if (std::string t = after("T:"); !t.empty()) readVector(t, file, line, "tropism direction", direction);
@@ -201,6 +203,22 @@ void readTropism(const std::string& text, const std::string& file, size_t line, 
     for (int k = 0; k < 3; ++k) view.tropismDirection[k] = total > 0.0f ? sum[k] / total : direction[k] / length;
     view.initialElasticity = total;
     view.tropismRule = ir::TropismRule::CpfgTropism;
+}
+
+// `torque: T: x,y,z [I: intensity] [E: elasticity] [S: step]`: cpfg rolls the turtle before every move by the sum of
+// its torque lines' directions, each times its elasticity; an intensity I makes the direction's length I, at most
+// the length T is written with (movements.c).
+void readTorque(const std::string& text, const std::string& file, size_t line, ir::ViewSettings& view) {
+    std::array<float, 3> direction{};
+    float intensity = 0.0f, elasticity = 0.0f;
+    if (std::string t = movementField(text, "T:"); !t.empty()) readVector(t, file, line, "torque direction", direction);
+    const std::string i = movementField(text, "I:");
+    if (!i.empty()) viewNumber(i, file, line, "torque intensity", intensity);
+    if (std::string e = movementField(text, "E:"); !e.empty()) viewNumber(e, file, line, "torque elasticity", elasticity);
+    const float length = std::hypot(direction[0], direction[1], direction[2]);
+    if (!(length > 0.0f)) throw ir::InputError({file, static_cast<int>(line + 1), 1}, "a torque's T is zero");
+    const float scale = i.empty() ? 1.0f / length : std::clamp(intensity / length, -1.0f, 1.0f);
+    for (int k = 0; k < 3; ++k) view.torque[k] += elasticity * scale * direction[k];
 }
 
 } // namespace
@@ -370,6 +388,8 @@ CpfgView readCpfgView(const std::string& path) {
             viewNumber(value, path, i, "elasticity increment", out.view.elasticityIncrement);
         } else if (field(line, "tropism", value)) {
             readTropism(value, path, i, out.view);
+        } else if (field(line, "torque", value)) {
+            readTorque(value, path, i, out.view);
         } else if (field(line, "viewpoint", value)) {
             std::array<float, 3> point{0, 0, 1};
             readVector(value, path, i, "viewpoint", point);

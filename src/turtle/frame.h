@@ -70,12 +70,33 @@ inline void bendAsCpfgDirection(Frame& f, glm::vec3 t, float elasticity) {
     turnToward(f.heading, f.left, std::asin(std::clamp(elasticity * glm::dot(t, f.left), -1.0f, 1.0f)));
 }
 
-// cpfg's `tropism:` lines, before every move: as `bend`, by at most a radian (a negative elasticity turns away).
+// cpfg's `tropism:` lines, before every move: as `bend`, beyond a radian by cpfgTurnAngle (a negative elasticity
+// turns away).
+// The angle cpfg turns by for a bend or roll of x radians: x up to one radian; beyond, its quaternion (made for at
+// most one) turns by 2 atan(|x| tan 0.5).
+inline float cpfgTurnAngle(float x) {
+    return std::abs(x) <= 1.0f ? x : std::copysign(2.0f * std::atan(std::abs(x) * std::tan(0.5f)), x);
+}
+
 inline void bendAsCpfgTropism(Frame& f, glm::vec3 t, float elasticity) {
     glm::vec3 axis = glm::cross(f.heading, t);
     float n = glm::length(axis);
     if (elasticity == 0.0f || n < 1e-6f) return;
-    rotateFrame(f, axis / n, std::copysign(std::min(std::abs(elasticity) * n, 1.0f), elasticity));
+    rotateFrame(f, axis / n, cpfgTurnAngle(elasticity * n));
+}
+
+// cpfg's torque (movements.c; w the sum of its `torque:` lines' directions times their elasticities): before each
+// move, after the tropism's bend, the turtle rolls about its heading, its up turning away from w's part across the
+// heading by w . L radians.
+inline void rollByTorque(Frame& f, glm::vec3 w) {
+    const float length = glm::length(w);
+    if (!(length > 0.0f)) return;
+    const glm::vec3 across = glm::cross(f.heading, w / length);
+    const float a = glm::dot(w, f.left);
+    if (!(glm::dot(across, across) > 1e-8f) || !(std::abs(a) >= 1e-7f)) return;
+    const float angle = -cpfgTurnAngle(a);
+    f.up = rotateAbout(f.up, f.heading, angle);
+    f.left = rotateAbout(f.left, f.heading, angle);
 }
 
 // Tropism after a drawn segment: the heading bends toward t by elasticity * |H x t| about H x t.

@@ -243,6 +243,7 @@ private:
     void move(TurtleState& st, size_t i, uint32_t command) {
         const bool draw = turtleDraws(command);
         if (t_.tropismRule == ir::TropismRule::CpfgTropism) bendAsCpfgTropism(st.frame, t_.tropism, st.elasticity);
+        rollByTorque(st.frame, t_.torque);
         float length = param(i, 0, t_.step) * st.scale;
         if (draw) drawStem(st, i, length);
         else st.lastStem = -1;

@@ -79,6 +79,7 @@ TurtleSpecies speciesOf(const turtle::TurtleSettings& t, bool elasticityCommands
     s.initialScale = t.initialScale;
     bool mayBend = t.elasticity != 0.0f || elasticityCommands;
     s.tropism = {t.tropism.x, t.tropism.y, t.tropism.z, mayBend ? 1.0f : 0.0f};
+    s.torque = {t.torque.x, t.torque.y, t.torque.z, t.torque != glm::vec3(0.0f) ? 1.0f : 0.0f};
     s.taperedLines = t.taperedLines ? 1u : 0u;
     s.dollar = t.dollarRolls ? kDollarRolls : t.subLsystems ? kDollarReturns : kDollarIgnored;
     s.tropismRule = t.tropismRule == ir::TropismRule::CpfgDirection ? kTropismCpfgDirection

@@ -97,6 +97,7 @@ TurtleSettings turtleSettings(const ir::Grammar& grammar, const ir::Alphabet& al
     t.tropismRule = v.tropismRule;
     t.lineStyle = v.lineStyle;
     t.dollarRolls = v.dollarRolls;
+    t.torque = glm::vec3(v.torque[0], v.torque[1], v.torque[2]);
     t.subLsystems = grammar.lsystems > 1;
     t.cylinderMeshes = v.cpfgCylinders && v.lineStyle == ir::LineStyle::Cylinder;
     t.cpfgTubes = v.cpfgCylinders && v.lineStyle != ir::LineStyle::Cylinder;

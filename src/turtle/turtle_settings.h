@@ -30,6 +30,7 @@ struct TurtleSettings {
     ir::LineStyle lineStyle = ir::LineStyle::Cylinder;
     bool taperedLines = false; // ir::ViewSettings::taperedLines
     bool dollarRolls = true;   // ir::ViewSettings::dollarRolls
+    glm::vec3 torque{0.0f};    // ir::ViewSettings::torque
     bool subLsystems = false;  // the grammar has sub-L-systems, whose calls `$` returns from
     // ir::ViewSettings' generalized cylinders: meshes (cpfg's `line style: cylinder`) or tubes of segments. Contour
     // index k (0 the circle, then the view's in its order) has the id contourIds[k] and its ring at

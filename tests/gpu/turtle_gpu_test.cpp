@@ -266,6 +266,20 @@ TEST_F(TurtleGpuTest, CpfgCylinderMeshesDrawAsOnTheCpu) {
     }
 }
 
+// cpfg's torque lines roll the turtle before every move, after the tropism lines' bend (a large elasticity turning
+// as cpfg's quaternion does), on the device as on the CPU.
+TEST_F(TurtleGpuTest, CpfgTorqueRollsAsOnTheCpu) {
+    const ModelFolder scratch("torque");
+    std::ofstream(scratch.path / "m.l")
+        << "Lsystem: 1\nderivation length: 3\nAxiom: A\nA --> F[+(30)A]/(20)F[-(25)&(10)A]fA\nendlsystem\n";
+    std::ofstream(scratch.path / "m.v")
+        << "line style: cylinder\ntropism: T: 0,-1,0 E: 1.5\ntorque: T: 1,0,0.5 E: 0.3\ntorque: T: 0,0,1 E: 0.2\n";
+    Tally tally;
+    compareTurtles(context(), scratch.path / "m.l", "torque", 2, tally);
+    EXPECT_EQ(tally.compared, 1);
+    EXPECT_EQ(tally.nonlinear, 1);
+}
+
 // cpfg's tubes in its polygon and pixel line styles: pieces through the curve's points (tangents from `@Gt`,
 // spaced by the radius curve `@Gr` gives), as wide as their start, the last tapering where polygons do.
 TEST_F(TurtleGpuTest, CpfgTubesDrawAsOnTheCpu) {

@@ -107,6 +107,16 @@ TEST_F(CpfgView, TropismLinesAddUpAsCpfgTurnsTowardTheirSum) {
     EXPECT_NEAR(v.tropismDirection[2], 0.0f, 1e-6f);
 }
 
+TEST_F(CpfgView, TorqueLinesAddUpTheirDirectionsTimesTheirElasticities) {
+    EXPECT_EQ(viewWith("torque: T: 0,1,0\n").torque, (std::array{0.f, 0.f, 0.f})); // no E: no torque
+    // Unit T times 0.5, plus T of length 2 at intensity 0.5 (so of length 0.5) times 0.4.
+    const std::array<float, 3> w = viewWith("torque: T: 0 2 0 E: 0.5\ntorque: T: 2,0,0 I: 0.5 E: 0.4\n").torque;
+    EXPECT_NEAR(w[0], 0.2f, 1e-6f);
+    EXPECT_NEAR(w[1], 0.5f, 1e-6f);
+    EXPECT_NEAR(w[2], 0.0f, 1e-6f);
+    EXPECT_THROW(viewWith("torque: T: 0,0,0 E: 1\n"), simeco::ir::InputError);
+}
+
 TEST_F(CpfgView, TheFirstDirectionalLightIsTheSunAndTheInitialScaleTheTurtles) {
     EXPECT_FALSE(viewWith("angle increment: 30\n").look.sunDirection);
     auto sun = [&](const std::string& view) {

@@ -305,7 +305,26 @@ TEST(TurtleCpu, CpfgTubesTakeTheirPiecesTangentsAndWidthsAsCpfg) {
     }
 }
 
-TEST(TurtleCpu, CpfgsTropismLinesBendBeforeEveryMoveByAtMostARadian) {
+// cpfg's torque rolls the turtle before every move, its up turning away from the torque's part across the heading
+// by W . L radians: W along -x (our and cpfg's left at first) rolls the first F by 0.2 and the second by 0.2 cos 0.2
+// (its left has turned); a torque of 3 rolls by 2 atan(3 tan 0.5), as cpfg's quaternion turns beyond a radian.
+TEST(TurtleCpu, CpfgsTorqueRollsBeforeEveryMove) {
+    ir::Grammar g = grammarFromText(lsystem("FfF", "", 0));
+    g.view.lineStyle = ir::LineStyle::Cylinder;
+    g.view.torque = {-0.2f, 0.0f, 0.0f};
+    turtle::Interpretation r = interpretGrammar(g);
+    ASSERT_EQ(r.count[shared::kOrganStem], 2u);
+    expectNear(xyz(r.organs[0].up), {-std::sin(0.2f), 0, std::cos(0.2f)});
+    const float second = 0.2f + 0.2f * std::cos(0.2f), third = second + 0.2f * std::cos(second);
+    expectNear(xyz(r.organs[1].up), {-std::sin(third), 0, std::cos(third)});
+    expectNear(xyz(r.organs[1].heading), {0, 1, 0}); // the heading stays
+    g.view.torque = {-3.0f, 0.0f, 0.0f};
+    r = interpretGrammar(g);
+    const float large = 2.0f * std::atan(3.0f * std::tan(0.5f));
+    expectNear(xyz(r.organs[0].up), {-std::sin(large), 0, std::cos(large)});
+}
+
+TEST(TurtleCpu, CpfgsTropismLinesBendBeforeEveryMove) {
     // cpfg's `tropism:` form, toward -x with elasticity 0.5: before the move f the heading, H x T of length one,
     // turns by 0.5 rad toward -x; before F by 0.5 x |H x T| = 0.5 cos(0.5) more.
     ir::Grammar g = grammarFromText(lsystem("fF", "", 0));
@@ -317,10 +336,11 @@ TEST(TurtleCpu, CpfgsTropismLinesBendBeforeEveryMoveByAtMostARadian) {
     const float angle = 0.5f + 0.5f * std::cos(0.5f);
     expectNear(xyz(r.organs[0].heading), {-std::sin(angle), std::cos(angle), 0});
     expectNear(xyz(r.organs[0].position), {-std::sin(0.5f), std::cos(0.5f), 0}); // f moved after bending
-    // A large elasticity turns by one radian at most.
+    // Beyond a radian cpfg's quaternion (made for at most one) turns by 2 atan(x tan 0.5): 2.44 rad for 5.
     g.view.initialElasticity = 5.0f;
     r = interpretGrammar(g);
-    expectNear(xyz(r.organs[0].position), {-std::sin(1.0f), std::cos(1.0f), 0});
+    const float large = 2.0f * std::atan(5.0f * std::tan(0.5f));
+    expectNear(xyz(r.organs[0].position), {-std::sin(large), std::cos(large), 0});
 }
 
 TEST(TurtleCpu, CpfgsElasticityCommandsSetRaiseAndLowerTheTropismsElasticity) {

@@ -202,7 +202,8 @@ private:
         }
         if (!sawAxiom) cur_.fail("the L-system has no 'Axiom:'");
         if (stochastic_) {
-            for (auto [rules, first] : {std::pair{&g_.productions, firstProduction}, {&g_.decomposition, firstDecomposition}})
+            for (auto [rules, first] :
+                 {std::pair{&g_.productions, firstProduction}, {&g_.decomposition, firstDecomposition}})
                 for (size_t i = first; i < rules->productions.size(); ++i)
                     if (rules->productions[i].weight < 0) rules->productions[i].weight = 1.0f;
         }
@@ -240,7 +241,7 @@ private:
         return g_.symbol(name, kShared.count(name) ? 0 : space);
     }
 
-    // The L-system that `?(label, scale)` calls, where the list that holds it is of L-system `caller`.
+    // The L-system that `?(label, scale)` calls, from a list of L-system space_ inside the calls `callers`.
     uint32_t calledLsystem(const ir::SuccessorModule& call, const std::vector<uint32_t>& callers) {
         std::optional<double> label = foldConstant(call.args[0]);
         if (!label) throw ir::InputError(call.args[0].loc, "a sub-L-system's label must be a constant");
@@ -696,7 +697,7 @@ private:
         // The sub-L-systems this list calls, innermost last: what follows `?(label, s)` up to its `$` is rewritten
         // by the L-system of that label.
         std::vector<uint32_t> calls;
-        std::optional<ir::SourceLoc> returned; // a `$` ending the call this list's own L-system runs in
+        bool returned = false; // a `$` has ended the call this list's own L-system runs in
         for (;;) {
             cur_.skipBlanks();
             char c = cur_.peek();
@@ -746,7 +747,7 @@ private:
                 if (!calls.empty())
                     calls.pop_back();
                 else
-                    returned = m.loc;
+                    returned = true;
             }
             modules.push_back(std::move(m));
         }

@@ -53,12 +53,14 @@ OrganVertex organVertex(OrganInstance o, uint kind, vec4 local, vec4 localNormal
             towardsCamera = backwards * max(dot(towardsCamera, backwards), 0.0);
         }
         bool drawnFlat = o.shape != kLineCylinder && camera.w > 0.0;
+        // The far mesh's band (a stem a pixel or two wide), across the segment as the viewer sees it.
+        bool band = localNormal.w > 0.5 * (1.0 + kStemBandVertex);
+        vec3 across = cross(H, towardsCamera);
+        across = dot(across, across) > 1e-12 ? normalize(across) : L;
+        if (drawnFlat || band) radial = local.y * across;
         if (drawnFlat) {
             // cpfg's lines and polygons: flat, across the segment as the viewer sees it; a pixel line's radii are
             // pixels, as wide at any distance (at least one pixel across).
-            vec3 across = cross(H, towardsCamera);
-            across = dot(across, across) > 1e-12 ? normalize(across) : L;
-            radial = local.y * across;
             if (o.shape == kLinePixel) {
                 float depth = max(dot(-towardsCamera, cross(cameraUp, cameraRight)), 0.0);
                 float pixel = parallel ? camera.w : camera.w * depth;
@@ -72,6 +74,13 @@ OrganVertex organVertex(OrganInstance o, uint kind, vec4 local, vec4 localNormal
         if (drawnFlat) {
             // Flat shaded: facing the viewer across the whole width.
             v.normal = towardsCamera - H * dot(towardsCamera, H);
+        } else if (band) {
+            // Shaded as the round stem's visible half, tilted by the taper as the cone's side: the normal facing the
+            // viewer at the middle, at the edges half way between it and the silhouette's, so that the normals
+            // interpolated across the band light it on average as the round stem's are lit.
+            vec3 facing = cross(across, H);
+            v.normal = (radial + (1.0 - 0.5 * abs(local.y)) * facing) * max(segmentLength, 1e-6) +
+                       (radiusBottom - radiusTop) * H;
         } else if (localNormal.w > 0.5) {
             v.normal = top ? planeNormal : -planeNormal;
         } else {

@@ -58,13 +58,15 @@ SIMECO_CONST kVolumeCorners = 24u;
 
 // A vertex of the organ meshes, in organ-local coordinates: x along the heading, y along left, z along up.
 // Stem vertices carry in position.w which ring they belong to (0 bottom, 1 top) and in normal.w 1 for the end
-// caps, so the vertex shader can taper the stem and cut its ends on the joint planes. Surface vertices carry
+// caps (kStemBandVertex for the far band's), so the vertex shader can taper the stem and cut its ends on the joint
+// planes. Surface vertices carry
 // their shape in normal.w and in position.w how far their colour turns from the organ's to a blossom's eye
 // (kBlossomEye): 1 for a blossom's yellow centre, else 0.
 struct MeshVertex {
     vec4 position;
     vec4 normal;
 };
+SIMECO_CONST_FLOAT kStemBandVertex = 2.0f;
 
 // The per-frame uniform block of the organ shaders (std140).
 struct DrawFrame {

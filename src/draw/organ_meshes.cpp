@@ -131,6 +131,24 @@ MeshRange addStem(MeshBuilder& b, std::uint32_t sides) {
     return b.end();
 }
 
+// A stem a pixel or two wide on screen: a band across the unit stem (local y from -1 to 1 at z = 0; normal.w =
+// kStemBandVertex), which the vertex shader turns to face the viewer and shades as the cylinder's visible half: 6
+// vertices where the 6-sided hull has 26. Wound to face -z, the side the shader turns towards the viewer.
+MeshRange addStemBand(MeshBuilder& b) {
+    b.begin();
+    constexpr std::uint32_t kAcross = 3;
+    for (std::uint32_t ring = 0; ring < 2; ++ring)
+        for (std::uint32_t i = 0; i < kAcross; ++i)
+            b.vertex(glm::vec3(static_cast<float>(ring), -1.0f + 2.0f * static_cast<float>(i) / (kAcross - 1), 0),
+                     glm::vec3(0, 0, -1), static_cast<float>(ring), shared::kStemBandVertex);
+    for (std::uint32_t i = 0; i + 1 < kAcross; ++i) {
+        const std::uint32_t bottom = i, top = kAcross + i;
+        b.triangle(bottom, bottom + 1, top);
+        b.triangle(bottom + 1, top + 1, top);
+    }
+    return b.end();
+}
+
 // The unit sphere with its poles on the x axis; `stacks` bands of latitude, `slices` of longitude.
 MeshRange addSphere(MeshBuilder& b, std::uint32_t slices, std::uint32_t stacks) {
     b.begin();
@@ -452,6 +470,7 @@ OrganMeshData buildOrganMeshes(const std::vector<ir::LeafModel>& leafModels) {
 
     data.organs[kOrganStem] = addStem(b, kStemSides);
     data.hulls[kOrganStem] = addStem(b, kStemHullSides);
+    const MeshRange stemBand = addStemBand(b);
     // The hull's rings and meridians are every other one of the drawn sphere's.
     data.organs[kOrganSphere] = addSphere(b, 16, 10);
     data.hulls[kOrganSphere] = addSphere(b, 8, 5);
@@ -492,6 +511,8 @@ OrganMeshData buildOrganMeshes(const std::vector<ir::LeafModel>& leafModels) {
     b.triangle(g0, g2, g3);
     data.ground = b.end();
 
+    data.far = data.hulls;
+    data.far[kOrganStem] = stemBand;
     for (std::uint32_t kind = 0; kind < kOrganKinds; ++kind) {
         data.closedHull[kind] = kind == kOrganStem || kind == kOrganSphere;
         data.castingTriangles[kind] = data.hulls[kind].triangleCount();

@@ -34,6 +34,8 @@ struct OrganMeshData {
     std::vector<std::uint32_t> indices; // triangles wound counter-clockwise seen from outside (right-handed)
     std::array<MeshRange, shared::kOrganKinds> organs; // drawn, by kind (kOrgan*)
     std::array<MeshRange, shared::kOrganKinds> hulls;  // cast shadows, by kind
+    // Drawn where an organ is a few pixels across, by kind: its hull, but a stem's band (addStemBand).
+    std::array<MeshRange, shared::kOrganKinds> far;
     // Whether a kind's hull is closed (casts from the faces turned away from the sun) or an open sheet.
     std::array<bool, shared::kOrganKinds> closedHull{};
     // Per leaf shape (the built-in ones, then the models), its triangles within the drawn leaf mesh and within the

@@ -302,9 +302,9 @@ void Renderer::Resources::recordDrawInputs(VkCommandBuffer cmd, const std::vecto
         args.indexCount[kind] = mesh.organs[kind].indexCount;
         args.firstIndex[kind] = mesh.organs[kind].firstIndex;
         args.vertexOffset[kind] = mesh.organs[kind].vertexOffset;
-        args.farIndexCount[kind] = mesh.hulls[kind].indexCount;
-        args.farFirstIndex[kind] = mesh.hulls[kind].firstIndex;
-        args.farVertexOffset[kind] = mesh.hulls[kind].vertexOffset;
+        args.farIndexCount[kind] = mesh.far[kind].indexCount;
+        args.farFirstIndex[kind] = mesh.far[kind].firstIndex;
+        args.farVertexOffset[kind] = mesh.far[kind].vertexOffset;
     }
     args.volumeCapacity = shadows ? r.volumesWritten() : 0;
     args.leafShapes = static_cast<std::uint32_t>(mesh.leafShapeTriangles.size());

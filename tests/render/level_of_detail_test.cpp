@@ -111,6 +111,52 @@ std::size_t shadedGround(const Frame& frame, float share) {
     return shaded;
 }
 
+// The mean luminance of an organ's pixels (0 where it has none).
+float meanLuminance(const Frame& frame, std::uint32_t organ) {
+    double sum = 0.0;
+    std::size_t count = 0;
+    for (std::uint32_t y = 0; y < frame.height; ++y)
+        for (std::uint32_t x = 0; x < frame.width; ++x)
+            if (frame.organ[y * frame.width + x] == organ) {
+                sum += luminance(frame, x, y);
+                ++count;
+            }
+    return count ? static_cast<float>(sum / static_cast<double>(count)) : 0.0f;
+}
+
+TEST_F(LevelOfDetailTest, AStemAPixelOrTwoWideIsABandThatFacesTheViewerFromEverySideAndLooksAsTheRoundStem) {
+    // A leaning stem about one and a half pixels wide and fifty long, seen from around it, low and from above (not
+    // along it, where the round stem's end cap shows, which the band leaves out: a stem's ends are hidden in its
+    // joints).
+    const glm::vec3 heading = glm::normalize(glm::vec3(0.3f, 1.0f, 0.1f));
+    const std::vector<OrganInstance> stem = {
+        makeStem({0, 0, 0}, heading, glm::normalize(glm::cross(glm::vec3(1, 0, 0), heading)), 2.0f, 0.03f, 0, 1)};
+    TestScene scene = uploadScene(context(), stem);
+    for (const float azimuth : {0.0f, 70.0f, 160.0f, 250.0f}) {
+        for (const float elevation : {10.0f, 35.0f}) {
+            draw::Camera camera;
+            camera.azimuthDegrees = azimuth;
+            camera.elevationDegrees = elevation;
+            camera.distance = 14.0f;
+            camera.target = glm::vec3(0.3f, 0.95f, 0.1f);
+            draw::RenderSettings s = smallFrame(camera, {0.4f, 1.0f, 0.3f});
+            s.shadows = draw::Shadows::None;
+            s.width = 320;
+            s.height = 240;
+            const OnAndOff frames = renderOnAndOff(renderer(), scene, s, &draw::RenderSettings::levelsOfDetail);
+            SCOPED_TRACE(testing::Message() << "azimuth " << azimuth << ", elevation " << elevation);
+            EXPECT_EQ(frames.drawnOn.far[shared::kOrganStem], 1u);
+            EXPECT_EQ(frames.drawnOff.near[shared::kOrganStem], 1u);
+            const std::size_t band = organPixelCount(frames.on, 1), round = organPixelCount(frames.off, 1);
+            ASSERT_GT(round, 20u);
+            EXPECT_GE(band, round * 8 / 10);
+            EXPECT_LE(band, round * 13 / 10);
+            const float bandLight = meanLuminance(frames.on, 1), roundLight = meanLuminance(frames.off, 1);
+            EXPECT_NEAR(bandLight, roundLight, 0.1f * roundLight);
+        }
+    }
+}
+
 TEST_F(LevelOfDetailTest, DistantLeavesCastFromCoarserCutsAndTheirShadowsLookAlike) {
     // A row of serrate leaves held flat above the ground, the sun high: seen from afar each is a few pixels long.
     std::vector<OrganInstance> leaves;

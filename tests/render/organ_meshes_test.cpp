@@ -88,6 +88,29 @@ TEST(OrganMeshesTest, StemRingsAndCapsAreFlagged) {
     EXPECT_EQ(caps, static_cast<int>(2 * 3 * draw::kStemSides));
 }
 
+TEST(OrganMeshesTest, AFarStemIsABandAcrossTheUnitStemWoundToFaceMinusZAndEveryOtherKindItsHull) {
+    OrganMeshData d = draw::buildOrganMeshes();
+    const MeshRange& band = d.far[shared::kOrganStem];
+    ASSERT_EQ(band.triangleCount(), 4u);
+    std::set<std::uint32_t> corners;
+    for (std::uint32_t i = 0; i < band.indexCount; ++i) {
+        corners.insert(d.indices[band.firstIndex + i]);
+        const shared::MeshVertex& v =
+            d.vertices[static_cast<std::size_t>(band.vertexOffset) + d.indices[band.firstIndex + i]];
+        EXPECT_EQ(v.normal.w, shared::kStemBandVertex);
+        EXPECT_EQ(v.position.x, v.position.w) << "the ring flag matches the end the vertex sits on";
+        EXPECT_EQ(v.position.z, 0.0f);
+        EXPECT_LE(std::abs(v.position.y), 1.0f);
+    }
+    EXPECT_EQ(corners.size(), 6u);
+    for (std::uint32_t t = 0; t < band.triangleCount(); ++t) {
+        const glm::vec3 a = position(d, band, 3 * t), b = position(d, band, 3 * t + 1), c = position(d, band, 3 * t + 2);
+        EXPECT_LT(glm::cross(b - a, c - a).z, 0.0f) << "triangle " << t;
+    }
+    for (std::uint32_t kind : {shared::kOrganSphere, shared::kOrganDisc, shared::kOrganLeaf, shared::kOrganTriangle})
+        EXPECT_EQ(d.far[kind].firstIndex, d.hulls[kind].firstIndex) << "kind " << kind;
+}
+
 TEST(OrganMeshesTest, HullCornersAreCornersOfTheDrawnMesh) {
     OrganMeshData d = draw::buildOrganMeshes();
     for (std::uint32_t kind : {shared::kOrganStem, shared::kOrganSphere}) {

@@ -1,7 +1,7 @@
 #version 460
 // The indirect draw records of a frame, from its draw lists on the device (organs/draw_lists.comp): one indexed draw
 // per bucket, a kind or a leaf shape at a level of detail (the mesh's index range for it: for a leaf shape, its
-// triangles of the leaf mesh or of the leaf hull; the bucket's count and first place in the order, which the same
+// triangles of the leaf mesh, or its far cut within the leaf hull; the bucket's count and first place in the order, which the same
 // invocation lays out), and the shadow volumes' draw, so the host never reads instance counts.
 #extension GL_GOOGLE_include_directive : require
 
@@ -33,8 +33,8 @@ layout(std430, binding = 3) buffer Buckets {
 layout(std430, binding = 4) readonly buffer LeafShapeTriangles {
     uvec2 leafShapeTriangles[];  // per shape: its first triangle in the leaf mesh, and its count
 };
-layout(std430, binding = 5) readonly buffer LeafHullTriangles {
-    uvec2 leafHullTriangles[];  // the same in the leaf hull
+layout(std430, binding = 5) readonly buffer LeafFarTriangles {
+    uvec2 leafFarTriangles[];  // the same for its far cut in the leaf hull (what such a leaf casts from)
 };
 layout(push_constant) uniform Push {
     DrawArgsPush push;
@@ -53,7 +53,7 @@ void main() {
                 far ? push.farFirstIndex[kind] : push.firstIndex[kind],
                 far ? push.farVertexOffset[kind] : push.vertexOffset[kind], first);
             if (slot >= kOrganKinds) {
-                const uvec2 triangles = far ? leafHullTriangles[slot - kOrganKinds]
+                const uvec2 triangles = far ? leafFarTriangles[slot - kOrganKinds]
                                             : leafShapeTriangles[slot - kOrganKinds];
                 command.indexCount = 3u * triangles.y;
                 command.firstIndex += 3u * triangles.x;

@@ -90,8 +90,8 @@ struct DrawPush {
     uint pass;  // kPass*
 };
 
-// draw_args.comp: the index ranges of each kind's meshes (drawn near, and far: the kind's shadow hull, a coarser
-// mesh of the same organ), and how many volume vertices fit in their buffer.
+// draw_args.comp: the index ranges of each kind's meshes (drawn near, and far: a coarser mesh of the same organ,
+// OrganMeshData::far), and how many volume vertices fit in their buffer.
 struct DrawArgsPush {
     uint indexCount[kOrganKinds];
     uint firstIndex[kOrganKinds];
@@ -108,7 +108,7 @@ struct DrawArgsPush {
 SIMECO_CONST kDrawMaxLeafShapes = 128u;
 
 // A frame's organs are drawn from lists (organs/draw_lists.comp): one per organ kind and one per leaf shape (a
-// slot), each at two levels of detail, near (the drawn meshes) and far (the coarser hulls, for organs a few pixels
+// slot), each at two levels of detail, near (the drawn meshes) and far (coarser ones, for organs a few pixels
 // across); organs wholly outside the view are in none. A list's draw reads its instances through the frame's
 // order, where each list has its places (draw_args.comp lays them out from the counts). A bucket is a slot at a
 // level: slot + level * kDrawSlots. The leaf kind's own slot stays empty.

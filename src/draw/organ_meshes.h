@@ -34,7 +34,8 @@ struct OrganMeshData {
     std::vector<std::uint32_t> indices; // triangles wound counter-clockwise seen from outside (right-handed)
     std::array<MeshRange, shared::kOrganKinds> organs; // drawn, by kind (kOrgan*)
     std::array<MeshRange, shared::kOrganKinds> hulls;  // cast shadows, by kind
-    // Drawn where an organ is a few pixels across, by kind: its hull, but a stem's band (addStemBand).
+    // Drawn where an organ is a few pixels across, by kind: its hull, but a stem's band (addStemBand); a leaf is drawn
+    // there with its shape's far cut (leafFarHullTriangles), the one it casts its shadow from at that size.
     std::array<MeshRange, shared::kOrganKinds> far;
     // Whether a kind's hull is closed (casts from the faces turned away from the sun) or an open sheet.
     std::array<bool, shared::kOrganKinds> closedHull{};
@@ -43,7 +44,7 @@ struct OrganMeshData {
     // how many. A leaf is drawn, and casts, from its own shape's alone.
     std::vector<std::array<std::uint32_t, 2>> leafShapeTriangles, leafHullTriangles;
     // The same for the far cut of each shape, also within the leaf hull's range: fewer triangles still, which a leaf
-    // a few pixels across on screen casts from.
+    // a few pixels across on screen is drawn with and casts from.
     std::vector<std::array<std::uint32_t, 2>> leafFarHullTriangles;
     // Per triangle of the index buffer: bit k set where its edge k (corner k to corner k + 1) is shared with another
     // triangle of the same flat leaf shape. The shadow volumes of a flat sheet's triangles meet there with opposite

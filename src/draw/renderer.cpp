@@ -405,7 +405,7 @@ void Renderer::Resources::recordDrawInputs(VkCommandBuffer cmd, const std::vecto
     for (size_t p = 0; p < parts.size(); ++p)
         r.drawArgs.dispatch(cmd,
                             {*parts[p].table, r.drawCommands[p], r.volumeDraw, r.drawBuckets[p],
-                             r.meshes.leafShapeTriangles(), r.meshes.leafHullTriangles()},
+                             r.meshes.leafShapeTriangles(), r.meshes.leafFarHullTriangles()},
                             args, 1);
     memoryDependency(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
                      VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);

@@ -63,8 +63,9 @@ void main() {
             first += counts[bucket];
         }
     }
-    volumes.vertexCount = kVolumeCorners;
+    volumes.indexCount = kVolumeCorners;
     volumes.instanceCount = min(volumes.allocated, push.volumeCapacity) / kVolumeVerticesPerTriangle;
-    volumes.firstVertex = 0u;
+    volumes.firstIndex = 0u;
+    volumes.vertexOffset = 0;
     volumes.firstInstance = 0u;
 }

@@ -4,6 +4,11 @@
 // finite place; depth clamp keeps it drawn), made into 8 triangles wound outwards: the near cap (a, c, b) towards
 // the sun, the far cap (a', b', c') away from it, and two per side. With the far corners at infinity the far cap
 // and one triangle of each side vanish.
+//
+// The draw is indexed (the renderer's kVolumeFaces), so that a volume's vertices are shaded once each rather than
+// once per triangle corner: vertices 0-2 are a, b, c, 3-5 a', b', c', and 6 + 2s, 7 + 2s the far corners of side s
+// (s = ab, bc, ca) once more, which a side inside a flat sheet (its first near corner's w is 3) puts on that near
+// corner instead: both its triangles then have no area and draw nothing.
 #extension GL_GOOGLE_include_directive : require
 
 #include "render/shared/draw_layout.h"
@@ -14,21 +19,12 @@ layout(std140, set = 0, binding = 1) uniform Frame {
     DrawFrame frame;
 };
 
-// Corners 0-2: a, b, c; 3-5: a', b', c'.
-const uint kFaces[kVolumeCorners] = uint[](0u, 2u, 1u,  // near cap
-                                           3u, 4u, 5u,  // far cap
-                                           0u, 1u, 4u, 0u, 4u, 3u,  // side a b
-                                           1u, 2u, 5u, 1u, 5u, 4u,  // side b c
-                                           2u, 0u, 3u, 2u, 3u, 5u); // side c a
-
 void main() {
-    const uint corner = kFaces[gl_VertexIndex];
-    // A side inside a flat sheet (its first near corner's w is 3) is left out: its triangles go outside the view.
-    const uint face = gl_VertexIndex / 3u;
-    const uint side = face >= 2u ? (face - 2u) / 2u : 3u;
-    if (side < 3u && inCorners[side].w > 2.0) {
-        gl_Position = vec4(2.0, 0.0, 0.5, 1.0);
-        return;
+    uint corner = gl_VertexIndex;
+    if (corner >= 6u) {
+        const uint side = (corner - 6u) / 2u;
+        const uint end = (side + (corner - 6u) % 2u) % 3u;
+        corner = inCorners[side].w > 2.0 ? side : end + 3u;
     }
     const vec4 p = inCorners[corner];
     gl_Position = frame.viewProj * (corner < 3u ? vec4(p.xyz, 1.0) : p);

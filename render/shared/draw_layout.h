@@ -52,9 +52,11 @@ SIMECO_CONST kOutlineTile = 8u;
 // are extruded to a plane just below it (so a volume covers the pixels between an organ and its shadow only);
 // else to the point at infinity opposite the sun, where the sides meet and the far cap vanishes. A volume is
 // stored as its 6 corners (kVolumeVerticesPerTriangle: the near cap's, then the far cap's) and drawn as one
-// instance of 8 triangles (kVolumeCorners, shadow_volume.vert).
+// instance of an indexed draw: 8 triangles (kVolumeCorners indices) over kVolumeVertices vertices, the vertex
+// shader's work per volume (shadow_volume.vert).
 SIMECO_CONST kVolumeVerticesPerTriangle = 6u;
 SIMECO_CONST kVolumeCorners = 24u;
+SIMECO_CONST kVolumeVertices = 12u;
 
 // A vertex of the organ meshes, in organ-local coordinates: x along the heading, y along left, z along up.
 // Stem vertices carry in position.w which ring they belong to (0 bottom, 1 top) and in normal.w 1 for the end
@@ -137,13 +139,14 @@ struct DrawListsPush {
 // The indirect draw of the shadow volumes, preceded by the counter the volume kernel allocates with.
 struct VolumeDraw {
     uint allocated;  // vertices claimed by the volume kernel (may exceed the capacity: those were dropped)
-    // The rest: VkDrawIndirectCommand of kVolumeCorners vertices, an instance per volume.
+    // The rest: VkDrawIndexedIndirectCommand of kVolumeCorners indices, an instance per volume.
     uint pad0;
     uint pad1;
     uint pad2;
-    uint vertexCount;  // VkDrawIndirectCommand, at byte 16
+    uint indexCount;  // VkDrawIndexedIndirectCommand, at byte 16
     uint instanceCount;
-    uint firstVertex;
+    uint firstIndex;
+    int vertexOffset;
     uint firstInstance;
 };
 
@@ -202,7 +205,7 @@ static_assert(sizeof(DisplayPush) == 16);
 static_assert(sizeof(DrawPush) == 8);
 static_assert(sizeof(DrawArgsPush) == 128);
 static_assert(sizeof(DrawListsPush) == 32);
-static_assert(sizeof(VolumeDraw) == 32);
+static_assert(sizeof(VolumeDraw) == 36);
 static_assert(sizeof(ShadowVolumePush) == 112);
 static_assert(sizeof(OutlinePush) == 48);
 #endif

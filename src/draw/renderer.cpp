@@ -1,11 +1,13 @@
 #include "draw/renderer.h"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstring>
 #include <deque>
 #include <limits>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -42,6 +44,13 @@ constexpr float kVolumeCapDepth = 0.01f;
 constexpr float kFarStemPixels = 2.0f;
 constexpr float kFarLeafPixels = 12.0f;
 constexpr float kFarRoundPixels = 8.0f;
+// A shadow volume's triangles over its vertices (shadow_volume.vert): the near cap, the far cap, and two per side
+// from the side's near corners to its own copies of the far ones.
+constexpr std::array<std::uint32_t, shared::kVolumeCorners> kVolumeFaces = {
+    0, 2, 1,  3, 4,  5,       // near cap (a, c, b), far cap (a', b', c')
+    0, 1, 7,  0, 7,  6,       // side a b
+    1, 2, 9,  1, 9,  8,       // side b c
+    2, 0, 11, 2, 11, 10};     // side c a
 // Line half-width of toon outlines per 600 pixels of image height, and what counts as a depth edge.
 constexpr float kOutlinePixelsPer600 = 1.0f;
 constexpr float kOutlineThreshold = 0.02f;
@@ -101,7 +110,10 @@ struct Renderer::Resources {
           frameConstants(context, sizeof(shared::DrawFrame), vk::MemoryUsage::DeviceLocal,
                          VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT),
           volumeDraw(context, sizeof(shared::VolumeDraw), vk::MemoryUsage::DeviceLocal,
-                     VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT) {}
+                     VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT),
+          volumeFaces(context, sizeof(kVolumeFaces), vk::MemoryUsage::DeviceLocal, VK_BUFFER_USAGE_INDEX_BUFFER_BIT) {
+        vk::uploadSpan(context, volumeFaces, std::span<const std::uint32_t>(kVolumeFaces));
+    }
 
     OrganMeshes meshes;
     TextureArray textures;
@@ -117,6 +129,7 @@ struct Renderer::Resources {
     // each list's count and next place, and the instances' order by list (one word an instance).
     std::vector<vk::Buffer> drawCommands, drawBuckets, drawOrders;
     vk::Buffer volumeDraw;
+    vk::Buffer volumeFaces; // kVolumeFaces
     vk::Buffer volumeVertices;
     std::uint32_t volumeCapacity = 0; // vertices
     std::uint32_t volumeWindow = 0;   // vertices a binding of the volume buffer holds
@@ -485,8 +498,9 @@ void Renderer::Resources::recordScene(VkCommandBuffer cmd, const RenderTarget& i
         VkDeviceSize zero = 0;
         VkBuffer volumes = r.volumeVertices.handle();
         vkCmdBindVertexBuffers(cmd, 0, 1, &volumes, &zero);
-        vkCmdDrawIndirect(cmd, r.volumeDraw.handle(), offsetof(shared::VolumeDraw, vertexCount), 1,
-                          sizeof(VkDrawIndirectCommand));
+        vkCmdBindIndexBuffer(cmd, r.volumeFaces.handle(), 0, VK_INDEX_TYPE_UINT32);
+        vkCmdDrawIndexedIndirect(cmd, r.volumeDraw.handle(), offsetof(shared::VolumeDraw, indexCount), 1,
+                                 sizeof(VkDrawIndexedIndirectCommand));
     } else {
         drawScene(shared::kPassFull);
     }

@@ -63,7 +63,13 @@ void registerViewCommand(CLI::App& app, CommandContext& ctx) {
                     fmt::format("scene (.eco) or grammar (.l, .lsys), reloaded when it changes on disk; none: the "
                                 "built-in garden, {} plants of {}",
                                 kDefaultViewPlants, kDefaultSceneName));
-    cmd->add_option("--frames", args->view.frames, "close after drawing N frames (default: when the window closes)");
+    cmd->add_option("--frames", args->view.frames,
+                    "close after drawing N frames, each growing the field time_scale simulated seconds, so that it "
+                    "grows alike on every device (default: when the window closes)")
+        ->excludes(cmd->add_option("--seconds", args->view.seconds,
+                                   "close after S seconds, the field growing by the clock as it does in a window left "
+                                   "open (default: when the window closes)")
+                       ->check(CLI::Range(0.0, 1e6)));
     cmd->add_option("--time", args->view.startTime, "simulated seconds the field grows before the first frame")
         ->check(CLI::Range(0.0, 1e6));
     cmd->add_option("--screenshot", args->view.screenshot,

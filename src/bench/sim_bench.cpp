@@ -83,10 +83,13 @@ SimEntry measure(const SimBenchOptions& o, const std::string& scene, std::uint32
                     renderer.render(parts, framed, settings);
                     return secondsSince(start);
                 }));
-            const double growing = 1.0 / std::max(e.medianTickSeconds - e.stages.draw + frame, 1e-9);
-            (shadows == draw::Shadows::Volume ? e.frameShadowsSeconds : e.frameNoShadowsSeconds) = frame;
-            (shadows == draw::Shadows::Volume ? e.growingFramesPerSecondShadows : e.growingFramesPerSecondNoShadows) =
-                growing;
+            const double tickWork = std::max(e.medianTickSeconds - e.stages.draw, 0.0);
+            const double growing = 1.0 / std::max(tickWork + frame, 1e-9);
+            const double realTime = std::max(1.0 - tickWork / options.dt, 0.0) / std::max(frame, 1e-9);
+            const bool volumes = shadows == draw::Shadows::Volume;
+            (volumes ? e.frameShadowsSeconds : e.frameNoShadowsSeconds) = frame;
+            (volumes ? e.growingFramesPerSecondShadows : e.growingFramesPerSecondNoShadows) = growing;
+            (volumes ? e.realTimeFramesPerSecondShadows : e.realTimeFramesPerSecondNoShadows) = realTime;
             if (shadows == draw::Shadows::Volume) e.shadowVolumes = renderer.drawnOrgans().shadowVolumes;
         }
         for (size_t part = 0; part < parts.size(); ++part) {

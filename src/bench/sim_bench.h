@@ -51,10 +51,13 @@ struct SimEntry {
     std::string status = "ok";     // or "failed" with `reason`
     std::string reason;
     std::string notDrawn; // why the field was not interpreted and drawn (larger than the device binds); its growth was
-    // A frame of the field as the timed ticks left it, with shadow volumes and without (medians), and the frames a
-    // second of a field that ticks once a frame, as `simeco view` grows it: 1 / (the tick's other stages + a frame).
+    // A frame of the field as the timed ticks left it, with shadow volumes and without (medians); the frames a
+    // second of a field that ticks once a frame: 1 / (the tick's other stages + a frame); and of one growing at real
+    // time, a simulated second a second, as `simeco view` grows it by default: what a second leaves for frames once
+    // its ticks have run, (1 - the tick's other stages / dt) / a frame (0 where the ticks alone take longer).
     double frameShadowsSeconds = 0, frameNoShadowsSeconds = 0;
     double growingFramesPerSecondShadows = 0, growingFramesPerSecondNoShadows = 0;
+    double realTimeFramesPerSecondShadows = 0, realTimeFramesPerSecondNoShadows = 0;
     // The frame's organs by kind (kOrgan*) drawn with the finer meshes and the coarser ones; the rest were outside
     // the view.
     std::array<std::uint64_t, shared::kOrganKinds> drawnNear{}, drawnFar{};

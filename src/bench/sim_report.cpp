@@ -45,6 +45,8 @@ nlohmann::json simReportJson(const SimBenchReport& report) {
                                                  {"no_shadows", e.frameNoShadowsSeconds}};
                 entry["growing_frames_per_second"] = {{"shadow_volumes", e.growingFramesPerSecondShadows},
                                                       {"no_shadows", e.growingFramesPerSecondNoShadows}};
+                entry["real_time_frames_per_second"] = {{"shadow_volumes", e.realTimeFramesPerSecondShadows},
+                                                        {"no_shadows", e.realTimeFramesPerSecondNoShadows}};
                 nlohmann::json near, far;
                 for (std::uint32_t kind = 0; kind < shared::kOrganKinds; ++kind) {
                     near[exporter::organKindName(kind)] = e.drawnNear[kind];
@@ -81,9 +83,10 @@ std::string formatSimTable(const SimBenchReport& report) {
             out += fmt::format("{:>7} not drawn: {}\n", "", e.notDrawn);
         else
             out += fmt::format("{:>7} a frame: {:.3f} s with shadow volumes, {:.3f} s without; growing a tick a frame: "
-                               "{:.2f} and {:.2f} frames/s\n",
+                               "{:.2f} and {:.2f} frames/s; at real time: {:.2f} and {:.2f} frames/s\n",
                                "", e.frameShadowsSeconds, e.frameNoShadowsSeconds, e.growingFramesPerSecondShadows,
-                               e.growingFramesPerSecondNoShadows);
+                               e.growingFramesPerSecondNoShadows, e.realTimeFramesPerSecondShadows,
+                               e.realTimeFramesPerSecondNoShadows);
         if (e.notDrawn.empty()) {
             std::uint64_t near = 0, far = 0;
             for (std::uint32_t kind = 0; kind < shared::kOrganKinds; ++kind) {

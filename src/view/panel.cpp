@@ -45,8 +45,7 @@ void simulation(ViewControls& c, PanelActions& actions) {
     actions.step = ImGui::Button("step");
     ImGui::SameLine();
     actions.reset = ImGui::Button("reset");
-    int scale = int(c.timeScale);
-    if (ImGui::SliderInt("ticks a frame", &scale, 1, 16)) c.timeScale = std::uint32_t(scale);
+    ImGui::SliderFloat("time scale (s a second)", &c.timeScale, 0.1f, 100.0f, "%.3g", ImGuiSliderFlags_Logarithmic);
     int seed = int(c.seed);
     if (ImGui::InputInt("seed (at reset)", &seed)) c.seed = std::uint32_t(std::max(seed, 0));
     int plants = int(c.plants);

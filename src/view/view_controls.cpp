@@ -76,7 +76,7 @@ void applySetting(ViewControls& c, std::string_view assignment) {
     else if (name == "rain") c.rainRate = number(name, value, 0.0f, 10.0f);
     else if (name == "soil_ph") c.soilPH = number(name, value, 0.0f, 14.0f);
     else if (name == "gravity") c.gravity = number(name, value, 0.0f, 100.0f);
-    else if (name == "time_scale") c.timeScale = count(name, value, 64);
+    else if (name == "time_scale") c.timeScale = number(name, value, 0.01f, 1000.0f);
     else if (name == "paused") c.paused = onOff(name, value);
     else if (name == "seed") c.seed = count(name, value, UINT32_MAX);
     else if (name == "plants") c.plants = count(name, value, 1000000);

@@ -28,7 +28,7 @@ struct ViewControls {
     float rainRate = 0.9f;
     float soilPH = 7.0f;
     float gravity = 9.81f;   // m/s²
-    std::uint32_t timeScale = 1; // ticks a frame while running
+    float timeScale = 1.0f; // simulated seconds a second of the viewer's clock while running (view/growth_clock.h)
     bool paused = false;
     // Take effect at a reset: the field's seed and its plants (0: as the scene places them).
     std::uint32_t seed = 0;

@@ -16,6 +16,7 @@
 #include "draw/image_writers.h"
 #include "draw/renderer.h"
 #include "ir/source_loc.h"
+#include "view/growth_clock.h"
 #include "view/orbit_camera.h"
 #include "view/overlay.h"
 #include "view/panel.h"
@@ -228,6 +229,7 @@ void runViewer(const ViewOptions& options) {
 
     field::SimulationOptions simulationOptions = options.simulation;
     LiveField live = makeField(context, options, simulationOptions);
+    GrowthClock growth(simulationOptions.dt);
     IdleOnExit idleOnExit{device};
     ViewControls controls = controlsFor(live.simulation->environment(), live.settings, speciesNames(*live.simulation));
     controls.seed = simulationOptions.seed >= 0 ? std::uint32_t(simulationOptions.seed) : 0;
@@ -250,6 +252,7 @@ void runViewer(const ViewOptions& options) {
 
     std::uint64_t frames = 0;
     std::uint32_t screenshots = 0;
+    const auto opened = Clock::now();
     double frameSeconds = 0;
     std::vector<double> frameTimes; // every frame's after the first
     auto lastFrame = Clock::now();
@@ -271,6 +274,7 @@ void runViewer(const ViewOptions& options) {
                 seen = written;
                 try {
                     replaceField(live, makeField(context, options, simulationOptions));
+                    growth.restart();
                     controls = keptControls(
                         controlsFor(live.simulation->environment(), live.settings, speciesNames(*live.simulation)),
                         controls);
@@ -311,6 +315,7 @@ void runViewer(const ViewOptions& options) {
             reset.plants = controls.plants;
             try {
                 replaceField(live, makeField(context, options, reset));
+                growth.restart();
                 live.simulation->setEnvironment(environmentOf(controls, live.simulation->environment()));
                 drawAgain(live);
                 simulationOptions = reset;
@@ -326,8 +331,12 @@ void runViewer(const ViewOptions& options) {
             steering.steer(orbit, overlay.wantsMouse(), overlay.wantsKeyboard(), float(extent.height));
         if (at) click = at;
 
-        // The field grows: its organs are drawn again once the frames reading them are done.
-        const std::uint32_t ticks = controls.paused ? (actions.step ? 1u : 0u) : controls.timeScale;
+        // The field grows by the viewer's clock, a scripted view's (--frames) by a second a frame, so that it grows
+        // alike on every device; paused, a step at a time. Its organs are drawn again once the frames reading them
+        // are done.
+        const double clockSeconds = options.frames > 0 ? 1.0 : std::min(frameSeconds, 1.0);
+        const std::uint32_t ticks = controls.paused ? (actions.step ? 1u : 0u)
+                                                    : growth.ticksAfter(clockSeconds, controls.timeScale);
         live.ticked = 0;
         live.tickSeconds = 0;
         if (ticks > 0) {
@@ -413,7 +422,9 @@ void runViewer(const ViewOptions& options) {
                 std::fprintf(stderr, "picked no plant\n");
             click.reset();
         }
-        const bool last = options.frames > 0 && frames >= options.frames;
+        const bool last = (options.frames > 0 && frames >= options.frames) ||
+                          (options.seconds > 0 && std::chrono::duration<double>(Clock::now() - opened).count() >=
+                                                      options.seconds);
         if ((actions.screenshot || last) && !options.screenshot.empty()) {
             waitFor(device, slot);
             writeScreenshot(nextScreenshot(options.screenshot, screenshots),

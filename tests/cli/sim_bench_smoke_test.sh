@@ -37,7 +37,7 @@ for e in entries:
     for stage in ("derive", "grow", "interpret", "light", "statistics", "draw"):
         check(stage in stages and stages[stage] >= 0, f"{where}: stage {stage} missing")
     check(sum(stages.values()) <= 1.5 * max(e.get("tick_seconds", [0])), f"{where}: stages outlast the ticks")
-    for key in ("frame_median_seconds", "growing_frames_per_second"):
+    for key in ("frame_median_seconds", "growing_frames_per_second", "real_time_frames_per_second"):
         for shadows in ("shadow_volumes", "no_shadows"):
             positive(e.get(key, {}), shadows, f"{where}: {key}")
     drawn = e.get("drawn_organs", {})

@@ -24,4 +24,16 @@ std::uint32_t GrowthClock::ticksAfter(double seconds, double timeScale) {
     return static_cast<std::uint32_t>(due);
 }
 
+void GrowthRate::add(double clockSeconds, double simulatedSeconds) {
+    samples_.emplace_back(clockSeconds, simulatedSeconds);
+    // Keep one sample at or before the window's start, so the rate spans the whole window.
+    while (samples_.size() > 2 && samples_[1].first <= clockSeconds - windowSeconds_) samples_.pop_front();
+}
+
+double GrowthRate::perSecond() const {
+    if (samples_.size() < 2) return 0.0;
+    const double clock = samples_.back().first - samples_.front().first;
+    return clock > 0.0 ? (samples_.back().second - samples_.front().second) / clock : 0.0;
+}
+
 } // namespace simeco::view

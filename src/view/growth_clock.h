@@ -5,6 +5,8 @@
 #pragma once
 
 #include <cstdint>
+#include <deque>
+#include <utility>
 
 namespace simeco::view {
 
@@ -23,6 +25,23 @@ public:
 private:
     double tickSeconds_;
     double owed_ = 0.0; // simulated seconds due and not yet ticked
+};
+
+// How fast a field grows: the simulated seconds it grew a second of the clock over the last `windowSeconds` (the
+// panel's figure, which a single frame's ticks would make jump between zero and many).
+class GrowthRate {
+public:
+    explicit GrowthRate(double windowSeconds = 2.0) : windowSeconds_(windowSeconds) {}
+
+    // A frame: the clock's time and the field's simulated time.
+    void add(double clockSeconds, double simulatedSeconds);
+    double perSecond() const;
+    // Another field, whose time starts anew.
+    void restart() { samples_.clear(); }
+
+private:
+    double windowSeconds_;
+    std::deque<std::pair<double, double>> samples_; // (clock, simulated), oldest first
 };
 
 } // namespace simeco::view

@@ -64,7 +64,8 @@ void look(ViewControls& c, PanelActions& actions) {
 }
 
 void figures(const PanelFigures& f) {
-    ImGui::Text("%.1f ms a frame, %.1f ticks/s", f.frameSeconds * 1e3, f.ticksPerSecond);
+    ImGui::Text("%.1f ms a frame, %.3g s of growth a second", f.frameSeconds * 1e3, f.growthPerSecond);
+    ImGui::Text("a tick %.1f ms", f.tickSeconds * 1e3);
     ImGui::Text("t = %.1f s, %u plants", f.time, f.plants);
     ImGui::Text("%llu modules, %llu organs drawn",
                 static_cast<unsigned long long>(f.modules), static_cast<unsigned long long>(f.instances));

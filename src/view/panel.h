@@ -27,7 +27,8 @@ struct PickedPlant {
 
 struct PanelFigures {
     double frameSeconds = 0;
-    double ticksPerSecond = 0;
+    double growthPerSecond = 0; // simulated seconds a second of the clock, lately (GrowthRate)
+    double tickSeconds = 0;     // the last tick's
     double time = 0;
     std::uint32_t plants = 0;
     std::uint64_t modules = 0;

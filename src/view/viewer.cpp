@@ -47,8 +47,7 @@ struct LiveField {
     std::vector<shared::PlantStatistics> statistics;
     std::vector<std::uint64_t> plantModules; // read from the device when a picked plant needs them, once a drawing
     std::vector<SpeciesHistory> history;
-    double tickSeconds = 0; // wall-clock seconds of the last frame's ticks, and how many
-    std::uint32_t ticked = 0;
+    double tickSeconds = 0; // wall-clock seconds of the last tick, its organs drawn again with it
 };
 
 LiveField makeField(const vk::Context& context, const ViewOptions& options, const field::SimulationOptions& sim) {
@@ -102,8 +101,7 @@ void tickField(LiveField& f, std::uint32_t ticks) {
     const auto start = Clock::now();
     for (std::uint32_t k = 0; k < ticks; ++k) f.simulation->tick();
     drawAgain(f);
-    f.tickSeconds = std::chrono::duration<double>(Clock::now() - start).count();
-    f.ticked = ticks;
+    f.tickSeconds = std::chrono::duration<double>(Clock::now() - start).count() / ticks;
 }
 
 using UniqueFence = vk::UniqueFence;
@@ -230,6 +228,7 @@ void runViewer(const ViewOptions& options) {
     field::SimulationOptions simulationOptions = options.simulation;
     LiveField live = makeField(context, options, simulationOptions);
     GrowthClock growth(simulationOptions.dt);
+    GrowthRate growthRate;
     IdleOnExit idleOnExit{device};
     ViewControls controls = controlsFor(live.simulation->environment(), live.settings, speciesNames(*live.simulation));
     controls.seed = simulationOptions.seed >= 0 ? std::uint32_t(simulationOptions.seed) : 0;
@@ -275,6 +274,7 @@ void runViewer(const ViewOptions& options) {
                 try {
                     replaceField(live, makeField(context, options, simulationOptions));
                     growth.restart();
+                    growthRate.restart();
                     controls = keptControls(
                         controlsFor(live.simulation->environment(), live.settings, speciesNames(*live.simulation)),
                         controls);
@@ -292,7 +292,8 @@ void runViewer(const ViewOptions& options) {
         overlay.begin();
         PanelFigures figures;
         figures.frameSeconds = frameSeconds;
-        figures.ticksPerSecond = live.tickSeconds > 0 ? live.ticked / live.tickSeconds : 0;
+        figures.growthPerSecond = growthRate.perSecond();
+        figures.tickSeconds = live.tickSeconds;
         figures.time = live.simulation->time();
         figures.plants = live.simulation->standingPlants();
         figures.modules = live.simulation->modules();
@@ -316,6 +317,7 @@ void runViewer(const ViewOptions& options) {
             try {
                 replaceField(live, makeField(context, options, reset));
                 growth.restart();
+                growthRate.restart();
                 live.simulation->setEnvironment(environmentOf(controls, live.simulation->environment()));
                 drawAgain(live);
                 simulationOptions = reset;
@@ -337,12 +339,11 @@ void runViewer(const ViewOptions& options) {
         const double clockSeconds = options.frames > 0 ? 1.0 : std::min(frameSeconds, 1.0);
         const std::uint32_t ticks = controls.paused ? (actions.step ? 1u : 0u)
                                                     : growth.ticksAfter(clockSeconds, controls.timeScale);
-        live.ticked = 0;
-        live.tickSeconds = 0;
         if (ticks > 0) {
             waitForFrames();
             tickField(live, ticks);
         }
+        growthRate.add(std::chrono::duration<double>(Clock::now() - opened).count(), live.simulation->time());
 
         if (extent.width == 0 || extent.height == 0) { // minimised
             overlay.cancel();

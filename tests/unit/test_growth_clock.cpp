@@ -39,6 +39,24 @@ TEST(GrowthClock, AFrameFarBehindRunsAtMostItsTicksAndLetsTheRestGo) {
     EXPECT_EQ(clock.ticksAfter(0.05, 1.0), 1u);
 }
 
+TEST(GrowthRate, IsTheSimulatedSecondsGrownASecondOverItsWindowNotTheLastFrames) {
+    GrowthRate rate(2.0);
+    EXPECT_EQ(rate.perSecond(), 0.0);
+    // Ten frames a second, a tick of one simulated second every fifth frame: two simulated seconds a second.
+    double simulated = 0.0;
+    for (int frame = 0; frame <= 40; ++frame) {
+        if (frame > 0 && frame % 5 == 0) simulated += 1.0;
+        rate.add(0.1 * frame, simulated);
+    }
+    EXPECT_NEAR(rate.perSecond(), 2.0, 1e-9);
+    // Paused for three seconds: the rate falls to none once the window has passed.
+    for (int frame = 41; frame <= 70; ++frame) rate.add(0.1 * frame, simulated);
+    EXPECT_EQ(rate.perSecond(), 0.0);
+    rate.restart();
+    rate.add(10.0, 0.0);
+    EXPECT_EQ(rate.perSecond(), 0.0);
+}
+
 TEST(GrowthClock, ATickMustLastAPositiveTime) {
     EXPECT_THROW(GrowthClock(0.0), std::invalid_argument);
     EXPECT_THROW(GrowthClock(-1.0), std::invalid_argument);

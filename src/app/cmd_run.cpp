@@ -156,6 +156,7 @@ field::SavedRun readSavedRun(RunArgs& args) {
     s.file = o.file;
     s.sceneText = o.sceneText;
     s.plants = o.plants;
+    s.density = o.density;
     s.seed = o.seed;
     s.dt = o.dt;
     s.spacing = o.spacing;
@@ -286,6 +287,7 @@ void registerRunCommand(CLI::App& app, CommandContext& ctx) {
         cmd->add_option("--plants", s.plants,
                         "plants in the field; a scene's species take turns (default: the scene's)")
             ->check(CLI::Range(1u, 1000000u));
+    CLI::Option* density = addDensityOption(*cmd, s.density);
     CLI::Option* spacing =
         cmd->add_option("--spacing", s.spacing, "distance between plants of a field (default: from a grown plant)")
             ->check(CLI::Range(0.0f, 1e6f));
@@ -314,6 +316,7 @@ void registerRunCommand(CLI::App& app, CommandContext& ctx) {
                     "go on from a state --save wrote (its scene and options; --time counts from the field's start)")
         ->excludes(scene)
         ->excludes(plants)
+        ->excludes(density)
         ->excludes(seed)
         ->excludes(dt)
         ->excludes(spacing);

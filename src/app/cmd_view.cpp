@@ -80,6 +80,7 @@ void registerViewCommand(CLI::App& app, CommandContext& ctx) {
         ->check(CLI::Range(int64_t(0), int64_t(UINT32_MAX)));
     cmd->add_option("--plants", s.plants, "plants in the field; a scene's species take turns (default: the scene's)")
         ->check(CLI::Range(1u, 1000000u));
+    addDensityOption(*cmd, s.density);
     cmd->add_option("--dt", s.dt, "simulated seconds per tick (default 1)")->check(CLI::Range(1e-3, 1e6));
     args->picture.size = "1280x720";
     addPictureOptions(*cmd, args->picture, "field");

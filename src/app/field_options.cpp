@@ -27,6 +27,13 @@ CLI::Option* addTimeLimitOption(CLI::App& cmd, double& seconds) {
         ->check(CLI::Range(0.0, 1e9));
 }
 
+CLI::Option* addDensityOption(CLI::App& cmd, float& density) {
+    return cmd
+        .add_option("--density", density,
+                    "a factor on the plants of every population of the scene (its Count or Density; default 1)")
+        ->check(CLI::Range(0.01f, 100.0f));
+}
+
 void addFieldOptions(CLI::App& cmd, field::FieldSource& source) {
     cmd.add_option("file", source.file, "grammar (.l, .lsys) or scene (.eco)")->required();
     cmd.add_option("-n,--steps", source.steps, "derivation steps (default: the file's derivation length)")

@@ -20,4 +20,7 @@ CLI::Option* addBackendOption(CLI::App& cmd, field::Backend& backend, const std:
 // Adds `--max-seconds S`, the derivation's time limit (stream::DeriveOptions::maxSeconds), read into `seconds`.
 CLI::Option* addTimeLimitOption(CLI::App& cmd, double& seconds);
 
+// Adds `--density F`, the factor on a scene's populations' plants (field::SimulationOptions::density).
+CLI::Option* addDensityOption(CLI::App& cmd, float& density);
+
 } // namespace simeco::app

@@ -63,7 +63,8 @@ bool hasPopulations(const grow::GrowingSpecies& g) {
     return g.scene && !g.scene->populations.empty();
 }
 
-FieldLayout layoutPopulations(const grow::GrowingSpecies& g, uint32_t seed, std::vector<ir::EcoWarning>& warnings) {
+FieldLayout layoutPopulations(const grow::GrowingSpecies& g, uint32_t seed, std::vector<ir::EcoWarning>& warnings,
+                              float density) {
     struct Stand {
         glm::vec2 at;
         float vigour = 1.0f;
@@ -87,9 +88,8 @@ FieldLayout layoutPopulations(const grow::GrowingSpecies& g, uint32_t seed, std:
     for (size_t k = 0; k < scene.populations.size(); ++k) {
         const ir::EcoPopulation& pop = scene.populations[k];
         const GroundRect rect{{pop.centerX, pop.centerZ}, {pop.width, pop.depth}};
-        const uint32_t count = pop.count ? *pop.count
-                                         : uint32_t(std::max(1.0, std::round(double(*pop.density) * rect.size.x *
-                                                                             rect.size.y)));
+        const double plants = pop.count ? double(*pop.count) : double(*pop.density) * rect.size.x * rect.size.y;
+        const uint32_t count = uint32_t(std::max(1.0, std::round(plants * density)));
         const uint32_t stream = shared::randomBits(seed, pop.seed, shared::kGrowPropertyPass, 3, uint32_t(k));
         const std::vector<glm::vec2> points = pop.placement == ir::EcoPlacement::Poisson
                                                   ? poissonDiskPoints(rect, count, pop.spacing.value_or(0.0f), seed,

@@ -29,8 +29,10 @@ struct FieldLayout {
     std::vector<float> vigour;                      // per slot: the factor on its growth rates (Variation)
 };
 bool hasPopulations(const grow::GrowingSpecies& g);
-// Each population's plants over its region, and each Plant block that no population names at its Position. A
-// population that has no room for its Count is placed as far as it goes, with a warning.
-FieldLayout layoutPopulations(const grow::GrowingSpecies& g, uint32_t seed, std::vector<ir::EcoWarning>& warnings);
+// Each population's plants over its region, its Count or Density times `density` (at least one plant), and each Plant
+// block that no population names at its Position. A population that has no room for its plants is placed as far as
+// it goes, with a warning.
+FieldLayout layoutPopulations(const grow::GrowingSpecies& g, uint32_t seed, std::vector<ir::EcoWarning>& warnings,
+                              float density = 1.0f);
 
 } // namespace simeco::field

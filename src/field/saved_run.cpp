@@ -15,7 +15,7 @@ namespace {
 
 constexpr char kMagic[] = "simeco saved run\n";
 // 2: a particle's fourth slot counts its seconds in deep shade (it was the cone noise's clock).
-constexpr uint32_t kVersion = 2;
+constexpr uint32_t kVersion = 3;
 
 class Writer {
 public:
@@ -116,6 +116,7 @@ std::string encodeSavedRun(const SavedRun& run) {
     w.put(o.file);
     w.put(o.sceneText);
     w.put(o.plants);
+    w.put(o.density);
     w.put(o.seed);
     w.put(o.dt);
     w.put(o.spacing);
@@ -151,6 +152,7 @@ SavedRun decodeSavedRun(const std::string& bytes, const std::string& name) {
     o.file = r.getString();
     o.sceneText = r.getString();
     o.plants = r.get<uint32_t>();
+    o.density = r.get<float>();
     o.seed = r.get<int64_t>();
     o.dt = r.get<float>();
     o.spacing = r.get<float>();
@@ -180,6 +182,7 @@ SavedRun decodeSavedRun(const std::string& bytes, const std::string& name) {
     }
     if (!r.atEnd()) r.fail("it has bytes past its end");
     if (!(o.dt > 0)) r.fail("its tick is not positive");
+    if (!(o.density > 0)) r.fail("its population density is not positive");
     return run;
 }
 

@@ -195,6 +195,8 @@ Simulation::Simulation(const SimulationOptions& options, const vk::Context* cont
     m.context = context;
     m.options = options;
     if (!(options.dt > 0) || !std::isfinite(options.dt)) throw std::invalid_argument("the tick's dt must be positive");
+    if (!(options.density > 0) || !std::isfinite(options.density))
+        throw std::invalid_argument("the populations' density factor must be positive");
     if (options.backend == Backend::Gpu && !context)
         throw std::logic_error("the GPU backend grows the field on a Vulkan device");
     std::vector<ir::EcoWarning> warnings;
@@ -212,11 +214,14 @@ Simulation::Simulation(const SimulationOptions& options, const vk::Context* cont
         if (options.plants)
             throw ir::InputError({options.file, 0, 0},
                                  "the scene places its plants in populations: it takes no count of plants");
-        layout = layoutPopulations(m.g, m.seed, warnings);
+        layout = layoutPopulations(m.g, m.seed, warnings, options.density);
         m.absent = layout.absent;
         m.vigour = layout.vigour;
         m.derive.absent = layout.absent;
     }
+    if (!hasPopulations(m.g) && options.density != 1.0f)
+        throw ir::InputError({options.file, 0, 0},
+                             "the scene has no populations for a density to scale: a count of plants sets its field");
     m.derive.plants = hasPopulations(m.g) ? uint32_t(layout.placements.size())
                       : options.plants    ? options.plants
                                           : uint32_t(m.g.species.size());

@@ -32,6 +32,8 @@ struct SimulationOptions {
     std::string file;      // a scene or grammar file, or the name `sceneText` goes by in messages
     std::string sceneText; // a scene's text, read instead of `file` when not empty
     uint32_t plants = 0;   // 0: one plant of each species where the scene puts it, or its populations
+    // A factor on every population's plants (its Count, or its Density); the scene must have populations unless 1.
+    float density = 1.0f;
     int64_t seed = -1;     // -1: the grammar's `seed:` (or 0)
     float dt = 1.0f;       // simulated seconds per tick
     float spacing = 0.0f;  // between neighbouring plants of a field of many; 0: from the plants' grown size

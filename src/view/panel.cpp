@@ -51,6 +51,8 @@ void simulation(ViewControls& c, PanelActions& actions) {
     int plants = int(c.plants);
     if (ImGui::InputInt("plants (at reset, 0: the scene's)", &plants, 10, 100))
         c.plants = std::uint32_t(std::clamp(plants, 0, 1000000));
+    ImGui::SliderFloat("population density x (at reset)", &c.density, 0.1f, 4.0f, "%.2f",
+                       ImGuiSliderFlags_Logarithmic);
 }
 
 void look(ViewControls& c, PanelActions& actions) {

@@ -59,7 +59,8 @@ SpeciesControls& speciesOf(ViewControls& controls, std::string_view name, std::s
 
 std::string settingNames() {
     return "sun.azimuth, sun.elevation, sun.intensity, sky, daylight, rain, soil_ph, gravity, time_scale, paused, "
-           "seed, plants, shadows, style, render_scale, species.K.grow_rate, species.K.geotropism, species.K.strength";
+           "seed, plants, density, shadows, style, render_scale, species.K.grow_rate, species.K.geotropism, "
+           "species.K.strength";
 }
 
 void applySetting(ViewControls& c, std::string_view assignment) {
@@ -80,6 +81,7 @@ void applySetting(ViewControls& c, std::string_view assignment) {
     else if (name == "paused") c.paused = onOff(name, value);
     else if (name == "seed") c.seed = count(name, value, UINT32_MAX);
     else if (name == "plants") c.plants = count(name, value, 1000000);
+    else if (name == "density") c.density = number(name, value, 0.01f, 100.0f);
     else if (name == "shadows") c.shadows = onOff(name, value);
     else if (name == "render_scale") c.renderScale = number(name, value, 0.25f, 2.0f);
     else if (name == "style") {

@@ -30,9 +30,11 @@ struct ViewControls {
     float gravity = 9.81f;   // m/s²
     float timeScale = 1.0f; // simulated seconds a second of the viewer's clock while running (view/growth_clock.h)
     bool paused = false;
-    // Take effect at a reset: the field's seed and its plants (0: as the scene places them).
+    // Take effect at a reset: the field's seed, its plants (0: as the scene places them) and the factor on its
+    // populations' plants.
     std::uint32_t seed = 0;
     std::uint32_t plants = 0;
+    float density = 1.0f;
     bool shadows = true;
     draw::Style style = draw::Style::Lit;
     // The frame's size relative to the window's: below 1 a faster, coarser picture; 2 draws four samples a pixel,
@@ -48,8 +50,9 @@ public:
 };
 
 // Applies `name=value`: sun.azimuth, sun.elevation, sun.intensity, sky, daylight, rain, soil_ph, gravity,
-// time_scale, paused, seed, plants, shadows (on/off), style (lit/toon/outline/paper-cut), render_scale, and per species
-// species.K.grow_rate, species.K.geotropism, species.K.strength with K a species' number (from 0) or name.
+// time_scale, paused, seed, plants, density, shadows (on/off), style (lit/toon/outline/paper-cut), render_scale, and
+// per species species.K.grow_rate, species.K.geotropism, species.K.strength with K a species' number (from 0) or
+// name.
 void applySetting(ViewControls& controls, std::string_view assignment);
 // Every name applySetting takes, for the help and the error messages.
 std::string settingNames();

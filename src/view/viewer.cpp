@@ -178,6 +178,7 @@ ViewControls keptControls(ViewControls scene, const ViewControls& user) {
     scene.paused = user.paused;
     scene.seed = user.seed;
     scene.plants = user.plants;
+    scene.density = user.density;
     scene.renderScale = user.renderScale;
     return scene;
 }
@@ -233,6 +234,7 @@ void runViewer(const ViewOptions& options) {
     ViewControls controls = controlsFor(live.simulation->environment(), live.settings, speciesNames(*live.simulation));
     controls.seed = simulationOptions.seed >= 0 ? std::uint32_t(simulationOptions.seed) : 0;
     controls.plants = simulationOptions.plants;
+    controls.density = simulationOptions.density;
     for (const std::string& s : options.settings) applySetting(controls, s);
     live.simulation->setEnvironment(environmentOf(controls, live.simulation->environment()));
     const auto ticksBefore = std::uint32_t(std::ceil(options.startTime / simulationOptions.dt - 1e-9));
@@ -314,6 +316,7 @@ void runViewer(const ViewOptions& options) {
             field::SimulationOptions reset = simulationOptions;
             reset.seed = controls.seed;
             reset.plants = controls.plants;
+            reset.density = controls.density;
             try {
                 replaceField(live, makeField(context, options, reset));
                 growth.restart();

@@ -195,6 +195,31 @@ TEST_F(SimulationTest, PopulationsStandInTheirRegionsWithEmptySlotsAndObstacles)
     EXPECT_LT(highest, 1.4f / 0.6f * lowest + 1e-3f);
 }
 
+TEST_F(SimulationTest, ADensityFactorScalesEveryPopulationsPlantsAndNeedsPopulations) {
+    field::SimulationOptions o = populated(field::Backend::Cpu);
+    o.density = 2.0f; // 14 herbs, 4 bushes: fourteen rounds of the two species
+    field::Simulation twice(o, &context());
+    EXPECT_EQ(twice.plants(), 28u);
+    EXPECT_EQ(twice.standingPlants(), 18u);
+    for (uint32_t p = 0; p < twice.plants(); p += 2) {
+        ASSERT_TRUE(twice.present(p)) << p;
+        const glm::vec3 at = turtle::plantOrigin(twice.placements()[p]);
+        EXPECT_LE(std::fabs(at.x - 10.0f), 4.0f) << p;
+        EXPECT_LE(std::fabs(at.z), 3.0f) << p;
+    }
+    o.density = 0.5f; // 3.5 herbs round to 4, one bush
+    field::Simulation half(o, &context());
+    EXPECT_EQ(half.plants(), 8u);
+    EXPECT_EQ(half.standingPlants(), 5u);
+
+    field::SimulationOptions plain;
+    plain.file = "plain.eco";
+    plain.sceneText = R"(EcoSystem 1.0 "Plain" { Plant "Herb" { Grow { w = A(0); A(0) -> A(0); } } })";
+    plain.backend = field::Backend::Cpu;
+    plain.density = 2.0f;
+    EXPECT_THROW(field::Simulation(plain, &context()), ir::InputError);
+}
+
 TEST_F(SimulationTest, LeavesOfAModelAreDrawnAndMeasuredWithIt) {
     // A diamond leaf model two units long and one wide (a quarter of its square of length), beside the scene.
     const std::filesystem::path folder = std::filesystem::temp_directory_path() / "simeco-model-leaf-test";

@@ -18,6 +18,7 @@ field::SavedRun sampleRun() {
     run.options.file = "garden.eco";
     run.options.sceneText = "EcoSystem 1.0 \"g\" { }";
     run.options.plants = 2;
+    run.options.density = 1.5f;
     run.options.seed = 7;
     run.options.dt = 0.5f;
     run.state.ticks = 9;
@@ -44,6 +45,7 @@ TEST(SavedRun, ReadsBackWhatItWrote) {
     EXPECT_EQ(back.options.file, run.options.file);
     EXPECT_EQ(back.options.sceneText, run.options.sceneText);
     EXPECT_EQ(back.options.plants, 2u);
+    EXPECT_EQ(back.options.density, 1.5f);
     EXPECT_EQ(back.options.seed, 7);
     EXPECT_EQ(back.options.dt, 0.5f);
     EXPECT_EQ(back.state.ticks, 9u);

@@ -32,6 +32,7 @@ TEST(ViewControls, SettingsChangeTheControlsTheyName) {
     applySetting(c, "shadows=off");
     applySetting(c, "style=paper-cut");
     applySetting(c, "time_scale=2.5");
+    applySetting(c, "density=0.5");
     applySetting(c, "render_scale=0.5");
     applySetting(c, "species.1.grow_rate=0.5");
     applySetting(c, "species.Oxalis.geotropism=-2");
@@ -42,6 +43,7 @@ TEST(ViewControls, SettingsChangeTheControlsTheyName) {
     EXPECT_FALSE(c.shadows);
     EXPECT_EQ(c.style, draw::Style::PaperCut);
     EXPECT_EQ(c.timeScale, 2.5f);
+    EXPECT_EQ(c.density, 0.5f);
     EXPECT_EQ(c.renderScale, 0.5f);
     EXPECT_EQ(c.species[1].factors.growRate, 0.5f);
     EXPECT_EQ(c.species[0].factors.geotropism, -2.0f);

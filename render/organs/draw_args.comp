@@ -1,8 +1,8 @@
 #version 460
 // The indirect draw records of a frame, from its draw lists on the device (organs/draw_lists.comp): one indexed draw
 // per bucket, a kind or a leaf shape at a level of detail (the mesh's index range for it: for a leaf shape, its
-// triangles of the leaf mesh, or its far cut within the leaf hull; the bucket's count and first place in the order, which the same
-// invocation lays out), and the shadow volumes' draw, so the host never reads instance counts.
+// triangles of the leaf mesh, or its far cut within the leaf hull; the bucket's count and first place in the order,
+// which the same invocation lays out), and the shadow volumes' draw, so the host never reads instance counts.
 #extension GL_GOOGLE_include_directive : require
 
 #include "render/shared/draw_layout.h"

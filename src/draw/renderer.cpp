@@ -51,6 +51,8 @@ constexpr std::array<std::uint32_t, shared::kVolumeCorners> kVolumeFaces = {
     0, 1, 7,  0, 7,  6,       // side a b
     1, 2, 9,  1, 9,  8,       // side b c
     2, 0, 11, 2, 11, 10};     // side c a
+static_assert(*std::max_element(kVolumeFaces.begin(), kVolumeFaces.end()) + 1 == shared::kVolumeVertices);
+
 // Line half-width of toon outlines per 600 pixels of image height, and what counts as a depth edge.
 constexpr float kOutlinePixelsPer600 = 1.0f;
 constexpr float kOutlineThreshold = 0.02f;

@@ -219,17 +219,19 @@ void runViewer(const ViewOptions& options) {
     const auto waitForFrames = [&] {
         for (const FrameSlot& slot : slots) waitFor(device, slot);
     };
-    // Another field in place of the drawn one: its renderer makes the frames' targets anew.
+    GrowthClock growth(options.simulation.dt);
+    GrowthRate growthRate;
+    // Another field in place of the drawn one: its renderer makes the frames' targets anew, its time starts anew.
     const auto replaceField = [&](LiveField& field, LiveField&& next) {
         waitForFrames();
         for (FrameSlot& slot : slots) slot.target.reset();
         field = std::move(next);
+        growth.restart();
+        growthRate.restart();
     };
 
     field::SimulationOptions simulationOptions = options.simulation;
     LiveField live = makeField(context, options, simulationOptions);
-    GrowthClock growth(simulationOptions.dt);
-    GrowthRate growthRate;
     IdleOnExit idleOnExit{device};
     ViewControls controls = controlsFor(live.simulation->environment(), live.settings, speciesNames(*live.simulation));
     controls.seed = simulationOptions.seed >= 0 ? std::uint32_t(simulationOptions.seed) : 0;
@@ -275,8 +277,6 @@ void runViewer(const ViewOptions& options) {
                 seen = written;
                 try {
                     replaceField(live, makeField(context, options, simulationOptions));
-                    growth.restart();
-                    growthRate.restart();
                     controls = keptControls(
                         controlsFor(live.simulation->environment(), live.settings, speciesNames(*live.simulation)),
                         controls);
@@ -319,8 +319,6 @@ void runViewer(const ViewOptions& options) {
             reset.density = controls.density;
             try {
                 replaceField(live, makeField(context, options, reset));
-                growth.restart();
-                growthRate.restart();
                 live.simulation->setEnvironment(environmentOf(controls, live.simulation->environment()));
                 drawAgain(live);
                 simulationOptions = reset;

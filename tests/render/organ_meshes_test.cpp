@@ -104,7 +104,8 @@ TEST(OrganMeshesTest, AFarStemIsABandAcrossTheUnitStemWoundToFaceMinusZAndEveryO
     }
     EXPECT_EQ(corners.size(), 6u);
     for (std::uint32_t t = 0; t < band.triangleCount(); ++t) {
-        const glm::vec3 a = position(d, band, 3 * t), b = position(d, band, 3 * t + 1), c = position(d, band, 3 * t + 2);
+        const glm::vec3 a = position(d, band, 3 * t), b = position(d, band, 3 * t + 1);
+        const glm::vec3 c = position(d, band, 3 * t + 2);
         EXPECT_LT(glm::cross(b - a, c - a).z, 0.0f) << "triangle " << t;
     }
     for (std::uint32_t kind : {shared::kOrganSphere, shared::kOrganDisc, shared::kOrganLeaf, shared::kOrganTriangle})

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -76,6 +77,10 @@ struct Batch {
     stream::DeriveOptions deriverOptions; // its plants, seed and budget
     std::vector<float> vigour;            // per plant (empty: 1)
     uint64_t modules = 0;
+    // What the batch's last interpretation took, while its drawn string is the one interpreted then (no step derived
+    // since): the next drawing records the turtle within it, in one submission with the grown sizes, the light and
+    // the statistics, and reads nothing back between them.
+    std::optional<turtle::TurtleRoom> room;
 };
 
 struct Simulation::Impl {
@@ -279,7 +284,9 @@ TickReport Simulation::tick() {
         const Clock::time_point start = Clock::now();
         for (Batch& b : m.batches) {
             const std::vector<uint8_t> batchDue = slice(due, b.first, b.count);
-            derived += b.deriver ? b.deriver->advance(batchDue) : b.reference->advance(batchDue);
+            const uint32_t batchDerived = b.deriver ? b.deriver->advance(batchDue) : b.reference->advance(batchDue);
+            if (batchDerived > 0) b.room.reset();
+            derived += batchDerived;
         }
         m.seconds.derive += secondsSince(start);
         report.derived = std::max(report.derived, derived);
@@ -360,6 +367,7 @@ void Simulation::resume(const SimulationState& state) {
             b.reference->resume(saved);
             b.modules = b.reference->current().size();
         }
+        b.room.reset();
     }
     m.ticks = state.ticks;
     m.time = double(state.ticks) * m.options.dt;
@@ -424,13 +432,10 @@ std::vector<const turtle::DeviceOrgans*> Simulation::Impl::interpretOnDevice() {
         // A grammar without a homomorphism draws its derived string: its segments shorten a copy.
         if (tables.growsSegments() && drawnModules.symbols == b.deriver->current().symbols)
             drawnModules = b.growth->copyForDrawing(drawnModules);
-        if (tables.drawsGrowth() || tables.growsSegments()) b.growth->growSizes(drawnModules, ts);
-        organs = &turtle->interpret(drawnModules, b.field);
-        seconds.interpret += secondsSince(start);
-        start = Clock::now();
+        const bool grows = tables.drawsGrowth() || tables.growsSegments();
         const std::vector<float> bases = baseHeights(b.field.placements);
         // The light of the last grid, the statistics with it, and the organs splatted for the next.
-        context->submitAndWait([&](VkCommandBuffer cmd) {
+        const auto recordLight = [&](VkCommandBuffer cmd) {
             if (drawnModules.particles)
                 lightGpu->recordGather(cmd, *organs, *drawnModules.particles, drawnModules.origins,
                                        b.deriver->current().particles, b.first);
@@ -442,7 +447,28 @@ std::vector<const turtle::DeviceOrgans*> Simulation::Impl::interpretOnDevice() {
             }
             statistics->record(cmd, *organs, drawnModules.particles, bases);
             lightGpu->recordSplat(cmd, *organs, b.first);
-        });
+        };
+        // The string the batch's last drawing interpreted (no step derived since, no query answered into it): one
+        // submission grows its sizes, records the turtle within that drawing's room and gives the light. Else, or
+        // where it outgrew the room, the turtle reads its sizes back between its passes.
+        bool sized = false, recorded = false;
+        if (b.room && !answersQueries) {
+            context->submitAndWait([&](VkCommandBuffer cmd) {
+                if (grows) b.growth->recordSizes(cmd, drawnModules, ts);
+                organs = &turtle->record(cmd, drawnModules, b.field, *b.room);
+                recordLight(cmd);
+            });
+            sized = true;
+            recorded = turtle->recorded().fit;
+        }
+        if (!recorded) {
+            if (grows && !sized) b.growth->growSizes(drawnModules, ts); // a segment shortened twice would be short
+            organs = &turtle->interpret(drawnModules, b.field);
+            b.room = turtle->lastRoom();
+        }
+        seconds.interpret += secondsSince(start);
+        start = Clock::now();
+        if (!recorded) context->submitAndWait(recordLight);
         const std::vector<shared::PlantStatistics> s = statistics->read();
         lastStatistics.insert(lastStatistics.end(), s.begin(), s.end());
         seconds.statistics += secondsSince(start);

@@ -412,7 +412,7 @@ const DeviceOrgans& GpuTurtle::Impl::interpret(const stream::DeviceModules& m, c
     reserveOrgans(organCount);
     run.push.organCapacity = organs.capacity;
     ctx.submitAndWait([&](VkCommandBuffer cmd) { recordOrgans(cmd, run, place.groupsFor(organCount)); });
-    needed = TurtleRoom{run.levels, organCount};
+    needed = TurtleRoom{run.levels, organCount, run.marked};
     return organs;
 }
 
@@ -460,7 +460,7 @@ const DeviceOrgans& GpuTurtle::Impl::record(VkCommandBuffer cmd, const stream::D
     bounded.count = bound;
     Run run = begin(bounded, options);
     run.countedOnDevice = true;
-    run.marked = ~0u;
+    run.marked = room.marks;
     run.levels = room.levels;
     run.push.items = room.levels;
     run.push.organCapacity = organs.capacity;
@@ -481,7 +481,7 @@ const DeviceOrgans& GpuTurtle::Impl::record(VkCommandBuffer cmd, const stream::D
     VkBufferCopy words{0, 0, kTurtleStatusWords * 4};
     vkCmdCopyBuffer(cmd, status.handle(), statusReadback[slot].handle(), 1, &words);
     vk::memoryBarrier(cmd, Hazard::TransferToHost);
-    pending.push_back({slot, TurtleRoom{room.levels, organs.capacity}});
+    pending.push_back({slot, TurtleRoom{room.levels, organs.capacity, room.marks}});
     return organs;
 }
 

@@ -48,10 +48,12 @@ struct DeviceOrgans {
 };
 
 // The room a recording that reads nothing back interprets a string in: levels of non-linear modules
-// resolved one after another, and organ instances written.
+// resolved one after another, and organ instances written; and the marks that occur in the string (the searches
+// that none needs are left out), every one where they are not known.
 struct TurtleRoom {
     std::uint32_t levels = 0;
     std::uint32_t organs = 0;
+    std::uint32_t marks = ~0u;
 };
 
 // What a recording found on the device: the string's modules, its levels and organs, and whether they fit the
@@ -90,7 +92,8 @@ public:
     // the caller submits.
     const DeviceOrgans& record(VkCommandBuffer cmd, const stream::DeviceModules& modules,
                                const turtle::FieldOptions& field, TurtleRoom room);
-    // What the last interpret() needed: room to record the same string again.
+    // What the last interpret() needed: room to record the same string again (its marks too, which a string of
+    // other modules may not share).
     TurtleRoom lastRoom() const;
     // What the oldest recording not yet read found, once its submission has completed. Up to
     // kRecordingsInFlight recordings may be in flight (record() refuses more, or one that needs larger buffers

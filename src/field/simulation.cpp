@@ -465,6 +465,7 @@ std::vector<const turtle::DeviceOrgans*> Simulation::Impl::interpretOnDevice() {
             if (grows && !sized) b.growth->growSizes(drawnModules, ts); // a segment shortened twice would be short
             organs = &turtle->interpret(drawnModules, b.field);
             b.room = turtle->lastRoom();
+            b.room->marks = turtle->lastMarks(); // the string this batch draws again until it derives
         }
         seconds.interpret += secondsSince(start);
         start = Clock::now();

@@ -338,8 +338,9 @@ struct GpuTurtle::Impl {
     Run begin(const stream::DeviceModules& m, const turtle::FieldOptions& options) const;
     // Room for `levels` levels of non-linear modules.
     void reserveLevels(std::uint32_t levels);
-    // What the last interpretation needed.
+    // What the last interpretation needed, and the marks that occurred in its string.
     TurtleRoom needed{};
+    std::uint32_t neededMarks = ~0u;
     // The main arrays each pass reads and writes, per module (organs counted as if every module drew one, the
     // buffers' capacity): a model of the traffic, not a measurement.
     static std::uint64_t trafficOf(std::uint64_t n, std::uint64_t stride, std::uint64_t rounds,
@@ -381,6 +382,7 @@ const DeviceOrgans& GpuTurtle::Impl::interpret(const stream::DeviceModules& m, c
         empty.spacing = options.spacing > 0 ? options.spacing : 1.0f;
         organs = uploadOrgans(ctx, empty);
         needed = TurtleRoom{};
+        neededMarks = ~0u;
         return organs;
     }
     checkRange(n, sizeof(TurtleStep), "steps");
@@ -412,7 +414,8 @@ const DeviceOrgans& GpuTurtle::Impl::interpret(const stream::DeviceModules& m, c
     reserveOrgans(organCount);
     run.push.organCapacity = organs.capacity;
     ctx.submitAndWait([&](VkCommandBuffer cmd) { recordOrgans(cmd, run, place.groupsFor(organCount)); });
-    needed = TurtleRoom{run.levels, organCount, run.marked};
+    needed = TurtleRoom{run.levels, organCount};
+    neededMarks = run.marked;
     return organs;
 }
 
@@ -797,6 +800,8 @@ const DeviceOrgans& GpuTurtle::record(VkCommandBuffer cmd, const stream::DeviceM
 }
 
 TurtleRoom GpuTurtle::lastRoom() const { return impl_->needed; }
+
+std::uint32_t GpuTurtle::lastMarks() const { return impl_->neededMarks; }
 
 RecordedInterpretation GpuTurtle::recorded() {
     Impl& m = *impl_;

@@ -92,9 +92,11 @@ public:
     // the caller submits.
     const DeviceOrgans& record(VkCommandBuffer cmd, const stream::DeviceModules& modules,
                                const turtle::FieldOptions& field, TurtleRoom room);
-    // What the last interpret() needed: room to record the same string again (its marks too, which a string of
-    // other modules may not share).
+    // What the last interpret() needed: room to record the same string again, or another as large (every mark).
     TurtleRoom lastRoom() const;
+    // The marks that occur in the string the last interpret() read (TurtleRoom::marks): for recording that string
+    // again, as another string may have others.
+    std::uint32_t lastMarks() const;
     // What the oldest recording not yet read found, once its submission has completed. Up to
     // kRecordingsInFlight recordings may be in flight (record() refuses more, or one that needs larger buffers
     // than those in flight use, and interpret() refuses while any is); each is read once, oldest first.

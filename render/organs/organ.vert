@@ -37,7 +37,7 @@ layout(location = 6) flat out int outTexture; // the texture layer the albedo ti
 vec2 organUv(uint kind, vec4 local, vec4 localNormal) {
     if (kind == kOrganLeaf) return vec2(local.x, 0.5 - local.y);
     if (kind == kOrganStem) {
-        if (localNormal.w > 0.5 && localNormal.w < 0.5 * (1.0 + kStemBandVertex)) return 0.5 + 0.5 * local.yz;
+        if (localNormal.w > 0.5 && !isStemBandVertex(localNormal)) return 0.5 + 0.5 * local.yz;
         return vec2(acos(clamp(local.y, -1.0, 1.0)) / 3.14159265, local.w);
     }
     if (kind == kOrganTriangle) return local.x < 0.5 ? vec2(0.0) : (local.x < 1.5 ? vec2(1.0, 0.0) : vec2(0.0, 1.0));

@@ -30,6 +30,11 @@ vec3 stemRingPoint(vec3 ringCentre, vec3 offset, vec3 heading, vec3 otherHeading
     return ringCentre + offset + along * heading;
 }
 
+// Whether a stem mesh vertex is the far band's (MeshVertex: normal.w is 1 on the caps, kStemBandVertex on the band).
+bool isStemBandVertex(vec4 localNormal) {
+    return localNormal.w > 0.5 * (1.0 + kStemBandVertex);
+}
+
 // `camera`: xyz the camera's position, w the world's size of a pixel at unit distance along the view (with a
 // `parallel` projection: at any distance), for cpfg's flat lines and bands. The shadow volumes pass zero: a band
 // casts the shadow of the cylinder of its width (pixel lines cast none).
@@ -54,7 +59,7 @@ OrganVertex organVertex(OrganInstance o, uint kind, vec4 local, vec4 localNormal
         }
         bool drawnFlat = o.shape != kLineCylinder && camera.w > 0.0;
         // The far mesh's band (a stem a pixel or two wide), across the segment as the viewer sees it.
-        bool band = localNormal.w > 0.5 * (1.0 + kStemBandVertex);
+        bool band = isStemBandVertex(localNormal);
         vec3 across = cross(H, towardsCamera);
         across = dot(across, across) > 1e-12 ? normalize(across) : L;
         if (drawnFlat || band) radial = local.y * across;

@@ -19,7 +19,7 @@ public:
 
     // The ticks due after `seconds` more of the viewer's clock at `timeScale` simulated seconds a second.
     std::uint32_t ticksAfter(double seconds, double timeScale);
-    // Nothing owed: a new field, or one that was paused.
+    // Nothing owed: a new field, whose time starts anew.
     void restart() { owed_ = 0.0; }
 
 private:

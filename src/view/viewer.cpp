@@ -33,6 +33,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
+double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 // Ticks of leaf area and light the panel's plot shows.
 constexpr size_t kHistoryLength = 240;
@@ -101,7 +102,7 @@ void tickField(LiveField& f, std::uint32_t ticks) {
     const auto start = Clock::now();
     for (std::uint32_t k = 0; k < ticks; ++k) f.simulation->tick();
     drawAgain(f);
-    f.tickSeconds = std::chrono::duration<double>(Clock::now() - start).count() / ticks;
+    f.tickSeconds = secondsSince(start) / ticks;
 }
 
 using UniqueFence = vk::UniqueFence;
@@ -344,7 +345,7 @@ void runViewer(const ViewOptions& options) {
             waitForFrames();
             tickField(live, ticks);
         }
-        growthRate.add(std::chrono::duration<double>(Clock::now() - opened).count(), live.simulation->time());
+        growthRate.add(secondsSince(opened), live.simulation->time());
 
         if (extent.width == 0 || extent.height == 0) { // minimised
             overlay.cancel();
@@ -425,8 +426,7 @@ void runViewer(const ViewOptions& options) {
             click.reset();
         }
         const bool last = (options.frames > 0 && frames >= options.frames) ||
-                          (options.seconds > 0 && std::chrono::duration<double>(Clock::now() - opened).count() >=
-                                                      options.seconds);
+                          (options.seconds > 0 && secondsSince(opened) >= options.seconds);
         if ((actions.screenshot || last) && !options.screenshot.empty()) {
             waitFor(device, slot);
             writeScreenshot(nextScreenshot(options.screenshot, screenshots),

@@ -50,8 +50,8 @@ layout(std430, binding = 10) writeonly buffer VolumeWindow3 {
 layout(std430, binding = 6) readonly buffer LeafHullTriangles {
     uvec2 leafHullTriangles[];  // per leaf shape: its first triangle in the leaf hull, and its count
 };
-layout(std430, binding = 11) readonly buffer LeafFarHullTriangles {
-    uvec2 leafFarHullTriangles[];  // the same for each shape's far cut, in the same hull
+layout(std430, binding = 11) readonly buffer LeafFarShadowTriangles {
+    uvec2 leafFarShadowTriangles[];  // the same for each shape's far shadow, in the same hull (organ_meshes.h)
 };
 layout(std430, binding = 7) readonly buffer InteriorEdges {
     uint interiorEdges[];  // per triangle of the index buffer: bit k, its edge k is inside a flat sheet
@@ -153,15 +153,16 @@ void main() {
         }
     }
 
-    // A leaf casts from its own shape's triangles of the hull all shapes share: of its far cut when it is a few
-    // pixels across on screen (as render/organs/draw_lists.comp draws it coarse).
+    // A leaf casts from its own shape's triangles of the hull all shapes share; when it is a few pixels across on
+    // screen (as render/organs/draw_lists.comp draws it coarse), from its far shadow: a flat leaf's silhouette
+    // quadrilateral of its own area, whose volume has four sides where its lobes' and leaflets' had many.
     uvec2 triangles = uvec2(0u, push.triangleCount);
     if (push.kind == kOrganLeaf) {
         const float depth = dot(push.viewDepth, vec4(o.position.xyz, 1.0));
         const bool far = depth > 0.0 &&
                          max(o.position.w, o.heading.w) < push.farLeafPixels * push.pixelAtUnitDepth * depth;
         triangles = o.shape >= uint(leafHullTriangles.length()) ? uvec2(0u)
-                    : far                                        ? leafFarHullTriangles[o.shape]
+                    : far                                        ? leafFarShadowTriangles[o.shape]
                                                                  : leafHullTriangles[o.shape];
     }
     for (uint t = triangles.x; t < triangles.x + triangles.y; ++t) {

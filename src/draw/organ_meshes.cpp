@@ -4,10 +4,12 @@
 #include <cmath>
 #include <map>
 #include <numbers>
+#include <optional>
 #include <span>
 
 #include <glm/glm.hpp>
 
+#include "draw/leaf_silhouette.h"
 #include "vk/context.h"
 
 namespace simeco::draw {
@@ -461,6 +463,63 @@ void markInteriorEdges(OrganMeshData& data, std::uint32_t first, std::uint32_t c
             if (uses[edge(t, k)] == 2) data.interiorEdges[t] |= 1u << k;
 }
 
+// The corners of `triangles` (the first, counted from the range's first, and how many) of a range.
+std::vector<glm::vec3> triangleCorners(const OrganMeshData& data, const MeshRange& range,
+                                       std::array<std::uint32_t, 2> triangles) {
+    std::vector<glm::vec3> corners;
+    for (std::uint32_t i = 3 * triangles[0]; i < 3 * (triangles[0] + triangles[1]); ++i) {
+        const shared::MeshVertex& v =
+            data.vertices[static_cast<std::size_t>(range.vertexOffset) + data.indices[range.firstIndex + i]];
+        corners.emplace_back(v.position.x, v.position.y, v.position.z);
+    }
+    return corners;
+}
+
+// Each shape's far shadow (OrganMeshData::leafFarShadowTriangles) into the leaf hull begun at triangle `hullFirst`:
+// a silhouette quadrilateral where the far cut has more than two triangles, else the far cut itself. A flat leaf's
+// lies in its plane (z = 0) with the drawn leaf's area; any other shape's (a blossom's, facing along x) across its
+// heading at its middle depth, with the area its face covers seen along the heading.
+void addFarShadows(MeshBuilder& b, OrganMeshData& data, std::uint32_t hullFirst) {
+    const MeshRange hull = b.end();
+    for (std::uint32_t shape = 0; shape < data.leafFarHullTriangles.size(); ++shape) {
+        const std::array<std::uint32_t, 2> far = data.leafFarHullTriangles[shape];
+        std::optional<std::array<glm::vec2, 4>> quad;
+        glm::vec3 low(0.0f), high(0.0f);
+        bool flat = true;
+        if (far[1] > 2) {
+            const std::vector<glm::vec3> cut = triangleCorners(data, hull, far);
+            low = high = cut[0];
+            for (const glm::vec3& p : cut) {
+                low = glm::min(low, p);
+                high = glm::max(high, p);
+            }
+            flat = std::max(std::abs(low.z), std::abs(high.z)) <= 1e-3f * std::max(high.x - low.x, high.y - low.y);
+            auto seen = [&](const glm::vec3& p) { return flat ? glm::vec2(p.x, p.y) : glm::vec2(p.y, p.z); };
+            std::vector<glm::vec2> outline, face;
+            for (const glm::vec3& p : cut) outline.push_back(seen(p));
+            for (const glm::vec3& p :
+                 triangleCorners(data, data.organs[shared::kOrganLeaf], data.leafShapeTriangles[shape]))
+                face.push_back(seen(p));
+            quad = silhouetteQuad(std::move(outline), coveredArea(face));
+        }
+        if (!quad) {
+            data.leafFarShadowTriangles.push_back(far);
+            continue;
+        }
+        const float depth = 0.5f * (low.x + high.x);
+        const std::uint32_t first = b.triangles();
+        std::array<std::uint32_t, 4> corner{};
+        for (std::size_t c = 0; c < 4; ++c) {
+            const glm::vec2 q = (*quad)[c];
+            corner[c] = flat ? b.vertex(glm::vec3(q, 0.0f), glm::vec3(0, 0, 1), 0.0f, static_cast<float>(shape))
+                             : b.vertex(glm::vec3(depth, q), glm::vec3(1, 0, 0), 0.0f, static_cast<float>(shape));
+        }
+        b.triangle(corner[0], corner[1], corner[2]);
+        b.triangle(corner[0], corner[2], corner[3]);
+        data.leafFarShadowTriangles.push_back({first - hullFirst, 2});
+    }
+}
+
 } // namespace
 
 OrganMeshData buildOrganMeshes(const std::vector<ir::LeafModel>& leafModels) {
@@ -478,20 +537,24 @@ OrganMeshData buildOrganMeshes(const std::vector<ir::LeafModel>& leafModels) {
     data.hulls[kOrganDisc] = data.organs[kOrganDisc];
 
     data.organs[kOrganLeaf] = addSurfaces(b, leafModels, Detail::Drawn, data.leafShapeTriangles);
-    // The leaf hull: every shape's shadow cut, then every shape's far cut, in one range.
+    // The leaf hull: every shape's shadow cut, then every shape's far cut and far shadow, in one range.
     b.begin();
     const std::uint32_t hullFirst = b.triangles();
     addSurfaceShapes(b, leafModels, Detail::Shadow, data.leafHullTriangles, hullFirst);
     b.fanFromOutline(true);
     addSurfaceShapes(b, leafModels, Detail::Far, data.leafFarHullTriangles, hullFirst);
     b.fanFromOutline(false);
+    addFarShadows(b, data, hullFirst);
     data.hulls[kOrganLeaf] = b.end();
     data.interiorEdges.assign(data.indices.size() / 3, 0);
     for (std::uint32_t shape = 0; shape <= kLeafLastShape; ++shape) {
         markInteriorEdges(data, hullFirst + data.leafHullTriangles[shape][0], data.leafHullTriangles[shape][1]);
-        markInteriorEdges(data, hullFirst + data.leafFarHullTriangles[shape][0],
-                          data.leafFarHullTriangles[shape][1]);
+        markInteriorEdges(data, hullFirst + data.leafFarHullTriangles[shape][0], data.leafFarHullTriangles[shape][1]);
     }
+    // The silhouette quadrilaterals are flat, whatever the shape.
+    for (std::uint32_t shape = 0; shape < data.leafFarShadowTriangles.size(); ++shape)
+        if (data.leafFarShadowTriangles[shape] != data.leafFarHullTriangles[shape])
+            markInteriorEdges(data, hullFirst + data.leafFarShadowTriangles[shape][0], 2);
 
     b.begin();
     for (int corner = 0; corner < 3; ++corner) {
@@ -525,7 +588,7 @@ OrganMeshData buildOrganMeshes(const std::vector<ir::LeafModel>& leafModels) {
 
 OrganMeshes::OrganMeshes(const vk::Context& context, const std::vector<ir::LeafModel>& leafModels)
     : data_(buildOrganMeshes(leafModels)), vertices_(context, data_.vertices.size() * sizeof(shared::MeshVertex),
-                                           vk::MemoryUsage::DeviceLocal, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT),
+                                                     vk::MemoryUsage::DeviceLocal, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT),
       indices_(context, data_.indices.size() * sizeof(std::uint32_t), vk::MemoryUsage::DeviceLocal,
                VK_BUFFER_USAGE_INDEX_BUFFER_BIT) {
     vk::uploadSpan(context, vertices_, std::span<const shared::MeshVertex>(data_.vertices));
@@ -536,6 +599,8 @@ OrganMeshes::OrganMeshes(const vk::Context& context, const std::vector<ir::LeafM
         vk::deviceBufferWith(context, std::span<const std::array<std::uint32_t, 2>>(data_.leafHullTriangles));
     leafFarHullTriangles_ =
         vk::deviceBufferWith(context, std::span<const std::array<std::uint32_t, 2>>(data_.leafFarHullTriangles));
+    leafFarShadowTriangles_ =
+        vk::deviceBufferWith(context, std::span<const std::array<std::uint32_t, 2>>(data_.leafFarShadowTriangles));
     interiorEdges_ = vk::deviceBufferWith(context, std::span<const std::uint32_t>(data_.interiorEdges));
 }
 

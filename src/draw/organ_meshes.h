@@ -35,7 +35,7 @@ struct OrganMeshData {
     std::array<MeshRange, shared::kOrganKinds> organs; // drawn, by kind (kOrgan*)
     std::array<MeshRange, shared::kOrganKinds> hulls;  // cast shadows, by kind
     // Drawn where an organ is a few pixels across, by kind: its hull, but a stem's band (addStemBand); a leaf is drawn
-    // there with its shape's far cut (leafFarHullTriangles), the one it casts its shadow from at that size.
+    // there with its shape's far cut (leafFarHullTriangles).
     std::array<MeshRange, shared::kOrganKinds> far;
     // Whether a kind's hull is closed (casts from the faces turned away from the sun) or an open sheet.
     std::array<bool, shared::kOrganKinds> closedHull{};
@@ -44,8 +44,12 @@ struct OrganMeshData {
     // how many. A leaf is drawn, and casts, from its own shape's alone.
     std::vector<std::array<std::uint32_t, 2>> leafShapeTriangles, leafHullTriangles;
     // The same for the far cut of each shape, also within the leaf hull's range: fewer triangles still, which a leaf
-    // a few pixels across on screen is drawn with and casts from.
+    // a few pixels across on screen is drawn with.
     std::vector<std::array<std::uint32_t, 2>> leafFarHullTriangles;
+    // What a leaf a few pixels across casts its shadow from, within the leaf hull: a silhouette quadrilateral
+    // (leaf_silhouette.h), a flat leaf's in its plane with its own area, a blossom's across its heading with its
+    // face's; two triangles in place of the far cut's many. A shape whose far cut has two at most casts from that.
+    std::vector<std::array<std::uint32_t, 2>> leafFarShadowTriangles;
     // Per triangle of the index buffer: bit k set where its edge k (corner k to corner k + 1) is shared with another
     // triangle of the same flat leaf shape. The shadow volumes of a flat sheet's triangles meet there with opposite
     // sides, which cancel in the stencil, so they leave them out (shadow_volume.vert). Zero elsewhere.
@@ -76,6 +80,7 @@ public:
     const vk::Buffer& leafShapeTriangles() const { return leafShapeTriangles_; }
     const vk::Buffer& leafHullTriangles() const { return leafHullTriangles_; }
     const vk::Buffer& leafFarHullTriangles() const { return leafFarHullTriangles_; }
+    const vk::Buffer& leafFarShadowTriangles() const { return leafFarShadowTriangles_; }
     const vk::Buffer& interiorEdges() const { return interiorEdges_; }
 
 private:
@@ -85,6 +90,7 @@ private:
     vk::Buffer leafShapeTriangles_;
     vk::Buffer leafHullTriangles_;
     vk::Buffer leafFarHullTriangles_;
+    vk::Buffer leafFarShadowTriangles_;
     vk::Buffer interiorEdges_;
 };
 

@@ -408,7 +408,7 @@ void Renderer::Resources::recordDrawInputs(VkCommandBuffer cmd, const std::vecto
                                          {*parts[p].instances, *parts[p].table, r.meshes.vertices(), r.meshes.indices(),
                                           r.volumeDraw, volumeWindows[0], r.meshes.leafHullTriangles(),
                                           r.meshes.interiorEdges(), volumeWindows[1], volumeWindows[2],
-                                          volumeWindows[3], r.meshes.leafFarHullTriangles(), r.frameConstants},
+                                          volumeWindows[3], r.meshes.leafFarShadowTriangles(), r.frameConstants},
                                          push, r.shadowVolumes.groupsFor(counts.count[kind]));
             }
         }

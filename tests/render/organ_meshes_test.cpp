@@ -225,6 +225,73 @@ TEST(OrganMeshesTest, LeafHullsAndFarCutsAreCoarserCutsOfTheDrawnShapes) {
     }
 }
 
+// A leaf or blossom a few pixels across casts its shadow from a silhouette quadrilateral (its far cut's many
+// triangles cast as many volumes, each with its long sides): two triangles of its shape sharing a flagged edge, a
+// flat leaf's in its plane with the drawn leaf's area, a blossom's across its heading within its depth.
+TEST(OrganMeshesTest, LeavesAndBlossomsAFewPixelsAcrossCastFromASilhouetteQuadrilateral) {
+    OrganMeshData d = draw::buildOrganMeshes();
+    ASSERT_EQ(d.leafFarShadowTriangles.size(), d.leafShapeTriangles.size());
+    const MeshRange& hull = d.hulls[shared::kOrganLeaf];
+    for (std::uint32_t shape = 0; shape <= shared::kSurfaceLastShape; ++shape) {
+        const std::array<std::uint32_t, 2> far = d.leafFarHullTriangles[shape], cast = d.leafFarShadowTriangles[shape];
+        if (far[1] <= 2) {
+            EXPECT_EQ(cast, far) << "shape " << shape;
+            continue;
+        }
+        ASSERT_EQ(cast[1], 2u) << "shape " << shape;
+        ASSERT_LE(3 * (cast[0] + 2), hull.indexCount);
+        glm::vec3 low(1e9f), high(-1e9f);
+        float drawnArea = 0.0f;
+        const MeshRange& drawn = d.organs[shared::kOrganLeaf];
+        for (std::uint32_t t = d.leafShapeTriangles[shape][0];
+             t < d.leafShapeTriangles[shape][0] + d.leafShapeTriangles[shape][1]; ++t) {
+            const glm::vec3 a = position(d, drawn, 3 * t), b = position(d, drawn, 3 * t + 1),
+                            c = position(d, drawn, 3 * t + 2);
+            drawnArea += 0.5f * glm::cross(b - a, c - a).z;
+            low = glm::min(low, glm::min(a, glm::min(b, c)));
+            high = glm::max(high, glm::max(a, glm::max(b, c)));
+        }
+        std::array<glm::vec3, 6> corner;
+        glm::vec3 middle(0.0f);
+        for (std::uint32_t k = 0; k < 6; ++k) {
+            corner[k] = position(d, hull, 3 * cast[0] + k);
+            middle += corner[k] / 6.0f;
+            const std::uint32_t index = d.indices[hull.firstIndex + 3 * cast[0] + k];
+            EXPECT_EQ(std::lround(d.vertices[static_cast<std::size_t>(hull.vertexOffset) + index].normal.w), shape);
+        }
+        for (int axis = 0; axis < 3; ++axis) {
+            EXPECT_GE(middle[axis], low[axis]) << "shape " << shape;
+            EXPECT_LE(middle[axis], high[axis]) << "shape " << shape;
+        }
+        // The two triangles share their first corner and the second's first edge is the first's last, flagged in
+        // both, so that their volumes' sides there cancel.
+        const std::uint32_t first = hull.firstIndex / 3 + cast[0];
+        EXPECT_EQ(d.indices[3 * first], d.indices[3 * first + 3]);
+        EXPECT_EQ(d.indices[3 * first + 2], d.indices[3 * first + 4]);
+        EXPECT_EQ(d.interiorEdges[first], 4u) << "shape " << shape;
+        EXPECT_EQ(d.interiorEdges[first + 1], 1u) << "shape " << shape;
+        const glm::vec3 n0 = glm::cross(corner[1] - corner[0], corner[2] - corner[0]);
+        const glm::vec3 n1 = glm::cross(corner[4] - corner[3], corner[5] - corner[3]);
+        if (shape <= shared::kLeafLastShape) {
+            for (const glm::vec3& p : corner)
+                EXPECT_EQ(p.z, 0.0f) << "shape " << shape;
+            EXPECT_GT(n0.z, 0.0f) << "shape " << shape;
+            EXPECT_GT(n1.z, 0.0f) << "shape " << shape;
+            // The drawn triangles' sum counts where leaflets overlap twice; the quadrilateral has their union's area.
+            EXPECT_LE(0.5f * (n0.z + n1.z), 1.01f * drawnArea) << "shape " << shape;
+            EXPECT_GE(0.5f * (n0.z + n1.z), 0.85f * drawnArea) << "shape " << shape;
+        } else {
+            for (const glm::vec3& p : corner)
+                EXPECT_EQ(p.x, corner[0].x) << "shape " << shape;
+            EXPECT_GT(n0.x, 0.0f) << "shape " << shape;
+            EXPECT_GT(n1.x, 0.0f) << "shape " << shape;
+            const float face = 0.5f * (n0.x + n1.x);
+            EXPECT_GT(face, 0.2f * (high.y - low.y) * (high.z - low.z)) << "shape " << shape;
+            EXPECT_LT(face, (high.y - low.y) * (high.z - low.z)) << "shape " << shape;
+        }
+    }
+}
+
 // Blossoms: each of its own shape within a unit diameter about the heading, turned to face along it; the star's
 // and the head's centres are tinted to the eye's yellow, the rose's petals keep the organ's colour.
 TEST(OrganMeshesTest, BlossomsFaceAlongTheHeadingWithinAUnitDiameter) {

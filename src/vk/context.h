@@ -18,6 +18,7 @@
 
 namespace simeco::vk {
 
+class KernelCache;
 class KernelProfile;
 
 struct ContextOptions {
@@ -79,6 +80,8 @@ public:
     void enableKernelProfile();
     // The profile, or null when it is not enabled.
     KernelProfile* kernelProfile() const { return profile_.get(); }
+    // The kernels compiled on this device, shared by the pipelines made from the same SPIR-V (vk/kernel_cache.h).
+    KernelCache& kernelCache() const { return *kernelCache_; }
 
 private:
     Instance instance_;
@@ -93,6 +96,7 @@ private:
     UniqueCommandPool commandPool_;
     PFN_vkCmdPushDescriptorSetKHR cmdPushDescriptorSet_ = nullptr;
     std::unique_ptr<KernelProfile> profile_;
+    std::unique_ptr<KernelCache> kernelCache_;
     mutable std::uint64_t submissions_ = 0;
 };
 

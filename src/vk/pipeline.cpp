@@ -33,25 +33,32 @@ ComputePipeline::ComputePipeline(const Context& context, std::span<const std::ui
       maxGroupsY_(context.limits().maxComputeWorkGroupCount[1]),
       maxTexelElements_(context.limits().maxTexelBufferElements),
       cmdPushDescriptorSet_(context.cmdPushDescriptorSet()) {
-    VkDevice device = context.device();
     if (reflection_.pushConstantSize > context.limits().maxPushConstantsSize) {
         throw VulkanError(fmt::format("kernel {} needs {} bytes of push constants; the device allows {}", name_,
                                       reflection_.pushConstantSize, context.limits().maxPushConstantsSize),
                           VK_ERROR_FEATURE_NOT_PRESENT);
     }
-
-    std::vector<VkDescriptorSetLayoutBinding> bindings;
     for (const ShaderBinding& b : reflection_.bindings) {
         if (b.set != 0) {
             throw ShaderInterfaceError(fmt::format("kernel {}: binding {} is in set {}; push descriptors use set 0 only",
                                                    name_, b.binding, b.set));
         }
-        bindings.push_back({b.binding, b.type, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr});
     }
-    setLayout_ = createPushDescriptorSetLayout(device, bindings);
+    compiled_ = context.kernelCache().get(spirv, specialization, [&] { return compile(context, spirv, specialization); });
+}
+
+std::shared_ptr<const CompiledKernel> ComputePipeline::compile(const Context& context,
+                                                               std::span<const std::uint32_t> spirv,
+                                                               std::span<const std::uint32_t> specialization) const {
+    VkDevice device = context.device();
+    auto kernel = std::make_shared<CompiledKernel>();
+    std::vector<VkDescriptorSetLayoutBinding> bindings;
+    for (const ShaderBinding& b : reflection_.bindings)
+        bindings.push_back({b.binding, b.type, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr});
+    kernel->setLayout = createPushDescriptorSetLayout(device, bindings);
     std::optional<VkPushConstantRange> pushRange;
     if (reflection_.pushConstantSize > 0) pushRange = {VK_SHADER_STAGE_COMPUTE_BIT, 0, reflection_.pushConstantSize};
-    layout_ = createPipelineLayout(device, setLayout_.get(), pushRange);
+    kernel->layout = createPipelineLayout(device, kernel->setLayout.get(), pushRange);
 
     VkShaderModuleCreateInfo moduleInfo{};
 
@@ -75,11 +82,13 @@ ComputePipeline::ComputePipeline(const Context& context, std::span<const std::ui
     VkSpecializationInfo specializationInfo{static_cast<std::uint32_t>(entries.size()), entries.data(),
                                            specialization.size_bytes(), specialization.data()};
     if (!specialization.empty()) pipelineInfo.stage.pSpecializationInfo = &specializationInfo;
-    pipelineInfo.layout = layout_.get();
+    pipelineInfo.layout = kernel->layout.get();
     VkPipeline pipeline = VK_NULL_HANDLE;
     VK_CHECK(vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &pipelineInfo, nullptr, &pipeline));
-    pipeline_ = UniquePipeline(device, pipeline);
+    kernel->pipeline = UniquePipeline(device, pipeline);
+    return kernel;
 }
+
 
 ComputePipeline ComputePipeline::embedded(const Context& context, std::string_view name,
                                           std::span<const std::uint32_t> specialization) {
@@ -149,13 +158,13 @@ void ComputePipeline::bind(VkCommandBuffer cmd, std::span<const BufferRange> buf
             writes[i].pTexelBufferView = &views[i];
         }
     }
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_.get());
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, compiled_->pipeline.get());
     if (!writes.empty()) {
-        cmdPushDescriptorSet_(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.get(), 0,
+        cmdPushDescriptorSet_(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, compiled_->layout.get(), 0,
                               static_cast<std::uint32_t>(writes.size()), writes.data());
     }
     if (!push.empty()) {
-        vkCmdPushConstants(cmd, layout_.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0, static_cast<std::uint32_t>(push.size()),
+        vkCmdPushConstants(cmd, compiled_->layout.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0, static_cast<std::uint32_t>(push.size()),
                            push.data());
     }
 }

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <initializer_list>
+#include <memory>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -15,6 +16,7 @@
 #include <vulkan/vulkan.h>
 
 #include "vk/handle.h"
+#include "vk/kernel_cache.h"
 #include "vk/shader_reflection.h"
 
 namespace simeco::vk {
@@ -48,6 +50,7 @@ class ComputePipeline {
 public:
     // `name` appears in error messages. Bindings go through push descriptors (set 0 only). `specialization`
     // gives the specialization constants with constant_id 0, 1, ... their values (32-bit each, VkBool32 for bools).
+    // Pipelines of the same SPIR-V and specialization on one context share one compiled kernel (KernelCache).
     ComputePipeline(const Context& context, std::span<const std::uint32_t> spirv, std::string name,
                     std::span<const std::uint32_t> specialization = {});
 
@@ -60,6 +63,7 @@ public:
 
     const ShaderReflection& reflection() const { return reflection_; }
     const std::string& name() const { return name_; }
+    VkPipeline handle() const { return compiled_->pipeline.get(); }
 
     // Workgroups that cover `items` when each invocation handles `itemsPerInvocation` of them (1D kernels).
     std::uint64_t groupsFor(std::uint64_t items, std::uint32_t itemsPerInvocation = 1) const;
@@ -98,6 +102,9 @@ public:
                                std::span<const std::byte> push, const Buffer& arguments, VkDeviceSize offset) const;
 
 private:
+    // The layouts and pipeline of this kernel, compiled (the cache's `compile`).
+    std::shared_ptr<const CompiledKernel> compile(const Context& context, std::span<const std::uint32_t> spirv,
+                                                  std::span<const std::uint32_t> specialization) const;
     void checkInterface(std::span<const BufferRange> buffers, std::span<const std::byte> push) const;
     // Binds the pipeline, pushes the buffers' descriptors and the push constants.
     void bind(VkCommandBuffer cmd, std::span<const BufferRange> buffers, std::span<const std::byte> push) const;
@@ -110,9 +117,7 @@ private:
     std::uint32_t maxGroupsY_ = 0;
     std::uint32_t maxTexelElements_ = 0;
     PFN_vkCmdPushDescriptorSetKHR cmdPushDescriptorSet_ = nullptr;
-    UniqueDescriptorSetLayout setLayout_;
-    UniquePipelineLayout layout_;
-    UniquePipeline pipeline_;
+    std::shared_ptr<const CompiledKernel> compiled_;
 };
 
 } // namespace simeco::vk

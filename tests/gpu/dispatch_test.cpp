@@ -150,5 +150,44 @@ void main() {
         ASSERT_EQ(got[i], float(1000 + kSkipped + i) + 0.5f * float(i)) << "at " << i;
 }
 
+// Pipelines made from the same SPIR-V and specialization on one context share one compiled pipeline (a field's
+// batches each make the same kernels); another specialization, or the same kernel once none holds it, compiles
+// its own; each computes as its own specialization says.
+TEST_F(DispatchTest, PipelinesOfTheSameKernelAndSpecializationShareOneCompiledPipeline) {
+    const char* source = R"(#version 460
+layout(local_size_x = 1) in;
+layout(constant_id = 0) const uint kAdded = 0;
+layout(set = 0, binding = 0, std430) buffer Out { uint result[]; };
+void main() { result[0] += kAdded; }
+)";
+    const std::vector<std::uint32_t> spirv = codegen::compileComputeKernel(source, "test/add_constant");
+    const std::uint32_t three[] = {3}, five[] = {5};
+    vk::Buffer result(context(), 4, vk::MemoryUsage::DeviceLocal);
+    auto run = [&](const vk::ComputePipeline& kernel) {
+        context().submitAndWait([&](VkCommandBuffer cmd) {
+            vk::cmdFill(cmd, result, 100u);
+            vk::memoryBarrier(cmd, vk::Hazard::TransferToCompute);
+            kernel.dispatch(cmd, {result}, 1);
+        });
+        return vk::downloadVector<std::uint32_t>(context(), result, 1)[0];
+    };
+    {
+        vk::ComputePipeline a(context(), spirv, "test/add_three", three);
+        vk::ComputePipeline b(context(), spirv, "test/add_three_again", three);
+        vk::ComputePipeline c(context(), spirv, "test/add_five", five);
+        EXPECT_EQ(a.handle(), b.handle());
+        EXPECT_NE(a.handle(), c.handle());
+        EXPECT_EQ(b.name(), "test/add_three_again");
+        EXPECT_EQ(run(a), 103u);
+        EXPECT_EQ(run(b), 103u);
+        EXPECT_EQ(run(c), 105u);
+        vk::ComputePipeline moved = std::move(a);
+        EXPECT_EQ(run(moved), 103u); // the first holder moved away, the second still holds the kernel
+        EXPECT_EQ(moved.handle(), b.handle());
+    }
+    vk::ComputePipeline again(context(), spirv, "test/add_five", five);
+    EXPECT_EQ(run(again), 105u);
+}
+
 } // namespace
 } // namespace simeco::test

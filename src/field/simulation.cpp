@@ -428,7 +428,12 @@ std::vector<const turtle::DeviceOrgans*> Simulation::Impl::interpretOnDevice() {
         // The sizes of this moment: the last tick's.
         const grow::TickSettings ts = settings(b, ticks == 0 ? 0 : ticks - 1);
         Clock::time_point start = Clock::now();
-        stream::DeviceModules drawnModules = b.deriver->drawn();
+        // The string the batch's last drawing interpreted (no step derived since, no query answered into it): its
+        // drawn string stands, and one submission puts it back as the homomorphism wrote it with the particles the
+        // tick grew, grows its sizes, records the turtle within that drawing's room and gives the light. Else, or where it outgrew the room,
+        // the homomorphism writes the drawn string again and the turtle reads its sizes back between its passes.
+        const bool again = b.room && !answersQueries && b.deriver->drawnStands();
+        stream::DeviceModules drawnModules = again ? b.deriver->lastDrawn() : b.deriver->drawn();
         // A grammar without a homomorphism draws its derived string: its segments shorten a copy.
         if (tables.growsSegments() && drawnModules.symbols == b.deriver->current().symbols)
             drawnModules = b.growth->copyForDrawing(drawnModules);
@@ -448,12 +453,10 @@ std::vector<const turtle::DeviceOrgans*> Simulation::Impl::interpretOnDevice() {
             statistics->record(cmd, *organs, drawnModules.particles, bases);
             lightGpu->recordSplat(cmd, *organs, b.first);
         };
-        // The string the batch's last drawing interpreted (no step derived since, no query answered into it): one
-        // submission grows its sizes, records the turtle within that drawing's room and gives the light. Else, or
-        // where it outgrew the room, the turtle reads its sizes back between its passes.
         bool sized = false, recorded = false;
-        if (b.room && !answersQueries) {
+        if (again) {
             context->submitAndWait([&](VkCommandBuffer cmd) {
+                b.deriver->recordDrawnAgain(cmd);
                 if (grows) b.growth->recordSizes(cmd, drawnModules, ts);
                 organs = &turtle->record(cmd, drawnModules, b.field, *b.room);
                 recordLight(cmd);

@@ -114,6 +114,15 @@ public:
     stream::DeviceModules current() const;
     // Its `origins` say which module of current() each drawn module comes from.
     stream::DeviceModules drawn();
+    // Whether the last drawn() string still stands: no step derived since (nor begin() or resume()). The
+    // homomorphism reads no particle state (its light() is 1), so it would write the same string again.
+    // recordDrawnAgain() records into `cmd` what drawn() would do then: the string's symbols and parameters as the
+    // homomorphism wrote them (the drawing grows them in place), and the particles the growth tick changed gathered
+    // anew; nothing where there is no homomorphism. lastDrawn() is that string. Both throw std::logic_error where
+    // the drawn string does not stand.
+    bool drawnStands() const;
+    void recordDrawnAgain(VkCommandBuffer cmd);
+    stream::DeviceModules lastDrawn() const;
     // Where the stepped derivation stands (read back from the device), and begin() from there instead of the
     // axioms: a state saved from a derivation of the same species and options, on either engine, goes on as it
     // would have.

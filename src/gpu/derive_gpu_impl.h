@@ -441,7 +441,11 @@ struct GpuDeriver::Impl {
         uint64_t budget = 0;
         uint32_t fieldStep = 0; // advance() calls that derived: the random streams' step
         int cur = 0;
+        bool drawnStands = false; // the last drawn() string is the one drawn() would write now (drawnStands())
     };
+    // The last drawn() string's symbols and parameters as the homomorphism wrote them, which the drawing grows in
+    // place (grow/grown_sizes.comp): recordDrawnAgain() puts them back.
+    vk::Buffer drawnSymbols, drawnParams;
     std::unique_ptr<Stepped> stepped;
     Stepped& steppedState(const char* call) const;
     // begin() and resume(): from the axioms, or from a saved state.

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "gpu/derive_gpu_impl.h"
+#include "vk/barriers.h"
 
 namespace simeco::gpu {
 
@@ -87,6 +88,7 @@ uint32_t GpuDeriver::advance(const std::vector<uint8_t>& due) {
     std::vector<Impl::RecordedStep> batch{{s.fieldStep, frozen}};
     s.cur = m.runSteppedBatch(batch, 1);
     m.lastStream = s.cur;
+    s.drawnStands = false;
     return deriving;
 }
 
@@ -111,6 +113,53 @@ stream::DeviceModules GpuDeriver::drawn() {
     std::vector<Impl::RecordedStep> batch;
     m.planHomomorphism(control, batch);
     m.lastStream = m.runSteppedBatch(batch, 0);
+    // Kept as written, for drawing it again (recordDrawnAgain()).
+    const Stream& out = m.streams[m.lastStream];
+    const VkDeviceSize symbolBytes = bytes(out.count, 4), paramBytes = bytes(out.count, 4ull * uint64_t(m.stride));
+    if (!m.drawnSymbols || m.drawnSymbols.size() < symbolBytes)
+        m.drawnSymbols = vk::Buffer(m.ctx, symbolBytes + symbolBytes / 2, vk::MemoryUsage::DeviceLocal);
+    if (!m.drawnParams || m.drawnParams.size() < paramBytes)
+        m.drawnParams = vk::Buffer(m.ctx, paramBytes + paramBytes / 2, vk::MemoryUsage::DeviceLocal);
+    m.ctx.submitAndWait([&](VkCommandBuffer cmd) {
+        vk::memoryBarrier(cmd, vk::Hazard::AnyToTransfer);
+        const VkBufferCopy symbols{0, 0, symbolBytes}, params{0, 0, paramBytes};
+        vkCmdCopyBuffer(cmd, out.sym.handle(), m.drawnSymbols.handle(), 1, &symbols);
+        vkCmdCopyBuffer(cmd, out.par.handle(), m.drawnParams.handle(), 1, &params);
+        vk::memoryBarrier(cmd, vk::Hazard::TransferToAny);
+    });
+    s.drawnStands = true;
+    return lastDrawn();
+}
+
+bool GpuDeriver::drawnStands() const {
+    return impl_->steppedState("drawnStands").drawnStands;
+}
+
+void GpuDeriver::recordDrawnAgain(VkCommandBuffer cmd) {
+    Impl& m = *impl_;
+    Impl::Stepped& s = m.steppedState("recordDrawnAgain");
+    if (!s.drawnStands) throw std::logic_error("GpuDeriver::recordDrawnAgain: a step derived since drawn()");
+    if (!m.homomorphismMatch) return;
+    const Stream& out = m.streams[m.lastStream];
+    if (out.count == 0) return;
+    vk::memoryBarrier(cmd, vk::Hazard::AnyToTransfer);
+    const VkBufferCopy symbols{0, 0, bytes(out.count, 4)}, params{0, 0, bytes(out.count, 4ull * uint64_t(m.stride))};
+    vkCmdCopyBuffer(cmd, m.drawnSymbols.handle(), out.sym.handle(), 1, &symbols);
+    vkCmdCopyBuffer(cmd, m.drawnParams.handle(), out.par.handle(), 1, &params);
+    vk::memoryBarrier(cmd, vk::Hazard::TransferToAny);
+    if (!m.carriesParticles) return;
+    if (!m.particleGather) m.particleGather = vk::ComputePipeline::embedded(m.ctx, "derive/particle_gather");
+    m.particleGather->dispatch(cmd, {out.origin, m.streams[s.cur].particles, out.particles, m.plantTable(out)},
+                               shared::DeriveHelperPush{out.count, 0, 0, m.plants},
+                               m.particleGather->groupsFor(out.count));
+    vk::memoryBarrier(cmd, vk::Hazard::ComputeToCompute);
+}
+
+stream::DeviceModules GpuDeriver::lastDrawn() const {
+    const Impl& m = *impl_;
+    if (!m.steppedState("lastDrawn").drawnStands)
+        throw std::logic_error("GpuDeriver::lastDrawn: a step derived since drawn()");
+    if (!m.homomorphismMatch) return current();
     stream::DeviceModules modules = lastString();
     modules.origins = &m.streams[m.lastStream].origin; // the particle gather's: where each module came from
     return modules;

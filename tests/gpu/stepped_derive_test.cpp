@@ -1,7 +1,10 @@
 // Derivation step by step over simulated time (GpuDeriver::begin, advance, current, drawn) against its CPU
 // reference (cpu::SteppedDerivation): plants due at different steps, particle state carried, the homomorphism
-// drawn between steps without ending the derivation; and every plant due at every step is a derivation.
+// drawn between steps without ending the derivation, and drawn again while no step derives; and every plant due at
+// every step is a derivation.
+#include <bit>
 #include <cstdint>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -11,6 +14,8 @@
 #include "cpu/derive.h"
 #include "gpu/derive_gpu.h"
 #include "gpu_fixture.h"
+#include "vk/barriers.h"
+#include "vk/buffer.h"
 
 namespace simeco::test {
 namespace {
@@ -95,6 +100,46 @@ TEST_F(SteppedDeriveTest, PlantsDueAtDifferentStepsDeriveAsTheReference) {
     // Some plants derived and some waited in most ticks: the due flags were not all alike.
     EXPECT_GT(derivedSteps, options.plants);
     EXPECT_LT(derivedSteps, 12 * options.plants);
+}
+
+// A drawn string stands until a step derives. Drawn again, it is the string the homomorphism wrote, whatever the
+// drawing did to its symbols and parameters since, with the particles its derived modules have now: what drawn()
+// would write.
+TEST_F(SteppedDeriveTest, ADrawnStringStandsUntilAStepDerivesAndIsDrawnAgainAsWritten) {
+    const ir::Grammar g = testing::grammarFromText(testing::lsystem("A(0)", kGrammar, 6));
+    const stream::DeriveOptions options = fieldOf(12);
+    gpu::GpuDeriver deriver(context(), g);
+    deriver.begin(options);
+    const std::vector<std::uint8_t> all(options.plants, 1);
+    EXPECT_EQ(deriver.advance(all), options.plants);
+    EXPECT_EQ(deriver.advance(all), options.plants);
+    EXPECT_FALSE(deriver.drawnStands());
+    const stream::DeriveResult written = readModules(context(), deriver.drawn(), 0);
+    ASSERT_TRUE(deriver.drawnStands());
+    ASSERT_GT(written.string.size(), options.plants);
+
+    // What a drawing does to the drawn string in place, and a growth tick to the derived string's particles.
+    const stream::DeviceModules shown = deriver.lastDrawn(), derived = deriver.current();
+    context().submitAndWait([&](VkCommandBuffer cmd) {
+        vk::cmdFill(cmd, *shown.symbols, 7u);
+        vk::cmdFill(cmd, *shown.params, std::bit_cast<std::uint32_t>(9.5f));
+        vk::cmdFill(cmd, *derived.particles, std::bit_cast<std::uint32_t>(2.5f));
+        vk::memoryBarrier(cmd, vk::Hazard::TransferToAny);
+    });
+    context().submitAndWait([&](VkCommandBuffer cmd) { deriver.recordDrawnAgain(cmd); });
+    const stream::DeriveResult again = readModules(context(), deriver.lastDrawn(), 0);
+    EXPECT_EQ(firstDifference(written, again, g.alphabet), "");
+    ASSERT_EQ(again.string.particles.size(), written.string.size());
+    for (const shared::ParticleState& p : again.string.particles)
+        for (float value : p.value) ASSERT_EQ(value, 2.5f);
+    const stream::DeriveResult fresh = readModules(context(), deriver.drawn(), 0);
+    EXPECT_EQ(firstDifference(fresh, again, g.alphabet), "");
+    EXPECT_EQ(fresh.string.particles, again.string.particles);
+
+    EXPECT_EQ(deriver.advance(all), options.plants);
+    EXPECT_FALSE(deriver.drawnStands());
+    EXPECT_THROW(deriver.lastDrawn(), std::logic_error);
+    context().submitAndWait([&](VkCommandBuffer cmd) { EXPECT_THROW(deriver.recordDrawnAgain(cmd), std::logic_error); });
 }
 
 } // namespace

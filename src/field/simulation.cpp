@@ -81,6 +81,8 @@ struct Batch {
     // since): the next drawing records the turtle within it, in one submission with the grown sizes, the light and
     // the statistics, and reads nothing back between them.
     std::optional<turtle::TurtleRoom> room;
+    // Its plants' statistics on the device (each batch its own: their base heights stay uploaded).
+    std::unique_ptr<GpuPlantStatistics> statistics;
 };
 
 struct Simulation::Impl {
@@ -110,7 +112,6 @@ struct Simulation::Impl {
     // Drawing: the turtle kernels, the batches' organs merged, each plant's statistics of the last interpret().
     std::unique_ptr<turtle::GpuTurtle> turtle;
     std::unique_ptr<turtle::OrganMerge> merge;
-    std::unique_ptr<GpuPlantStatistics> statistics;
     turtle::DeviceOrgans uploaded;  // the CPU backend's organs
     turtle::DeviceOrgans obstacles; // the scene's, uploaded once where it has any
     bool hasObstacles() const { return g.scene && !g.scene->obstacles.empty(); }
@@ -292,20 +293,24 @@ TickReport Simulation::tick() {
         report.derived = std::max(report.derived, derived);
         if (derived == 0) break; // every due plant has derived all its steps
     }
-    for (Batch& b : m.batches) {
-        const grow::TickSettings ts = m.settings(b, m.ticks);
-        Clock::time_point start = Clock::now();
-        if (b.deriver) {
-            const stream::DeviceModules derived = b.deriver->current();
-            b.growth->tick(derived, ts);
-            b.modules = derived.count;
-        } else {
-            grow::tickCpu(ts, b.reference->current());
+    // Every particle grows: on the device every batch's in one submission.
+    const Clock::time_point start = Clock::now();
+    if (m.options.backend == Backend::Gpu) {
+        m.context->submitAndWait([&](VkCommandBuffer cmd) {
+            for (Batch& b : m.batches) {
+                const stream::DeviceModules derived = b.deriver->current();
+                b.growth->recordTick(cmd, derived, m.settings(b, m.ticks));
+                b.modules = derived.count;
+            }
+        });
+    } else {
+        for (Batch& b : m.batches) {
+            grow::tickCpu(m.settings(b, m.ticks), b.reference->current());
             b.modules = b.reference->current().size();
         }
-        m.seconds.grow += secondsSince(start);
-        report.modules += b.modules;
     }
+    m.seconds.grow += secondsSince(start);
+    for (const Batch& b : m.batches) report.modules += b.modules;
     ++m.ticks;
     report.time = m.time;
     return report;
@@ -415,7 +420,10 @@ void Simulation::Impl::prepareLight(const draw::Bounds& extent, uint32_t standin
 
 std::vector<const turtle::DeviceOrgans*> Simulation::Impl::interpretOnDevice() {
     if (!turtle) turtle = std::make_unique<turtle::GpuTurtle>(*context, commands, turtles);
-    if (!statistics) statistics = std::make_unique<GpuPlantStatistics>(*context, leafShapeAreas(g.assets.models));
+    if (!batches.front().statistics) {
+        const std::vector<float> areas = leafShapeAreas(g.assets.models);
+        for (Batch& b : batches) b.statistics = std::make_unique<GpuPlantStatistics>(*context, areas);
+    }
     const bool merged = batches.size() > 1 || hasObstacles();
     if (merged) organMerge().begin();
     lastStatistics.clear();
@@ -450,7 +458,7 @@ std::vector<const turtle::DeviceOrgans*> Simulation::Impl::interpretOnDevice() {
                                         drawnModules.symbols == derived.symbols ? nullptr : drawnModules.origins,
                                         *derived.symbols, *derived.params, derived.stride);
             }
-            statistics->record(cmd, *organs, drawnModules.particles, bases);
+            b.statistics->record(cmd, *organs, drawnModules.particles, bases);
             lightGpu->recordSplat(cmd, *organs, b.first);
         };
         bool sized = false, recorded = false;
@@ -473,7 +481,7 @@ std::vector<const turtle::DeviceOrgans*> Simulation::Impl::interpretOnDevice() {
         seconds.interpret += secondsSince(start);
         start = Clock::now();
         if (!recorded) context->submitAndWait(recordLight);
-        const std::vector<shared::PlantStatistics> s = statistics->read();
+        const std::vector<shared::PlantStatistics> s = b.statistics->read();
         lastStatistics.insert(lastStatistics.end(), s.begin(), s.end());
         seconds.statistics += secondsSince(start);
         start = Clock::now();

@@ -438,8 +438,9 @@ std::vector<const turtle::DeviceOrgans*> Simulation::Impl::interpretOnDevice() {
         Clock::time_point start = Clock::now();
         // The string the batch's last drawing interpreted (no step derived since, no query answered into it): its
         // drawn string stands, and one submission puts it back as the homomorphism wrote it with the particles the
-        // tick grew, grows its sizes, records the turtle within that drawing's room and gives the light. Else, or where it outgrew the room,
-        // the homomorphism writes the drawn string again and the turtle reads its sizes back between its passes.
+        // tick grew, grows its sizes, records the turtle within that drawing's room and gives the light. Else, or
+        // where it outgrew the room, the homomorphism writes the drawn string again and the turtle reads its sizes
+        // back between its passes.
         const bool again = b.room && !answersQueries && b.deriver->drawnStands();
         stream::DeviceModules drawnModules = again ? b.deriver->lastDrawn() : b.deriver->drawn();
         // A grammar without a homomorphism draws its derived string: its segments shorten a copy.

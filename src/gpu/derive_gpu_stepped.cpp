@@ -107,6 +107,7 @@ stream::DeviceModules GpuDeriver::current() const {
 stream::DeviceModules GpuDeriver::drawn() {
     Impl& m = *impl_;
     Impl::Stepped& s = m.steppedState("drawn");
+    s.drawnStands = true;
     if (!m.homomorphismMatch) return current();
     // The homomorphism sees the globals as the Start block sets them; the steps go on with their own.
     stream::PlantControl control(m.species, s.options);
@@ -127,7 +128,6 @@ stream::DeviceModules GpuDeriver::drawn() {
         vkCmdCopyBuffer(cmd, out.par.handle(), m.drawnParams.handle(), 1, &params);
         vk::memoryBarrier(cmd, vk::Hazard::TransferToAny);
     });
-    s.drawnStands = true;
     return lastDrawn();
 }
 

@@ -44,7 +44,8 @@ ComputePipeline::ComputePipeline(const Context& context, std::span<const std::ui
                                                    name_, b.binding, b.set));
         }
     }
-    compiled_ = context.kernelCache().get(spirv, specialization, [&] { return compile(context, spirv, specialization); });
+    compiled_ = context.kernelCache().get(spirv, specialization,
+                                          [&] { return compile(context, spirv, specialization); });
 }
 
 std::shared_ptr<const CompiledKernel> ComputePipeline::compile(const Context& context,
@@ -88,7 +89,6 @@ std::shared_ptr<const CompiledKernel> ComputePipeline::compile(const Context& co
     kernel->pipeline = UniquePipeline(device, pipeline);
     return kernel;
 }
-
 
 ComputePipeline ComputePipeline::embedded(const Context& context, std::string_view name,
                                           std::span<const std::uint32_t> specialization) {
@@ -164,8 +164,8 @@ void ComputePipeline::bind(VkCommandBuffer cmd, std::span<const BufferRange> buf
                               static_cast<std::uint32_t>(writes.size()), writes.data());
     }
     if (!push.empty()) {
-        vkCmdPushConstants(cmd, compiled_->layout.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0, static_cast<std::uint32_t>(push.size()),
-                           push.data());
+        vkCmdPushConstants(cmd, compiled_->layout.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0,
+                           static_cast<std::uint32_t>(push.size()), push.data());
     }
 }
 

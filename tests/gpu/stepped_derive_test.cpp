@@ -139,7 +139,8 @@ TEST_F(SteppedDeriveTest, ADrawnStringStandsUntilAStepDerivesAndIsDrawnAgainAsWr
     EXPECT_EQ(deriver.advance(all), options.plants);
     EXPECT_FALSE(deriver.drawnStands());
     EXPECT_THROW(deriver.lastDrawn(), std::logic_error);
-    context().submitAndWait([&](VkCommandBuffer cmd) { EXPECT_THROW(deriver.recordDrawnAgain(cmd), std::logic_error); });
+    context().submitAndWait(
+        [&](VkCommandBuffer cmd) { EXPECT_THROW(deriver.recordDrawnAgain(cmd), std::logic_error); });
 }
 
 } // namespace

@@ -79,6 +79,7 @@ GpuPlantStatistics::GpuPlantStatistics(const vk::Context& context, const std::ve
     shapeAreas_ = vk::deviceBufferWith(context, std::span<const float>(shapeAreas));
     const float none = 0.0f;
     noParticles_ = vk::deviceBufferWith(context, std::span<const float>(&none, 1));
+    tableReadback_ = vk::Buffer(context, sizeof(shared::OrganTable), vk::MemoryUsage::Readback);
 }
 
 void GpuPlantStatistics::record(VkCommandBuffer cmd, const turtle::DeviceOrgans& organs,
@@ -103,12 +104,18 @@ void GpuPlantStatistics::record(VkCommandBuffer cmd, const turtle::DeviceOrgans&
     vk::memoryBarrier(cmd, vk::Hazard::ComputeToTransfer);
     VkBufferCopy copy{0, 0, bytes};
     vkCmdCopyBuffer(cmd, statistics_.handle(), readback_.handle(), 1, &copy);
+    const VkBufferCopy table{0, 0, sizeof(shared::OrganTable)};
+    vkCmdCopyBuffer(cmd, organs.table.handle(), tableReadback_.handle(), 1, &table);
     vk::memoryBarrier(cmd, vk::Hazard::TransferToHost);
 }
 
 std::vector<shared::PlantStatistics> GpuPlantStatistics::read() const {
     const auto* s = reinterpret_cast<const shared::PlantStatistics*>(readback_.mapped());
     return std::vector<shared::PlantStatistics>(s, s + plants_);
+}
+
+shared::OrganTable GpuPlantStatistics::organTable() const {
+    return *reinterpret_cast<const shared::OrganTable*>(tableReadback_.mapped());
 }
 
 } // namespace simeco::field

@@ -33,17 +33,19 @@ std::vector<shared::PlantStatistics> plantStatisticsCpu(const turtle::Interpreta
 class GpuPlantStatistics {
 public:
     GpuPlantStatistics(const vk::Context& context, const std::vector<float>& shapeAreas);
-    // Records the statistics of the plants `organs` hold, and their copy for the host, into `cmd`.
-    // `drawnParticles`: the drawn string's particle state, or null.
+    // Records the statistics of the plants `organs` hold, and their copy and the organs' table's for the host, into
+    // `cmd`. `drawnParticles`: the drawn string's particle state, or null.
     void record(VkCommandBuffer cmd, const turtle::DeviceOrgans& organs, const vk::Buffer* drawnParticles,
                 const std::vector<float>& baseHeights);
-    // After the recording's submission has completed.
+    // After the recording's submission has completed: the statistics, and the table of the organs counted (their
+    // count by kind, for keeping them in a field's merge without another read-back).
     std::vector<shared::PlantStatistics> read() const;
+    shared::OrganTable organTable() const;
 
 private:
     const vk::Context& context_;
     vk::ComputePipeline kernel_;
-    vk::Buffer shapeAreas_, bases_, statistics_, readback_, noParticles_;
+    vk::Buffer shapeAreas_, bases_, statistics_, readback_, noParticles_, tableReadback_;
     std::vector<float> uploadedBases_;
     uint32_t plants_ = 0;
 };

@@ -486,7 +486,7 @@ std::vector<const turtle::DeviceOrgans*> Simulation::Impl::interpretOnDevice() {
         lastStatistics.insert(lastStatistics.end(), s.begin(), s.end());
         seconds.statistics += secondsSince(start);
         start = Clock::now();
-        if (merged) merge->keep(*organs, b.first, firstModule);
+        if (merged) merge->keep(*organs, b.statistics->organTable(), b.first, firstModule);
         firstModule += drawnModules.count;
         seconds.interpret += secondsSince(start);
     }

@@ -34,8 +34,12 @@ void OrganMerge::begin() {
 }
 
 void OrganMerge::keep(const DeviceOrgans& batch, uint32_t firstPlant, uint64_t firstModule) {
+    keep(batch, vk::downloadVector<OrganTable>(context_, batch.table, 1)[0], firstPlant, firstModule);
+}
+
+void OrganMerge::keep(const DeviceOrgans& batch, const OrganTable& table, uint32_t firstPlant, uint64_t firstModule) {
     Kept k;
-    k.table = vk::downloadVector<OrganTable>(context_, batch.table, 1)[0];
+    k.table = table;
     for (uint32_t kind = 0; kind < kOrganKinds; ++kind)
         k.organs += k.table.count[kind];
     k.firstPlant = firstPlant;

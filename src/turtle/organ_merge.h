@@ -32,6 +32,8 @@ public:
     // starts at the field's module `firstModule` (the batches' strings one after the other). A batch whose organs
     // would take its part past the most a part holds starts another part.
     void keep(const DeviceOrgans& batch, uint32_t firstPlant, uint64_t firstModule);
+    // The same with the batch's table already read back.
+    void keep(const DeviceOrgans& batch, const shared::OrganTable& table, uint32_t firstPlant, uint64_t firstModule);
     // The field's organs in parts, each the merge of consecutive batches, its table counting and bounding them;
     // valid until the next merge. One part where they fit in one.
     std::vector<const DeviceOrgans*> mergeParts();

@@ -476,25 +476,29 @@ std::vector<glm::vec3> triangleCorners(const OrganMeshData& data, const MeshRang
 }
 
 // Each shape's far shadow (OrganMeshData::leafFarShadowTriangles) into the leaf hull begun at triangle `hullFirst`:
-// a silhouette quadrilateral where the far cut has more than two triangles, else the far cut itself. A flat leaf's
-// lies in its plane (z = 0) with the drawn leaf's area; any other shape's (a blossom's, facing along x) across its
-// heading at its middle depth, with the area its face covers seen along the heading.
+// a silhouette quadrilateral where the far cut has more than two triangles, else the far cut itself. It lies across
+// the shape's thinnest axis at its middle, with the area the drawn shape covers seen along that axis: a leaf's in its
+// plane (z, out of its face), a blossom's across its heading (x).
 void addFarShadows(MeshBuilder& b, OrganMeshData& data, std::uint32_t hullFirst) {
     const MeshRange hull = b.end();
     for (std::uint32_t shape = 0; shape < data.leafFarHullTriangles.size(); ++shape) {
         const std::array<std::uint32_t, 2> far = data.leafFarHullTriangles[shape];
         std::optional<std::array<glm::vec2, 4>> quad;
-        glm::vec3 low(0.0f), high(0.0f);
-        bool flat = true;
+        int thinnest = 2;
+        float middle = 0.0f;
         if (far[1] > 2) {
             const std::vector<glm::vec3> cut = triangleCorners(data, hull, far);
-            low = high = cut[0];
+            glm::vec3 low = cut[0], high = cut[0];
             for (const glm::vec3& p : cut) {
                 low = glm::min(low, p);
                 high = glm::max(high, p);
             }
-            flat = std::max(std::abs(low.z), std::abs(high.z)) <= 1e-3f * std::max(high.x - low.x, high.y - low.y);
-            auto seen = [&](const glm::vec3& p) { return flat ? glm::vec2(p.x, p.y) : glm::vec2(p.y, p.z); };
+            const glm::vec3 extent = high - low;
+            for (int axis : {1, 0})
+                if (extent[axis] < extent[thinnest]) thinnest = axis;
+            middle = 0.5f * (low[thinnest] + high[thinnest]);
+            // The other two axes in turn after it, so that the quadrilateral's winding faces along it.
+            auto seen = [&](const glm::vec3& p) { return glm::vec2(p[(thinnest + 1) % 3], p[(thinnest + 2) % 3]); };
             std::vector<glm::vec2> outline, face;
             for (const glm::vec3& p : cut) outline.push_back(seen(p));
             for (const glm::vec3& p :
@@ -506,13 +510,16 @@ void addFarShadows(MeshBuilder& b, OrganMeshData& data, std::uint32_t hullFirst)
             data.leafFarShadowTriangles.push_back(far);
             continue;
         }
-        const float depth = 0.5f * (low.x + high.x);
+        glm::vec3 normal(0.0f);
+        normal[thinnest] = 1.0f;
         const std::uint32_t first = b.triangles();
         std::array<std::uint32_t, 4> corner{};
         for (std::size_t c = 0; c < 4; ++c) {
-            const glm::vec2 q = (*quad)[c];
-            corner[c] = flat ? b.vertex(glm::vec3(q, 0.0f), glm::vec3(0, 0, 1), 0.0f, static_cast<float>(shape))
-                             : b.vertex(glm::vec3(depth, q), glm::vec3(1, 0, 0), 0.0f, static_cast<float>(shape));
+            glm::vec3 p;
+            p[thinnest] = middle;
+            p[(thinnest + 1) % 3] = (*quad)[c].x;
+            p[(thinnest + 2) % 3] = (*quad)[c].y;
+            corner[c] = b.vertex(p, normal, 0.0f, static_cast<float>(shape));
         }
         b.triangle(corner[0], corner[1], corner[2]);
         b.triangle(corner[0], corner[2], corner[3]);

@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include "draw/organ_meshes.h"
+#include "ir/leaf_model.h"
 
 namespace simeco::test {
 namespace {
@@ -290,6 +291,40 @@ TEST(OrganMeshesTest, LeavesAndBlossomsAFewPixelsAcrossCastFromASilhouetteQuadri
             EXPECT_LT(face, (high.y - low.y) * (high.z - low.z)) << "shape " << shape;
         }
     }
+}
+
+// A model leaf that is not flat (a cpfg surface curves out of its plane) casts from a quadrilateral across its
+// thinnest axis, out of its face, with the area it covers seen along it: not from its profile.
+TEST(OrganMeshesTest, ACurvedModelLeafCastsFromAQuadrilateralAcrossItsFace) {
+    // Unit length, 0.4 wide, bowed 0.1 out of its face along its midrib, in 8 x 2 cells.
+    ir::LeafModel curved;
+    auto at = [](int i, int j) {
+        const float x = float(i) / 8.0f;
+        return std::array<float, 3>{x, -0.2f + 0.2f * float(j), 0.1f * std::sin(3.14159265f * x)};
+    };
+    for (int i = 0; i < 8; ++i)
+        for (int j = 0; j < 2; ++j) {
+            for (const auto& corner :
+                 {at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j), at(i + 1, j + 1), at(i, j + 1)})
+                curved.corners.push_back(corner);
+            curved.normals.push_back({0, 0, 1});
+            curved.normals.push_back({0, 0, 1});
+        }
+    OrganMeshData d = draw::buildOrganMeshes({curved});
+    const std::uint32_t shape = shared::kSurfaceLastShape + 1;
+    ASSERT_EQ(d.leafFarShadowTriangles.size(), shape + 1);
+    ASSERT_EQ(d.leafFarShadowTriangles[shape][1], 2u);
+    const MeshRange& hull = d.hulls[shared::kOrganLeaf];
+    std::array<glm::vec3, 6> corner;
+    for (std::uint32_t k = 0; k < 6; ++k) corner[k] = position(d, hull, 3 * d.leafFarShadowTriangles[shape][0] + k);
+    for (const glm::vec3& p : corner) {
+        EXPECT_NEAR(p.z, 0.05f, 1e-4f); // half way out of the face
+        EXPECT_GE(p.x, -0.1f);
+        EXPECT_LE(p.x, 1.1f);
+    }
+    const float area = 0.5f * (glm::cross(corner[1] - corner[0], corner[2] - corner[0]).z +
+                               glm::cross(corner[4] - corner[3], corner[5] - corner[3]).z);
+    EXPECT_NEAR(area, 0.4f, 0.02f);
 }
 
 // Blossoms: each of its own shape within a unit diameter about the heading, turned to face along it; the star's

@@ -273,6 +273,8 @@ struct GpuDeriver::Impl {
     // Each module of streams[to] takes the particle state of the module of streams[from] it descends from (its
     // origin): after decomposition, the homomorphism or a sequential step.
     void gatherParticles(int from, int to, vk::Timestamps* timer, double& millis);
+    // The same recorded into `cmd`, streams[to] holding its particles already.
+    void recordParticleGather(VkCommandBuffer cmd, int from, int to);
 
     vk::BufferRange plantTable(const Stream& s) const { return vk::BufferRange(s.plantStart, 0, bytes(plants + 1, 4)); }
 

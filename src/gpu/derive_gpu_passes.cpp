@@ -133,17 +133,17 @@ const vk::ComputePipeline& GpuDeriver::Impl::particleScatterKernel() {
 }
 
 void GpuDeriver::Impl::gatherParticles(int from, int to, vk::Timestamps* timer, double& millis) {
-    Stream& out = streams[to];
-    ensureParticles(out);
+    ensureParticles(streams[to]);
+    if (streams[to].count == 0) return;
+    submit([&](VkCommandBuffer cmd) { recordParticleGather(cmd, from, to); }, timer, millis);
+}
+
+void GpuDeriver::Impl::recordParticleGather(VkCommandBuffer cmd, int from, int to) {
+    const Stream& out = streams[to];
     if (out.count == 0) return;
     if (!particleGather) particleGather = vk::ComputePipeline::embedded(ctx, "derive/particle_gather");
-    DeriveHelperPush hp{out.count, 0, 0, plants};
-    submit(
-        [&](VkCommandBuffer cmd) {
-            particleGather->dispatch(cmd, {out.origin, streams[from].particles, out.particles, plantTable(out)}, hp,
-                                     particleGather->groupsFor(out.count));
-        },
-        timer, millis);
+    particleGather->dispatch(cmd, {out.origin, streams[from].particles, out.particles, plantTable(out)},
+                             DeriveHelperPush{out.count, 0, 0, plants}, particleGather->groupsFor(out.count));
 }
 
 uint64_t GpuDeriver::Impl::stepBytesMoved(uint64_t n, uint64_t total) const {

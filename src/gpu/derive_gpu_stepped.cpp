@@ -8,6 +8,20 @@
 #include "vk/barriers.h"
 
 namespace simeco::gpu {
+namespace {
+
+// A string's symbols and parameters copied from one pair of buffers to another, ordered after and before the rest.
+void recordStringCopy(VkCommandBuffer cmd, const vk::Buffer& fromSymbols, const vk::Buffer& fromParams,
+                      const vk::Buffer& toSymbols, const vk::Buffer& toParams, VkDeviceSize symbolBytes,
+                      VkDeviceSize paramBytes) {
+    vk::memoryBarrier(cmd, vk::Hazard::AnyToTransfer);
+    const VkBufferCopy symbols{0, 0, symbolBytes}, params{0, 0, paramBytes};
+    vkCmdCopyBuffer(cmd, fromSymbols.handle(), toSymbols.handle(), 1, &symbols);
+    vkCmdCopyBuffer(cmd, fromParams.handle(), toParams.handle(), 1, &params);
+    vk::memoryBarrier(cmd, vk::Hazard::TransferToAny);
+}
+
+} // namespace
 
 GpuDeriver::Impl::Stepped& GpuDeriver::Impl::steppedState(const char* call) const {
     if (!stepped) throw std::logic_error(std::string("GpuDeriver::") + call + " before begin()");
@@ -122,11 +136,7 @@ stream::DeviceModules GpuDeriver::drawn() {
     if (!m.drawnParams || m.drawnParams.size() < paramBytes)
         m.drawnParams = vk::Buffer(m.ctx, paramBytes + paramBytes / 2, vk::MemoryUsage::DeviceLocal);
     m.ctx.submitAndWait([&](VkCommandBuffer cmd) {
-        vk::memoryBarrier(cmd, vk::Hazard::AnyToTransfer);
-        const VkBufferCopy symbols{0, 0, symbolBytes}, params{0, 0, paramBytes};
-        vkCmdCopyBuffer(cmd, out.sym.handle(), m.drawnSymbols.handle(), 1, &symbols);
-        vkCmdCopyBuffer(cmd, out.par.handle(), m.drawnParams.handle(), 1, &params);
-        vk::memoryBarrier(cmd, vk::Hazard::TransferToAny);
+        recordStringCopy(cmd, out.sym, out.par, m.drawnSymbols, m.drawnParams, symbolBytes, paramBytes);
     });
     return lastDrawn();
 }
@@ -142,16 +152,10 @@ void GpuDeriver::recordDrawnAgain(VkCommandBuffer cmd) {
     if (!m.homomorphismMatch) return;
     const Stream& out = m.streams[m.lastStream];
     if (out.count == 0) return;
-    vk::memoryBarrier(cmd, vk::Hazard::AnyToTransfer);
-    const VkBufferCopy symbols{0, 0, bytes(out.count, 4)}, params{0, 0, bytes(out.count, 4ull * uint64_t(m.stride))};
-    vkCmdCopyBuffer(cmd, m.drawnSymbols.handle(), out.sym.handle(), 1, &symbols);
-    vkCmdCopyBuffer(cmd, m.drawnParams.handle(), out.par.handle(), 1, &params);
-    vk::memoryBarrier(cmd, vk::Hazard::TransferToAny);
+    recordStringCopy(cmd, m.drawnSymbols, m.drawnParams, out.sym, out.par, bytes(out.count, 4),
+                     bytes(out.count, 4ull * uint64_t(m.stride)));
     if (!m.carriesParticles) return;
-    if (!m.particleGather) m.particleGather = vk::ComputePipeline::embedded(m.ctx, "derive/particle_gather");
-    m.particleGather->dispatch(cmd, {out.origin, m.streams[s.cur].particles, out.particles, m.plantTable(out)},
-                               shared::DeriveHelperPush{out.count, 0, 0, m.plants},
-                               m.particleGather->groupsFor(out.count));
+    m.recordParticleGather(cmd, s.cur, m.lastStream);
     vk::memoryBarrier(cmd, vk::Hazard::ComputeToCompute);
 }
 

@@ -154,8 +154,8 @@ void main() {
     }
 
     // A leaf casts from its own shape's triangles of the hull all shapes share; when it is a few pixels across on
-    // screen (as render/organs/draw_lists.comp draws it coarse), from its far shadow: a flat leaf's silhouette
-    // quadrilateral of its own area, whose volume has four sides where its lobes' and leaflets' had many.
+    // screen (as render/organs/draw_lists.comp draws it coarse), from its far shadow: its silhouette quadrilateral
+    // of its own area, whose volume has four sides where its lobes' and leaflets' had many.
     uvec2 triangles = uvec2(0u, push.triangleCount);
     if (push.kind == kOrganLeaf) {
         const float depth = dot(push.viewDepth, vec4(o.position.xyz, 1.0));

@@ -1,7 +1,7 @@
 // The quadrilateral a flat leaf a few pixels across casts its shadow from. A stencil shadow volume costs the device
 // by the sides it draws, each a long sliver from the leaf to the ground, so a leaf cut into many lobes or leaflets
 // casts many; at a few pixels no one sees its shadow's outline, only how much it shades. The quadrilateral has the
-// leaf's own area, where its outline's convex hull is widest; a blossom's, of its face's area, across its heading.
+// leaf's own area, where its outline's convex hull is widest (a blossom's its face's, across its heading).
 #pragma once
 
 #include <array>

@@ -47,8 +47,9 @@ struct OrganMeshData {
     // a few pixels across on screen is drawn with.
     std::vector<std::array<std::uint32_t, 2>> leafFarHullTriangles;
     // What a leaf a few pixels across casts its shadow from, within the leaf hull: a silhouette quadrilateral
-    // (leaf_silhouette.h), a flat leaf's in its plane with its own area, a blossom's across its heading with its
-    // face's; two triangles in place of the far cut's many. A shape whose far cut has two at most casts from that.
+    // (leaf_silhouette.h) across the shape's thinnest axis with the area it covers seen along it (a leaf's in its
+    // plane, a blossom's across its heading); two triangles in place of the far cut's many. A shape whose far cut has
+    // two at most casts from that.
     std::vector<std::array<std::uint32_t, 2>> leafFarShadowTriangles;
     // Per triangle of the index buffer: bit k set where its edge k (corner k to corner k + 1) is shared with another
     // triangle of the same flat leaf shape. The shadow volumes of a flat sheet's triangles meet there with opposite

@@ -79,8 +79,11 @@ struct Batch {
     uint64_t modules = 0;
     // What the batch's last interpretation took, while its drawn string is the one interpreted then (no step derived
     // since): the next drawing records the turtle within it, in one submission with the grown sizes, the light and
-    // the statistics, and reads nothing back between them.
+    // the statistics of every such batch, and reads nothing back between them.
     std::optional<turtle::TurtleRoom> room;
+    // Where that recording leaves its organs and its status, and where an interpretation's organs are kept: the
+    // batch's own, until the field's merge.
+    turtle::TurtleTarget target;
     // Its plants' statistics on the device (each batch its own: their base heights stay uploaded).
     std::unique_ptr<GpuPlantStatistics> statistics;
 };
@@ -149,6 +152,24 @@ struct Simulation::Impl {
     }
     void makeBatches(uint32_t plantsPerBatch);
     std::vector<const turtle::DeviceOrgans*> interpretOnDevice();
+    // Whether batch b's drawn string stands as its last drawing interpreted it, so that it may be drawn again within
+    // that drawing's room.
+    bool drawsAgain(const Batch& b) const { return b.room && !answersQueries && b.deriver->drawnStands(); }
+    // Records drawing batch b again into its target (drawsAgain()); returns the string drawn.
+    stream::DeviceModules recordDrawingAgain(VkCommandBuffer cmd, Batch& b);
+    // Batch b drawn with the host reading between the turtle's passes: its drawn string written anew (unless
+    // `drawnAgain`, the string a recording drew again and sized, which did not fit its room), sized, interpreted,
+    // lit and its organs kept in its target.
+    struct Drawing {
+        stream::DeviceModules modules;
+        const turtle::DeviceOrgans* organs = nullptr;
+    };
+    Drawing drawInterpreting(Batch& b, std::optional<stream::DeviceModules> drawnAgain);
+    // Records the light of the last grid for batch b's drawn particles and its organs, their statistics, and the
+    // organs splatted into the grid for the next.
+    void recordLight(VkCommandBuffer cmd, Batch& b, const stream::DeviceModules& drawn,
+                     const turtle::DeviceOrgans& organs);
+    bool growsSizes() const { return tables.drawsGrowth() || tables.growsSegments(); }
     std::vector<const turtle::DeviceOrgans*> interpretOnHost();
     turtle::OrganMerge& organMerge() {
         if (!merge) merge = std::make_unique<turtle::OrganMerge>(*context, options.maxPartBytes);
@@ -427,78 +448,111 @@ std::vector<const turtle::DeviceOrgans*> Simulation::Impl::interpretOnDevice() {
     const bool merged = batches.size() > 1 || hasObstacles();
     if (merged) organMerge().begin();
     lastStatistics.clear();
-    Clock::time_point lightStart = Clock::now();
-    context->submitAndWait([&](VkCommandBuffer cmd) { lightGpu->recordClear(cmd); });
-    seconds.light += secondsSince(lightStart);
+    // The batches whose drawn strings stand draw again, every one in one submission with the light grid's
+    // clearing, each into organ buffers of its own: the host reads nothing between them, and after them only their
+    // statistics, their organs' tables and whether each fit its room. Between derivation steps that is the
+    // drawing of the whole field.
+    std::vector<uint8_t> again(batches.size(), 0);
+    uint32_t modules = 0, plants = 0; // the largest string and plants of them
+    turtle::TurtleRoom room;
+    for (size_t k = 0; k < batches.size(); ++k) {
+        const Batch& b = batches[k];
+        if (!drawsAgain(b)) continue;
+        again[k] = 1;
+        modules = std::max({modules, b.deriver->lastDrawn().count, 1u});
+        plants = std::max(plants, b.count);
+        room.levels = std::max(room.levels, b.room->levels);
+    }
+    std::vector<std::optional<stream::DeviceModules>> drawnAgain(batches.size());
+    Clock::time_point start = Clock::now();
+    if (modules > 0) turtle->reserveTargets(modules, plants, room);
+    context->submitAndWait([&](VkCommandBuffer cmd) {
+        lightGpu->recordClear(cmd);
+        for (size_t k = 0; k < batches.size(); ++k)
+            if (again[k]) drawnAgain[k] = recordDrawingAgain(cmd, batches[k]);
+    });
+    seconds.interpret += secondsSince(start);
     uint64_t firstModule = 0;
     const turtle::DeviceOrgans* organs = nullptr;
-    for (Batch& b : batches) {
-        // The sizes of this moment: the last tick's.
-        const grow::TickSettings ts = settings(b, ticks == 0 ? 0 : ticks - 1);
-        Clock::time_point start = Clock::now();
-        // The string the batch's last drawing interpreted (no step derived since, no query answered into it): its
-        // drawn string stands, and one submission puts it back as the homomorphism wrote it with the particles the
-        // tick grew, grows its sizes, records the turtle within that drawing's room and gives the light. Else, or
-        // where it outgrew the room, the homomorphism writes the drawn string again and the turtle reads its sizes
-        // back between its passes.
-        const bool again = b.room && !answersQueries && b.deriver->drawnStands();
-        stream::DeviceModules drawnModules = again ? b.deriver->lastDrawn() : b.deriver->drawn();
-        // A grammar without a homomorphism draws its derived string: its segments shorten a copy.
-        if (tables.growsSegments() && drawnModules.symbols == b.deriver->current().symbols)
-            drawnModules = b.growth->copyForDrawing(drawnModules);
-        const bool grows = tables.drawsGrowth() || tables.growsSegments();
-        const std::vector<float> bases = baseHeights(b.field.placements);
-        // The light of the last grid, the statistics with it, and the organs splatted for the next.
-        const auto recordLight = [&](VkCommandBuffer cmd) {
-            if (drawnModules.particles)
-                lightGpu->recordGather(cmd, *organs, *drawnModules.particles, drawnModules.origins,
-                                       b.deriver->current().particles, b.first);
-            if (answersQueries) {
-                const stream::DeviceModules derived = b.deriver->current();
-                lightGpu->recordQueries(cmd, turtle->lastModuleStates(), drawnModules.count,
-                                        drawnModules.symbols == derived.symbols ? nullptr : drawnModules.origins,
-                                        *derived.symbols, *derived.params, derived.stride);
-            }
-            b.statistics->record(cmd, *organs, drawnModules.particles, bases);
-            lightGpu->recordSplat(cmd, *organs, b.first);
-        };
-        bool sized = false, recorded = false;
-        if (again) {
-            context->submitAndWait([&](VkCommandBuffer cmd) {
-                b.deriver->recordDrawnAgain(cmd);
-                if (grows) b.growth->recordSizes(cmd, drawnModules, ts);
-                organs = &turtle->record(cmd, drawnModules, b.field, *b.room);
-                recordLight(cmd);
-            });
-            sized = true;
-            recorded = turtle->recorded().fit;
-        }
-        if (!recorded) {
-            if (grows && !sized) b.growth->growSizes(drawnModules, ts); // a segment shortened twice would be short
-            organs = &turtle->interpret(drawnModules, b.field);
-            b.room = turtle->lastRoom();
-            b.room->marks = turtle->lastMarks(); // the string this batch draws again until it derives
-        }
-        seconds.interpret += secondsSince(start);
+    for (size_t k = 0; k < batches.size(); ++k) {
+        Batch& b = batches[k];
+        const bool fit = again[k] && turtle::GpuTurtle::recordedInto(b.target).fit;
+        // Else, or where it outgrew its room, the batch is drawn with the host reading between the turtle's passes.
+        const Drawing drawing = fit ? Drawing{*drawnAgain[k], &b.target.organs} : drawInterpreting(b, drawnAgain[k]);
+        organs = drawing.organs;
         start = Clock::now();
-        if (!recorded) context->submitAndWait(recordLight);
         const std::vector<shared::PlantStatistics> s = b.statistics->read();
         lastStatistics.insert(lastStatistics.end(), s.begin(), s.end());
         seconds.statistics += secondsSince(start);
         start = Clock::now();
-        if (merged) merge->keep(*organs, b.statistics->organTable(), b.first, firstModule);
-        firstModule += drawnModules.count;
+        if (merged) merge->keepInPlace(*organs, b.statistics->organTable(), b.first, firstModule);
+        firstModule += drawing.modules.count;
         seconds.interpret += secondsSince(start);
     }
-    lightStart = Clock::now();
+    Clock::time_point lightStart = Clock::now();
     context->submitAndWait([&](VkCommandBuffer cmd) { lightGpu->recordPropagate(cmd); });
     seconds.light += secondsSince(lightStart);
     if (!merged) return {organs};
-    const Clock::time_point start = Clock::now();
+    start = Clock::now();
     if (hasObstacles()) merge->keep(obstacleOrganBuffers(), derive.plants, firstModule);
     std::vector<const turtle::DeviceOrgans*> parts = merge->mergeParts();
     seconds.interpret += secondsSince(start);
     return parts;
+}
+
+stream::DeviceModules Simulation::Impl::recordDrawingAgain(VkCommandBuffer cmd, Batch& b) {
+    // The sizes of this moment: the last tick's.
+    const grow::TickSettings ts = settings(b, ticks == 0 ? 0 : ticks - 1);
+    // The string as the homomorphism wrote it, with the particles the tick grew.
+    b.deriver->recordDrawnAgain(cmd);
+    stream::DeviceModules modules = b.deriver->lastDrawn();
+    // A grammar without a homomorphism draws its derived string: its segments shorten a copy.
+    if (tables.growsSegments() && modules.symbols == b.deriver->current().symbols)
+        modules = b.growth->recordCopyForDrawing(cmd, modules);
+    if (growsSizes()) b.growth->recordSizes(cmd, modules, ts);
+    recordLight(cmd, b, modules, turtle->recordInto(cmd, modules, b.field, *b.room, b.target));
+    return modules;
+}
+
+Simulation::Impl::Drawing Simulation::Impl::drawInterpreting(Batch& b,
+                                                             std::optional<stream::DeviceModules> drawnAgain) {
+    const grow::TickSettings ts = settings(b, ticks == 0 ? 0 : ticks - 1);
+    Clock::time_point start = Clock::now();
+    stream::DeviceModules modules;
+    if (drawnAgain) {
+        modules = *drawnAgain; // sized already: a segment shortened twice would be short
+    } else {
+        modules = b.deriver->drawn();
+        if (tables.growsSegments() && modules.symbols == b.deriver->current().symbols)
+            modules = b.growth->copyForDrawing(modules);
+        if (growsSizes()) b.growth->growSizes(modules, ts);
+    }
+    const turtle::DeviceOrgans& organs = turtle->interpret(modules, b.field);
+    b.room = turtle->lastRoom();
+    b.room->marks = turtle->lastMarks(); // the string this batch draws again until it derives
+    seconds.interpret += secondsSince(start);
+    start = Clock::now();
+    context->submitAndWait([&](VkCommandBuffer cmd) {
+        recordLight(cmd, b, modules, organs);
+        turtle->recordKeep(cmd, b.target);
+    });
+    seconds.statistics += secondsSince(start);
+    return {modules, &b.target.organs};
+}
+
+void Simulation::Impl::recordLight(VkCommandBuffer cmd, Batch& b, const stream::DeviceModules& modules,
+                                   const turtle::DeviceOrgans& organs) {
+    if (modules.particles)
+        lightGpu->recordGather(cmd, organs, *modules.particles, modules.origins, b.deriver->current().particles,
+                               b.first);
+    if (answersQueries) {
+        const stream::DeviceModules derived = b.deriver->current();
+        lightGpu->recordQueries(cmd, turtle->lastModuleStates(), modules.count,
+                                modules.symbols == derived.symbols ? nullptr : modules.origins, *derived.symbols,
+                                *derived.params, derived.stride);
+    }
+    b.statistics->record(cmd, organs, modules.particles, baseHeights(b.field.placements));
+    lightGpu->recordSplat(cmd, organs, b.first);
 }
 
 const turtle::DeviceOrgans& Simulation::Impl::obstacleOrganBuffers() {

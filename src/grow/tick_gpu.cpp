@@ -82,6 +82,12 @@ void GpuGrowth::recordSizes(VkCommandBuffer cmd, const stream::DeviceModules& dr
 }
 
 stream::DeviceModules GpuGrowth::copyForDrawing(const stream::DeviceModules& modules) {
+    stream::DeviceModules copy;
+    context_.submitAndWait([&](VkCommandBuffer cmd) { copy = recordCopyForDrawing(cmd, modules); });
+    return copy;
+}
+
+stream::DeviceModules GpuGrowth::recordCopyForDrawing(VkCommandBuffer cmd, const stream::DeviceModules& modules) {
     const VkDeviceSize count = std::max<VkDeviceSize>(modules.count, 1);
     const std::pair<vk::Buffer*, VkDeviceSize> sized[] = {
         {&drawnSymbols_, count * 4},
@@ -90,22 +96,20 @@ stream::DeviceModules GpuGrowth::copyForDrawing(const stream::DeviceModules& mod
         {&drawnParticles_, count * sizeof(shared::ParticleState)}};
     for (const auto& [buffer, bytes] : sized)
         if (!*buffer || buffer->size() < bytes) *buffer = vk::Buffer(context_, bytes, vk::MemoryUsage::DeviceLocal);
-    context_.submitAndWait([&](VkCommandBuffer cmd) {
-        vk::memoryBarrier(cmd, vk::Hazard::AnyToTransfer);
-        const std::pair<const vk::Buffer*, vk::Buffer*> copies[] = {{modules.symbols, &drawnSymbols_},
-                                                                   {modules.params, &drawnParams_},
-                                                                   {modules.plantStarts, &drawnStarts_},
-                                                                   {modules.particles, &drawnParticles_}};
-        const VkDeviceSize bytes[] = {VkDeviceSize(modules.count) * 4, VkDeviceSize(modules.count) * modules.stride * 4,
-                                      VkDeviceSize(modules.plants + 1) * 4,
-                                      VkDeviceSize(modules.count) * sizeof(shared::ParticleState)};
-        for (size_t k = 0; k < 4; ++k) {
-            if (!copies[k].first || bytes[k] == 0) continue;
-            const VkBufferCopy region{0, 0, bytes[k]};
-            vkCmdCopyBuffer(cmd, copies[k].first->handle(), copies[k].second->handle(), 1, &region);
-        }
-        vk::memoryBarrier(cmd, vk::Hazard::TransferToAny);
-    });
+    vk::memoryBarrier(cmd, vk::Hazard::AnyToTransfer);
+    const std::pair<const vk::Buffer*, vk::Buffer*> copies[] = {{modules.symbols, &drawnSymbols_},
+                                                               {modules.params, &drawnParams_},
+                                                               {modules.plantStarts, &drawnStarts_},
+                                                               {modules.particles, &drawnParticles_}};
+    const VkDeviceSize bytes[] = {VkDeviceSize(modules.count) * 4, VkDeviceSize(modules.count) * modules.stride * 4,
+                                  VkDeviceSize(modules.plants + 1) * 4,
+                                  VkDeviceSize(modules.count) * sizeof(shared::ParticleState)};
+    for (size_t k = 0; k < 4; ++k) {
+        if (!copies[k].first || bytes[k] == 0) continue;
+        const VkBufferCopy region{0, 0, bytes[k]};
+        vkCmdCopyBuffer(cmd, copies[k].first->handle(), copies[k].second->handle(), 1, &region);
+    }
+    vk::memoryBarrier(cmd, vk::Hazard::TransferToAny);
     stream::DeviceModules copy = modules;
     copy.symbols = &drawnSymbols_;
     copy.params = &drawnParams_;

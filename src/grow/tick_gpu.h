@@ -36,6 +36,8 @@ public:
     // A copy of `modules` in this growth's own buffers (valid until the next copy): what a grammar without a
     // homomorphism draws, so that its segments are shortened without touching its derived string.
     stream::DeviceModules copyForDrawing(const stream::DeviceModules& modules);
+    // The same copy recorded into `cmd`: the buffers it returns hold it once the submission has run.
+    stream::DeviceModules recordCopyForDrawing(VkCommandBuffer cmd, const stream::DeviceModules& modules);
 
     void tick(const stream::DeviceModules& derived, const TickSettings& settings);
 

@@ -29,15 +29,12 @@ void OrganMerge::begin() {
     for (Part& part : parts_) {
         part.kept.clear();
         part.heldOrgans = 0;
+        part.organs = 0;
     }
     used_ = 0;
 }
 
-void OrganMerge::keep(const DeviceOrgans& batch, uint32_t firstPlant, uint64_t firstModule) {
-    keep(batch, vk::downloadVector<OrganTable>(context_, batch.table, 1)[0], firstPlant, firstModule);
-}
-
-void OrganMerge::keep(const DeviceOrgans& batch, const OrganTable& table, uint32_t firstPlant, uint64_t firstModule) {
+OrganMerge::Kept OrganMerge::counted(const OrganTable& table, uint32_t firstPlant, uint64_t firstModule) const {
     Kept k;
     k.table = table;
     for (uint32_t kind = 0; kind < kOrganKinds; ++kind)
@@ -49,11 +46,30 @@ void OrganMerge::keep(const DeviceOrgans& batch, const OrganTable& table, uint32
         throw ir::LimitError(fmt::format("a batch's {} organ instances need {} MiB, past the {} MiB a buffer binding "
                                          "holds (draw fewer plants per batch)",
                                          k.organs, bytes >> 20, maxPartBytes_ >> 20));
-    if (used_ == 0 || (parts_[used_ - 1].heldOrgans + k.organs) * sizeof(OrganInstance) > maxPartBytes_) {
+    return k;
+}
+
+OrganMerge::Part& OrganMerge::partFor(const Kept& k) {
+    if (used_ == 0 || (parts_[used_ - 1].organs + k.organs) * sizeof(OrganInstance) > maxPartBytes_) {
         if (used_ == parts_.size()) parts_.emplace_back();
         ++used_;
     }
-    Part& part = parts_[used_ - 1];
+    return parts_[used_ - 1];
+}
+
+void OrganMerge::keepInPlace(const DeviceOrgans& batch, const OrganTable& table, uint32_t firstPlant,
+                             uint64_t firstModule) {
+    Kept k = counted(table, firstPlant, firstModule);
+    Part& part = partFor(k);
+    k.source = &batch.instances;
+    k.first = table.first[0];
+    part.organs += k.organs;
+    part.kept.push_back(k);
+}
+
+void OrganMerge::keep(const DeviceOrgans& batch, uint32_t firstPlant, uint64_t firstModule) {
+    Kept k = counted(vk::downloadVector<OrganTable>(context_, batch.table, 1)[0], firstPlant, firstModule);
+    Part& part = partFor(k);
     k.first = part.heldOrgans;
     const VkDeviceSize needed = (part.heldOrgans + k.organs) * sizeof(OrganInstance);
     context_.submitAndWait([&](VkCommandBuffer cmd) {
@@ -78,6 +94,7 @@ void OrganMerge::keep(const DeviceOrgans& batch, const OrganTable& table, uint32
     });
     retired_ = vk::Buffer();
     part.heldOrgans += k.organs;
+    part.organs += k.organs;
     part.kept.push_back(k);
 }
 
@@ -96,7 +113,7 @@ std::vector<const DeviceOrgans*> OrganMerge::mergeParts() {
 
 const DeviceOrgans& OrganMerge::merge() {
     uint64_t organs = 0;
-    for (size_t p = 0; p < used_; ++p) organs += parts_[p].heldOrgans;
+    for (size_t p = 0; p < used_; ++p) organs += parts_[p].organs;
     if (used_ > 1)
         throw ir::LimitError(fmt::format("the device binds at most {} MiB per buffer; the field's {} organ instances "
                                          "need {} MiB (draw fewer plants)",
@@ -120,7 +137,7 @@ void OrganMerge::mergePart(Part& part) {
         bounds.max = glm::max(bounds.max, b.max);
     }
     draw::encodeBounds(bounds, table);
-    const VkDeviceSize bytes = std::max<uint64_t>(part.heldOrgans, 1) * sizeof(OrganInstance);
+    const VkDeviceSize bytes = std::max<uint64_t>(part.organs, 1) * sizeof(OrganInstance);
     DeviceOrgans& field = part.field;
     if (!field.instances || field.instances.size() < bytes) {
         field.instances = vk::Buffer(context_, bytes, vk::MemoryUsage::DeviceLocal);
@@ -146,7 +163,8 @@ void OrganMerge::mergePart(Part& part) {
             push.organs = k.organs;
             push.firstPlant = k.firstPlant;
             push.firstModule = uint32_t(k.firstModule);
-            kernel_.dispatch(cmd, {part.held, field.instances}, push, kernel_.groupsFor(k.organs));
+            kernel_.dispatch(cmd, {k.source ? *k.source : part.held, field.instances}, push,
+                             kernel_.groupsFor(k.organs));
         }
         vk::memoryBarrier(cmd, vk::Hazard::ComputeToCompute);
     });

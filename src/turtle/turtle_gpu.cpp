@@ -287,6 +287,17 @@ struct GpuTurtle::Impl {
     const DeviceOrgans& interpret(const stream::DeviceModules& m, const turtle::FieldOptions& options);
     const DeviceOrgans& record(VkCommandBuffer cmd, const stream::DeviceModules& m,
                                const turtle::FieldOptions& options, TurtleRoom room);
+    const DeviceOrgans& recordInto(VkCommandBuffer cmd, const stream::DeviceModules& m,
+                                   const turtle::FieldOptions& options, TurtleRoom room, TurtleTarget& target);
+    void reserveTargets(std::uint32_t modules, std::uint32_t plants, TurtleRoom room);
+    // The target's buffers, its instances for `organCount` organs and half again.
+    void sizeTarget(TurtleTarget& target, std::uint64_t organCount) const;
+    void recordKeep(VkCommandBuffer cmd, TurtleTarget& target);
+    // The turtle's own buffers for recording `bound` modules of `plants` plants within `levelsResolved` levels.
+    void reserveRecording(std::uint32_t bound, std::uint32_t plants, std::uint32_t levelsResolved);
+    // The most recordInto() records without growing the turtle's buffers (reserveTargets()).
+    TurtleRoom targetRoom{};
+    std::uint32_t targetModules = 0, targetPlants = 0;
 
     // What one interpretation's passes share: the stream, the bound on its modules (their count is in the
     // status words) and the push constants, the marks searched for and the levels laid out and resolved.
@@ -299,6 +310,8 @@ struct GpuTurtle::Impl {
         std::uint32_t n = 0, plants = 0, rounds = 0;
         std::uint64_t groups = 0, chunkGroups = 0;
         TurtlePush push{};
+        DeviceOrgans* out = nullptr;          // where the organs go: the turtle's own, or a target's
+        const vk::Buffer* placed = nullptr;   // the plants' placements
         bool countedOnDevice = false; // the host has not read the count: the bracket tree is sized on the device
         std::uint32_t marked = 0;     // the marks that occur, or every mark where the host did not read them
         std::uint32_t levels = 0;     // levels of non-linear modules laid out and resolved
@@ -335,7 +348,12 @@ struct GpuTurtle::Impl {
     void recordOrgans(VkCommandBuffer cmd, const Run& run, std::uint64_t organGroups);
 
     // A run over the first `m.count` modules at most, before the host has read anything.
-    Run begin(const stream::DeviceModules& m, const turtle::FieldOptions& options) const;
+    Run begin(const stream::DeviceModules& m, const turtle::FieldOptions& options);
+    // A run of a recording, which reads nothing back, within `room`, into `out`.
+    Run beginRecording(const stream::DeviceModules& m, const turtle::FieldOptions& options, TurtleRoom room,
+                       DeviceOrgans& out, const vk::Buffer& placed);
+    // The passes of a recording, ending with a copy of the status words into `statusCopy` for the host.
+    void recordPasses(VkCommandBuffer cmd, const Run& run, const vk::Buffer& statusCopy);
     // Room for `levels` levels of non-linear modules.
     void reserveLevels(std::uint32_t levels);
     // What the last interpretation needed, and the marks that occurred in its string.
@@ -419,8 +437,10 @@ const DeviceOrgans& GpuTurtle::Impl::interpret(const stream::DeviceModules& m, c
     return organs;
 }
 
-GpuTurtle::Impl::Run GpuTurtle::Impl::begin(const stream::DeviceModules& m, const turtle::FieldOptions& options) const {
+GpuTurtle::Impl::Run GpuTurtle::Impl::begin(const stream::DeviceModules& m, const turtle::FieldOptions& options) {
     Run run(*m.symbols, *m.params, *m.plantStarts);
+    run.out = &organs;
+    run.placed = &placements;
     run.n = m.count;
     run.plants = m.plants;
     run.push = base;
@@ -445,32 +465,109 @@ const DeviceOrgans& GpuTurtle::Impl::record(VkCommandBuffer cmd, const stream::D
     if (!pending.empty() && (bound > reservedModules || m.plants > reservedPlants || room.levels >= levelCapacity ||
                              room.organs > organs.capacity))
         throw std::logic_error("GpuTurtle::record: more room than its buffers hold while recordings are in flight");
+    checkRange(room.organs, sizeof(OrganInstance), "organ instances");
+    reserveRecording(bound, m.plants, room.levels);
+    reserveOrgans(room.organs);
+    setPlacements(options, m.plants);
+    const std::uint32_t slot = nextSlot;
+    nextSlot = (nextSlot + 1) % kRecordingsInFlight;
+    recordPasses(cmd, beginRecording(m, options, room, organs, placements), statusReadback[slot]);
+    pending.push_back({slot, TurtleRoom{room.levels, organs.capacity, room.marks}});
+    return organs;
+}
+
+void GpuTurtle::Impl::reserveRecording(std::uint32_t bound, std::uint32_t plants, std::uint32_t levelsResolved) {
     checkRange(bound, sizeof(TurtleStep), "steps");
     checkRange(std::uint64_t(bound) * kOrganKinds, 4, "organ flags");
-    checkRange(room.organs, sizeof(OrganInstance), "organ instances");
-    reserve(bound, m.plants);
+    reserve(bound, plants);
     if (scan.capacity() < bound * kOrganKinds) scan.reserve(bound * kOrganKinds);
-    reserveLevels(room.levels);
-    reserveOrgans(room.organs);
+    reserveLevels(levelsResolved);
     if (!stepSizes) stepSizes = vk::ComputePipeline::embedded(ctx, "derive/step_sizes");
     if (!treeArguments)
         treeArguments = vk::Buffer(ctx, (shared::kStepBlocks + shared::kStepBlockWords) * 4,
                                    vk::MemoryUsage::DeviceLocal, VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT);
-    vk::Buffer replaced = brackets.reserve(bound); // the turtle reads no partners: nothing to carry over
+    (void)brackets.reserve(bound); // the turtle reads no partners: nothing to carry over
+}
 
-    setPlacements(options, m.plants);
+void GpuTurtle::Impl::reserveTargets(std::uint32_t modules, std::uint32_t plants, TurtleRoom room) {
+    if (!pending.empty()) throw std::logic_error("GpuTurtle::reserveTargets: recordings in flight (read them first)");
+    const std::uint32_t bound = std::max(modules, 1u);
+    reserveRecording(bound, plants, room.levels);
+    targetModules = bound;
+    targetPlants = plants;
+    targetRoom = room;
+}
+
+const DeviceOrgans& GpuTurtle::Impl::recordInto(VkCommandBuffer cmd, const stream::DeviceModules& m,
+                                                const turtle::FieldOptions& options, TurtleRoom room,
+                                                TurtleTarget& target) {
+    if (std::max(m.count, 1u) > targetModules || m.plants > targetPlants || room.levels > targetRoom.levels)
+        throw std::logic_error("GpuTurtle::recordInto: a string or room past what reserveTargets() made room for");
+    if (!options.placements.empty() && options.placements.size() != m.plants)
+        throw std::invalid_argument("GpuTurtle: one placement per plant");
+    checkRange(room.organs, sizeof(OrganInstance), "organ instances");
+    sizeTarget(target, room.organs);
+    DeviceOrgans& out = target.organs;
+    out.scattered = options.placements.empty() && options.scattered;
+    if (!target.placements || options.placements != out.placements) {
+        static const PlantPlacement none{};
+        target.placements = options.placements.empty()
+                                ? vk::deviceBufferWith(ctx, std::span<const PlantPlacement>(&none, 1))
+                                : vk::deviceBufferWith(ctx, std::span<const PlantPlacement>(options.placements));
+        out.placements = options.placements;
+    }
+    recordPasses(cmd, beginRecording(m, options, room, out, target.placements), target.status);
+    target.room = TurtleRoom{room.levels, out.capacity, room.marks};
+    return out;
+}
+
+void GpuTurtle::Impl::sizeTarget(TurtleTarget& target, std::uint64_t organCount) const {
+    DeviceOrgans& out = target.organs;
+    if (!out.table) out.table = vk::Buffer(ctx, sizeof(OrganTable), vk::MemoryUsage::DeviceLocal);
+    if (!out.field) out.field = vk::Buffer(ctx, 4, vk::MemoryUsage::DeviceLocal);
+    if (!target.status) target.status = vk::Buffer(ctx, kTurtleStatusWords * 4, vk::MemoryUsage::Readback);
+    if (out.instances && out.capacity >= organCount) return;
+    const std::uint64_t limit = ctx.limits().maxStorageBufferRange / sizeof(OrganInstance);
+    const std::uint64_t capacity =
+        std::max<std::uint64_t>(std::min<std::uint64_t>(organCount + organCount / 2, limit), 64);
+    out.instances = vk::Buffer(ctx, bytes(capacity, sizeof(OrganInstance)), vk::MemoryUsage::DeviceLocal);
+    out.capacity = static_cast<std::uint32_t>(capacity);
+}
+
+void GpuTurtle::Impl::recordKeep(VkCommandBuffer cmd, TurtleTarget& target) {
+    sizeTarget(target, needed.organs);
+    vk::memoryBarrier(cmd, Hazard::AnyToTransfer);
+    const VkBufferCopy instances{0, 0, bytes(needed.organs, sizeof(OrganInstance))};
+    if (needed.organs > 0)
+        vkCmdCopyBuffer(cmd, organs.instances.handle(), target.organs.instances.handle(), 1, &instances);
+    const VkBufferCopy table{0, 0, sizeof(OrganTable)}, spacing{0, 0, 4};
+    vkCmdCopyBuffer(cmd, organs.table.handle(), target.organs.table.handle(), 1, &table);
+    vkCmdCopyBuffer(cmd, organs.field.handle(), target.organs.field.handle(), 1, &spacing);
+    vk::memoryBarrier(cmd, Hazard::TransferToAny);
+    target.organs.placements = organs.placements;
+    target.organs.scattered = organs.scattered;
+    target.room = TurtleRoom{needed.levels, target.organs.capacity, neededMarks};
+}
+
+GpuTurtle::Impl::Run GpuTurtle::Impl::beginRecording(const stream::DeviceModules& m,
+                                                     const turtle::FieldOptions& options, TurtleRoom room,
+                                                     DeviceOrgans& out, const vk::Buffer& placed) {
     stream::DeviceModules bounded = m;
-    bounded.count = bound;
+    bounded.count = std::max(m.count, 1u);
     Run run = begin(bounded, options);
+    run.out = &out;
+    run.placed = &placed;
     run.countedOnDevice = true;
     run.marked = room.marks;
     run.levels = room.levels;
     run.push.items = room.levels;
-    run.push.organCapacity = organs.capacity;
+    run.push.organCapacity = out.capacity;
     levels = 0;
     bytesMoved = 0;
-    const std::uint32_t slot = nextSlot;
-    nextSlot = (nextSlot + 1) % kRecordingsInFlight;
+    return run;
+}
+
+void GpuTurtle::Impl::recordPasses(VkCommandBuffer cmd, const Run& run, const vk::Buffer& statusCopy) {
     // The stream, and this turtle's buffers, may be in use by what was recorded before.
     vk::memoryBarrier(cmd, Hazard::AnyToAny);
     recordSetup(cmd, run);
@@ -479,13 +576,11 @@ const DeviceOrgans& GpuTurtle::Impl::record(VkCommandBuffer cmd, const stream::D
     vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
     recordStates(cmd, run);
     vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
-    recordOrgans(cmd, run, place.groupsFor(organs.capacity));
+    recordOrgans(cmd, run, place.groupsFor(run.out->capacity));
     vk::memoryBarrier(cmd, Hazard::ComputeToTransfer);
     VkBufferCopy words{0, 0, kTurtleStatusWords * 4};
-    vkCmdCopyBuffer(cmd, status.handle(), statusReadback[slot].handle(), 1, &words);
+    vkCmdCopyBuffer(cmd, status.handle(), statusCopy.handle(), 1, &words);
     vk::memoryBarrier(cmd, Hazard::TransferToHost);
-    pending.push_back({slot, TurtleRoom{room.levels, organs.capacity, room.marks}});
-    return organs;
 }
 
 void GpuTurtle::Impl::dispatchPass(VkCommandBuffer cmd, const vk::ComputePipeline& pipeline,
@@ -693,24 +788,25 @@ void GpuTurtle::Impl::recordOrgans(VkCommandBuffer cmd, const Run& run, std::uin
     dispatchPass(cmd, emit,
                  {run.symbols, run.params, run.starts, commandTable, speciesTable, b.commands, b.parents, b.plantOf,
                   b.states, b.kinds, b.offsets, b.triangleFirst, b.trianglePrevious, b.cylinderAnchors, palettes,
-                  surfaceScales, surfaceShapes, organs.instances, b.slots, plantBounds, b.lastSlots, status, b.marks,
+                  surfaceScales, surfaceShapes, run.out->instances, b.slots, plantBounds, b.lastSlots, status, b.marks,
                   contourRings, b.contourSetters, b.tangentSetters, b.radiusScaleSetters, b.radiusTangentSetters},
                  run.push, run, kGateModules, Over::Modules);
     vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
     dispatchPass(cmd, links,
-                 {b.commands, b.marks, b.kinds, b.slots, b.stemBelow, b.tubeBelow, organs.instances, b.lastSlots,
+                 {b.commands, b.marks, b.kinds, b.slots, b.stemBelow, b.tubeBelow, run.out->instances, b.lastSlots,
                   status},
                  run.push, run, kGateModules, Over::Modules);
     if ((run.marked & kMarkStem) && tapers) {
         vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
         dispatchPass(cmd, taper,
                      {run.starts, speciesTable, b.commands, b.marks, b.kinds, b.plantOf, b.states, b.slots,
-                      b.taperBelow, organs.instances, plantBounds, status},
+                      b.taperBelow, run.out->instances, plantBounds, status},
                      run.push, run, kGateStems, Over::Modules);
     }
-    field.dispatch(cmd, {b.offsets, scan.totalBuffer(), plantBounds, organs.table, organs.field, status}, run.push, 1);
+    field.dispatch(cmd, {b.offsets, scan.totalBuffer(), plantBounds, run.out->table, run.out->field, status}, run.push,
+                   1);
     vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
-    place.dispatch(cmd, {scan.totalBuffer(), organs.field, organs.instances, organs.table, placements}, run.push,
+    place.dispatch(cmd, {scan.totalBuffer(), run.out->field, run.out->instances, run.out->table, *run.placed}, run.push,
                    organGroups);
     vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
 }
@@ -802,6 +898,26 @@ const DeviceOrgans& GpuTurtle::record(VkCommandBuffer cmd, const stream::DeviceM
 TurtleRoom GpuTurtle::lastRoom() const { return impl_->needed; }
 
 std::uint32_t GpuTurtle::lastMarks() const { return impl_->neededMarks; }
+
+void GpuTurtle::reserveTargets(std::uint32_t modules, std::uint32_t plants, TurtleRoom room) {
+    impl_->reserveTargets(modules, plants, room);
+}
+
+const DeviceOrgans& GpuTurtle::recordInto(VkCommandBuffer cmd, const stream::DeviceModules& modules,
+                                          const turtle::FieldOptions& field, TurtleRoom room, TurtleTarget& target) {
+    return impl_->recordInto(cmd, modules, field, room, target);
+}
+
+void GpuTurtle::recordKeep(VkCommandBuffer cmd, TurtleTarget& target) { impl_->recordKeep(cmd, target); }
+
+RecordedInterpretation GpuTurtle::recordedInto(const TurtleTarget& target) {
+    if (!target.status) throw std::logic_error("GpuTurtle::recordedInto: nothing recorded into the target");
+    const auto* words = reinterpret_cast<const std::uint32_t*>(target.status.mapped());
+    RecordedInterpretation r{words[kTurtleStatusModules], words[kTurtleStatusLevels], words[kTurtleStatusOrgans],
+                             false};
+    r.fit = r.levels <= target.room.levels && r.organs <= target.room.organs;
+    return r;
+}
 
 RecordedInterpretation GpuTurtle::recorded() {
     Impl& m = *impl_;

@@ -2,8 +2,8 @@
 // passes over the module stream, the same organs, in the same order, as the CPU reference turtle
 // (turtle/turtle_cpu.h). The kernels are in compute/turtle; the method is described in
 // compute/shared/turtle_state_layout.h. interpret() reads back only which marks occur (to skip searches nothing
-// needs), the levels of non-linear commands, and the number of organs (to size their buffer); record() reads
-// nothing and works within the room it is given.
+// needs), the levels of non-linear commands, and the number of organs (to size their buffer); record() and
+// recordInto() read nothing and work within the room they are given.
 #pragma once
 
 #include <cstdint>
@@ -65,6 +65,16 @@ struct RecordedInterpretation {
     bool fit = false;
 };
 
+// Buffers of the caller's that a recording leaves its organs and its status words in (GpuTurtle::recordInto): each
+// batch of a field its own, so that the batches' recordings follow one another in one submission and their organs
+// stay until the caller has merged them. The turtle makes and grows them.
+struct TurtleTarget {
+    DeviceOrgans organs;
+    vk::Buffer placements; // organs.placements on the device, uploaded when they change
+    vk::Buffer status;     // the recording's status words, for the host
+    TurtleRoom room;       // what the last recording into it had room for
+};
+
 // Recordings a turtle keeps in flight at once (ticks submitted and not yet read back), as the renderer keeps
 // frames (draw::kFramesInFlight).
 inline constexpr std::uint32_t kRecordingsInFlight = 2;
@@ -92,6 +102,19 @@ public:
     // the caller submits.
     const DeviceOrgans& record(VkCommandBuffer cmd, const stream::DeviceModules& modules,
                                const turtle::FieldOptions& field, TurtleRoom room);
+    // Makes the turtle's own buffers large enough for strings of up to `modules` modules of up to `plants` plants
+    // recorded within `room`, for recordInto(), which grows none of them: one submission may then hold several
+    // recordings, which share the turtle's passes' arrays one after another. Refused while recordings are in flight.
+    void reserveTargets(std::uint32_t modules, std::uint32_t plants, TurtleRoom room);
+    // As record(), leaving the organs and the status words in `target` (its instances grown to `room.organs` and
+    // half again) rather than the turtle's, and outside the recordings that recorded() reads: recordedInto() tells,
+    // after the submission, whether the string fit. The string and room must be within reserveTargets()'.
+    const DeviceOrgans& recordInto(VkCommandBuffer cmd, const stream::DeviceModules& modules,
+                                   const turtle::FieldOptions& field, TurtleRoom room, TurtleTarget& target);
+    static RecordedInterpretation recordedInto(const TurtleTarget& target);
+    // Records a copy of the last interpret()'s organs into `target` (grown to hold them), where they stay past the
+    // turtle's next interpretation.
+    void recordKeep(VkCommandBuffer cmd, TurtleTarget& target);
     // What the last interpret() needed: room to record the same string again, or another as large (every mark).
     TurtleRoom lastRoom() const;
     // The marks that occur in the string the last interpret() read (TurtleRoom::marks): for recording that string

@@ -68,6 +68,45 @@ TEST_F(SimulationTest, AFieldInBatchesGrowsOnTheDeviceAsOnTheCpu) {
     EXPECT_EQ(gpu.plantModules(), cpu.plantModules());
 }
 
+// Between derivation steps every batch is drawn again in one submission, into organ buffers of its own, and the
+// host reads back only the statistics after it: the drawing takes as many submissions in four batches as in two.
+// What it draws, and counts, is what the CPU draws, tick after tick.
+TEST_F(SimulationTest, BetweenStepsEveryBatchIsDrawnInOneSubmissionAsOnTheCpu) {
+    field::SimulationOptions inTwo = garden(field::Backend::Gpu);
+    inTwo.plantsPerBatch = 6;
+    field::Simulation four(garden(field::Backend::Gpu), &context()), two(inTwo, &context());
+    field::Simulation cpu(garden(field::Backend::Cpu), &context());
+    ASSERT_EQ(four.batches(), 4u);
+    ASSERT_EQ(two.batches(), 2u);
+    int between = 0;
+    for (int tick = 0; tick < 12; ++tick) {
+        const field::TickReport report = four.tick();
+        two.tick();
+        cpu.tick();
+        uint64_t before = context().submissions();
+        const turtle::Interpretation got = turtle::readBack(context(), four.interpret(), four.plants());
+        const uint64_t fourSubmissions = context().submissions() - before - 3; // less readBack's three
+        before = context().submissions();
+        two.interpretParts();
+        const uint64_t twoSubmissions = context().submissions() - before;
+        const turtle::Interpretation want = turtle::readBack(context(), cpu.interpret(), cpu.plants());
+        if (want.organs.empty()) { // the seeds, before their first organs
+            EXPECT_TRUE(got.organs.empty()) << tick;
+            continue;
+        }
+        ASSERT_EQ(organDifference(want, got), "") << tick;
+        const std::vector<shared::PlantStatistics> a = four.statistics(), b = cpu.statistics();
+        for (uint32_t p = 0; p < 12; ++p) {
+            EXPECT_EQ(a[p].organs, b[p].organs) << tick << " " << p;
+            EXPECT_NEAR(a[p].leafArea, b[p].leafArea, 1e-4f * std::max(1.0f, b[p].leafArea)) << tick << " " << p;
+        }
+        if (report.derived > 0) continue;
+        ++between;
+        EXPECT_EQ(fourSubmissions, twoSubmissions) << tick;
+    }
+    EXPECT_GE(between, 3);
+}
+
 // A tick longer than the plants' DeriveTime (a time-lapse of few frames) derives every step due within it: two
 // ticks of four DeriveTimes reach the string eight short ticks do, and one very long tick derives the whole
 // grammar and stops there.

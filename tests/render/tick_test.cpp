@@ -16,6 +16,7 @@
 #include "gpu/derive_gpu.h"
 #include "gpu_fixture.h"
 #include "lang/load_grammar.h"
+#include "same_organs.h"
 #include "turtle/turtle_commands.h"
 #include "turtle/turtle_gpu.h"
 #include "turtle/turtle_settings.h"
@@ -97,6 +98,45 @@ TEST_F(FieldTick, ATickRecordedInOneSubmissionDrawsWhatTheBlockingCallsDraw) {
     EXPECT_TRUE(turtle.recorded().fit);
 
     expectSameFrame(tick, blocking);
+}
+
+// Two strings recorded one after the other in one submission, each into buffers of its own: each target holds the
+// organs interpreting its string alone gives, though both recordings share the turtle's passes' arrays; a target
+// with too little room says so.
+TEST_F(FieldTick, StringsRecordedIntoTargetsOfTheirOwnInOneSubmissionKeepTheirOrgans) {
+    ir::Grammar g = ternaryTree();
+    gpu::GpuDeriver small(context(), g), large(context(), g);
+    small.derive(field(20, 2), /*readBack=*/false);
+    large.derive(field(30, 3), /*readBack=*/false);
+    turtle::TurtleCommands commands = turtle::turtleCommands(g.alphabet);
+    turtle::GpuTurtle turtle(context(), commands, {turtle::turtleSettings(g, g.alphabet)});
+    const turtle::Interpretation smallAlone = turtle::readBack(context(), turtle.interpret(small.lastString(), {}), 20);
+    const turtle::TurtleRoom smallRoom = turtle.lastRoom();
+    const turtle::Interpretation largeAlone = turtle::readBack(context(), turtle.interpret(large.lastString(), {}), 30);
+    const turtle::TurtleRoom largeRoom = turtle.lastRoom();
+    ASSERT_GT(largeAlone.organs.size(), smallAlone.organs.size());
+
+    turtle::TurtleTarget smallTarget, largeTarget, crampedTarget;
+    turtle::TurtleRoom cramped = largeRoom;
+    cramped.organs = 1;
+    turtle.reserveTargets(large.lastString().count, 30, largeRoom);
+    context().submitAndWait([&](VkCommandBuffer cmd) {
+        turtle.recordInto(cmd, small.lastString(), {}, smallRoom, smallTarget);
+        turtle.recordInto(cmd, large.lastString(), {}, largeRoom, largeTarget);
+        turtle.recordInto(cmd, large.lastString(), {}, cramped, crampedTarget);
+    });
+    EXPECT_TRUE(turtle::GpuTurtle::recordedInto(smallTarget).fit);
+    EXPECT_TRUE(turtle::GpuTurtle::recordedInto(largeTarget).fit);
+    EXPECT_FALSE(turtle::GpuTurtle::recordedInto(crampedTarget).fit);
+    EXPECT_EQ(test::organDifference(smallAlone, turtle::readBack(context(), smallTarget.organs, 20)), "");
+    EXPECT_EQ(test::organDifference(largeAlone, turtle::readBack(context(), largeTarget.organs, 30)), "");
+    // A string past what the turtle made room for is refused, not recorded over its arrays' ends.
+    turtle::TurtleTarget another;
+    turtle.reserveTargets(small.lastString().count, 20, smallRoom);
+    EXPECT_THROW(context().submitAndWait([&](VkCommandBuffer cmd) {
+        turtle.recordInto(cmd, large.lastString(), {}, largeRoom, another);
+    }),
+                 std::logic_error);
 }
 
 // A tick whose string changes: the next step derived, interpreted and drawn with shadow volumes in one

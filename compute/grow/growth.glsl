@@ -33,7 +33,7 @@ uint stageRow(uint species, uint organ, float stage) {
 // Property k of the row, as particle `id` of plant `plant` draws it in its range.
 float property(uint row, uint k, uint plant, uint id) {
     float lo = rows[row + propertyMin(k)], hi = rows[row + propertyMax(k)];
-    return lo + (hi - lo) * randomUnit(pc.seed, plant, kGrowPropertyPass, id, k);
+    return lo + (hi - lo) * randomUnit(pc.seed, pc.firstPlant + plant, kGrowPropertyPass, id, k);
 }
 
 // Whether a particle lives: its age within its row's LifeTime (none: 0), and not shed in the shade.

@@ -56,7 +56,8 @@ void main() {
         for (uint k = 0u; k < kParticleStateFloats; ++k) p[k] = 0.0;
         p[kParticleStage] = stage;
         p[kParticleClass] = uintBitsToFloat(klass);
-        p[kParticleId] = uintBitsToFloat(randomBits(pc.seed, plant, kGrowIdentityPass, i - start, pc.tick) | 1u);
+        uint identity = randomBits(pc.seed, pc.firstPlant + plant, kGrowIdentityPass, i - start, pc.tick) | 1u;
+        p[kParticleId] = uintBitsToFloat(identity);
         if (organ) {
             p[kParticleLight] = light;
             p[kParticleSpace] = space;
@@ -94,8 +95,8 @@ void main() {
         float noiseTime = property(row, kNoiseTime, plant, self), cone = property(row, kConeNoise, plant, self);
         if (growing > 0.0 && noiseTime > 0.0 && cone > 0.0 &&
             periodsUpTo(p[kParticleAge] + pc.dt, noiseTime) > periodsUpTo(p[kParticleAge], noiseTime)) {
-            float u = randomUnit(pc.seed, plant, kGrowNoisePass, self, 2u * pc.tick);
-            float v = randomUnit(pc.seed, plant, kGrowNoisePass, self, 2u * pc.tick + 1u);
+            float u = randomUnit(pc.seed, pc.firstPlant + plant, kGrowNoisePass, self, 2u * pc.tick);
+            float v = randomUnit(pc.seed, pc.firstPlant + plant, kGrowNoisePass, self, 2u * pc.tick + 1u);
             p[kParticlePitch] = cone * sqrt(u);
             p[kParticleRoll] = kTwoPi * v;
         }

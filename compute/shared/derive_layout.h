@@ -34,6 +34,7 @@ struct DerivePush {
     uint plants;       // plants in the stream
     uint step;         // derivation step (1-based)
     uint seed;         // random stream seed
+    uint firstPlant;   // the random stream of plant 0 (stream::DeriveOptions::firstPlant)
     uint pass;         // random stream pass
     uint stride;       // parameter slots per module
     uint globalCount;  // globals per plant
@@ -186,7 +187,7 @@ struct StepSizesPush {
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(DerivePush) == 92);
+static_assert(sizeof(DerivePush) == 96);
 static_assert(sizeof(StepSizesPush) == 52);
 static_assert(kArgsTreeLevels + 3u * (kMaxDepthLevels - 1u) <= kArgsCopy);
 static_assert(kArgsOne + 3u <= kStepBlockWords);

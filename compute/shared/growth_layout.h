@@ -148,6 +148,7 @@ struct GrowPush {
     float gravity; // the scene's gravity, as a multiple of Earth's (9.81)
     uint atSymbol; // the alphabet's `@` (a segment letter after it is a command's prefix), else 0xFFFFFFFF
     float openLight; // the light in the open where a light grid runs (organs grow by their light), else 0
+    uint firstPlant; // the random stream of plant 0 (grow::TickSettings::firstPlant)
 };
 
 // How an organ's growth follows its light (kParticleLight) where a light grid runs: a saturating response,

@@ -87,8 +87,8 @@ std::string stochasticSelection(const ir::RuleSet& rules, size_t species, RuleKi
                                    "            if (round == {0}u) {{\n"
                                    "                if (!any) break;\n"
                                    // The first to bring r = total * u to zero or below wins, else the last applicable.
-                                   "                double left = total * double(randomUnit(pc.seed, plant, "
-                                   "currentPass(), key, 0u));\n"
+                                   "                double left = total * double(randomUnit(pc.seed, "
+                                   "pc.firstPlant + plant, currentPass(), key, 0u));\n"
                                    "                bool done = false;\n"
                                    "                for (uint c = 0u; c < {0}u; ++c)\n"
                                    "                    if (!done && applicable[c]) {{ pick = c; left -= weights[c]; "

@@ -155,7 +155,9 @@ private:
 
     std::string draw() {
         std::string name = temp();
-        line(fmt::format("double {} = double(randomUnit(pc.seed, plant, currentPass(), key, draw)); ++draw;", name));
+        line(fmt::format("double {} = double(randomUnit(pc.seed, pc.firstPlant + plant, currentPass(), key, draw)); "
+                         "++draw;",
+                         name));
         return name;
     }
 
@@ -230,7 +232,9 @@ private:
             std::string count = temp();
             line(fmt::format("double {} = 0.0LF;", count));
             open(fmt::format("for (int k = 0; k < int(clamp({}, 0.0LF, 1000000.0LF)); ++k) {{", a[0]));
-            line(fmt::format("if (double(randomUnit(pc.seed, plant, currentPass(), key, draw)) <= {}) {} += 1.0LF;", a[1], count));
+            line(fmt::format("if (double(randomUnit(pc.seed, pc.firstPlant + plant, currentPass(), key, draw)) <= {}) "
+                             "{} += 1.0LF;",
+                             a[1], count));
             line("++draw;");
             close();
             return count;
@@ -494,7 +498,7 @@ void emitChoice(BodyEmitter& body, const ir::Production& p, bool modal) {
     }
     for (size_t k = 0; k + 1 < alternatives; ++k) {
         body.open(fmt::format("if ({}alt == {}u) {{", mayBeGiven ? "drawsAlternative && " : "", alternatives - 1));
-        body.line("double u = double(randomUnit(pc.seed, plant, currentPass(), key, draw)); ++draw;");
+        body.line("double u = double(randomUnit(pc.seed, pc.firstPlant + plant, currentPass(), key, draw)); ++draw;");
         body.line(fmt::format("if (u < {}) alt = {}u;", literal(static_cast<double>(p.alternatives[k].probability)), k));
         body.close();
     }

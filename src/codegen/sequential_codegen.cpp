@@ -170,7 +170,8 @@ std::string selection(const ir::RuleSet& rules, size_t species, RuleKind kind, c
                                     pi, test(pi), weight);
             }
             code += "        if (any) {\n"
-                    "            double left = total * double(randomUnit(pc.seed, plant, currentPass(), key, 0u));\n"
+                    "            double left = total * double(randomUnit(pc.seed, pc.firstPlant + plant, "
+                    "currentPass(), key, 0u));\n"
                     "            bool done = false;\n";
             for (size_t pi : list) {
                 const ir::Production& p = rules.productions[pi];

@@ -44,7 +44,7 @@ public:
         : control_(control), plant_(plant), g_(control.speciesOf(plant)), state_(control.state(plant)),
           evaluator_(g_, state_), room_(room), budget_(budget) {
         evaluator_.key.seed = control.seed();
-        evaluator_.key.plant = plant;
+        evaluator_.key.plant = control.randomStream(plant);
         stride_ = std::max(g_.maxParams(), 1);
         cur_.stride = next_.stride = stride_;
         index(g_.productions, productionsBySymbol_);

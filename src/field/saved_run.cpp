@@ -15,7 +15,9 @@ namespace {
 
 constexpr char kMagic[] = "simeco saved run\n";
 // 2: a particle's fourth slot counts its seconds in deep shade (it was the cone noise's clock).
-constexpr uint32_t kVersion = 3;
+// 4: a plant of a batch after the first draws from the random stream of its place in the field (each batch had
+// streams of its own), so a run saved before goes on otherwise.
+constexpr uint32_t kVersion = 4;
 
 class Writer {
 public:

@@ -11,7 +11,6 @@
 #include <fmt/format.h>
 
 #include "compute/shared/growth_layout.h"
-#include "compute/shared/random.h"
 #include "compute/shared/turtle_layout.h"
 #include "compute/shared/turtle_state_layout.h"
 #include "cpu/derive.h"
@@ -52,12 +51,6 @@ constexpr uint64_t kBatchDrawnModules = kBatchModules;
 // The gravity relative to which a scene's Gravity bends its plants (grow::GrowingSpecies::relativeGravity).
 constexpr float kEarthGravity = 9.81f;
 
-// The random streams of batch b: the field's seed for the first, another for each other, so that plants at the
-// same place in two batches differ.
-uint32_t batchSeed(uint32_t seed, uint32_t batch) {
-    return batch == 0 ? seed : shared::lowbias32(seed ^ (0x9e3779b9u * batch));
-}
-
 template <typename T> std::vector<T> slice(const std::vector<T>& v, uint32_t first, uint32_t count) {
     return std::vector<T>(v.begin() + first, v.begin() + first + count);
 }
@@ -68,7 +61,6 @@ template <typename T> std::vector<T> slice(const std::vector<T>& v, uint32_t fir
 // batch, so that no buffer binds more than a batch's modules.
 struct Batch {
     uint32_t first = 0, count = 0;
-    uint32_t seed = 0;
     std::vector<float> deriveTimes;
     turtle::FieldOptions field; // its plants' placements
     std::unique_ptr<gpu::GpuDeriver> deriver;
@@ -140,8 +132,12 @@ struct Simulation::Impl {
     void prepareLight(const draw::Bounds& extent, uint32_t standing);
 
     grow::TickSettings settings(const Batch& b, uint32_t tick) const {
-        return {&tables, uint32_t(g.species.size()), options.dt, tick, b.seed, live.gravity / kEarthGravity,
-                b.vigour.empty() ? nullptr : &b.vigour, openLight, &b.field.placements};
+        return {&tables,        uint32_t(g.species.size()),
+                options.dt,     tick,
+                seed,           live.gravity / kEarthGravity,
+                b.vigour.empty() ? nullptr : &b.vigour,
+                openLight,      &b.field.placements,
+                b.first};
     }
     // The height each plant stands at.
     static std::vector<float> baseHeights(const std::vector<shared::PlantPlacement>& placements) {
@@ -193,13 +189,12 @@ void Simulation::Impl::makeBatches(uint32_t plantsPerBatch) {
         Batch b;
         b.first = first;
         b.count = std::min(plantsPerBatch, derive.plants - first);
-        b.seed = batchSeed(seed, uint32_t(batches.size()));
         b.deriveTimes = slice(deriveTimes, first, b.count);
         b.field.placements = slice(placements, first, b.count);
         if (!vigour.empty()) b.vigour = slice(vigour, first, b.count);
         stream::DeriveOptions batch = derive;
         batch.plants = b.count;
-        batch.seed = b.seed;
+        batch.firstPlant = first; // its plants draw what they draw in the whole field
         if (!absent.empty()) batch.absent = slice(absent, first, b.count);
         // The field's module budget shared by its batches as their plants.
         if (batch.maxModules > 0) batch.maxModules = std::max<uint64_t>(1, derive.maxModules / derive.plants * b.count);

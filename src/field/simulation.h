@@ -38,7 +38,8 @@ struct SimulationOptions {
     float dt = 1.0f;       // simulated seconds per tick
     float spacing = 0.0f;  // between neighbouring plants of a field of many; 0: from the plants' grown size
     // Plants derived, grown and interpreted together; 0: as many as a storage binding of every device holds
-    // (see simulation.cpp). Each batch but the first has random streams of its own.
+    // (see simulation.cpp). The field is the same however it is batched: each plant draws from the random stream
+    // of its place in the field.
     uint32_t plantsPerBatch = 0;
     uint64_t maxModules = 0;
     double maxSeconds = stream::kDefaultMaxSeconds;

@@ -149,6 +149,7 @@ void GpuDeriver::Impl::startDerivation(stream::PlantControl& control, const stre
     plants = control.plants();
     carriesParticles = options.particles;
     lightScale = options.particles ? options.lightScale : 0.0f;
+    firstPlant = options.firstPlant;
     if (lightScale > 0.0f && kernels.readsLight && strategy == GpuStrategy::Sequential)
         throw std::invalid_argument("light() in a production senses the light grid on the parallel strategy only");
     partnersStream = -1;

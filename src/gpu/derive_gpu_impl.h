@@ -112,6 +112,7 @@ struct GpuDeriver::Impl {
     std::optional<vk::ComputePipeline> particleScatter, particleGather;
     bool carriesParticles = false; // the derivation running carries particle state (DeriveOptions::particles)
     float lightScale = 0.0f;       // light()'s DeriveOptions::lightScale, where the derivation carries particles
+    uint32_t firstPlant = 0;       // DeriveOptions::firstPlant
     vk::Buffer noParticles;        // bound for light() where the string carries none (lightScale is then 0)
     GpuScan scan;
     BracketTree brackets; // after scan, which it uses

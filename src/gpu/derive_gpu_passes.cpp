@@ -31,6 +31,7 @@ DerivePush GpuDeriver::Impl::push(uint32_t count, uint32_t step, uint32_t seed, 
     p.plants = plants;
     p.step = step;
     p.seed = seed;
+    p.firstPlant = firstPlant;
     p.pass = pass;
     p.stride = static_cast<uint32_t>(stride);
     p.globalCount = globalStride;

@@ -38,7 +38,7 @@ const float* stageRow(const GrowthTables& t, uint32_t species, uint32_t organ, f
 // Property k of a stage row, as particle `id` of plant `plant` draws it in its range.
 float property(const TickSettings& ts, const float* row, uint32_t plant, uint32_t id, uint32_t k) {
     const float lo = row[shared::propertyMin(k)], hi = row[shared::propertyMax(k)];
-    return lo + (hi - lo) * shared::randomUnit(ts.seed, plant, shared::kGrowPropertyPass, id, k);
+    return lo + (hi - lo) * shared::randomUnit(ts.seed, ts.firstPlant + plant, shared::kGrowPropertyPass, id, k);
 }
 
 // Whether a particle lives: its age within its row's LifeTime (none: 0), and not shed in the shade.
@@ -71,8 +71,8 @@ void growOrgan(const TickSettings& ts, const float* row, uint32_t plant, float* 
     const float age = p[shared::kParticleAge];
     if (growing > 0.0f && noiseTime > 0.0f && cone > 0.0f &&
         shared::periodsUpTo(age + ts.dt, noiseTime) > shared::periodsUpTo(age, noiseTime)) {
-        const float u = shared::randomUnit(ts.seed, plant, shared::kGrowNoisePass, id, 2 * ts.tick);
-        const float v = shared::randomUnit(ts.seed, plant, shared::kGrowNoisePass, id, 2 * ts.tick + 1);
+        const float u = shared::randomUnit(ts.seed, ts.firstPlant + plant, shared::kGrowNoisePass, id, 2 * ts.tick);
+        const float v = shared::randomUnit(ts.seed, ts.firstPlant + plant, shared::kGrowNoisePass, id, 2 * ts.tick + 1);
         p[shared::kParticlePitch] = cone * std::sqrt(u);
         p[shared::kParticleRoll] = kTwoPi * v;
     }
@@ -185,8 +185,9 @@ void tickCpu(const TickSettings& ts, stream::ModuleString& s) {
                 s.particles[i] = {};
                 p[shared::kParticleStage] = stage;
                 p[shared::kParticleClass] = std::bit_cast<float>(klass);
-                const uint32_t fresh =
-                    shared::randomBits(ts.seed, plant, shared::kGrowIdentityPass, uint32_t(i - start), ts.tick) | 1u;
+                const uint32_t fresh = shared::randomBits(ts.seed, ts.firstPlant + plant, shared::kGrowIdentityPass,
+                                                          uint32_t(i - start), ts.tick) |
+                                       1u;
                 p[shared::kParticleId] = std::bit_cast<float>(fresh);
                 if (organ) {
                     p[shared::kParticleLight] = light;

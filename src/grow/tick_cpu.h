@@ -25,6 +25,8 @@ struct TickSettings {
     float openLight = 0.0f; // the light in the open where a light grid runs (organs grow by their light), else 0
     // per plant: where it stands (the light's direction turns into its own frame for phototropism; none: as is)
     const std::vector<shared::PlantPlacement>* placements = nullptr;
+    // The number of plant 0's random stream: a batch of a larger field draws what its plants draw in the whole.
+    uint32_t firstPlant = 0;
 };
 
 // One tick of every particle of the derived string `s` (which carries particle state): the modules that continue

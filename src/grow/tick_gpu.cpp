@@ -17,7 +17,8 @@ namespace {
 shared::GrowPush growPush(const stream::DeviceModules& modules, const TickSettings& s, uint32_t symbols,
                           uint32_t atSymbol) {
     return shared::GrowPush{s.dt,    s.tick,        s.seed,         modules.plants, s.species, symbols,
-                            modules.count, modules.stride, s.gravity,      atSymbol,  s.openLight};
+                            modules.count, modules.stride, s.gravity,      atSymbol,  s.openLight,
+                            s.firstPlant};
 }
 
 std::vector<float> orOnes(const std::vector<float>& values, size_t count) {

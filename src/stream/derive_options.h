@@ -39,6 +39,9 @@ struct DeriveOptions {
     int steps = -1;            // -1: the grammar's derivation length
     int64_t seed = -1;         // -1: the grammar's `seed:` (or 0)
     uint32_t plants = 1;       // independent copies, each with its own random stream
+    // The number of plant 0's random stream: plants [firstPlant, firstPlant + plants) of a larger field, derived as
+    // a batch of it, draw the numbers they draw in the whole field.
+    uint32_t firstPlant = 0;
     uint64_t maxModules = 0;   // 0: defaultModuleBudget
     // The derivation stops with an error once it has run this long (checked before each step of each plant,
     // by PlantControl); 0: no limit. A derivation length may be 10^9 steps.

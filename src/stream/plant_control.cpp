@@ -13,6 +13,7 @@ PlantControl::PlantControl(const std::vector<ir::Grammar>& species, const Derive
     if (species.empty()) throw std::invalid_argument("PlantControl: no species");
     plants_ = std::max<uint32_t>(options.plants, 1);
     seed_ = options.seed >= 0 ? uint32_t(options.seed) : species.front().seed;
+    firstPlant_ = options.firstPlant;
     for (const ir::Grammar& g : species)
         stride_ = std::max(stride_, g.maxParams());
     budget_ = options.maxModules ? options.maxModules : defaultModuleBudget(stride_);
@@ -38,7 +39,7 @@ int PlantControl::stepsOf(uint32_t plant) const {
 
 void PlantControl::run(uint32_t plant, const std::vector<ir::Stmt>& block, uint32_t step, ControlBlock which) {
     Evaluator evaluator(speciesOf(plant), states_[plant]);
-    evaluator.key = controlBlockKey(seed_, plant, step, which);
+    evaluator.key = controlBlockKey(seed_, randomStream(plant), step, which);
     evaluator.exec(block, nullptr);
 }
 
@@ -46,7 +47,7 @@ void PlantControl::start(uint32_t plant, ModuleString* axiom) {
     const ir::Grammar& g = speciesOf(plant);
     states_[plant].reset(g);
     Evaluator evaluator(g, states_[plant]);
-    evaluator.key = controlBlockKey(seed_, plant, 0, ControlBlock::Start);
+    evaluator.key = controlBlockKey(seed_, randomStream(plant), 0, ControlBlock::Start);
     evaluator.exec(g.startBlock, nullptr);
     if (!axiom || absent_[plant]) return;
     // The axiom's parameters may use globals of the Start block, and draw on from its stream.

@@ -25,6 +25,8 @@ public:
 
     uint32_t plants() const { return plants_; }
     uint32_t seed() const { return seed_; }
+    // The number of plant p's random stream (DeriveOptions::firstPlant).
+    uint32_t randomStream(uint32_t plant) const { return firstPlant_ + plant; }
     float lightScale() const { return lightScale_; } // DeriveOptions::lightScale
     int stride() const { return stride_; }
     // The module budget of the whole stream: options.maxModules, else sized to this machine's memory.
@@ -69,6 +71,7 @@ private:
     const std::vector<ir::Grammar>& species_;
     uint32_t plants_ = 1;
     uint32_t seed_ = 0;
+    uint32_t firstPlant_ = 0;
     int stride_ = 1;
     uint64_t budget_ = 0;
     double maxSeconds_ = 0;

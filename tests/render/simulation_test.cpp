@@ -1,6 +1,6 @@
 // The growing field (field::Simulation) on the device against the CPU references: a garden in batches of plants,
 // derived, grown, interpreted, merged and counted batch by batch, gives the organs and statistics the CPU gives;
-// batches have random streams of their own.
+// every plant draws from the random stream of its place in the field, however the field is batched.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -63,14 +63,15 @@ TEST_F(SimulationTest, AFieldInBatchesGrowsOnTheDeviceAsOnTheCpu) {
         EXPECT_NEAR(a[p].leafArea, b[p].leafArea, 1e-4f * std::max(1.0f, b[p].leafArea)) << p;
         EXPECT_NEAR(a[p].height, b[p].height, 1e-4f * size) << p;
     }
-    // Plants 0 and 3 are of one species, in two batches with random streams of their own.
+    // Plants 0 and 3 are of one species, in two batches, each with the random stream of its place in the field.
     EXPECT_NE(gpu.plantModules()[0], gpu.plantModules()[3]);
     EXPECT_EQ(gpu.plantModules(), cpu.plantModules());
 }
 
 // Between derivation steps every batch is drawn again in one submission, into organ buffers of its own, and the
 // host reads back only the statistics after it: the drawing takes as many submissions in four batches as in two.
-// What it draws, and counts, is what the CPU draws, tick after tick.
+// What it draws, and counts, is what the CPU draws, tick after tick; and the field is the same in four batches as
+// in two, each plant drawing from the random stream of its place in the field.
 TEST_F(SimulationTest, BetweenStepsEveryBatchIsDrawnInOneSubmissionAsOnTheCpu) {
     field::SimulationOptions inTwo = garden(field::Backend::Gpu);
     inTwo.plantsPerBatch = 6;
@@ -95,11 +96,16 @@ TEST_F(SimulationTest, BetweenStepsEveryBatchIsDrawnInOneSubmissionAsOnTheCpu) {
             continue;
         }
         ASSERT_EQ(organDifference(want, got), "") << tick;
-        const std::vector<shared::PlantStatistics> a = four.statistics(), b = cpu.statistics();
+        const std::vector<shared::PlantStatistics> a = four.statistics(), b = cpu.statistics(), c = two.statistics();
         for (uint32_t p = 0; p < 12; ++p) {
             EXPECT_EQ(a[p].organs, b[p].organs) << tick << " " << p;
             EXPECT_NEAR(a[p].leafArea, b[p].leafArea, 1e-4f * std::max(1.0f, b[p].leafArea)) << tick << " " << p;
+            EXPECT_EQ(a[p].organs, c[p].organs) << tick << " " << p;
+            EXPECT_EQ(a[p].leafArea, c[p].leafArea) << tick << " " << p;
+            // The plants' tips placed in the field by the device, to its rounding.
+            EXPECT_NEAR(a[p].height, c[p].height, 1e-6f * std::max(1.0f, c[p].height)) << tick << " " << p;
         }
+        EXPECT_EQ(four.plantModules(), two.plantModules()) << tick;
         if (report.derived > 0) continue;
         ++between;
         EXPECT_EQ(fourSubmissions, twoSubmissions) << tick;

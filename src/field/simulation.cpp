@@ -139,6 +139,8 @@ struct Simulation::Impl {
                 openLight,      &b.field.placements,
                 b.first};
     }
+    // The settings a drawing sizes batch b's organs by: the last tick's, the sizes of this moment.
+    grow::TickSettings drawingSettings(const Batch& b) const { return settings(b, ticks == 0 ? 0 : ticks - 1); }
     // The height each plant stands at.
     static std::vector<float> baseHeights(const std::vector<shared::PlantPlacement>& placements) {
         std::vector<float> bases;
@@ -496,22 +498,19 @@ std::vector<const turtle::DeviceOrgans*> Simulation::Impl::interpretOnDevice() {
 }
 
 stream::DeviceModules Simulation::Impl::recordDrawingAgain(VkCommandBuffer cmd, Batch& b) {
-    // The sizes of this moment: the last tick's.
-    const grow::TickSettings ts = settings(b, ticks == 0 ? 0 : ticks - 1);
     // The string as the homomorphism wrote it, with the particles the tick grew.
     b.deriver->recordDrawnAgain(cmd);
     stream::DeviceModules modules = b.deriver->lastDrawn();
     // A grammar without a homomorphism draws its derived string: its segments shorten a copy.
     if (tables.growsSegments() && modules.symbols == b.deriver->current().symbols)
         modules = b.growth->recordCopyForDrawing(cmd, modules);
-    if (growsSizes()) b.growth->recordSizes(cmd, modules, ts);
+    if (growsSizes()) b.growth->recordSizes(cmd, modules, drawingSettings(b));
     recordLight(cmd, b, modules, turtle->recordInto(cmd, modules, b.field, *b.room, b.target));
     return modules;
 }
 
 Simulation::Impl::Drawing Simulation::Impl::drawInterpreting(Batch& b,
                                                              std::optional<stream::DeviceModules> drawnAgain) {
-    const grow::TickSettings ts = settings(b, ticks == 0 ? 0 : ticks - 1);
     Clock::time_point start = Clock::now();
     stream::DeviceModules modules;
     if (drawnAgain) {
@@ -520,7 +519,7 @@ Simulation::Impl::Drawing Simulation::Impl::drawInterpreting(Batch& b,
         modules = b.deriver->drawn();
         if (tables.growsSegments() && modules.symbols == b.deriver->current().symbols)
             modules = b.growth->copyForDrawing(modules);
-        if (growsSizes()) b.growth->growSizes(modules, ts);
+        if (growsSizes()) b.growth->growSizes(modules, drawingSettings(b));
     }
     const turtle::DeviceOrgans& organs = turtle->interpret(modules, b.field);
     b.room = turtle->lastRoom();
@@ -566,8 +565,7 @@ std::vector<const turtle::DeviceOrgans*> Simulation::Impl::interpretOnHost() {
     for (Batch& b : batches) {
         drawnStarts.push_back(field.size());
         stream::ModuleString drawnModules = b.reference->drawn(&origins[drawnStarts.size() - 1]);
-        if (tables.drawsGrowth() || tables.growsSegments())
-            grow::growSizesCpu(settings(b, ticks == 0 ? 0 : ticks - 1), b.deriveTimes, drawnModules);
+        if (growsSizes()) grow::growSizesCpu(drawingSettings(b), b.deriveTimes, drawnModules);
         if (b.first == 0) field.stride = drawnModules.stride; // the batches' species, and so their strides, alike
         field.append(drawnModules, 0, drawnModules.size());
         for (size_t p = 1; p < drawnModules.plantStart.size(); ++p)

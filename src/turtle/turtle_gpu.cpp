@@ -154,6 +154,10 @@ struct GpuTurtle::Impl {
     vk::Buffer placements;
     // Takes the field's placements, kept while they are the same; refused when they change under a recording.
     void setPlacements(const turtle::FieldOptions& options, std::uint32_t plants);
+    // Whether `buffer` holds the placements already (`out.placements` says which it holds); checks their count.
+    static bool placedAlready(const turtle::FieldOptions& options, std::uint32_t plants, DeviceOrgans& out,
+                              const vk::Buffer& buffer);
+    void uploadPlacements(const turtle::FieldOptions& options, DeviceOrgans& out, vk::Buffer& buffer) const;
     TurtlePush base{};
     std::uint32_t levels = 0;
     std::uint64_t bytesMoved = 0;
@@ -281,8 +285,10 @@ struct GpuTurtle::Impl {
 
     // Room for n modules of `plants` plants (n within the device's binding limit: checkRange).
     void reserve(std::uint64_t n, std::uint64_t plants);
-    // Room for the organ instances, and the organ table and field spacing, kept between interpretations.
-    void reserveOrgans(std::uint64_t count);
+    // Room for the organ instances (half again as many, within the binding), and the organ table and field
+    // spacing, in the turtle's own buffers (kept between interpretations) or a target's.
+    void reserveOrgans(std::uint64_t count) { sizeOrgans(organs, count); }
+    void sizeOrgans(DeviceOrgans& out, std::uint64_t count) const;
 
     const DeviceOrgans& interpret(const stream::DeviceModules& m, const turtle::FieldOptions& options);
     const DeviceOrgans& record(VkCommandBuffer cmd, const stream::DeviceModules& m,
@@ -503,35 +509,18 @@ const DeviceOrgans& GpuTurtle::Impl::recordInto(VkCommandBuffer cmd, const strea
                                                 TurtleTarget& target) {
     if (std::max(m.count, 1u) > targetModules || m.plants > targetPlants || room.levels > targetRoom.levels)
         throw std::logic_error("GpuTurtle::recordInto: a string or room past what reserveTargets() made room for");
-    if (!options.placements.empty() && options.placements.size() != m.plants)
-        throw std::invalid_argument("GpuTurtle: one placement per plant");
     checkRange(room.organs, sizeof(OrganInstance), "organ instances");
     sizeTarget(target, room.organs);
     DeviceOrgans& out = target.organs;
-    out.scattered = options.placements.empty() && options.scattered;
-    if (!target.placements || options.placements != out.placements) {
-        static const PlantPlacement none{};
-        target.placements = options.placements.empty()
-                                ? vk::deviceBufferWith(ctx, std::span<const PlantPlacement>(&none, 1))
-                                : vk::deviceBufferWith(ctx, std::span<const PlantPlacement>(options.placements));
-        out.placements = options.placements;
-    }
+    if (!placedAlready(options, m.plants, out, target.placements)) uploadPlacements(options, out, target.placements);
     recordPasses(cmd, beginRecording(m, options, room, out, target.placements), target.status);
     target.room = TurtleRoom{room.levels, out.capacity, room.marks};
     return out;
 }
 
 void GpuTurtle::Impl::sizeTarget(TurtleTarget& target, std::uint64_t organCount) const {
-    DeviceOrgans& out = target.organs;
-    if (!out.table) out.table = vk::Buffer(ctx, sizeof(OrganTable), vk::MemoryUsage::DeviceLocal);
-    if (!out.field) out.field = vk::Buffer(ctx, 4, vk::MemoryUsage::DeviceLocal);
     if (!target.status) target.status = vk::Buffer(ctx, kTurtleStatusWords * 4, vk::MemoryUsage::Readback);
-    if (out.instances && out.capacity >= organCount) return;
-    const std::uint64_t limit = ctx.limits().maxStorageBufferRange / sizeof(OrganInstance);
-    const std::uint64_t capacity =
-        std::max<std::uint64_t>(std::min<std::uint64_t>(organCount + organCount / 2, limit), 64);
-    out.instances = vk::Buffer(ctx, bytes(capacity, sizeof(OrganInstance)), vk::MemoryUsage::DeviceLocal);
-    out.capacity = static_cast<std::uint32_t>(capacity);
+    sizeOrgans(target.organs, organCount);
 }
 
 void GpuTurtle::Impl::recordKeep(VkCommandBuffer cmd, TurtleTarget& target) {
@@ -812,16 +801,26 @@ void GpuTurtle::Impl::recordOrgans(VkCommandBuffer cmd, const Run& run, std::uin
 }
 
 void GpuTurtle::Impl::setPlacements(const turtle::FieldOptions& options, std::uint32_t plants) {
+    if (placedAlready(options, plants, organs, placements)) return;
+    if (!pending.empty()) throw std::logic_error("GpuTurtle: the placements changed while recordings are in flight");
+    uploadPlacements(options, organs, placements);
+}
+
+bool GpuTurtle::Impl::placedAlready(const turtle::FieldOptions& options, std::uint32_t plants, DeviceOrgans& out,
+                                    const vk::Buffer& buffer) {
     if (!options.placements.empty() && options.placements.size() != plants)
         throw std::invalid_argument("GpuTurtle: one placement per plant");
-    organs.scattered = options.placements.empty() && options.scattered;
-    if (placements && options.placements == organs.placements) return;
-    if (!pending.empty()) throw std::logic_error("GpuTurtle: the placements changed while recordings are in flight");
+    out.scattered = options.placements.empty() && options.scattered;
+    return buffer && options.placements == out.placements;
+}
+
+void GpuTurtle::Impl::uploadPlacements(const turtle::FieldOptions& options, DeviceOrgans& out,
+                                       vk::Buffer& buffer) const {
     static const PlantPlacement none{};
-    placements = options.placements.empty()
-                     ? vk::deviceBufferWith(ctx, std::span<const PlantPlacement>(&none, 1))
-                     : vk::deviceBufferWith(ctx, std::span<const PlantPlacement>(options.placements));
-    organs.placements = options.placements;
+    buffer = options.placements.empty()
+                 ? vk::deviceBufferWith(ctx, std::span<const PlantPlacement>(&none, 1))
+                 : vk::deviceBufferWith(ctx, std::span<const PlantPlacement>(options.placements));
+    out.placements = options.placements;
 }
 
 void GpuTurtle::Impl::reserve(std::uint64_t n, std::uint64_t plants) {
@@ -863,15 +862,15 @@ void GpuTurtle::Impl::reserve(std::uint64_t n, std::uint64_t plants) {
     b.modules = capacity;
 }
 
-void GpuTurtle::Impl::reserveOrgans(std::uint64_t count) {
-    if (!organs.table) organs.table = vk::Buffer(ctx, sizeof(OrganTable), vk::MemoryUsage::DeviceLocal);
-    if (!organs.field) organs.field = vk::Buffer(ctx, 4, vk::MemoryUsage::DeviceLocal);
-    if (organs.instances && count <= organs.capacity) return;
+void GpuTurtle::Impl::sizeOrgans(DeviceOrgans& out, std::uint64_t count) const {
+    if (!out.table) out.table = vk::Buffer(ctx, sizeof(OrganTable), vk::MemoryUsage::DeviceLocal);
+    if (!out.field) out.field = vk::Buffer(ctx, 4, vk::MemoryUsage::DeviceLocal);
+    if (out.instances && count <= out.capacity) return;
     std::uint64_t limit = ctx.limits().maxStorageBufferRange / sizeof(OrganInstance);
     std::uint64_t capacity = std::max<std::uint64_t>(std::min<std::uint64_t>(count + count / 2, limit), count);
     capacity = std::max<std::uint64_t>(capacity, 64);
-    organs.instances = vk::Buffer(ctx, bytes(capacity, sizeof(OrganInstance)), vk::MemoryUsage::DeviceLocal);
-    organs.capacity = static_cast<std::uint32_t>(capacity);
+    out.instances = vk::Buffer(ctx, bytes(capacity, sizeof(OrganInstance)), vk::MemoryUsage::DeviceLocal);
+    out.capacity = static_cast<std::uint32_t>(capacity);
 }
 
 GpuTurtle::GpuTurtle(const vk::Context& context, const turtle::TurtleCommands& commands,
@@ -910,13 +909,22 @@ const DeviceOrgans& GpuTurtle::recordInto(VkCommandBuffer cmd, const stream::Dev
 
 void GpuTurtle::recordKeep(VkCommandBuffer cmd, TurtleTarget& target) { impl_->recordKeep(cmd, target); }
 
-RecordedInterpretation GpuTurtle::recordedInto(const TurtleTarget& target) {
-    if (!target.status) throw std::logic_error("GpuTurtle::recordedInto: nothing recorded into the target");
-    const auto* words = reinterpret_cast<const std::uint32_t*>(target.status.mapped());
+namespace {
+
+// What a recording's status words, copied for the host, say it found in the room it had.
+RecordedInterpretation recordedStatus(const vk::Buffer& copied, TurtleRoom room) {
+    const auto* words = reinterpret_cast<const std::uint32_t*>(copied.mapped());
     RecordedInterpretation r{words[kTurtleStatusModules], words[kTurtleStatusLevels], words[kTurtleStatusOrgans],
                              false};
-    r.fit = r.levels <= target.room.levels && r.organs <= target.room.organs;
+    r.fit = r.levels <= room.levels && r.organs <= room.organs;
     return r;
+}
+
+} // namespace
+
+RecordedInterpretation GpuTurtle::recordedInto(const TurtleTarget& target) {
+    if (!target.status) throw std::logic_error("GpuTurtle::recordedInto: nothing recorded into the target");
+    return recordedStatus(target.status, target.room);
 }
 
 RecordedInterpretation GpuTurtle::recorded() {
@@ -924,11 +932,7 @@ RecordedInterpretation GpuTurtle::recorded() {
     if (m.pending.empty()) throw std::logic_error("GpuTurtle::recorded: no recording in flight");
     const Impl::Pending oldest = m.pending.front();
     m.pending.pop_front();
-    const auto* words = reinterpret_cast<const std::uint32_t*>(m.statusReadback[oldest.slot].mapped());
-    RecordedInterpretation r{words[kTurtleStatusModules], words[kTurtleStatusLevels], words[kTurtleStatusOrgans],
-                             false};
-    r.fit = r.levels <= oldest.room.levels && r.organs <= oldest.room.organs;
-    return r;
+    return recordedStatus(m.statusReadback[oldest.slot], oldest.room);
 }
 
 std::uint32_t GpuTurtle::lastLevels() const { return impl_->levels; }

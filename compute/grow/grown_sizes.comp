@@ -127,7 +127,7 @@ void growSegment(uint i, uint plant, uint species) {
 
 void main() {
     uint i = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * gl_WorkGroupSize.x + gl_LocalInvocationID.x;
-    if (i >= pc.count) return;
+    if (i >= moduleCount()) return;
     uint plant = plantOf(i, pc.plants);
     uint species = plant % pc.species;
     uint flags = speciesWords[species * kSpeciesGrowthWords + kSpeciesFlags];

@@ -4,6 +4,11 @@
 #ifndef SIMECO_GROWTH_GLSL
 #define SIMECO_GROWTH_GLSL
 
+// The modules a kernel runs over: those the plant table's last entry counts, at most pc.count. A string a derivation
+// recorded in the same submission is counted only on the device, and one whose step outgrew its room leaves a table
+// not to be trusted, which the bound keeps within the buffers.
+uint moduleCount() { return min(plantStart[pc.plants], pc.count); }
+
 // The plant whose modules hold module i: the last p with plantStart[p] <= i.
 uint plantOf(uint i, uint plants) {
     uint lo = 0u, hi = plants; // plantStart[lo] <= i < plantStart[hi]

@@ -33,7 +33,7 @@ uint classOf(uint species, uint i) { return classes[species * pc.symbols + (symb
 
 void main() {
     uint i = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * gl_WorkGroupSize.x + gl_LocalInvocationID.x;
-    if (i >= pc.count) return;
+    if (i >= moduleCount()) return;
     uint plant = plantOf(i, pc.plants);
     uint species = plant % pc.species;
     uint start = plantStart[plant];

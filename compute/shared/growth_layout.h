@@ -134,8 +134,8 @@ SIMECO_FN uint periodsUpTo(float age, float period) {
 // internode grows in its first stages (GrowRate 0.5 for GrowTime 3 s).
 SIMECO_CONST_FLOAT kLeafModelSize = 3.0f;
 
-// Push constants of tick.comp and grown_sizes.comp. `count` is kCountOnDevice where the plant table's last entry
-// counts the modules.
+// Push constants of tick.comp and grown_sizes.comp. The plant table's last entry counts the modules, `count` bounds
+// them (compute/grow/growth.glsl, moduleCount()).
 struct GrowPush {
     float dt;  // seconds this tick advances
     uint tick; // ticks before this one
@@ -149,6 +149,14 @@ struct GrowPush {
     uint atSymbol; // the alphabet's `@` (a segment letter after it is a command's prefix), else 0xFFFFFFFF
     float openLight; // the light in the open where a light grid runs (organs grow by their light), else 0
     uint firstPlant; // the random stream of plant 0 (grow::TickSettings::firstPlant)
+};
+
+// Push constants of tick_groups.comp and particles_copy.comp: the modules are the plant table's last entry, at most
+// `bound`.
+struct GrowGroupsPush {
+    uint plants;
+    uint bound;
+    uint maxGroupsX; // the device's maxComputeWorkGroupCount[0]
 };
 
 // How an organ's growth follows its light (kParticleLight) where a light grid runs: a saturating response,

@@ -133,6 +133,8 @@ const float kTubeEpsilon = 1e-5;
 SIMECO_CONST kTurtleStatusModules = 0u; // modules to interpret
 SIMECO_CONST kTurtleStatusLevels = 1u;  // levels of non-linear modules (level_layout.comp)
 SIMECO_CONST kTurtleStatusOrgans = 2u;  // organs the string draws (field.comp), written or not
+// In a recording's copy of the words for the host only: the marks that occur in the string (setup.comp's).
+SIMECO_CONST kTurtleStatusMarks = 3u;
 SIMECO_CONST kTurtleStatusWords = 4u;
 
 // The workgroups of a recording's passes (pass_sizes.comp), from the module count and the marks that occur, which

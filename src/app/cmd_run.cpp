@@ -209,9 +209,17 @@ void runRun(RunArgs args) {
     const auto start = std::chrono::steady_clock::now();
     const uint64_t firstTick = simulation.ticks();
     std::vector<const turtle::DeviceOrgans*> organs;
+    // What --profile counts: the submissions the host waited for, and the batches done again with readbacks.
+    uint64_t tickSubmissions = 0, drawingSubmissions = 0, rederived = 0, reinterpreted = 0;
     for (uint64_t k = firstTick; k < ticks; ++k) {
+        uint64_t before = context.submissions();
         const field::TickReport report = simulation.tick();
+        tickSubmissions += context.submissions() - before;
+        before = context.submissions();
         organs = simulation.interpretParts();
+        drawingSubmissions += context.submissions() - before;
+        rederived += report.rederived;
+        reinterpreted += simulation.reinterpretedBatches();
         perPlant = simulation.statistics();
         stats += statsLine(simulation, report, perPlant);
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -261,6 +269,12 @@ void runRun(RunArgs args) {
                      "seconds by stage: derive %.2f, grow %.2f, interpret %.2f, light %.2f, statistics %.2f, "
                      "draw %.2f\n",
                      s.derive, s.grow, s.interpret, s.light, s.statistics, drawSeconds);
+        const double counted = double(std::max<uint64_t>(ticks - firstTick, 1));
+        std::fprintf(stderr,
+                     "submissions waited for a tick: %.2f to derive and grow, %.2f to draw (%u batches); batches done "
+                     "again with readbacks: %llu steps, %llu drawings\n",
+                     double(tickSubmissions) / counted, double(drawingSubmissions) / counted, simulation.batches(),
+                     static_cast<unsigned long long>(rederived), static_cast<unsigned long long>(reinterpreted));
         std::fputs(context.kernelProfile()->table().c_str(), stderr);
     }
 }

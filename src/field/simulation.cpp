@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <exception>
 #include <filesystem>
 #include <optional>
 #include <stdexcept>
@@ -149,7 +150,26 @@ struct Simulation::Impl {
         return bases;
     }
     void makeBatches(uint32_t plantsPerBatch);
+    // The plants whose step falls due by the clock, flagged in `due`, their next steps a DeriveTime on; whether any.
+    bool takeDue(std::vector<uint8_t>& due);
+    bool anyDue() const;
+    // Every batch's due plants derive a step, batch by batch; returns how many derived.
+    uint32_t deriveDue(const std::vector<uint8_t>& due);
+    // Every particle of the field grows a tick: on the device every batch's in one submission.
+    void growEveryParticle();
+    // The due plants' steps and every particle's growth after them, on the device, all batches in one submission
+    // that the host waits for once: each batch's step and its homomorphism within its streams' room, its growth on
+    // the string the step writes. A batch whose step or homomorphism outgrew its room writes it again with the host
+    // between its passes (counted in `rederived`), and grows again after a step derived again. Returns how many
+    // plants derived.
+    uint32_t deriveAndGrowInOneSubmission(const std::vector<uint8_t>& due, uint32_t& rederived);
+    // The room batch b's drawing records the turtle in after a step derived its string anew from `modulesBefore`
+    // modules (with its homomorphism, so that the drawing after the tick records it as it records a string drawn
+    // again): the last drawing's organs grown as the derived string grew (the target holds half again), twice its
+    // levels and four more, and every mark, which the new modules may bring. None before a first drawing.
+    std::optional<turtle::TurtleRoom> roomAfterStep(const Batch& b, uint64_t modulesBefore) const;
     std::vector<const turtle::DeviceOrgans*> interpretOnDevice();
+    uint32_t reinterpreted = 0; // batches the last drawing interpreted with the host reading between passes
     // Whether batch b's drawn string stands as its last drawing interpreted it, so that it may be drawn again within
     // that drawing's room.
     bool drawsAgain(const Batch& b) const { return b.room && !answersQueries && b.deriver->drawnStands(); }
@@ -289,49 +309,130 @@ TickReport Simulation::tick() {
     m.time = double(m.ticks + 1) * m.options.dt;
     // Every step that falls due within the tick: a tick longer than a plant's DeriveTime (a time-lapse of a few
     // frames) derives as many, so that the plant is where its time has brought it. Until no plant derives more.
-    for (;;) {
-        std::vector<uint8_t> due(m.derive.plants, 0);
-        bool any = false;
-        for (uint32_t p = 0; p < m.derive.plants; ++p)
-            if (m.time >= m.nextStep[p]) {
-                due[p] = 1;
-                any = true;
-                m.nextStep[p] += m.deriveTimes[p];
-            }
-        if (!any) break;
-        uint32_t derived = 0;
+    std::vector<uint8_t> due;
+    bool grown = false;
+    while (m.takeDue(due)) {
         const Clock::time_point start = Clock::now();
-        for (Batch& b : m.batches) {
-            const std::vector<uint8_t> batchDue = slice(due, b.first, b.count);
-            const uint32_t batchDerived = b.deriver ? b.deriver->advance(batchDue) : b.reference->advance(batchDue);
-            if (batchDerived > 0) b.room.reset();
-            derived += batchDerived;
-        }
+        // The last round of steps, on the device, in one submission with the growth of every particle.
+        grown = m.options.backend == Backend::Gpu && !m.anyDue();
+        const uint32_t derived = grown ? m.deriveAndGrowInOneSubmission(due, report.rederived) : m.deriveDue(due);
         m.seconds.derive += secondsSince(start);
         report.derived = std::max(report.derived, derived);
         if (derived == 0) break; // every due plant has derived all its steps
     }
-    // Every particle grows: on the device every batch's in one submission.
-    const Clock::time_point start = Clock::now();
-    if (m.options.backend == Backend::Gpu) {
-        m.context->submitAndWait([&](VkCommandBuffer cmd) {
-            for (Batch& b : m.batches) {
-                const stream::DeviceModules derived = b.deriver->current();
-                b.growth->recordTick(cmd, derived, m.settings(b, m.ticks));
-                b.modules = derived.count;
-            }
-        });
-    } else {
-        for (Batch& b : m.batches) {
-            grow::tickCpu(m.settings(b, m.ticks), b.reference->current());
-            b.modules = b.reference->current().size();
-        }
-    }
-    m.seconds.grow += secondsSince(start);
+    if (!grown) m.growEveryParticle();
     for (const Batch& b : m.batches) report.modules += b.modules;
     ++m.ticks;
     report.time = m.time;
     return report;
+}
+
+std::optional<turtle::TurtleRoom> Simulation::Impl::roomAfterStep(const Batch& b, uint64_t modulesBefore) const {
+    if (!b.room) return std::nullopt;
+    const uint64_t modulesAfter = b.deriver->current().count;
+    const double growth = std::max(1.0, double(modulesAfter) / double(std::max<uint64_t>(modulesBefore, 1)));
+    // Seedlings that drew nothing yet: an organ for every drawn module, as many as most strings draw.
+    const double organs = b.room->organs > 0 ? std::ceil(double(b.room->organs) * growth)
+                          : b.deriver->drawnStands() ? double(b.deriver->lastDrawn().count)
+                                                     : 0.0;
+    const double mostOrgans = double(context->limits().maxStorageBufferRange / sizeof(shared::OrganInstance));
+    turtle::TurtleRoom room;
+    room.organs = uint32_t(std::min(organs, mostOrgans));
+    // The levels of branches within branches: a step may double them (a branch on every branch), and a seedling's
+    // first branches bring a few.
+    room.levels = 2 * b.room->levels + 4;
+    return room; // every mark
+}
+
+bool Simulation::Impl::takeDue(std::vector<uint8_t>& due) {
+    due.assign(derive.plants, 0);
+    bool any = false;
+    for (uint32_t p = 0; p < derive.plants; ++p)
+        if (time >= nextStep[p]) {
+            due[p] = 1;
+            any = true;
+            nextStep[p] += deriveTimes[p];
+        }
+    return any;
+}
+
+bool Simulation::Impl::anyDue() const {
+    for (uint32_t p = 0; p < derive.plants; ++p)
+        if (time >= nextStep[p]) return true;
+    return false;
+}
+
+uint32_t Simulation::Impl::deriveDue(const std::vector<uint8_t>& due) {
+    uint32_t derived = 0;
+    for (Batch& b : batches) {
+        const std::vector<uint8_t> batchDue = slice(due, b.first, b.count);
+        const uint32_t batchDerived = b.deriver ? b.deriver->advance(batchDue) : b.reference->advance(batchDue);
+        if (batchDerived > 0) b.room.reset();
+        derived += batchDerived;
+    }
+    return derived;
+}
+
+void Simulation::Impl::growEveryParticle() {
+    const Clock::time_point start = Clock::now();
+    if (options.backend == Backend::Gpu) {
+        context->submitAndWait([&](VkCommandBuffer cmd) {
+            for (Batch& b : batches) {
+                const stream::DeviceModules derived = b.deriver->current();
+                b.growth->recordTick(cmd, derived, settings(b, ticks));
+                b.modules = derived.count;
+            }
+        });
+    } else {
+        for (Batch& b : batches) {
+            grow::tickCpu(settings(b, ticks), b.reference->current());
+            b.modules = b.reference->current().size();
+        }
+    }
+    seconds.grow += secondsSince(start);
+}
+
+uint32_t Simulation::Impl::deriveAndGrowInOneSubmission(const std::vector<uint8_t>& due, uint32_t& rederived) {
+    std::vector<uint8_t> stepped(batches.size(), 0);
+    std::vector<uint64_t> modulesBefore;
+    for (const Batch& b : batches)
+        modulesBefore.push_back(b.modules);
+    uint32_t derived = 0;
+    context->submitAndWait([&](VkCommandBuffer cmd) {
+        for (size_t k = 0; k < batches.size(); ++k) {
+            Batch& b = batches[k];
+            const uint32_t batchDerived = b.deriver->recordAdvance(cmd, slice(due, b.first, b.count));
+            stepped[k] = batchDerived > 0 ? 1 : 0;
+            derived += batchDerived;
+            b.growth->recordTick(cmd, b.deriver->current(), settings(b, ticks));
+        }
+    });
+    // Every recorded step is read, even after one that fails, so that the derivers take calls again.
+    std::exception_ptr failure;
+    std::vector<Batch*> outgrown;
+    for (size_t k = 0; k < batches.size(); ++k) {
+        if (!stepped[k]) continue;
+        Batch& b = batches[k];
+        try {
+            const gpu::GpuDeriver::Advanced outcome = b.deriver->advanced();
+            if (outcome == gpu::GpuDeriver::Advanced::DerivedAgain) outgrown.push_back(&b);
+            if (outcome != gpu::GpuDeriver::Advanced::Recorded) ++rederived;
+            b.room = roomAfterStep(b, modulesBefore[k]);
+        } catch (...) {
+            b.room.reset();
+            if (!failure) failure = std::current_exception();
+        }
+    }
+    if (failure) std::rethrow_exception(failure);
+    // A batch whose step outgrew its streams derived it again, waiting: its particles grow on that string.
+    if (!outgrown.empty())
+        context->submitAndWait([&](VkCommandBuffer cmd) {
+            for (Batch* b : outgrown)
+                b->growth->recordTick(cmd, b->deriver->current(), settings(*b, ticks));
+        });
+    for (Batch& b : batches)
+        b.modules = b.deriver->current().count;
+    return derived;
 }
 
 const LiveEnvironment& Simulation::environment() const { return impl_->live; }
@@ -471,9 +572,17 @@ std::vector<const turtle::DeviceOrgans*> Simulation::Impl::interpretOnDevice() {
     seconds.interpret += secondsSince(start);
     uint64_t firstModule = 0;
     const turtle::DeviceOrgans* organs = nullptr;
+    reinterpreted = 0;
     for (size_t k = 0; k < batches.size(); ++k) {
         Batch& b = batches[k];
-        const bool fit = again[k] && turtle::GpuTurtle::recordedInto(b.target).fit;
+        const std::optional<turtle::RecordedInterpretation> found =
+            again[k] ? std::optional(turtle::GpuTurtle::recordedInto(b.target)) : std::nullopt;
+        const bool fit = found && found->fit;
+        reinterpreted += fit ? 0 : 1;
+        if (fit) { // the string drawn again until the next step needs no more than it found
+            b.room->levels = found->levels;
+            b.room->marks = found->marks;
+        }
         // Else, or where it outgrew its room, the batch is drawn with the host reading between the turtle's passes.
         const Drawing drawing = fit ? Drawing{*drawnAgain[k], &b.target.organs} : drawInterpreting(b, drawnAgain[k]);
         organs = drawing.organs;
@@ -745,6 +854,10 @@ const grow::GrowingSpecies& Simulation::species() const {
     return impl_->g;
 }
 const StageSeconds& Simulation::stageSeconds() const { return impl_->seconds; }
+
+uint32_t Simulation::reinterpretedBatches() const {
+    return impl_->reinterpreted;
+}
 const std::vector<shared::PlantPlacement>& Simulation::placements() const {
     return impl_->placements;
 }

@@ -70,6 +70,10 @@ struct TickReport {
     double time = 0;      // simulated seconds after it
     uint32_t derived = 0; // plants that derived a step in it
     uint64_t modules = 0; // of the derived string, after it
+    // Batches whose step or its homomorphism, recorded with every other batch's in one submission, outgrew its
+    // streams and was written again with the host waiting between its passes (the streams then grow ahead of the
+    // next steps).
+    uint32_t rederived = 0;
 };
 
 // Wall-clock seconds each stage took, summed since the field began. Every stage's call waits for the device, so on
@@ -146,6 +150,10 @@ public:
     // Each plant's statistics, in plant order, counted with the organs interpret() drew after the last tick (the
     // host reads back a few words per plant).
     std::vector<shared::PlantStatistics> statistics() const;
+    // Batches the last drawing on the device interpreted with the host reading back between the turtle's passes,
+    // rather than recorded in the one submission of every batch: at the first drawing, after a resume, and where
+    // a batch's string outgrew the room it was recorded in (which then grows to it).
+    uint32_t reinterpretedBatches() const;
 
 private:
     struct Impl;

@@ -111,6 +111,23 @@ public:
     // (cpu::SteppedDerivation). Needs recordsSteps(); derive() and record() end the stepped derivation.
     void begin(const stream::DeriveOptions& options);
     uint32_t advance(const std::vector<uint8_t>& due);
+    // advance() recorded into `cmd` for the caller to submit, with no wait, within the streams' room (no buffer
+    // grows), and the homomorphism of the string it derives after it: returns how many plants derive (0: nothing is
+    // recorded). Until advanced(), current() is the string the submission writes, counted only on the device (its
+    // `count` bounds it), and what the caller records after the step may read it; other calls are refused. Once the
+    // submission has completed, advanced() reads the step's sizes. Where the step outgrew its room it leaves in
+    // current() no string or one short of the step's, and advanced() derives it again, waiting (DerivedAgain), so
+    // that what the caller recorded on current() must be done again (it read a string of its own bounds, nothing
+    // past them). Either way the drawn string then stands (drawnStands(), lastDrawn()) where the homomorphism had a
+    // slot in the step's batch (it has, unless it rewrites by many depths); one that outgrew its room is written
+    // again, waiting, without touching current() (DrawnAgain).
+    uint32_t recordAdvance(VkCommandBuffer cmd, const std::vector<uint8_t>& due);
+    enum class Advanced {
+        Recorded,     // the step and its homomorphism fit their rooms
+        DrawnAgain,   // the homomorphism outgrew its room and was written again, waiting
+        DerivedAgain, // the step outgrew its room and was derived again, waiting (its homomorphism too)
+    };
+    Advanced advanced();
     stream::DeviceModules current() const;
     // Its `origins` say which module of current() each drawn module comes from.
     stream::DeviceModules drawn();

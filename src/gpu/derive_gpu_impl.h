@@ -345,6 +345,9 @@ struct GpuDeriver::Impl {
     // Runs batch steps `first` on from streams[cur] in one submission; returns the steps done, `cur` their stream.
     size_t runBatch(std::vector<RecordedStep>& batch, size_t first, int& cur, uint32_t seed, uint64_t budget,
                     bool timed, int stepsAfterBatch, GpuDeriveStats& stats);
+    // After batch step `done` stopped the submission that ran it from streams[cur]: more depths for it, or room
+    // for it and a few steps more, so that the next submission runs it again.
+    void prepareToGoOn(std::vector<RecordedStep>& batch, size_t done, int cur, uint64_t budget, int stepsAfterBatch);
     // Records batch steps `first` on from streams[in] into `cmd`, then copies of their sizes and the last plant
     // table for the host; returns the stream the last step writes.
     int recordBatch(VkCommandBuffer cmd, const std::vector<RecordedStep>& batch, size_t first, int in, uint32_t seed,
@@ -436,6 +439,15 @@ struct GpuDeriver::Impl {
 
     // ---- derivation step by step over simulated time (derive_gpu_stepped.cpp) ----
 
+    // A step recordAdvance() wrote into a caller's command buffer, the homomorphism after it where it has one: the
+    // stream the step writes, the plants deriving, and the buffers its recording replaced, kept until its
+    // submission has ended.
+    struct PendingStep {
+        std::vector<RecordedStep> batch;
+        int out = 0;
+        uint32_t deriving = 0;
+        std::vector<vk::Buffer> retired;
+    };
     // What begin() started: the plants' control, kept between steps, and the stream their string is in.
     struct Stepped {
         stream::PlantControl control;
@@ -445,12 +457,23 @@ struct GpuDeriver::Impl {
         uint32_t fieldStep = 0; // advance() calls that derived: the random streams' step
         int cur = 0;
         bool drawnStands = false; // the last drawn() string is the one drawn() would write now (drawnStands())
+        std::optional<PendingStep> pending; // recordAdvance()'s, until advanced()
+        // drawnSymbols and drawnParams hold the drawn string as the homomorphism wrote it; else the stream does,
+        // unchanged since (a recorded step wrote it, and no drawing has grown it yet).
+        bool drawnSaved = false;
     };
     // The last drawn() string's symbols and parameters as the homomorphism wrote them, which the drawing grows in
     // place (grow/grown_sizes.comp): recordDrawnAgain() puts them back.
     vk::Buffer drawnSymbols, drawnParams;
+    // The drawn string streams[lastStream] copied into them, recorded into `cmd`.
+    void recordDrawnSave(VkCommandBuffer cmd);
     std::unique_ptr<Stepped> stepped;
     Stepped& steppedState(const char* call) const;
+    // The same, refusing while a recorded step is not read yet (advanced()).
+    Stepped& settledState(const char* call) const;
+    // advance()'s plan: which plants derive (returned: how many), their plant state into the batch slot, and the
+    // step into `batch`.
+    uint32_t planAdvance(const std::vector<uint8_t>& due, std::vector<RecordedStep>& batch);
     // begin() and resume(): from the axioms, or from a saved state.
     void beginStepped(const stream::DeriveOptions& options, const stream::SteppedState* from);
     // Runs `batch` from the stepped string's stream; returns the stream it ends in.

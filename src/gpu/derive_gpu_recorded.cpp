@@ -245,14 +245,19 @@ size_t GpuDeriver::Impl::runBatch(std::vector<RecordedStep>& batch, size_t first
     ctx.submitAndWait([&](VkCommandBuffer cmd) { recordBatch(cmd, batch, first, cur, seed, budget, timer); });
     submission.reset();
     const size_t done = completeBatch(batch, first, cur, budget, timer, stats);
-    if (done == batch.size()) return done;
+    if (done < batch.size()) prepareToGoOn(batch, done, cur, budget, stepsAfterBatch);
+    return done;
+}
+
+void GpuDeriver::Impl::prepareToGoOn(std::vector<RecordedStep>& batch, size_t done, int cur, uint64_t budget,
+                                     int stepsAfterBatch) {
     const uint32_t* words = reinterpret_cast<const uint32_t*>(host().stepWordsReadback.mapped());
     if ((words[shared::kStepStopped] & 3u) == shared::kStopDepths) {
         // The step goes on from the last depth it wrote, with more depths.
         deepen(batch[done]);
         const uint32_t* block = words + shared::kStepBlocks + done * shared::kStepBlockWords;
         batch[done].resumeDepth = int(block[shared::kResultDepth]);
-        return done;
+        return;
     }
     // The streams grow, and only the step's input keeps its string: the step runs again from its start.
     batch[done].resumeDepth = 0;
@@ -267,7 +272,6 @@ size_t GpuDeriver::Impl::runBatch(std::vector<RecordedStep>& batch, size_t first
     room = std::min<uint64_t>(room, std::max<uint64_t>(total, budget));
     room = std::min<uint64_t>(room, std::max<uint64_t>(total, bufferLimit() / (4ull * uint64_t(stride))));
     makeRoom(cur, room);
-    return done;
 }
 
 StepSizesPush GpuDeriver::Impl::sizesPush(uint32_t slot, const Stream& input, const Stream& output, uint64_t budget,

@@ -10,6 +10,10 @@
 namespace simeco::gpu {
 namespace {
 
+// The steps a stepped derivation makes room for when a step outgrows its streams: the plants go on deriving, and a
+// recorded step that outgrows its room must be derived again with the host waiting.
+constexpr int kStepsToCome = 4;
+
 // A string's symbols and parameters copied from one pair of buffers to another, ordered after and before the rest.
 void recordStringCopy(VkCommandBuffer cmd, const vk::Buffer& fromSymbols, const vk::Buffer& fromParams,
                       const vk::Buffer& toSymbols, const vk::Buffer& toParams, VkDeviceSize symbolBytes,
@@ -26,6 +30,12 @@ void recordStringCopy(VkCommandBuffer cmd, const vk::Buffer& fromSymbols, const 
 GpuDeriver::Impl::Stepped& GpuDeriver::Impl::steppedState(const char* call) const {
     if (!stepped) throw std::logic_error(std::string("GpuDeriver::") + call + " before begin()");
     return *stepped;
+}
+
+GpuDeriver::Impl::Stepped& GpuDeriver::Impl::settledState(const char* call) const {
+    Stepped& s = steppedState(call);
+    if (s.pending) throw std::logic_error(std::string("GpuDeriver::") + call + ": a recorded step is not read yet");
+    return s;
 }
 
 int GpuDeriver::Impl::runSteppedBatch(std::vector<RecordedStep>& batch, int stepsAfterBatch) {
@@ -58,7 +68,9 @@ void GpuDeriver::Impl::beginStepped(const stream::DeriveOptions& asked, const st
         for (uint32_t plant = 0; plant < control.plants(); ++plant) control.restore(plant, from->plants[plant]);
     const uint32_t seed = control.seed();
     const uint64_t budget = control.budget();
-    stepped = std::make_unique<Stepped>(Stepped{std::move(control), options, seed, budget, from ? from->fieldStep : 0, 0});
+    const uint32_t fieldStep = from ? from->fieldStep : 0;
+    stepped =
+        std::make_unique<Stepped>(Stepped{std::move(control), options, seed, budget, fieldStep, 0, false, {}, false});
     prepareRecorded(false);
     makeRoom(0, streams[0].count);
     SubmissionEnd submission{*this};
@@ -76,51 +88,122 @@ void GpuDeriver::resume(const stream::DeriveOptions& options, const stream::Step
 
 stream::SteppedState GpuDeriver::save() const {
     const Impl& m = *impl_;
-    const Impl::Stepped& s = m.steppedState("save");
+    const Impl::Stepped& s = m.settledState("save");
     stream::SteppedState state{m.readBack(m.streams[s.cur], m.carriesParticles), s.fieldStep, {}};
     for (uint32_t plant = 0; plant < m.plants; ++plant) state.plants.push_back(s.control.variables(plant));
     return state;
 }
 
-uint32_t GpuDeriver::advance(const std::vector<uint8_t>& due) {
-    Impl& m = *impl_;
-    Impl::Stepped& s = m.steppedState("advance");
-    if (due.size() != m.plants) throw std::invalid_argument("GpuDeriver::advance: one flag per plant");
-    std::vector<uint8_t> growing(m.plants, 0);
+uint32_t GpuDeriver::Impl::planAdvance(const std::vector<uint8_t>& due, std::vector<RecordedStep>& batch) {
+    Stepped& s = *stepped;
+    if (due.size() != plants) throw std::invalid_argument("GpuDeriver::advance: one flag per plant");
+    std::vector<uint8_t> growing(plants, 0);
     uint32_t deriving = 0;
-    for (uint32_t plant = 0; plant < m.plants; ++plant) {
+    for (uint32_t plant = 0; plant < plants; ++plant) {
         growing[plant] = due[plant] && s.control.beginStep(plant, s.control.stepsDerived(plant) + 1);
         deriving += growing[plant];
     }
     if (deriving == 0) return 0;
     ++s.fieldStep;
-    bool frozen = m.writePlantState(s.control, growing, reinterpret_cast<double*>(m.host().batchGlobals.mapped()),
-                                    reinterpret_cast<double*>(m.host().batchArrays.mapped()),
-                                    reinterpret_cast<uint32_t*>(m.host().batchFrozen.mapped()));
-    for (uint32_t plant = 0; plant < m.plants; ++plant)
+    bool frozen = writePlantState(s.control, growing, reinterpret_cast<double*>(host().batchGlobals.mapped()),
+                                  reinterpret_cast<double*>(host().batchArrays.mapped()),
+                                  reinterpret_cast<uint32_t*>(host().batchFrozen.mapped()));
+    for (uint32_t plant = 0; plant < plants; ++plant)
         if (growing[plant]) s.control.endStep(plant, s.control.stepsDerived(plant) + 1);
-    std::vector<Impl::RecordedStep> batch{{s.fieldStep, frozen}};
-    s.cur = m.runSteppedBatch(batch, 1);
-    m.lastStream = s.cur;
+    batch = {{s.fieldStep, frozen}};
     s.drawnStands = false;
     return deriving;
 }
 
+uint32_t GpuDeriver::advance(const std::vector<uint8_t>& due) {
+    Impl& m = *impl_;
+    Impl::Stepped& s = m.settledState("advance");
+    std::vector<Impl::RecordedStep> batch;
+    const uint32_t deriving = m.planAdvance(due, batch);
+    if (deriving == 0) return 0;
+    s.cur = m.runSteppedBatch(batch, kStepsToCome);
+    m.lastStream = s.cur;
+    return deriving;
+}
+
+uint32_t GpuDeriver::recordAdvance(VkCommandBuffer cmd, const std::vector<uint8_t>& due) {
+    Impl& m = *impl_;
+    Impl::Stepped& s = m.settledState("recordAdvance");
+    Impl::PendingStep pending;
+    pending.deriving = m.planAdvance(due, pending.batch);
+    if (pending.deriving == 0) return 0;
+    pending.out = (s.cur + 1) % 3;
+    // The homomorphism follows in the same submission, where the batch has a slot for it, with the globals as the
+    // Start block sets them (as drawn() writes it): the string is drawn from it until the next step.
+    if (m.homomorphismMatch && pending.batch.size() < m.batchSteps()) {
+        stream::PlantControl control(m.species, s.options);
+        m.planHomomorphism(control, pending.batch);
+    }
+    // A step that outgrows its room before its write leaves its output's plant table as cleared here, so that what
+    // the caller records after it reads nothing; one that stops among its depths leaves a string of its own.
+    vk::memoryBarrier(cmd, vk::Hazard::AnyToTransfer);
+    vk::cmdFill(cmd, m.streams[pending.out].plantStart, 0);
+    m.recordBatch(cmd, pending.batch, 0, s.cur, s.seed, s.budget, nullptr);
+    // The copies are in `cmd`; the buffers they read stay until its submission has ended.
+    pending.retired = std::move(m.retiredBuffers);
+    m.retiredBuffers.clear();
+    m.pendingCopies.clear();
+    m.batchSlot = -1;
+    s.pending = std::move(pending);
+    m.lastStream = -1; // until advanced() knows the string is there
+    return s.pending->deriving;
+}
+
+GpuDeriver::Advanced GpuDeriver::advanced() {
+    Impl& m = *impl_;
+    Impl::Stepped& s = m.steppedState("advanced");
+    if (!s.pending) throw std::logic_error("GpuDeriver::advanced() without recordAdvance()");
+    Impl::PendingStep pending = std::move(*s.pending);
+    s.pending.reset();
+    GpuDeriveStats stats;
+    std::vector<Impl::RecordedStep>& batch = pending.batch;
+    int cur = s.cur;
+    size_t done = m.completeBatch(batch, 0, cur, s.budget, nullptr, stats);
+    // The step fit where the batch went past it: a homomorphism that outgrew its room after it leaves it standing.
+    const Advanced outcome = done == batch.size() ? Advanced::Recorded
+                             : done > 0           ? Advanced::DrawnAgain
+                                                  : Advanced::DerivedAgain;
+    if (done < batch.size()) { // as advance() goes on after a step that stopped its submission
+        m.prepareToGoOn(batch, done, cur, s.budget, kStepsToCome);
+        while (done < batch.size())
+            done = m.runBatch(batch, done, cur, s.seed, s.budget, false, kStepsToCome, stats);
+    }
+    // The next batch builds its bracket tree afresh, as after runSteppedBatch().
+    m.partnersStream = -1;
+    m.partnersLive = false;
+    // The homomorphism wrote the stream after the derived string's; its string is saved for drawing it again when
+    // it is first drawn (recordDrawnAgain()).
+    const bool drawnToo = batch.back().homomorphism;
+    s.cur = drawnToo ? (cur + 2) % 3 : cur;
+    m.lastStream = cur;
+    s.drawnStands = drawnToo || !m.homomorphismMatch;
+    s.drawnSaved = !drawnToo;
+    return outcome;
+}
+
 stream::DeviceModules GpuDeriver::current() const {
     const Impl& m = *impl_;
-    const Stream& s = m.streams[m.steppedState("current").cur];
-    return stream::DeviceModules{&s.sym,
-                                 &s.par,
-                                 &s.plantStart,
-                                 s.count,
-                                 m.plants,
-                                 static_cast<uint32_t>(m.stride),
-                                 m.carriesParticles ? &s.particles : nullptr};
+    const Impl::Stepped& stepped = m.steppedState("current");
+    const Stream& s = m.streams[stepped.pending ? stepped.pending->out : stepped.cur];
+    stream::DeviceModules modules{&s.sym,
+                                  &s.par,
+                                  &s.plantStart,
+                                  stepped.pending ? uint32_t(m.recordedCapacity(s)) : s.count,
+                                  m.plants,
+                                  static_cast<uint32_t>(m.stride),
+                                  m.carriesParticles ? &s.particles : nullptr};
+    modules.countOnDevice = stepped.pending.has_value();
+    return modules;
 }
 
 stream::DeviceModules GpuDeriver::drawn() {
     Impl& m = *impl_;
-    Impl::Stepped& s = m.steppedState("drawn");
+    Impl::Stepped& s = m.settledState("drawn");
     s.drawnStands = true;
     if (!m.homomorphismMatch) return current();
     // The homomorphism sees the globals as the Start block sets them; the steps go on with their own.
@@ -129,16 +212,19 @@ stream::DeviceModules GpuDeriver::drawn() {
     m.planHomomorphism(control, batch);
     m.lastStream = m.runSteppedBatch(batch, 0);
     // Kept as written, for drawing it again (recordDrawnAgain()).
-    const Stream& out = m.streams[m.lastStream];
-    const VkDeviceSize symbolBytes = bytes(out.count, 4), paramBytes = bytes(out.count, 4ull * uint64_t(m.stride));
-    if (!m.drawnSymbols || m.drawnSymbols.size() < symbolBytes)
-        m.drawnSymbols = vk::Buffer(m.ctx, symbolBytes + symbolBytes / 2, vk::MemoryUsage::DeviceLocal);
-    if (!m.drawnParams || m.drawnParams.size() < paramBytes)
-        m.drawnParams = vk::Buffer(m.ctx, paramBytes + paramBytes / 2, vk::MemoryUsage::DeviceLocal);
-    m.ctx.submitAndWait([&](VkCommandBuffer cmd) {
-        recordStringCopy(cmd, out.sym, out.par, m.drawnSymbols, m.drawnParams, symbolBytes, paramBytes);
-    });
+    m.ctx.submitAndWait([&](VkCommandBuffer cmd) { m.recordDrawnSave(cmd); });
+    s.drawnSaved = true;
     return lastDrawn();
+}
+
+void GpuDeriver::Impl::recordDrawnSave(VkCommandBuffer cmd) {
+    const Stream& out = streams[lastStream];
+    const VkDeviceSize symbolBytes = bytes(out.count, 4), paramBytes = bytes(out.count, 4ull * uint64_t(stride));
+    if (!drawnSymbols || drawnSymbols.size() < symbolBytes)
+        drawnSymbols = vk::Buffer(ctx, symbolBytes + symbolBytes / 2, vk::MemoryUsage::DeviceLocal);
+    if (!drawnParams || drawnParams.size() < paramBytes)
+        drawnParams = vk::Buffer(ctx, paramBytes + paramBytes / 2, vk::MemoryUsage::DeviceLocal);
+    recordStringCopy(cmd, out.sym, out.par, drawnSymbols, drawnParams, symbolBytes, paramBytes);
 }
 
 bool GpuDeriver::drawnStands() const {
@@ -147,13 +233,18 @@ bool GpuDeriver::drawnStands() const {
 
 void GpuDeriver::recordDrawnAgain(VkCommandBuffer cmd) {
     Impl& m = *impl_;
-    Impl::Stepped& s = m.steppedState("recordDrawnAgain");
+    Impl::Stepped& s = m.settledState("recordDrawnAgain");
     if (!s.drawnStands) throw std::logic_error("GpuDeriver::recordDrawnAgain: a step derived since drawn()");
     if (!m.homomorphismMatch) return;
     const Stream& out = m.streams[m.lastStream];
     if (out.count == 0) return;
-    recordStringCopy(cmd, m.drawnSymbols, m.drawnParams, out.sym, out.par, bytes(out.count, 4),
-                     bytes(out.count, 4ull * uint64_t(m.stride)));
+    if (s.drawnSaved) {
+        recordStringCopy(cmd, m.drawnSymbols, m.drawnParams, out.sym, out.par, bytes(out.count, 4),
+                         bytes(out.count, 4ull * uint64_t(m.stride)));
+    } else { // first drawn since a recorded step wrote it: as written, it is saved instead
+        m.recordDrawnSave(cmd);
+        s.drawnSaved = true;
+    }
     if (!m.carriesParticles) return;
     m.recordParticleGather(cmd, s.cur, m.lastStream);
     vk::memoryBarrier(cmd, vk::Hazard::ComputeToCompute);

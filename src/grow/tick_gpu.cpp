@@ -37,6 +37,8 @@ GpuGrowth::GpuGrowth(const vk::Context& context, const GrowthTables& tables, con
     : context_(context), symbols_(tables.symbols), atSymbol_(tables.atSymbol),
       tickKernel_(vk::ComputePipeline::embedded(context, "grow/tick")),
       sizesKernel_(vk::ComputePipeline::embedded(context, "grow/grown_sizes")),
+      groupsKernel_(vk::ComputePipeline::embedded(context, "grow/tick_groups")),
+      copyKernel_(vk::ComputePipeline::embedded(context, "grow/particles_copy")),
       classes_(vk::deviceBufferWith(context, std::span<const uint32_t>(tables.classes))),
       species_(vk::deviceBufferWith(context, std::span<const uint32_t>(tables.species))),
       rows_(vk::deviceBufferWith(context, std::span<const float>(tables.rows))),
@@ -61,14 +63,30 @@ void GpuGrowth::recordTick(VkCommandBuffer cmd, const stream::DeviceModules& der
         nextStates_ = vk::Buffer(context_, bytes + bytes / 2, vk::MemoryUsage::DeviceLocal);
     // After the passes that wrote the string (a derivation step, the last tick's copy).
     vk::memoryBarrier(cmd, vk::Hazard::AnyToAny);
-    tickKernel_.dispatch(cmd,
-                         {*derived.symbols, *derived.params, *derived.plantStarts, *derived.particles, nextStates_,
-                          classes_, species_, rows_, vigour_},
-                         growPush(derived, settings, symbols_, atSymbol_), tickKernel_.groupsFor(derived.count));
-    vk::memoryBarrier(cmd, vk::Hazard::ComputeToTransfer);
-    VkBufferCopy copy{0, 0, bytes};
-    vkCmdCopyBuffer(cmd, nextStates_.handle(), derived.particles->handle(), 1, &copy);
-    vk::memoryBarrier(cmd, vk::Hazard::TransferToAny);
+    const std::initializer_list<vk::BufferRange> tickBuffers = {
+        *derived.symbols,   *derived.params, *derived.plantStarts,
+        *derived.particles, nextStates_,     classes_,
+        species_,           rows_,           vigour_};
+    const shared::GrowPush push = growPush(derived, settings, symbols_, atSymbol_);
+    if (!derived.countOnDevice) {
+        tickKernel_.dispatch(cmd, tickBuffers, push, tickKernel_.groupsFor(derived.count));
+        vk::memoryBarrier(cmd, vk::Hazard::ComputeToTransfer);
+        VkBufferCopy copy{0, 0, bytes};
+        vkCmdCopyBuffer(cmd, nextStates_.handle(), derived.particles->handle(), 1, &copy);
+        vk::memoryBarrier(cmd, vk::Hazard::TransferToAny);
+        return;
+    }
+    // Only the device knows the modules: their workgroups are counted there, and the copy back is a kernel's.
+    if (!groups_)
+        groups_ = vk::Buffer(context_, 3 * sizeof(uint32_t), vk::MemoryUsage::DeviceLocal,
+                             VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT);
+    const shared::GrowGroupsPush counted{derived.plants, derived.count, context_.limits().maxComputeWorkGroupCount[0]};
+    groupsKernel_.dispatch(cmd, {*derived.plantStarts, groups_}, counted, 1);
+    vk::memoryBarrier(cmd, vk::Hazard::ComputeToIndirect);
+    tickKernel_.dispatchIndirect(cmd, tickBuffers, push, groups_, 0);
+    vk::memoryBarrier(cmd, vk::Hazard::ComputeToCompute);
+    copyKernel_.dispatchIndirect(cmd, {*derived.plantStarts, nextStates_, *derived.particles}, counted, groups_, 0);
+    vk::memoryBarrier(cmd, vk::Hazard::AnyToAny);
 }
 
 void GpuGrowth::recordSizes(VkCommandBuffer cmd, const stream::DeviceModules& drawn, const TickSettings& settings) {

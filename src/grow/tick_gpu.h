@@ -28,7 +28,9 @@ public:
               const std::vector<float>& vigour = {}, const std::vector<shared::PlantPlacement>& placements = {});
 
     // One tick of `derived`'s particles (which it must carry), in place: the next states are written beside them
-    // and copied back. `settings.tables` is not read (the device's copy is).
+    // and copied back. `settings.tables` is not read (the device's copy is). A string counted only on the device
+    // (`countOnDevice`: a derivation step recorded before in `cmd` writes it) is ticked as far as its plant table
+    // counts, `count` bounding it.
     void recordTick(VkCommandBuffer cmd, const stream::DeviceModules& derived, const TickSettings& settings);
     // The drawn string's kGrownValue codes replaced with its particles' values, in place.
     void recordSizes(VkCommandBuffer cmd, const stream::DeviceModules& drawn, const TickSettings& settings);
@@ -51,6 +53,9 @@ private:
     const vk::Context& context_;
     uint32_t symbols_, atSymbol_;
     vk::ComputePipeline tickKernel_, sizesKernel_;
+    // A string counted on the device: its tick's workgroups, counted there, and the copy back.
+    vk::ComputePipeline groupsKernel_, copyKernel_;
+    vk::Buffer groups_;
     vk::Buffer classes_, species_, rows_, deriveTimes_, vigour_, placements_;
     vk::Buffer nextStates_; // the tick's output, copied back into the string's particles
     vk::Buffer drawnSymbols_, drawnParams_, drawnStarts_, drawnParticles_; // copyForDrawing's

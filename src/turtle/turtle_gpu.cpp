@@ -158,6 +158,9 @@ struct GpuTurtle::Impl {
     static bool placedAlready(const turtle::FieldOptions& options, std::uint32_t plants, DeviceOrgans& out,
                               const vk::Buffer& buffer);
     void uploadPlacements(const turtle::FieldOptions& options, DeviceOrgans& out, vk::Buffer& buffer) const;
+    // The same for a target, recorded into `cmd` (the host writes them into a staging buffer of the target's): a
+    // submission of many recordings waits for no uploads of their own.
+    void recordPlacementsUpload(VkCommandBuffer cmd, const turtle::FieldOptions& options, TurtleTarget& target) const;
     TurtlePush base{};
     std::uint32_t levels = 0;
     std::uint64_t bytesMoved = 0;
@@ -512,7 +515,7 @@ const DeviceOrgans& GpuTurtle::Impl::recordInto(VkCommandBuffer cmd, const strea
     checkRange(room.organs, sizeof(OrganInstance), "organ instances");
     sizeTarget(target, room.organs);
     DeviceOrgans& out = target.organs;
-    if (!placedAlready(options, m.plants, out, target.placements)) uploadPlacements(options, out, target.placements);
+    if (!placedAlready(options, m.plants, out, target.placements)) recordPlacementsUpload(cmd, options, target);
     recordPasses(cmd, beginRecording(m, options, room, out, target.placements), target.status);
     target.room = TurtleRoom{room.levels, out.capacity, room.marks};
     return out;
@@ -567,8 +570,9 @@ void GpuTurtle::Impl::recordPasses(VkCommandBuffer cmd, const Run& run, const vk
     vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
     recordOrgans(cmd, run, place.groupsFor(run.out->capacity));
     vk::memoryBarrier(cmd, Hazard::ComputeToTransfer);
-    VkBufferCopy words{0, 0, kTurtleStatusWords * 4};
+    VkBufferCopy words{0, 0, kTurtleStatusMarks * 4}, marks{0, kTurtleStatusMarks * 4, 4};
     vkCmdCopyBuffer(cmd, status.handle(), statusCopy.handle(), 1, &words);
+    vkCmdCopyBuffer(cmd, present.handle(), statusCopy.handle(), 1, &marks);
     vk::memoryBarrier(cmd, Hazard::TransferToHost);
 }
 
@@ -823,6 +827,24 @@ void GpuTurtle::Impl::uploadPlacements(const turtle::FieldOptions& options, Devi
     out.placements = options.placements;
 }
 
+void GpuTurtle::Impl::recordPlacementsUpload(VkCommandBuffer cmd, const turtle::FieldOptions& options,
+                                             TurtleTarget& target) const {
+    static const PlantPlacement none{};
+    const std::span<const PlantPlacement> placed =
+        options.placements.empty() ? std::span(&none, 1) : std::span(options.placements);
+    const VkDeviceSize size = placed.size_bytes();
+    if (!target.placementsStaging || target.placementsStaging.size() < size) {
+        target.placementsStaging = vk::Buffer(ctx, size, vk::MemoryUsage::Upload);
+        target.placements = vk::Buffer(ctx, size, vk::MemoryUsage::DeviceLocal);
+    }
+    std::memcpy(target.placementsStaging.mapped(), placed.data(), size);
+    vk::memoryBarrier(cmd, Hazard::AnyToTransfer);
+    const VkBufferCopy copy{0, 0, size};
+    vkCmdCopyBuffer(cmd, target.placementsStaging.handle(), target.placements.handle(), 1, &copy);
+    vk::memoryBarrier(cmd, Hazard::TransferToCompute);
+    target.organs.placements = options.placements;
+}
+
 void GpuTurtle::Impl::reserve(std::uint64_t n, std::uint64_t plants) {
     reservedModules = std::max(reservedModules, n);
     reservedPlants = std::max(reservedPlants, plants);
@@ -914,8 +936,8 @@ namespace {
 // What a recording's status words, copied for the host, say it found in the room it had.
 RecordedInterpretation recordedStatus(const vk::Buffer& copied, TurtleRoom room) {
     const auto* words = reinterpret_cast<const std::uint32_t*>(copied.mapped());
-    RecordedInterpretation r{words[kTurtleStatusModules], words[kTurtleStatusLevels], words[kTurtleStatusOrgans],
-                             false};
+    RecordedInterpretation r{words[kTurtleStatusModules], words[kTurtleStatusLevels], words[kTurtleStatusOrgans], false,
+                             words[kTurtleStatusMarks]};
     r.fit = r.levels <= room.levels && r.organs <= room.organs;
     return r;
 }

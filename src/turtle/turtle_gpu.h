@@ -56,13 +56,16 @@ struct TurtleRoom {
     std::uint32_t marks = ~0u;
 };
 
-// What a recording found on the device: the string's modules, its levels and organs, and whether they fit the
-// room it was given.
+// What a recording found on the device: the string's modules, its levels and organs, whether they fit the room it
+// was given, and its marks.
 struct RecordedInterpretation {
     std::uint32_t modules = 0;
     std::uint32_t levels = 0;
     std::uint32_t organs = 0;
     bool fit = false;
+    // The marks that occur in the string (TurtleRoom::marks): for recording the same string again with no more
+    // searches than it needs.
+    std::uint32_t marks = 0;
 };
 
 // Buffers of the caller's that a recording leaves its organs and its status words in (GpuTurtle::recordInto): each
@@ -70,7 +73,8 @@ struct RecordedInterpretation {
 // stay until the caller has merged them. The turtle makes and grows them.
 struct TurtleTarget {
     DeviceOrgans organs;
-    vk::Buffer placements; // organs.placements on the device, uploaded when they change
+    vk::Buffer placements;        // organs.placements on the device, uploaded when they change
+    vk::Buffer placementsStaging; // ... on their way there, in the submission of the recording that needs them
     vk::Buffer status;     // the recording's status words, for the host
     TurtleRoom room;       // what the last recording into it had room for
 };

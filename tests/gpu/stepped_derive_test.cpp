@@ -1,7 +1,7 @@
 // Derivation step by step over simulated time (GpuDeriver::begin, advance, current, drawn) against its CPU
 // reference (cpu::SteppedDerivation): plants due at different steps, particle state carried, the homomorphism
 // drawn between steps without ending the derivation, and drawn again while no step derives; and every plant due at
-// every step is a derivation.
+// every step is a derivation. Steps recorded into the caller's submission derive the same.
 #include <bit>
 #include <cstdint>
 #include <stdexcept>
@@ -141,6 +141,70 @@ TEST_F(SteppedDeriveTest, ADrawnStringStandsUntilAStepDerivesAndIsDrawnAgainAsWr
     EXPECT_THROW(deriver.lastDrawn(), std::logic_error);
     context().submitAndWait(
         [&](VkCommandBuffer cmd) { EXPECT_THROW(deriver.recordDrawnAgain(cmd), std::logic_error); });
+}
+
+// A step recorded into the caller's submission derives what advance() derives. Until it is read, the string it
+// writes is counted only on the device, within the bound current() gives, and the calls that need the host's count
+// are refused. A step that outgrew its streams' room (the first one does: the streams start at the axioms' size) is
+// derived again when it is read, and says so; the string is then the reference's all the same. The homomorphism is
+// recorded after the step, and its string stands until the next.
+TEST_F(SteppedDeriveTest, ARecordedStepDerivesAsAdvanceAndIsDerivedAgainWhereItOutgrewItsRoom) {
+    std::vector<ir::Grammar> species{testing::grammarFromText(testing::lsystem("A(0)", kGrammar, 6))};
+    // Plants enough that the first step outgrows the streams' first room, before the homomorphism's growth makes more.
+    const stream::DeriveOptions options = fieldOf(300);
+    cpu::SteppedDerivation reference(species, options);
+    gpu::GpuDeriver deriver(context(), species);
+    deriver.begin(options);
+    vk::Buffer counted(context(), 4, vk::MemoryUsage::Readback);
+    int fit = 0, outgrown = 0;
+    for (std::uint32_t tick = 0; tick < 8; ++tick) {
+        std::vector<std::uint8_t> due(options.plants);
+        for (std::uint32_t plant = 0; plant < options.plants; ++plant)
+            due[plant] = shared::randomUnit(5, plant, tick, 0, 0) < 0.7f;
+        const std::uint32_t derived = reference.advance(due);
+        std::uint32_t recorded = 0, bound = 0;
+        context().submitAndWait([&](VkCommandBuffer cmd) {
+            recorded = deriver.recordAdvance(cmd, due);
+            const stream::DeviceModules string = deriver.current();
+            EXPECT_EQ(string.countOnDevice, recorded > 0);
+            bound = string.count;
+            // What a pass recorded after the step reads as its count: the plant table's last entry.
+            vk::memoryBarrier(cmd, vk::Hazard::AnyToTransfer);
+            const VkBufferCopy last{4ull * options.plants, 0, 4};
+            vkCmdCopyBuffer(cmd, string.plantStarts->handle(), counted.handle(), 1, &last);
+            vk::memoryBarrier(cmd, vk::Hazard::TransferToHost);
+        });
+        ASSERT_EQ(recorded, derived) << "tick " << tick;
+        if (recorded == 0) continue;
+        EXPECT_THROW(deriver.advance(due), std::logic_error);
+        EXPECT_THROW(deriver.drawn(), std::logic_error);
+        EXPECT_THROW(deriver.save(), std::logic_error);
+        const gpu::GpuDeriver::Advanced outcome = deriver.advanced();
+        const std::uint32_t onDevice = *reinterpret_cast<const std::uint32_t*>(counted.mapped());
+        if (outcome == gpu::GpuDeriver::Advanced::DerivedAgain) {
+            ++outgrown;
+            EXPECT_LE(onDevice, bound) << "tick " << tick;
+            EXPECT_GT(deriver.current().count, bound) << "tick " << tick;
+        } else {
+            ++fit;
+            EXPECT_EQ(onDevice, deriver.current().count) << "tick " << tick;
+        }
+        EXPECT_FALSE(deriver.current().countOnDevice);
+        const stream::DeriveResult got = readModules(context(), deriver.current(), 0);
+        ASSERT_EQ(firstDifference(asResult(reference.current()), got, species[0].alphabet), "") << "tick " << tick;
+        ASSERT_EQ(got.string.particles, reference.current().particles) << "tick " << tick;
+        // The homomorphism was recorded after the step: its string stands, as drawn() would write it.
+        ASSERT_TRUE(deriver.drawnStands()) << "tick " << tick;
+        const stream::DeriveResult drawn = readModules(context(), deriver.lastDrawn(), 0);
+        ASSERT_EQ(firstDifference(asResult(reference.drawn()), drawn, species[0].alphabet), "") << "tick " << tick;
+        ASSERT_EQ(drawn.string.particles, reference.drawn().particles) << "tick " << tick;
+    }
+    EXPECT_GE(fit, 2);
+    EXPECT_GE(outgrown, 1);
+    EXPECT_THROW(deriver.advanced(), std::logic_error);
+    ASSERT_EQ(
+        firstDifference(asResult(reference.drawn()), readModules(context(), deriver.drawn(), 0), species[0].alphabet),
+        "");
 }
 
 } // namespace

@@ -68,6 +68,57 @@ TEST_F(SimulationTest, AFieldInBatchesGrowsOnTheDeviceAsOnTheCpu) {
     EXPECT_EQ(gpu.plantModules(), cpu.plantModules());
 }
 
+// A tick derives the due plants of every batch and grows every particle in one submission, which the host waits for
+// once: as many submissions in four batches as in two, where no batch's step outgrew its streams. A step that did
+// (the first ones do: the streams start at the seeds' size) is derived again, waiting. The drawing after a step
+// records every batch in one submission too, within rooms grown as the strings grew: as many submissions in four
+// batches as in two where none outgrew its room. What is derived, grown and drawn is the CPU's all the same.
+TEST_F(SimulationTest, EveryBatchDerivesInOneSubmissionAndIsDrawnInAnotherAsOnTheCpu) {
+    // A step every tick (the garden's DeriveTime), so that the strings outgrow the streams' first room within ten.
+    field::SimulationOptions inFour = garden(field::Backend::Gpu), inTwo = inFour, onCpu = garden(field::Backend::Cpu);
+    inFour.dt = inTwo.dt = onCpu.dt = 3.0f;
+    inTwo.plantsPerBatch = 6;
+    field::Simulation four(inFour, &context()), two(inTwo, &context()), cpu(onCpu, &context());
+    int fit = 0, rederived = 0, drawnInOne = 0;
+    for (int tick = 0; tick < 10; ++tick) {
+        uint64_t before = context().submissions();
+        const field::TickReport a = four.tick();
+        const uint64_t fourTick = context().submissions() - before;
+        before = context().submissions();
+        const field::TickReport b = two.tick();
+        const uint64_t twoTick = context().submissions() - before;
+        const field::TickReport c = cpu.tick();
+        ASSERT_EQ(a.derived, c.derived) << tick;
+        ASSERT_EQ(a.modules, c.modules) << tick;
+        ASSERT_EQ(four.plantModules(), cpu.plantModules()) << tick;
+        if (a.derived > 0 && (a.rederived > 0 || b.rederived > 0)) {
+            ++rederived;
+        } else {
+            fit += a.derived > 0 ? 1 : 0;
+            EXPECT_EQ(fourTick, 1u) << tick;
+            EXPECT_EQ(twoTick, 1u) << tick;
+        }
+
+        before = context().submissions();
+        const turtle::Interpretation got = turtle::readBack(context(), four.interpret(), four.plants());
+        const uint64_t fourDrawing = context().submissions() - before - 3; // less readBack's three
+        before = context().submissions();
+        two.interpretParts();
+        const uint64_t twoDrawing = context().submissions() - before;
+        const turtle::Interpretation want = turtle::readBack(context(), cpu.interpret(), cpu.plants());
+        ASSERT_EQ(organDifference(want, got), "") << tick;
+        const std::vector<shared::PlantStatistics> s = four.statistics(), t = cpu.statistics();
+        for (uint32_t p = 0; p < 12; ++p)
+            EXPECT_NEAR(s[p].leafArea, t[p].leafArea, 1e-4f * std::max(1.0f, t[p].leafArea)) << tick << " " << p;
+        if (four.reinterpretedBatches() > 0 || two.reinterpretedBatches() > 0) continue;
+        drawnInOne += a.derived > 0 ? 1 : 0;
+        EXPECT_EQ(fourDrawing, twoDrawing) << tick;
+    }
+    EXPECT_GE(fit, 2);
+    EXPECT_GE(rederived, 1);
+    EXPECT_GE(drawnInOne, 2); // drawings after a step, every batch recorded
+}
+
 // Between derivation steps every batch is drawn again in one submission, into organ buffers of its own, and the
 // host reads back only the statistics after it: the drawing takes as many submissions in four batches as in two.
 // What it draws, and counts, is what the CPU draws, tick after tick; and the field is the same in four batches as

@@ -166,7 +166,7 @@ struct Simulation::Impl {
     // The room batch b's drawing records the turtle in after a step derived its string anew from `modulesBefore`
     // modules (with its homomorphism, so that the drawing after the tick records it as it records a string drawn
     // again): the last drawing's organs grown as the derived string grew (the target holds half again), twice its
-    // levels and four more, and every mark, which the new modules may bring. None before a first drawing.
+    // levels and four more, and its marks. None before a first drawing.
     std::optional<turtle::TurtleRoom> roomAfterStep(const Batch& b, uint64_t modulesBefore) const;
     std::vector<const turtle::DeviceOrgans*> interpretOnDevice();
     uint32_t reinterpreted = 0; // batches the last drawing interpreted with the host reading between passes
@@ -341,7 +341,9 @@ std::optional<turtle::TurtleRoom> Simulation::Impl::roomAfterStep(const Batch& b
     // The levels of branches within branches: a step may double them (a branch on every branch), and a seedling's
     // first branches bring a few.
     room.levels = 2 * b.room->levels + 4;
-    return room; // every mark
+    // The marks the string had: one that brings others (a first curve, say) does not fit, and is drawn again.
+    room.marks = b.room->marks;
+    return room;
 }
 
 bool Simulation::Impl::takeDue(std::vector<uint8_t>& due) {

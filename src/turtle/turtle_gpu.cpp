@@ -933,12 +933,16 @@ void GpuTurtle::recordKeep(VkCommandBuffer cmd, TurtleTarget& target) { impl_->r
 
 namespace {
 
-// What a recording's status words, copied for the host, say it found in the room it had.
+// The marks whose passes a recording leaves out where its room says they do not occur.
+constexpr std::uint32_t kSearchedMarks = kMarkNonlinear | kMarkStem | kMarkCylinderStart | kMarkCylinderPoint;
+
+// What a recording's status words, copied for the host, say it found in the room it had: a string with marks whose
+// passes the room left out did not fit it either.
 RecordedInterpretation recordedStatus(const vk::Buffer& copied, TurtleRoom room) {
     const auto* words = reinterpret_cast<const std::uint32_t*>(copied.mapped());
     RecordedInterpretation r{words[kTurtleStatusModules], words[kTurtleStatusLevels], words[kTurtleStatusOrgans], false,
                              words[kTurtleStatusMarks]};
-    r.fit = r.levels <= room.levels && r.organs <= room.organs;
+    r.fit = r.levels <= room.levels && r.organs <= room.organs && (r.marks & kSearchedMarks & ~room.marks) == 0;
     return r;
 }
 

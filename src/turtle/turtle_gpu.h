@@ -49,7 +49,7 @@ struct DeviceOrgans {
 
 // The room a recording that reads nothing back interprets a string in: levels of non-linear modules
 // resolved one after another, and organ instances written; and the marks that occur in the string (the searches
-// that none needs are left out), every one where they are not known.
+// that none needs are left out), every one where they are not known. A string with more of them does not fit.
 struct TurtleRoom {
     std::uint32_t levels = 0;
     std::uint32_t organs = 0;
@@ -101,9 +101,10 @@ public:
     // on the device, so the string may be one a derivation recorded before in `cmd` writes (`modules.count` then
     // only bounds it). What interpret() reads between its passes stays on the device: the passes are sized
     // there (compute/turtle/pass_sizes.comp), `room` bounds the levels resolved and the organs written, and
-    // recorded() tells, after the submission, whether the string fit (else its table counts no organs:
-    // interpret() it, or record again with more room). Starts with a barrier after everything recorded before;
-    // the caller submits.
+    // recorded() tells, after the submission, whether the string fit (else interpret() it, or record again with more
+    // room: its table counts no organs where they or its levels outgrew the room, and the organs of a string with
+    // marks the room left out are not its own). Starts with a barrier after everything recorded before; the caller
+    // submits.
     const DeviceOrgans& record(VkCommandBuffer cmd, const stream::DeviceModules& modules,
                                const turtle::FieldOptions& field, TurtleRoom room);
     // Makes the turtle's own buffers large enough for strings of up to `modules` modules of up to `plants` plants

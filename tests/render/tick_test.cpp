@@ -11,6 +11,7 @@
 #include <string>
 
 #include "compute/shared/organ_layout.h"
+#include "compute/shared/turtle_state_layout.h"
 #include "draw/bounds.h"
 #include "draw/renderer.h"
 #include "gpu/derive_gpu.h"
@@ -230,6 +231,15 @@ TEST_F(FieldTick, ARecordingWithTooLittleRoomSaysSo) {
     EXPECT_EQ(interpreted.levels, needed.levels);
     table = vk::downloadVector<shared::OrganTable>(context(), organs->table, 1)[0];
     for (uint32_t k = 0; k < shared::kOrganKinds; ++k) EXPECT_EQ(table.count[k], 0u) << k;
+    // A room without a mark the string has: the searches it needs were left out, so it does not fit either.
+    const uint32_t marks = turtle.lastMarks();
+    ASSERT_NE(marks & shared::kMarkStem, 0u);
+    context().submitAndWait([&](VkCommandBuffer cmd) {
+        turtle.record(cmd, deriver.lastString(), {}, {needed.levels, needed.organs, marks & ~shared::kMarkStem});
+    });
+    interpreted = turtle.recorded();
+    EXPECT_FALSE(interpreted.fit);
+    EXPECT_EQ(interpreted.marks, marks);
     // With the room it needs, the same turtle draws them all.
     context().submitAndWait(
         [&](VkCommandBuffer cmd) { organs = &turtle.record(cmd, deriver.lastString(), {}, needed); });

@@ -796,6 +796,8 @@ void GpuTurtle::Impl::recordOrgans(VkCommandBuffer cmd, const Run& run, std::uin
                       b.taperBelow, run.out->instances, plantBounds, status},
                      run.push, run, kGateStems, Over::Modules);
     }
+    // The field's pass writes the status words the passes before it read, and reads the bounds the taper wrote.
+    vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
     field.dispatch(cmd, {b.offsets, scan.totalBuffer(), plantBounds, run.out->table, run.out->field, status}, run.push,
                    1);
     vk::memoryBarrier(cmd, Hazard::ComputeToCompute);

@@ -41,7 +41,8 @@ std::uint32_t chooseQueueFamily(VkPhysicalDevice device, std::uint32_t& timestam
 } // namespace
 
 Context::Context(const ContextOptions& options)
-    : instance_(options.validation, options.validationLog, options.instanceExtensions),
+    : instance_(options.validation, options.validationLog, options.instanceExtensions,
+                options.synchronizationValidation),
       kernelCache_(std::make_unique<KernelCache>()) {
     std::vector<PhysicalDeviceInfo> devices = listPhysicalDevices(instance_.get());
     presents_ = bool(options.presentsFrom);

@@ -26,6 +26,8 @@ struct ContextOptions {
     std::string device;
     // Validation layer plus a messenger counting its messages; on by default when SIMECO_VALIDATION=1.
     bool validation = validationRequestedByEnvironment();
+    // With validation, the layer's synchronization checks too (vk::Instance): slow, for tests.
+    bool synchronizationValidation = false;
     // Where validation messages are collected; must outlive the context. Null: the instance keeps its own.
     ValidationLog* validationLog = nullptr;
     // Presenting to a window: the window system's instance extensions (the surface's), and a test of whether a

@@ -72,7 +72,8 @@ std::vector<std::string> ValidationLog::messages() const {
     return messages_;
 }
 
-Instance::Instance(bool validation, ValidationLog* externalLog, const std::vector<std::string>& requested)
+Instance::Instance(bool validation, ValidationLog* externalLog, const std::vector<std::string>& requested,
+                   bool synchronization)
     : ownLog_(externalLog == nullptr ? std::make_unique<ValidationLog>() : nullptr),
       log_(externalLog == nullptr ? ownLog_.get() : externalLog) {
     std::uint32_t loaderVersion = VK_API_VERSION_1_0;
@@ -105,10 +106,21 @@ Instance::Instance(bool validation, ValidationLog* externalLog, const std::vecto
     VkInstanceCreateInfo info{};
     info.sType = VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO;
     info.pApplicationInfo = &app;
+    const VkValidationFeatureEnableEXT synchronizationChecks =
+        VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT;
+    VkValidationFeaturesEXT features{};
+    features.sType = VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT;
+    features.enabledValidationFeatureCount = 1;
+    features.pEnabledValidationFeatures = &synchronizationChecks;
     if (validation) {
         layers.push_back(kValidationLayer);
         extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
         info.pNext = &debugInfo;
+        if (synchronization) {
+            extensions.push_back(VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME);
+            features.pNext = info.pNext;
+            info.pNext = &features;
+        }
     }
     info.enabledLayerCount = static_cast<std::uint32_t>(layers.size());
     info.ppEnabledLayerNames = layers.data();

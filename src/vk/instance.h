@@ -32,8 +32,10 @@ public:
     // a silent run without checks. Messages go to `externalLog` when given (it must outlive the instance, which
     // lets tests see messages emitted while the instance is destroyed), else to a log of the instance's own.
     // `extensions`: instance extensions besides the validation's (a window system's surface, for presenting).
+    // `synchronization`: the layer also checks the barriers between commands (hazards of one command's reads and
+    // writes against another's), at a cost: for tests.
     explicit Instance(bool validation, ValidationLog* externalLog = nullptr,
-                      const std::vector<std::string>& extensions = {});
+                      const std::vector<std::string>& extensions = {}, bool synchronization = false);
     ~Instance();
 
     Instance(const Instance&) = delete;

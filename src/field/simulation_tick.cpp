@@ -1,0 +1,143 @@
+// A tick of the growing field: the plants whose DeriveTime is due derive a step, and every particle grows.
+
+#include "field/simulation_impl.h"
+
+namespace simeco::field {
+
+TickReport Simulation::tick() {
+    Impl& m = *impl_;
+    TickReport report;
+    report.tick = m.ticks;
+    m.drawn = false; // what was drawn before describes the field before the tick
+    m.time = double(m.ticks + 1) * m.options.dt;
+    // Every step that falls due within the tick: a tick longer than a plant's DeriveTime (a time-lapse of a few
+    // frames) derives as many, so that the plant is where its time has brought it. Until no plant derives more.
+    std::vector<uint8_t> due;
+    bool grown = false;
+    while (m.takeDue(due)) {
+        const Clock::time_point start = Clock::now();
+        // The last round of steps, on the device, in one submission with the growth of every particle.
+        grown = m.options.backend == Backend::Gpu && !m.anyDue();
+        const uint32_t derived = grown ? m.deriveAndGrowInOneSubmission(due, report.rederived) : m.deriveDue(due);
+        m.seconds.derive += secondsSince(start);
+        report.derived = std::max(report.derived, derived);
+        if (derived == 0) break; // every due plant has derived all its steps
+    }
+    if (!grown) m.growEveryParticle();
+    for (const Batch& b : m.batches) report.modules += b.modules;
+    ++m.ticks;
+    report.time = m.time;
+    return report;
+}
+
+std::optional<turtle::TurtleRoom> Simulation::Impl::roomAfterStep(const Batch& b, uint64_t modulesBefore) const {
+    if (!b.room) return std::nullopt;
+    const uint64_t modulesAfter = b.deriver->current().count;
+    const double growth = std::max(1.0, double(modulesAfter) / double(std::max<uint64_t>(modulesBefore, 1)));
+    // Seedlings that drew nothing yet: an organ for every drawn module, as many as most strings draw.
+    const double organs = b.room->organs > 0 ? std::ceil(double(b.room->organs) * growth)
+                          : b.deriver->drawnStands() ? double(b.deriver->lastDrawn().count)
+                                                     : 0.0;
+    const double mostOrgans = double(context->limits().maxStorageBufferRange / sizeof(shared::OrganInstance));
+    turtle::TurtleRoom room;
+    room.organs = uint32_t(std::min(organs, mostOrgans));
+    // The levels of branches within branches: a step may double them (a branch on every branch), and a seedling's
+    // first branches bring a few.
+    room.levels = 2 * b.room->levels + 4;
+    // The marks the string had: one that brings others (a first curve, say) does not fit, and is drawn again.
+    room.marks = b.room->marks;
+    return room;
+}
+
+bool Simulation::Impl::takeDue(std::vector<uint8_t>& due) {
+    due.assign(derive.plants, 0);
+    bool any = false;
+    for (uint32_t p = 0; p < derive.plants; ++p)
+        if (time >= nextStep[p]) {
+            due[p] = 1;
+            any = true;
+            nextStep[p] += deriveTimes[p];
+        }
+    return any;
+}
+
+bool Simulation::Impl::anyDue() const {
+    for (uint32_t p = 0; p < derive.plants; ++p)
+        if (time >= nextStep[p]) return true;
+    return false;
+}
+
+uint32_t Simulation::Impl::deriveDue(const std::vector<uint8_t>& due) {
+    uint32_t derived = 0;
+    for (Batch& b : batches) {
+        const std::vector<uint8_t> batchDue = slice(due, b.first, b.count);
+        const uint32_t batchDerived = b.deriver ? b.deriver->advance(batchDue) : b.reference->advance(batchDue);
+        if (batchDerived > 0) b.room.reset();
+        derived += batchDerived;
+    }
+    return derived;
+}
+
+void Simulation::Impl::growEveryParticle() {
+    const Clock::time_point start = Clock::now();
+    if (options.backend == Backend::Gpu) {
+        context->submitAndWait([&](VkCommandBuffer cmd) {
+            for (Batch& b : batches) {
+                const stream::DeviceModules derived = b.deriver->current();
+                b.growth->recordTick(cmd, derived, settings(b, ticks));
+                b.modules = derived.count;
+            }
+        });
+    } else {
+        for (Batch& b : batches) {
+            grow::tickCpu(settings(b, ticks), b.reference->current());
+            b.modules = b.reference->current().size();
+        }
+    }
+    seconds.grow += secondsSince(start);
+}
+
+uint32_t Simulation::Impl::deriveAndGrowInOneSubmission(const std::vector<uint8_t>& due, uint32_t& rederived) {
+    std::vector<uint8_t> stepped(batches.size(), 0);
+    std::vector<uint64_t> modulesBefore;
+    for (const Batch& b : batches)
+        modulesBefore.push_back(b.modules);
+    uint32_t derived = 0;
+    context->submitAndWait([&](VkCommandBuffer cmd) {
+        for (size_t k = 0; k < batches.size(); ++k) {
+            Batch& b = batches[k];
+            const uint32_t batchDerived = b.deriver->recordAdvance(cmd, slice(due, b.first, b.count));
+            stepped[k] = batchDerived > 0 ? 1 : 0;
+            derived += batchDerived;
+            b.growth->recordTick(cmd, b.deriver->current(), settings(b, ticks));
+        }
+    });
+    // Every recorded step is read, even after one that fails, so that the derivers take calls again.
+    std::exception_ptr failure;
+    std::vector<Batch*> outgrown;
+    for (size_t k = 0; k < batches.size(); ++k) {
+        if (!stepped[k]) continue;
+        Batch& b = batches[k];
+        try {
+            const gpu::GpuDeriver::Advanced outcome = b.deriver->advanced();
+            if (outcome == gpu::GpuDeriver::Advanced::DerivedAgain) outgrown.push_back(&b);
+            if (outcome != gpu::GpuDeriver::Advanced::Recorded) ++rederived;
+            b.room = roomAfterStep(b, modulesBefore[k]);
+        } catch (...) {
+            b.room.reset();
+            if (!failure) failure = std::current_exception();
+        }
+    }
+    if (failure) std::rethrow_exception(failure);
+    // A batch whose step outgrew its streams derived it again, waiting: its particles grow on that string.
+    if (!outgrown.empty())
+        context->submitAndWait([&](VkCommandBuffer cmd) {
+            for (Batch* b : outgrown)
+                b->growth->recordTick(cmd, b->deriver->current(), settings(*b, ticks));
+        });
+    for (Batch& b : batches)
+        b.modules = b.deriver->current().count;
+    return derived;
+}
+
+} // namespace simeco::field

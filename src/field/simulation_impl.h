@@ -169,7 +169,7 @@ struct Simulation::Impl {
     // The room batch b's drawing records the turtle in after a step derived its string anew from `modulesBefore`
     // modules (with its homomorphism, so that the drawing after the tick records it as it records a string drawn
     // again): the last drawing's organs grown as the derived string grew (the target holds half again), twice its
-    // levels and four more, and its marks. None before a first drawing.
+    // levels and four more, and its marks (every one after a seedling). None before a first drawing.
     std::optional<turtle::TurtleRoom> roomAfterStep(const Batch& b, uint64_t modulesBefore) const;
     std::vector<const turtle::DeviceOrgans*> interpretOnDevice();
     uint32_t reinterpreted = 0; // batches the last drawing interpreted with the host reading between passes

@@ -44,8 +44,9 @@ std::optional<turtle::TurtleRoom> Simulation::Impl::roomAfterStep(const Batch& b
     // The levels of branches within branches: a step may double them (a branch on every branch), and a seedling's
     // first branches bring a few.
     room.levels = 2 * b.room->levels + 4;
-    // The marks the string had: one that brings others (a first curve, say) does not fit, and is drawn again.
-    room.marks = b.room->marks;
+    // The marks the string had: one that brings others (a first curve, say) does not fit, and is drawn again. A
+    // seedling's string drew nothing: its first step brings the stems and what else it draws, every mark.
+    room.marks = b.room->organs > 0 ? b.room->marks : ~0u;
     return room;
 }
 

@@ -48,6 +48,14 @@ stream::DeriveOptions fieldOf(std::uint32_t plants) {
     return options;
 }
 
+// Each plant due at the tick with the given chance, drawn from random stream `stream`.
+std::vector<std::uint8_t> dueAtRandom(std::uint32_t plants, std::uint32_t stream, std::uint32_t tick, float chance) {
+    std::vector<std::uint8_t> due(plants);
+    for (std::uint32_t plant = 0; plant < plants; ++plant)
+        due[plant] = shared::randomUnit(stream, plant, tick, 0, 0) < chance;
+    return due;
+}
+
 stream::DeriveResult asResult(const stream::ModuleString& s) {
     stream::DeriveResult r;
     r.string = s;
@@ -81,9 +89,7 @@ TEST_F(SteppedDeriveTest, PlantsDueAtDifferentStepsDeriveAsTheReference) {
     deriver.begin(options);
     std::uint32_t derivedSteps = 0;
     for (std::uint32_t tick = 0; tick < 12; ++tick) {
-        std::vector<std::uint8_t> due(options.plants);
-        for (std::uint32_t plant = 0; plant < options.plants; ++plant)
-            due[plant] = shared::randomUnit(3, plant, tick, 0, 0) < 0.5f;
+        const std::vector<std::uint8_t> due = dueAtRandom(options.plants, 3, tick, 0.5f);
         const std::uint32_t derived = reference.advance(due);
         ASSERT_EQ(deriver.advance(due), derived) << "tick " << tick;
         derivedSteps += derived;
@@ -158,9 +164,7 @@ TEST_F(SteppedDeriveTest, ARecordedStepDerivesAsAdvanceAndIsDerivedAgainWhereItO
     vk::Buffer counted(context(), 4, vk::MemoryUsage::Readback);
     int fit = 0, outgrown = 0;
     for (std::uint32_t tick = 0; tick < 8; ++tick) {
-        std::vector<std::uint8_t> due(options.plants);
-        for (std::uint32_t plant = 0; plant < options.plants; ++plant)
-            due[plant] = shared::randomUnit(5, plant, tick, 0, 0) < 0.7f;
+        const std::vector<std::uint8_t> due = dueAtRandom(options.plants, 5, tick, 0.7f);
         const std::uint32_t derived = reference.advance(due);
         std::uint32_t recorded = 0, bound = 0;
         context().submitAndWait([&](VkCommandBuffer cmd) {

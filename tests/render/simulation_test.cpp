@@ -40,6 +40,25 @@ field::SimulationOptions garden(field::Backend backend) {
     return o;
 }
 
+// One garden in four batches and in two, and on the CPU, each drawn after a tick: what the four batches and the CPU
+// drew, and the submissions the drawings on the device took.
+struct Drawings {
+    turtle::Interpretation four, cpu;
+    uint64_t fourSubmissions = 0, twoSubmissions = 0;
+};
+Drawings drawEach(const vk::Context& context, field::Simulation& four, field::Simulation& two,
+                  field::Simulation& cpu) {
+    Drawings d;
+    uint64_t before = context.submissions();
+    d.four = turtle::readBack(context, four.interpret(), four.plants());
+    d.fourSubmissions = context.submissions() - before - 3; // less readBack's three
+    before = context.submissions();
+    two.interpretParts();
+    d.twoSubmissions = context.submissions() - before;
+    d.cpu = turtle::readBack(context, cpu.interpret(), cpu.plants());
+    return d;
+}
+
 TEST_F(SimulationTest, AFieldInBatchesGrowsOnTheDeviceAsOnTheCpu) {
     field::Simulation gpu(garden(field::Backend::Gpu), &context());
     field::Simulation cpu(garden(field::Backend::Cpu), &context());
@@ -99,20 +118,14 @@ TEST_F(SimulationTest, EveryBatchDerivesInOneSubmissionAndIsDrawnInAnotherAsOnTh
             EXPECT_EQ(twoTick, 1u) << tick;
         }
 
-        before = context().submissions();
-        const turtle::Interpretation got = turtle::readBack(context(), four.interpret(), four.plants());
-        const uint64_t fourDrawing = context().submissions() - before - 3; // less readBack's three
-        before = context().submissions();
-        two.interpretParts();
-        const uint64_t twoDrawing = context().submissions() - before;
-        const turtle::Interpretation want = turtle::readBack(context(), cpu.interpret(), cpu.plants());
-        ASSERT_EQ(organDifference(want, got), "") << tick;
+        const Drawings drawn = drawEach(context(), four, two, cpu);
+        ASSERT_EQ(organDifference(drawn.cpu, drawn.four), "") << tick;
         const std::vector<shared::PlantStatistics> s = four.statistics(), t = cpu.statistics();
         for (uint32_t p = 0; p < 12; ++p)
             EXPECT_NEAR(s[p].leafArea, t[p].leafArea, 1e-4f * std::max(1.0f, t[p].leafArea)) << tick << " " << p;
         if (four.reinterpretedBatches() > 0 || two.reinterpretedBatches() > 0) continue;
         drawnInOne += a.derived > 0 ? 1 : 0;
-        EXPECT_EQ(fourDrawing, twoDrawing) << tick;
+        EXPECT_EQ(drawn.fourSubmissions, drawn.twoSubmissions) << tick;
     }
     EXPECT_GE(fit, 2);
     EXPECT_GE(rederived, 1);
@@ -135,13 +148,8 @@ TEST_F(SimulationTest, BetweenStepsEveryBatchIsDrawnInOneSubmissionAsOnTheCpu) {
         const field::TickReport report = four.tick();
         two.tick();
         cpu.tick();
-        uint64_t before = context().submissions();
-        const turtle::Interpretation got = turtle::readBack(context(), four.interpret(), four.plants());
-        const uint64_t fourSubmissions = context().submissions() - before - 3; // less readBack's three
-        before = context().submissions();
-        two.interpretParts();
-        const uint64_t twoSubmissions = context().submissions() - before;
-        const turtle::Interpretation want = turtle::readBack(context(), cpu.interpret(), cpu.plants());
+        const Drawings drawn = drawEach(context(), four, two, cpu);
+        const turtle::Interpretation &got = drawn.four, &want = drawn.cpu;
         if (want.organs.empty()) { // the seeds, before their first organs
             EXPECT_TRUE(got.organs.empty()) << tick;
             continue;
@@ -159,7 +167,7 @@ TEST_F(SimulationTest, BetweenStepsEveryBatchIsDrawnInOneSubmissionAsOnTheCpu) {
         EXPECT_EQ(four.plantModules(), two.plantModules()) << tick;
         if (report.derived > 0) continue;
         ++between;
-        EXPECT_EQ(fourSubmissions, twoSubmissions) << tick;
+        EXPECT_EQ(drawn.fourSubmissions, drawn.twoSubmissions) << tick;
     }
     EXPECT_GE(between, 3);
 }

@@ -64,9 +64,8 @@ void GpuGrowth::recordTick(VkCommandBuffer cmd, const stream::DeviceModules& der
     // After the passes that wrote the string (a derivation step, the last tick's copy).
     vk::memoryBarrier(cmd, vk::Hazard::AnyToAny);
     const std::initializer_list<vk::BufferRange> tickBuffers = {
-        *derived.symbols,   *derived.params, *derived.plantStarts,
-        *derived.particles, nextStates_,     classes_,
-        species_,           rows_,           vigour_};
+        *derived.symbols, *derived.params, *derived.plantStarts, *derived.particles, nextStates_, classes_, species_,
+        rows_, vigour_};
     const shared::GrowPush push = growPush(derived, settings, symbols_, atSymbol_);
     if (!derived.countOnDevice) {
         tickKernel_.dispatch(cmd, tickBuffers, push, tickKernel_.groupsFor(derived.count));

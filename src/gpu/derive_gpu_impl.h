@@ -322,6 +322,9 @@ struct GpuDeriver::Impl {
         // want of depths; its match and write, or the homomorphism's copy, are done.
         int resumeDepth = 0;
     };
+    // After a batch recorded into a caller's command buffer: the copies are in it, and the buffers they read
+    // (returned) must stay until its submission has ended; the kernels bind the host's plant state again.
+    std::vector<vk::Buffer> endRecording();
     // Records pendingCopies, ordered before what follows in the submission.
     void recordPendingCopies(VkCommandBuffer cmd) const;
     // When a batch's submission ends, by its wait or a throw: the kernels bind the host's plant state again, and

@@ -159,6 +159,14 @@ int GpuDeriver::Impl::deriveRecorded(stream::PlantControl& control, int cur, uin
     return cur;
 }
 
+std::vector<vk::Buffer> GpuDeriver::Impl::endRecording() {
+    std::vector<vk::Buffer> retired = std::move(retiredBuffers);
+    retiredBuffers.clear();
+    pendingCopies.clear();
+    batchSlot = -1;
+    return retired;
+}
+
 void GpuDeriver::Impl::recordPendingCopies(VkCommandBuffer cmd) const {
     for (const PendingCopy& copy : pendingCopies) {
         vk::memoryBarrier(cmd, Hazard::AnyToTransfer); // a copy may read what the one before wrote
@@ -450,11 +458,7 @@ stream::DeviceModules GpuDeriver::record(VkCommandBuffer cmd, const stream::Deri
         throw std::logic_error(fmt::format("GpuDeriver::record: at most {} steps in one recording",
                                            m.batchSteps() - (homomorphism ? 1 : 0)));
     const int last = m.recordBatch(cmd, recording.batch, 0, 0, control.seed(), recording.budget, nullptr);
-    // The copies are in `cmd`; the buffers they read stay until its submission has ended.
-    recording.retired = std::move(m.retiredBuffers);
-    m.retiredBuffers.clear();
-    m.pendingCopies.clear();
-    m.batchSlot = -1;
+    recording.retired = m.endRecording();
     m.recordings.push_back(std::move(recording));
     m.lastStream = -1; // until recorded() knows the string is there
     const Stream& s = m.streams[last];

@@ -144,11 +144,7 @@ uint32_t GpuDeriver::recordAdvance(VkCommandBuffer cmd, const std::vector<uint8_
     vk::memoryBarrier(cmd, vk::Hazard::AnyToTransfer);
     vk::cmdFill(cmd, m.streams[pending.out].plantStart, 0);
     m.recordBatch(cmd, pending.batch, 0, s.cur, s.seed, s.budget, nullptr);
-    // The copies are in `cmd`; the buffers they read stay until its submission has ended.
-    pending.retired = std::move(m.retiredBuffers);
-    m.retiredBuffers.clear();
-    m.pendingCopies.clear();
-    m.batchSlot = -1;
+    pending.retired = m.endRecording();
     s.pending = std::move(pending);
     m.lastStream = -1; // until advanced() knows the string is there
     return s.pending->deriving;

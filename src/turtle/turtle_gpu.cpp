@@ -157,6 +157,7 @@ struct GpuTurtle::Impl {
     // Whether `buffer` holds the placements already (`out.placements` says which it holds); checks their count.
     static bool placedAlready(const turtle::FieldOptions& options, std::uint32_t plants, DeviceOrgans& out,
                               const vk::Buffer& buffer);
+    static std::span<const PlantPlacement> placementsToUpload(const turtle::FieldOptions& options);
     void uploadPlacements(const turtle::FieldOptions& options, DeviceOrgans& out, vk::Buffer& buffer) const;
     // The same for a target, recorded into `cmd` (the host writes them into a staging buffer of the target's): a
     // submission of many recordings waits for no uploads of their own.
@@ -820,20 +821,20 @@ bool GpuTurtle::Impl::placedAlready(const turtle::FieldOptions& options, std::ui
     return buffer && options.placements == out.placements;
 }
 
+std::span<const PlantPlacement> GpuTurtle::Impl::placementsToUpload(const turtle::FieldOptions& options) {
+    static const PlantPlacement none{}; // a buffer to bind where the plants stand on the grid
+    return options.placements.empty() ? std::span(&none, 1) : std::span(options.placements);
+}
+
 void GpuTurtle::Impl::uploadPlacements(const turtle::FieldOptions& options, DeviceOrgans& out,
                                        vk::Buffer& buffer) const {
-    static const PlantPlacement none{};
-    buffer = options.placements.empty()
-                 ? vk::deviceBufferWith(ctx, std::span<const PlantPlacement>(&none, 1))
-                 : vk::deviceBufferWith(ctx, std::span<const PlantPlacement>(options.placements));
+    buffer = vk::deviceBufferWith(ctx, placementsToUpload(options));
     out.placements = options.placements;
 }
 
 void GpuTurtle::Impl::recordPlacementsUpload(VkCommandBuffer cmd, const turtle::FieldOptions& options,
                                              TurtleTarget& target) const {
-    static const PlantPlacement none{};
-    const std::span<const PlantPlacement> placed =
-        options.placements.empty() ? std::span(&none, 1) : std::span(options.placements);
+    const std::span<const PlantPlacement> placed = placementsToUpload(options);
     const VkDeviceSize size = placed.size_bytes();
     if (!target.placementsStaging || target.placementsStaging.size() < size) {
         target.placementsStaging = vk::Buffer(ctx, size, vk::MemoryUsage::Upload);

@@ -160,7 +160,6 @@ field::SavedRun readSavedRun(RunArgs& args) {
     s.seed = o.seed;
     s.dt = o.dt;
     s.spacing = o.spacing;
-    s.plantsPerBatch = o.plantsPerBatch;
     return saved;
 }
 

@@ -564,8 +564,8 @@ uint32_t SteppedDerivation::advance(const std::vector<uint8_t>& due) {
         growing[plant] = due[plant] && control_.beginStep(plant, control_.stepsDerived(plant) + 1);
         deriving += growing[plant];
     }
+    ++fieldStep_; // counted where none derives too, as in every batch of the field
     if (deriving == 0) return 0;
-    ++fieldStep_;
     ModuleString next;
     next.stride = string_.stride;
     next.plantStart.push_back(0);

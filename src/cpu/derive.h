@@ -32,7 +32,8 @@ stream::ModuleString applyHomomorphismCpu(const std::vector<ir::Grammar>& specie
 // Derivation step by step over simulated time, the reference of GpuDeriver::begin, advance, current and drawn:
 // the plants start from their axioms; advance() derives one more step of the plants `due` flags that have steps
 // left (the others are copied) and returns how many derived, their random draws keyed by the count of advance()
-// calls that derived; current() is the derived string, whose particle state the simulation updates between
+// calls, whether any of its plants derived or none (so that a field's batches, each called at every advance of the
+// field, share it); current() is the derived string, whose particle state the simulation updates between
 // steps; drawn() is it under the homomorphism, and with `origins` each drawn module's index in current() (where the
 // derivation carries particle state).
 class SteppedDerivation {

@@ -39,9 +39,10 @@ GrownPlants growOneOfEach(const grow::GrowingSpecies& g, const grow::GrowthTable
                           seed, g.relativeGravity()};
     for (double t = 0; t < until + ts.dt; t += ts.dt, ++ts.tick) {
         std::vector<uint8_t> due(one.plants, 0);
+        bool any = false;
         for (uint32_t p = 0; p < one.plants; ++p)
-            if (t + ts.dt >= next[p]) due[p] = 1, next[p] += times[p];
-        plants.advance(due);
+            if (t + ts.dt >= next[p]) due[p] = 1, next[p] += times[p], any = true;
+        if (any) plants.advance(due); // the random streams step with the steps, as the field's do
         grow::tickCpu(ts, plants.current());
     }
     stream::ModuleString drawn = plants.drawn();

@@ -17,7 +17,9 @@ constexpr char kMagic[] = "simeco saved run\n";
 // 2: a particle's fourth slot counts its seconds in deep shade (it was the cone noise's clock).
 // 4: a plant of a batch after the first draws from the random stream of its place in the field (each batch had
 // streams of its own), so a run saved before goes on otherwise.
-constexpr uint32_t kVersion = 4;
+// 5: the field's plants in one state, however it was batched (a batch's random streams step at every advance of
+// the field, where they stepped only at those its plants derived in).
+constexpr uint32_t kVersion = 5;
 
 class Writer {
 public:
@@ -122,22 +124,18 @@ std::string encodeSavedRun(const SavedRun& run) {
     w.put(o.seed);
     w.put(o.dt);
     w.put(o.spacing);
-    w.put(o.plantsPerBatch);
     const SimulationState& s = run.state;
     w.put(s.ticks);
     w.put(s.nextStep);
-    w.put<uint64_t>(s.batches.size());
-    for (const stream::SteppedState& b : s.batches) {
-        w.put(b.fieldStep);
-        putModules(w, b.string);
-        w.put<uint64_t>(b.plants.size());
-        for (const stream::PlantVariables& v : b.plants) {
-            w.put(v.globals);
-            w.put<uint64_t>(v.arrays.size());
-            for (const std::vector<double>& a : v.arrays) w.put(a);
-            w.put<uint8_t>(v.stopRequested);
-            w.put<int32_t>(v.stepsDerived);
-        }
+    w.put(s.plants.fieldStep);
+    putModules(w, s.plants.string);
+    w.put<uint64_t>(s.plants.plants.size());
+    for (const stream::PlantVariables& v : s.plants.plants) {
+        w.put(v.globals);
+        w.put<uint64_t>(v.arrays.size());
+        for (const std::vector<double>& a : v.arrays) w.put(a);
+        w.put<uint8_t>(v.stopRequested);
+        w.put<int32_t>(v.stepsDerived);
     }
     return w.bytes;
 }
@@ -158,29 +156,24 @@ SavedRun decodeSavedRun(const std::string& bytes, const std::string& name) {
     o.seed = r.get<int64_t>();
     o.dt = r.get<float>();
     o.spacing = r.get<float>();
-    o.plantsPerBatch = r.get<uint32_t>();
     SimulationState& s = run.state;
     s.ticks = r.get<uint32_t>();
     s.nextStep = r.getVector<float>();
-    const uint64_t batches = r.get<uint64_t>();
-    if (batches > bytes.size()) r.fail("it is truncated");
-    for (uint64_t k = 0; k < batches; ++k) {
-        stream::SteppedState b;
-        b.fieldStep = r.get<uint32_t>();
-        b.string = getModules(r);
-        const uint64_t plants = r.get<uint64_t>();
-        if (plants != b.string.plants()) r.fail("a batch's plants do not match its string");
-        for (uint64_t p = 0; p < plants; ++p) {
-            stream::PlantVariables v;
-            v.globals = r.getVector<double>();
-            const uint64_t arrays = r.get<uint64_t>();
-            if (arrays > bytes.size()) r.fail("it is truncated");
-            for (uint64_t a = 0; a < arrays; ++a) v.arrays.push_back(r.getVector<double>());
-            v.stopRequested = r.get<uint8_t>() != 0;
-            v.stepsDerived = r.get<int32_t>();
-            b.plants.push_back(std::move(v));
-        }
-        s.batches.push_back(std::move(b));
+    stream::SteppedState& b = s.plants;
+    b.fieldStep = r.get<uint32_t>();
+    b.string = getModules(r);
+    const uint64_t plants = r.get<uint64_t>();
+    if (plants != b.string.plants()) r.fail("its plants do not match its string");
+    if (plants != s.nextStep.size()) r.fail("its plants do not match their steps to come");
+    for (uint64_t p = 0; p < plants; ++p) {
+        stream::PlantVariables v;
+        v.globals = r.getVector<double>();
+        const uint64_t arrays = r.get<uint64_t>();
+        if (arrays > bytes.size()) r.fail("it is truncated");
+        for (uint64_t a = 0; a < arrays; ++a) v.arrays.push_back(r.getVector<double>());
+        v.stopRequested = r.get<uint8_t>() != 0;
+        v.stepsDerived = r.get<int32_t>();
+        b.plants.push_back(std::move(v));
     }
     if (!r.atEnd()) r.fail("it has bytes past its end");
     if (!(o.dt > 0)) r.fail("its tick is not positive");

@@ -11,8 +11,8 @@ void Simulation::Impl::makeBatches(uint32_t plantsPerBatch) {
         uint64_t perRound = 0;
         for (uint64_t m : grown.drawnModules)
             perRound += std::max<uint64_t>(m, 1);
-        plantsPerBatch =
-            uint32_t(std::min<uint64_t>(std::max<uint64_t>(1, kBatchDrawnModules / perRound), 1u << 24)) * species;
+        const uint64_t rounds = std::max<uint64_t>(1, batchDrawnModules(context) / perRound);
+        plantsPerBatch = uint32_t(std::min<uint64_t>(rounds, 1u << 24)) * species;
     }
     // Whole rounds of the species, so that plant p of a batch is of the field's species of p.
     plantsPerBatch = std::max(species, plantsPerBatch / species * species);
@@ -143,23 +143,18 @@ void Simulation::setEnvironment(const LiveEnvironment& environment) {
 
 SimulationState Simulation::save() const {
     const Impl& m = *impl_;
-    SimulationState state{m.ticks, m.nextStep, {}};
-    for (const Batch& b : m.batches) state.batches.push_back(b.deriver ? b.deriver->save() : b.reference->save());
-    return state;
+    std::vector<stream::SteppedState> batches;
+    for (const Batch& b : m.batches) batches.push_back(b.deriver ? b.deriver->save() : b.reference->save());
+    return {m.ticks, m.nextStep, stream::joinPlants(batches)};
 }
 
 void Simulation::resume(const SimulationState& state) {
     Impl& m = *impl_;
-    if (state.nextStep.size() != m.derive.plants || state.batches.size() != m.batches.size())
-        throw std::invalid_argument(fmt::format("the saved field has {} plants in {} batches, this one {} in {}",
-                                                state.nextStep.size(), state.batches.size(), m.derive.plants,
-                                                m.batches.size()));
-    for (size_t k = 0; k < m.batches.size(); ++k) {
-        Batch& b = m.batches[k];
-        const stream::SteppedState& saved = state.batches[k];
-        if (saved.plants.size() != b.count)
-            throw std::invalid_argument(fmt::format("the saved field's batch {} has {} plants, this one's {}", k,
-                                                    saved.plants.size(), b.count));
+    if (state.nextStep.size() != m.derive.plants || state.plants.plants.size() != m.derive.plants)
+        throw std::invalid_argument(fmt::format("the saved field has {} plants, this one {}",
+                                                state.plants.plants.size(), m.derive.plants));
+    for (Batch& b : m.batches) {
+        const stream::SteppedState saved = stream::plantsOf(state.plants, b.first, b.count);
         if (b.deriver) {
             b.deriver->resume(b.deriverOptions, saved);
             b.modules = b.deriver->current().count;
@@ -174,7 +169,15 @@ void Simulation::resume(const SimulationState& state) {
     m.nextStep = state.nextStep;
     m.drawn = false;
     // The light grid as the saved run left it: splatted from the organs of the state saved.
-    if (m.context) interpretParts();
+    if (!m.context) return;
+    m.splatsOnly = true;
+    try {
+        interpretParts();
+    } catch (...) {
+        m.splatsOnly = false;
+        throw;
+    }
+    m.splatsOnly = false;
 }
 
 void Simulation::Impl::chooseLight() {

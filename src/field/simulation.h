@@ -37,9 +37,9 @@ struct SimulationOptions {
     int64_t seed = -1;     // -1: the grammar's `seed:` (or 0)
     float dt = 1.0f;       // simulated seconds per tick
     float spacing = 0.0f;  // between neighbouring plants of a field of many; 0: from the plants' grown size
-    // Plants derived, grown and interpreted together; 0: as many as a storage binding of every device holds
-    // (see simulation.cpp). The field is the same however it is batched: each plant draws from the random stream
-    // of its place in the field.
+    // Plants derived, grown and interpreted together; 0: as many as a storage binding of the device holds
+    // (batchDrawnModules in simulation_impl.h). The field is the same however it is batched: each plant draws from
+    // the random stream of its place in the field, which steps at every advance of the field.
     uint32_t plantsPerBatch = 0;
     uint64_t maxModules = 0;
     double maxSeconds = stream::kDefaultMaxSeconds;
@@ -86,13 +86,13 @@ struct StageSeconds {
     double statistics = 0; // each plant's statistics
 };
 
-// The whole state of a field: the clock, when each plant derives next, and each batch's derivation (its string
-// with its particles, its plants' variables and the random streams' step). The light grid is not kept: it is made
-// from the organs of this state, so resume() splats them again.
+// The whole state of a field: the clock, when each plant derives next, and the derivation of its plants (their
+// string with its particles, their variables and the random streams' step), however the field is batched. The light
+// grid is not kept: it is made from the organs of this state, so resume() splats them again.
 struct SimulationState {
     uint32_t ticks = 0;
-    std::vector<float> nextStep;               // per plant
-    std::vector<stream::SteppedState> batches; // per batch
+    std::vector<float> nextStep; // per plant
+    stream::SteppedState plants; // every plant's, in plant order
 };
 
 class Simulation {
@@ -107,7 +107,8 @@ public:
     TickReport tick();
 
     // The field's state, and back to it: a state saved from a field made with the same options (on either
-    // backend) goes on exactly as that field would have. Refused where the batches or plants differ.
+    // backend, on any device, in any batches) goes on exactly as that field would have. Refused where the plants
+    // differ.
     SimulationState save() const;
     void resume(const SimulationState& state);
 

@@ -113,10 +113,10 @@ Simulation::Impl::Drawing Simulation::Impl::drawInterpreting(Batch& b,
 
 void Simulation::Impl::recordLight(VkCommandBuffer cmd, Batch& b, const stream::DeviceModules& modules,
                                    const turtle::DeviceOrgans& organs) {
-    if (modules.particles)
+    if (modules.particles && !splatsOnly)
         lightGpu->recordGather(cmd, organs, *modules.particles, modules.origins, b.deriver->current().particles,
                                b.first);
-    if (answersQueries) {
+    if (answersQueries && !splatsOnly) {
         const stream::DeviceModules derived = b.deriver->current();
         lightGpu->recordQueries(cmd, turtle->lastModuleStates(), modules.count,
                                 modules.symbols == derived.symbols ? nullptr : modules.origins, *derived.symbols,
@@ -162,8 +162,8 @@ std::vector<const turtle::DeviceOrgans*> Simulation::Impl::interpretOnHost() {
         const size_t j = module - drawnStarts[k];
         return j < from.size() ? &batches[k].reference->current().particles[from[j]] : nullptr;
     };
-    lightCpu->gather(organs, field.particles, derivedOf);
-    if (answersQueries) answerQueriesOnHost(field, drawnStarts, origins);
+    if (!splatsOnly) lightCpu->gather(organs, field.particles, derivedOf);
+    if (answersQueries && !splatsOnly) answerQueriesOnHost(field, drawnStarts, origins);
     seconds.light += secondsSince(start);
     start = Clock::now();
     lastStatistics = plantStatisticsCpu(organs, baseHeights(placements), field.particles, shapeAreas);

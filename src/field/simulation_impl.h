@@ -49,10 +49,15 @@ inline double secondsSince(Clock::time_point start) {
     return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// The drawn modules a batch of plants may hold, by the grown plants' count: one interpretation's (kBatchModules,
-// half a binding), the other half of the binding left to plants that grow larger than the one grown before the
-// field.
-constexpr uint64_t kBatchDrawnModules = kBatchModules;
+// The drawn modules a batch of plants may hold, by the grown plants' count: half of what the turtle's largest
+// per-module buffer (TurtleStep) holds in one storage binding of the device (kBatchModules where it binds what every
+// device binds, 128 MiB; 32 times as many where it binds 4 GiB, as GPUs commonly do), the other half left to plants that grow larger
+// than the one grown before the field. The field goes on alike however it is batched, and its saved state is
+// every plant's, so each device takes batches as large as it binds.
+inline uint64_t batchDrawnModules(const vk::Context* context) {
+    if (!context) return kBatchModules;
+    return context->limits().maxStorageBufferRange / sizeof(shared::TurtleStep) / 2;
+}
 
 // The gravity relative to which a scene's Gravity bends its plants (grow::GrowingSpecies::relativeGravity).
 constexpr float kEarthGravity = 9.81f;
@@ -126,6 +131,9 @@ struct Simulation::Impl {
     std::vector<shared::LightDirection> lightFrom; // the sun's and the sky's, as the scene sets them
     float openLight = 0.0f;                        // their light in the open, which organs grow by in full
     bool answersQueries = false; // the alphabet spells cpfg's `?E`
+    // The drawing of a resumed state: its organs are splatted into the grid, as the saved run's last drawing left
+    // it, and its particles and queries keep the light they were saved with (that drawing's, from the grid before).
+    bool splatsOnly = false;
     void chooseLight();
     void startEnvironment();
     void applyClimate();

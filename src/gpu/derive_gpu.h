@@ -107,7 +107,7 @@ public:
     // particle state the simulation updates in place between steps; drawn() is that string under the
     // homomorphism (the globals as the Start block sets them), written into another stream and valid until the
     // next advance() or drawn(), or current() where no species has a homomorphism. A plant's random draws in a
-    // step are keyed by the count of advance() calls that derived, not by its own steps, on both engines
+    // step are keyed by the count of advance() calls, not by its own steps, on both engines
     // (cpu::SteppedDerivation). Needs recordsSteps(); derive() and record() end the stepped derivation.
     void begin(const stream::DeriveOptions& options);
     uint32_t advance(const std::vector<uint8_t>& due);

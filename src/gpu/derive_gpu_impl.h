@@ -457,7 +457,7 @@ struct GpuDeriver::Impl {
         stream::DeriveOptions options;
         uint32_t seed = 0;
         uint64_t budget = 0;
-        uint32_t fieldStep = 0; // advance() calls that derived: the random streams' step
+        uint32_t fieldStep = 0; // advance() calls: the random streams' step
         int cur = 0;
         bool drawnStands = false; // the last drawn() string is the one drawn() would write now (drawnStands())
         std::optional<PendingStep> pending; // recordAdvance()'s, until advanced()

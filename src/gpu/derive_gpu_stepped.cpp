@@ -103,8 +103,8 @@ uint32_t GpuDeriver::Impl::planAdvance(const std::vector<uint8_t>& due, std::vec
         growing[plant] = due[plant] && s.control.beginStep(plant, s.control.stepsDerived(plant) + 1);
         deriving += growing[plant];
     }
+    ++s.fieldStep; // counted where none derives too, as in every batch of the field
     if (deriving == 0) return 0;
-    ++s.fieldStep;
     bool frozen = writePlantState(s.control, growing, reinterpret_cast<double*>(host().batchGlobals.mapped()),
                                   reinterpret_cast<double*>(host().batchArrays.mapped()),
                                   reinterpret_cast<uint32_t*>(host().batchFrozen.mapped()));

@@ -20,8 +20,15 @@ struct PlantVariables {
 
 struct SteppedState {
     ModuleString string;                  // the derived string, with its particle state
-    uint32_t fieldStep = 0;               // advances that derived: the random streams' step
+    uint32_t fieldStep = 0;               // advances, derived or not: the random streams' step
     std::vector<PlantVariables> plants;   // per plant
 };
+
+// The states of consecutive plants (a field's batches, in order) as one state of all their plants. They must be
+// at the same step and of one stride. Throws std::invalid_argument otherwise.
+SteppedState joinPlants(const std::vector<SteppedState>& parts);
+
+// Plants [first, first + count) of `state` as a state of their own.
+SteppedState plantsOf(const SteppedState& state, uint32_t first, uint32_t count);
 
 } // namespace simeco::stream

@@ -320,7 +320,7 @@ TEST_F(CompetitionTest, ARuleOnTheLightBranchesInTheSunAndNotInTheShade) {
     // After four steps the open plant's apices have doubled three times; the roofed plant's one apex has grown on
     // with a leaf at each node.
     const field::SimulationState saved = cpu.save();
-    const stream::ModuleString& derived = saved.batches[0].string;
+    const stream::ModuleString& derived = saved.plants.string;
     const ir::Alphabet& alphabet = gpu.species().species[0].alphabet;
     const uint32_t apex = *alphabet.find("A"), leaf = *alphabet.find("L");
     int apices[2] = {0, 0}, leaves[2] = {0, 0};
@@ -363,8 +363,8 @@ TEST_F(CompetitionTest, TheLightGridAnswersCpfgEnvironmentQueries) {
         }
         states.push_back(sim.save());
     }
-    const stream::ModuleString& gpu = states[0].batches[0].string;
-    const stream::ModuleString& cpu = states[1].batches[0].string;
+    const stream::ModuleString& gpu = states[0].plants.string;
+    const stream::ModuleString& cpu = states[1].plants.string;
     ASSERT_EQ(gpu.sym, cpu.sym);
     std::vector<std::vector<float>> answers[2];
     for (size_t k = 0; k < cpu.size(); ++k) {

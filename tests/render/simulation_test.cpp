@@ -397,12 +397,11 @@ TEST_F(SimulationTest, APlantUnderARoofCatchesLessLightAndGrowsLessThanOneInTheO
     }
     // The derived string's particles have the light their drawn organs had, alike on both backends.
     const field::SimulationState sa = gpu.save(), sb = cpu.save();
-    ASSERT_EQ(sa.batches.size(), 1u);
-    const std::vector<shared::ParticleState>& pa = sa.batches[0].string.particles;
-    const std::vector<shared::ParticleState>& pb = sb.batches[0].string.particles;
+    const std::vector<shared::ParticleState>& pa = sa.plants.string.particles;
+    const std::vector<shared::ParticleState>& pb = sb.plants.string.particles;
     ASSERT_EQ(pa.size(), pb.size());
     // The open plant's two stems and three leaves have the open's light, the roofed plant's little or none.
-    const stream::ModuleString& derived = sb.batches[0].string;
+    const stream::ModuleString& derived = sb.plants.string;
     const ir::Alphabet& alphabet = gpu.species().species[0].alphabet;
     const uint32_t stem = *alphabet.find("S"), leaf = *alphabet.find("L");
     int organs[2] = {0, 0};

@@ -23,19 +23,18 @@ field::SavedRun sampleRun() {
     run.options.dt = 0.5f;
     run.state.ticks = 9;
     run.state.nextStep = {6.0f, 7.5f};
-    stream::SteppedState batch;
-    batch.fieldStep = 3;
-    batch.string.stride = 2;
-    batch.string.plantStart = {0, 2, 3};
+    stream::SteppedState& plants = run.state.plants;
+    plants.fieldStep = 3;
+    plants.string.stride = 2;
+    plants.string.plantStart = {0, 2, 3};
     for (uint32_t i = 0; i < 3; ++i) {
         const float p[2] = {float(i), 2.0f * float(i)};
-        batch.string.push(i, p, i % 3);
+        plants.string.push(i, p, i % 3);
         shared::ParticleState state;
         state.value[shared::kParticleAge] = 1.5f * float(i);
-        batch.string.particles.push_back(state);
+        plants.string.particles.push_back(state);
     }
-    batch.plants = {{{1.0, 2.0}, {{3.0, 4.0, 5.0}}, false, 3}, {{6.0, 7.0}, {{8.0, 9.0, 10.0}}, true, 2}};
-    run.state.batches.push_back(batch);
+    plants.plants = {{{1.0, 2.0}, {{3.0, 4.0, 5.0}}, false, 3}, {{6.0, 7.0}, {{8.0, 9.0, 10.0}}, true, 2}};
     return run;
 }
 
@@ -50,8 +49,7 @@ TEST(SavedRun, ReadsBackWhatItWrote) {
     EXPECT_EQ(back.options.dt, 0.5f);
     EXPECT_EQ(back.state.ticks, 9u);
     EXPECT_EQ(back.state.nextStep, run.state.nextStep);
-    ASSERT_EQ(back.state.batches.size(), 1u);
-    const stream::SteppedState &a = run.state.batches[0], &b = back.state.batches[0];
+    const stream::SteppedState &a = run.state.plants, &b = back.state.plants;
     EXPECT_EQ(b.fieldStep, 3u);
     EXPECT_EQ(b.string.sym, a.string.sym);
     EXPECT_EQ(b.string.paramCount, a.string.paramCount);
@@ -72,8 +70,9 @@ TEST(SavedRun, DamagedFilesAreRefusedNotTrusted) {
         damaged[at] = char(damaged[at] ^ char(1 + shared::randomBits(1, 0, 0, uint32_t(at), 0) % 255));
         try {
             const field::SavedRun run = field::decodeSavedRun(damaged, "damaged.bin");
-            for (const stream::SteppedState& b : run.state.batches)
-                EXPECT_EQ(b.string.plantStart.back(), b.string.size()) << at;
+            const stream::SteppedState& b = run.state.plants;
+            EXPECT_EQ(b.string.plantStart.back(), b.string.size()) << at;
+            EXPECT_EQ(b.plants.size(), run.state.nextStep.size()) << at;
         } catch (const ir::InputError& e) {
             EXPECT_NE(std::string(e.what()).find("not a state simeco can resume"), std::string::npos) << at;
         }

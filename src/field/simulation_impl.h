@@ -50,10 +50,10 @@ inline double secondsSince(Clock::time_point start) {
 }
 
 // The drawn modules a batch of plants may hold, by the grown plants' count: half of what the turtle's largest
-// per-module buffer (TurtleStep) holds in one storage binding of the device (kBatchModules where it binds what every
-// device binds, 128 MiB; 32 times as many where it binds 4 GiB, as GPUs commonly do), the other half left to plants that grow larger
-// than the one grown before the field. The field goes on alike however it is batched, and its saved state is
-// every plant's, so each device takes batches as large as it binds.
+// per-module buffer (TurtleStep) holds in one storage binding of the device (kBatchModules where it binds what
+// every device binds, 128 MiB; 32 times as many where it binds 4 GiB, as GPUs commonly do), the other half left to
+// plants that grow larger than the one grown before the field. The field goes on alike however it is batched, and
+// its saved state is every plant's, so each device takes batches as large as it binds.
 inline uint64_t batchDrawnModules(const vk::Context* context) {
     if (!context) return kBatchModules;
     return context->limits().maxStorageBufferRange / sizeof(shared::TurtleStep) / 2;

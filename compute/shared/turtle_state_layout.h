@@ -112,6 +112,8 @@ SIMECO_CONST kMarkContour = 512u;             // @#: a cylinder's contour
 SIMECO_CONST kMarkCylinderTangents = 1024u;   // @Gt with parameters
 SIMECO_CONST kMarkRadiusScale = 2048u;        // @Gr(s)
 SIMECO_CONST kMarkRadiusTangents = 4096u;     // @Gr(a1, l1[, a2, l2])
+// The marks whose passes a recording leaves out where its room says they do not occur.
+SIMECO_CONST kSearchedMarks = kMarkNonlinear | kMarkStem | kMarkCylinderStart | kMarkCylinderPoint;
 
 // A cylinder point `@Gc(n)` draws the tube from the last one as n segments (at most this many) along the
 // Hermite curve whose tangents are the turtle's headings at the two points, each 1.2 times as long as the chord

@@ -799,8 +799,10 @@ void GpuTurtle::Impl::recordOrgans(VkCommandBuffer cmd, const Run& run, std::uin
     }
     // The field's pass writes the status words the passes before it read, and reads the bounds the taper wrote.
     vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
-    field.dispatch(cmd, {b.offsets, scan.totalBuffer(), plantBounds, run.out->table, run.out->field, status}, run.push,
-                   1);
+    TurtlePush fieldPush = run.push;
+    fieldPush.hitMask = kSearchedMarks & ~run.marked; // the searches the room left out
+    field.dispatch(cmd, {b.offsets, scan.totalBuffer(), plantBounds, run.out->table, run.out->field, status, present},
+                   fieldPush, 1);
     vk::memoryBarrier(cmd, Hazard::ComputeToCompute);
     place.dispatch(cmd, {scan.totalBuffer(), run.out->field, run.out->instances, run.out->table, *run.placed}, run.push,
                    organGroups);
@@ -935,9 +937,6 @@ const DeviceOrgans& GpuTurtle::recordInto(VkCommandBuffer cmd, const stream::Dev
 void GpuTurtle::recordKeep(VkCommandBuffer cmd, TurtleTarget& target) { impl_->recordKeep(cmd, target); }
 
 namespace {
-
-// The marks whose passes a recording leaves out where its room says they do not occur.
-constexpr std::uint32_t kSearchedMarks = kMarkNonlinear | kMarkStem | kMarkCylinderStart | kMarkCylinderPoint;
 
 // What a recording's status words, copied for the host, say it found in the room it had: a string with marks whose
 // passes the room left out did not fit it either.

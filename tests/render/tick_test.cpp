@@ -231,15 +231,19 @@ TEST_F(FieldTick, ARecordingWithTooLittleRoomSaysSo) {
     EXPECT_EQ(interpreted.levels, needed.levels);
     table = vk::downloadVector<shared::OrganTable>(context(), organs->table, 1)[0];
     for (uint32_t k = 0; k < shared::kOrganKinds; ++k) EXPECT_EQ(table.count[k], 0u) << k;
-    // A room without a mark the string has: the searches it needs were left out, so it does not fit either.
+    // A room without a mark the string has: the searches it needs were left out, so it does not fit either, and
+    // its organs, which would be wrong, are not counted (nothing lights, splats or draws them).
     const uint32_t marks = turtle.lastMarks();
     ASSERT_NE(marks & shared::kMarkStem, 0u);
     context().submitAndWait([&](VkCommandBuffer cmd) {
-        turtle.record(cmd, deriver.lastString(), {}, {needed.levels, needed.organs, marks & ~shared::kMarkStem});
+        const turtle::TurtleRoom noStems{needed.levels, needed.organs, marks & ~shared::kMarkStem};
+        organs = &turtle.record(cmd, deriver.lastString(), {}, noStems);
     });
     interpreted = turtle.recorded();
     EXPECT_FALSE(interpreted.fit);
     EXPECT_EQ(interpreted.marks, marks);
+    table = vk::downloadVector<shared::OrganTable>(context(), organs->table, 1)[0];
+    for (uint32_t k = 0; k < shared::kOrganKinds; ++k) EXPECT_EQ(table.count[k], 0u) << k;
     // With the room it needs, the same turtle draws them all.
     context().submitAndWait(
         [&](VkCommandBuffer cmd) { organs = &turtle.record(cmd, deriver.lastString(), {}, needed); });

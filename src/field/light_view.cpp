@@ -178,6 +178,7 @@ LightVolume lightOfOrgans(const vk::Context& context, const std::vector<const tu
         for (const turtle::DeviceOrgans* part : parts) grid.recordSplat(cmd, *part);
         grid.recordPropagate(cmd);
     });
+    grid.turn();
     volume.light = vk::downloadVector<glm::vec4>(context, grid.light(), volume.spec.voxels());
     volume.holders = vk::downloadVector<uint32_t>(context, grid.holders(), volume.spec.voxels());
     return volume;

@@ -106,6 +106,7 @@ Simulation::Simulation(const SimulationOptions& options, const vk::Context* cont
     for (const ir::EcoWarning& w : warnings)
         std::fprintf(stderr, "%s:%d:%d: warning: %s\n", w.loc.file.c_str(), w.loc.line, w.loc.col, w.message.c_str());
     m.makeBatches(options.plantsPerBatch);
+    if (options.backend == Backend::Gpu) m.growthClock = std::make_unique<vk::RegionClock>(*context, 1);
 }
 
 Simulation::~Simulation() = default;
@@ -118,6 +119,7 @@ void Simulation::setEnvironment(const LiveEnvironment& environment) {
     if (environment.species.size() != m.g.species.size())
         throw std::invalid_argument(fmt::format("the environment has factors for {} species, the field {}",
                                                 environment.species.size(), m.g.species.size()));
+    m.submitGrowthWaiting(); // the last tick's, in the environment it grew in
     const bool speciesChanged = environment.species != m.live.species;
     m.live = environment;
     m.applyClimate();
@@ -141,8 +143,9 @@ void Simulation::setEnvironment(const LiveEnvironment& environment) {
     }
 }
 
-SimulationState Simulation::save() const {
-    const Impl& m = *impl_;
+SimulationState Simulation::save() {
+    Impl& m = *impl_;
+    m.submitGrowthWaiting();
     std::vector<stream::SteppedState> batches;
     for (const Batch& b : m.batches) batches.push_back(b.deriver ? b.deriver->save() : b.reference->save());
     return {m.ticks, m.nextStep, stream::joinPlants(batches)};
@@ -153,6 +156,7 @@ void Simulation::resume(const SimulationState& state) {
     if (state.nextStep.size() != m.derive.plants || state.plants.plants.size() != m.derive.plants)
         throw std::invalid_argument(fmt::format("the saved field has {} plants, this one {}",
                                                 state.plants.plants.size(), m.derive.plants));
+    m.growthToRecord.clear(); // the state saved has grown all it grew
     for (Batch& b : m.batches) {
         const stream::SteppedState saved = stream::plantsOf(state.plants, b.first, b.count);
         if (b.deriver) {

@@ -109,7 +109,7 @@ public:
     // The field's state, and back to it: a state saved from a field made with the same options (on either
     // backend, on any device, in any batches) goes on exactly as that field would have. Refused where the plants
     // differ.
-    SimulationState save() const;
+    SimulationState save(); // completes what the device has yet to do first
     void resume(const SimulationState& state);
 
     double time() const;

@@ -15,9 +15,9 @@ std::vector<const turtle::DeviceOrgans*> Simulation::Impl::interpretOnDevice() {
     if (merged) organMerge().begin();
     lastStatistics.clear();
     // The batches whose drawn strings stand draw again, every one in one submission with the light grid's
-    // clearing, each into organ buffers of its own: the host reads nothing between them, and after them only their
-    // statistics, their organs' tables and whether each fit its room. Between derivation steps that is the
-    // drawing of the whole field.
+    // clearing and, where every batch draws again, its propagation, each into organ buffers of its own: the host
+    // reads nothing between them, and after them only their statistics, their organs' tables and whether each fit
+    // its room. Where all fit, that is the drawing of the whole field.
     std::vector<uint8_t> again(batches.size(), 0);
     uint32_t modules = 0, plants = 0; // the largest string and plants of them
     turtle::TurtleRoom room;
@@ -32,12 +32,15 @@ std::vector<const turtle::DeviceOrgans*> Simulation::Impl::interpretOnDevice() {
     std::vector<std::optional<stream::DeviceModules>> drawnAgain(batches.size());
     Clock::time_point start = Clock::now();
     if (modules > 0) turtle->reserveTargets(modules, plants, room);
+    const bool everyBatch = std::find(again.begin(), again.end(), 0) == again.end();
     context->submitAndWait([&](VkCommandBuffer cmd) {
+        recordGrowthWaiting(cmd); // the last tick's: a tick between steps and its drawing are one submission
         lightGpu->recordClear(cmd);
         for (size_t k = 0; k < batches.size(); ++k)
             if (again[k]) drawnAgain[k] = recordDrawingAgain(cmd, batches[k]);
+        if (everyBatch) lightGpu->recordPropagate(cmd);
     });
-    seconds.interpret += secondsSince(start);
+    seconds.interpret += secondsSince(start) - growthRecorded();
     uint64_t firstModule = 0;
     const turtle::DeviceOrgans* organs = nullptr;
     reinterpreted = 0;
@@ -63,9 +66,13 @@ std::vector<const turtle::DeviceOrgans*> Simulation::Impl::interpretOnDevice() {
         firstModule += drawing.modules.count;
         seconds.interpret += secondsSince(start);
     }
-    Clock::time_point lightStart = Clock::now();
-    context->submitAndWait([&](VkCommandBuffer cmd) { lightGpu->recordPropagate(cmd); });
-    seconds.light += secondsSince(lightStart);
+    // The batches drawn after it gathered the light before (recordPropagate()); their organs are propagated too.
+    if (!everyBatch || reinterpreted > 0) {
+        const Clock::time_point lightStart = Clock::now();
+        context->submitAndWait([&](VkCommandBuffer cmd) { lightGpu->recordPropagate(cmd); });
+        seconds.light += secondsSince(lightStart);
+    }
+    lightGpu->turn();
     if (!merged) return {organs};
     start = Clock::now();
     if (hasObstacles()) merge->keep(obstacleOrganBuffers(), derive.plants, firstModule);

@@ -41,6 +41,7 @@
 #include "turtle/turtle_settings.h"
 #include "vk/buffer.h"
 #include "vk/context.h"
+#include "vk/region_clock.h"
 
 namespace simeco::field {
 
@@ -166,8 +167,21 @@ struct Simulation::Impl {
     bool anyDue() const;
     // Every batch's due plants derive a step, batch by batch; returns how many derived.
     uint32_t deriveDue(const std::vector<uint8_t>& due);
-    // Every particle of the field grows a tick: on the device every batch's in one submission.
+    // Every particle of the field grows a tick: on the device every batch's, recorded into the submission that next
+    // touches the particles (growthToRecord).
     void growEveryParticle();
+    // A tick's growth on the device that waits for the next submission touching the particles, each batch's with
+    // the settings of its tick: the drawing's most often, so that a tick between steps that is drawn is one
+    // submission. Recorded by recordGrowthWaiting() at the start of that submission, or submitted on its own by
+    // submitGrowthWaiting() before anything else reads the particles or changes what the growth reads.
+    std::vector<grow::TickSettings> growthToRecord; // per batch; empty: none waits
+    void recordGrowthWaiting(VkCommandBuffer cmd);
+    void submitGrowthWaiting();
+    // The GPU time of the growth recorded in a submission of other stages, so that each stage's seconds stay its
+    // own: growthRecorded() adds it to the growth's, once the submission has finished, and returns it for the
+    // caller to take from the stage around it.
+    std::unique_ptr<vk::RegionClock> growthClock;
+    double growthRecorded();
     // The due plants' steps and every particle's growth after them, on the device, all batches in one submission
     // that the host waits for once: each batch's step and its homomorphism within its streams' room, its growth on
     // the string the step writes. A batch whose step or homomorphism outgrew its room writes it again with the host

@@ -16,10 +16,11 @@ TickReport Simulation::tick() {
     bool grown = false;
     while (m.takeDue(due)) {
         const Clock::time_point start = Clock::now();
+        const double grownBefore = m.seconds.grow;
         // The last round of steps, on the device, in one submission with the growth of every particle.
         grown = m.options.backend == Backend::Gpu && !m.anyDue();
         const uint32_t derived = grown ? m.deriveAndGrowInOneSubmission(due, report.rederived) : m.deriveDue(due);
-        m.seconds.derive += secondsSince(start);
+        m.seconds.derive += secondsSince(start) - (m.seconds.grow - grownBefore);
         report.derived = std::max(report.derived, derived);
         if (derived == 0) break; // every due plant has derived all its steps
     }
@@ -69,6 +70,7 @@ bool Simulation::Impl::anyDue() const {
 }
 
 uint32_t Simulation::Impl::deriveDue(const std::vector<uint8_t>& due) {
+    submitGrowthWaiting(); // a tick before, not drawn, grows before the string it grows is derived on
     uint32_t derived = 0;
     for (Batch& b : batches) {
         const std::vector<uint8_t> batchDue = slice(due, b.first, b.count);
@@ -82,13 +84,11 @@ uint32_t Simulation::Impl::deriveDue(const std::vector<uint8_t>& due) {
 void Simulation::Impl::growEveryParticle() {
     const Clock::time_point start = Clock::now();
     if (options.backend == Backend::Gpu) {
-        context->submitAndWait([&](VkCommandBuffer cmd) {
-            for (Batch& b : batches) {
-                const stream::DeviceModules derived = b.deriver->current();
-                b.growth->recordTick(cmd, derived, settings(b, ticks));
-                b.modules = derived.count;
-            }
-        });
+        submitGrowthWaiting(); // the tick before, not drawn
+        for (Batch& b : batches) {
+            growthToRecord.push_back(settings(b, ticks));
+            b.modules = b.deriver->current().count;
+        }
     } else {
         for (Batch& b : batches) {
             grow::tickCpu(settings(b, ticks), b.reference->current());
@@ -98,21 +98,50 @@ void Simulation::Impl::growEveryParticle() {
     seconds.grow += secondsSince(start);
 }
 
+void Simulation::Impl::recordGrowthWaiting(VkCommandBuffer cmd) {
+    if (growthToRecord.empty()) return;
+    growthClock->open(cmd);
+    for (size_t k = 0; k < growthToRecord.size(); ++k)
+        batches[k].growth->recordTick(cmd, batches[k].deriver->current(), growthToRecord[k]);
+    growthClock->close(cmd);
+    growthToRecord.clear();
+}
+
+void Simulation::Impl::submitGrowthWaiting() {
+    if (growthToRecord.empty()) return;
+    const Clock::time_point start = Clock::now();
+    context->submitAndWait([&](VkCommandBuffer cmd) { recordGrowthWaiting(cmd); });
+    growthClock->read(); // the submission's whole time is the growth's
+    seconds.grow += secondsSince(start);
+}
+
+double Simulation::Impl::growthRecorded() {
+    const double gpuSeconds = growthClock->read();
+    seconds.grow += gpuSeconds;
+    return gpuSeconds;
+}
+
 uint32_t Simulation::Impl::deriveAndGrowInOneSubmission(const std::vector<uint8_t>& due, uint32_t& rederived) {
     std::vector<uint8_t> stepped(batches.size(), 0);
     std::vector<uint64_t> modulesBefore;
     for (const Batch& b : batches)
         modulesBefore.push_back(b.modules);
     uint32_t derived = 0;
+    // A tick before, not drawn, on its own: a batch's growth recorded twice in one submission could find its buffers
+    // grown for the second, the first's gone.
+    submitGrowthWaiting();
     context->submitAndWait([&](VkCommandBuffer cmd) {
         for (size_t k = 0; k < batches.size(); ++k) {
             Batch& b = batches[k];
             const uint32_t batchDerived = b.deriver->recordAdvance(cmd, slice(due, b.first, b.count));
             stepped[k] = batchDerived > 0 ? 1 : 0;
             derived += batchDerived;
-            b.growth->recordTick(cmd, b.deriver->current(), settings(b, ticks));
         }
+        // Every batch's growth after every step, timed as one stage.
+        for (Batch& b : batches) growthToRecord.push_back(settings(b, ticks));
+        recordGrowthWaiting(cmd);
     });
+    growthRecorded();
     // Every recorded step is read, even after one that fails, so that the derivers take calls again.
     std::exception_ptr failure;
     std::vector<Batch*> outgrown;
@@ -131,11 +160,14 @@ uint32_t Simulation::Impl::deriveAndGrowInOneSubmission(const std::vector<uint8_
     }
     if (failure) std::rethrow_exception(failure);
     // A batch whose step outgrew its streams derived it again, waiting: its particles grow on that string.
-    if (!outgrown.empty())
+    if (!outgrown.empty()) {
+        const Clock::time_point start = Clock::now();
         context->submitAndWait([&](VkCommandBuffer cmd) {
             for (Batch* b : outgrown)
                 b->growth->recordTick(cmd, b->deriver->current(), settings(*b, ticks));
         });
+        seconds.grow += secondsSince(start);
+    }
     for (Batch& b : batches)
         b.modules = b.deriver->current().count;
     return derived;

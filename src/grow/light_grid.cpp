@@ -256,13 +256,16 @@ GpuLightGrid::GpuLightGrid(const vk::Context& context, const LightGridSpec& spec
     shapeAreas_ = vk::deviceBufferWith(context, std::span<const float>(shapeAreas));
     occupancy_ = vk::Buffer(context, spec.voxels() * 4, vk::MemoryUsage::DeviceLocal);
     holders_ = vk::Buffer(context, spec.voxels() * 4, vk::MemoryUsage::DeviceLocal);
-    light_ = vk::Buffer(context, spec.voxels() * sizeof(glm::vec4), vk::MemoryUsage::DeviceLocal);
-    room_ = vk::Buffer(context, spec.voxels() * sizeof(glm::uvec2), vk::MemoryUsage::DeviceLocal);
+    for (uint32_t k = 0; k < 2; ++k) {
+        light_[k] = vk::Buffer(context, spec.voxels() * sizeof(glm::vec4), vk::MemoryUsage::DeviceLocal);
+        room_[k] = vk::Buffer(context, spec.voxels() * sizeof(glm::uvec2), vk::MemoryUsage::DeviceLocal);
+    }
     none_ = vk::Buffer(context, sizeof(shared::ParticleState), vk::MemoryUsage::DeviceLocal);
     context.submitAndWait([&](VkCommandBuffer cmd) {
         recordClear(cmd);
         recordPropagate(cmd); // the light of an empty field until the first organs are splatted
     });
+    turn();
 }
 
 shared::LightGridPush GpuLightGrid::push() const {
@@ -301,8 +304,8 @@ void GpuLightGrid::recordSplat(VkCommandBuffer cmd, const turtle::DeviceOrgans& 
 
 void GpuLightGrid::recordPropagate(VkCommandBuffer cmd) {
     vk::memoryBarrier(cmd, vk::Hazard::AnyToAny);
-    propagate_.dispatch(cmd, {occupancy_, obstacles_, directions_, light_, holders_, room_, top_}, push(),
-                        propagate_.groupsFor(spec_.voxels()));
+    propagate_.dispatch(cmd, {occupancy_, obstacles_, directions_, light_[1 - lit_], holders_, room_[1 - lit_], top_},
+                        push(), propagate_.groupsFor(spec_.voxels()));
     vk::memoryBarrier(cmd, vk::Hazard::ComputeToCompute);
 }
 
@@ -316,8 +319,8 @@ void GpuLightGrid::recordGather(VkCommandBuffer cmd, const turtle::DeviceOrgans&
     p.derived = !elsewhere ? shared::kLightToDrawnOnly : origins ? shared::kLightToOrigin : shared::kLightToSameModule;
     vk::memoryBarrier(cmd, vk::Hazard::AnyToAny);
     gather_.dispatch(cmd,
-                     {organs.instances, organs.table, light_, directions_, drawnParticles,
-                      origins && elsewhere ? *origins : none_, elsewhere ? *derivedParticles : none_, room_,
+                     {organs.instances, organs.table, light_[lit_], directions_, drawnParticles,
+                      origins && elsewhere ? *origins : none_, elsewhere ? *derivedParticles : none_, room_[lit_],
                       obstacles_},
                      p, gather_.groupsFor(organs.capacity));
     vk::memoryBarrier(cmd, vk::Hazard::ComputeToCompute);
@@ -333,7 +336,7 @@ void GpuLightGrid::recordQueries(VkCommandBuffer cmd, const turtle::GpuTurtle::M
     p.stride = stride;
     vk::memoryBarrier(cmd, vk::Hazard::AnyToAny);
     queries_.dispatch(cmd,
-                      {*states.states, *states.commands, *states.plants, *states.placements, light_, directions_,
+                      {*states.states, *states.commands, *states.plants, *states.placements, light_[lit_], directions_,
                        origins ? *origins : none_, derivedSymbols, derivedParams},
                       p, queries_.groupsFor(count));
     vk::memoryBarrier(cmd, vk::Hazard::ComputeToCompute);

@@ -114,7 +114,12 @@ public:
     void recordClear(VkCommandBuffer cmd);
     // `firstPlant`: the field's number of the organs' plant 0 (a batch's first plant).
     void recordSplat(VkCommandBuffer cmd, const turtle::DeviceOrgans& organs, uint32_t firstPlant = 0);
+    // The light of what is splatted, into the grid's other light and room: what the gathers and queries recorded
+    // read stays the last turn()'s, so that one submission may splat a drawing's organs and propagate them while
+    // organs drawn after it still gather the light before. Propagating again writes the same buffers anew.
     void recordPropagate(VkCommandBuffer cmd);
+    // The light last propagated becomes the light the gathers and queries recorded after this read, and light().
+    void turn() { lit_ = 1 - lit_; }
     // The organs' light and room to grow into the drawn string's particles, and into the derived string's it was
     // drawn from: by the drawn modules' `origins` where it was drawn under the homomorphism, else module for module
     // where `derivedParticles` is another buffer than the drawn ones (a copy drawn).
@@ -131,7 +136,7 @@ public:
 
     const vk::Buffer& occupancy() const { return occupancy_; }
     const vk::Buffer& holders() const { return holders_; }
-    const vk::Buffer& light() const { return light_; }
+    const vk::Buffer& light() const { return light_[lit_]; }
     const LightGridSpec& spec() const { return spec_; }
 
 private:
@@ -141,7 +146,9 @@ private:
     LightGridSpec spec_;
     uint32_t directionCount_;
     vk::ComputePipeline splat_, propagate_, gather_, queries_;
-    vk::Buffer directions_, obstacles_, shapeAreas_, occupancy_, holders_, light_, room_;
+    vk::Buffer directions_, obstacles_, shapeAreas_, occupancy_, holders_;
+    vk::Buffer light_[2], room_[2]; // the light and room read ([lit_]) and the next propagation's
+    uint32_t lit_ = 0;
     vk::Buffer top_;       // the layers up to the highest with leaf area (the splat's)
     uint32_t obstacleTop_ = 0; // the layers up to the highest an obstacle fills
     vk::Buffer none_; // bound where the gather has no origins or derived particles

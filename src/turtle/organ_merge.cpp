@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstring>
 #include <iterator>
 #include <span>
 #include <stdexcept>
@@ -143,9 +144,15 @@ void OrganMerge::mergePart(Part& part) {
         field.instances = vk::Buffer(context_, bytes, vk::MemoryUsage::DeviceLocal);
         field.capacity = uint32_t(bytes / sizeof(OrganInstance));
     }
-    field.table = vk::deviceBufferWith(context_, std::span<const OrganTable>(&table, 1));
-    const float spacing = 1.0f;
-    field.field = vk::deviceBufferWith(context_, std::span<const float>(&spacing, 1));
+    // Written through their mapping, without a submission of their own: a field's drawing is its batches' one
+    // submission and the merge's.
+    field.table = vk::Buffer(context_, sizeof(OrganTable), vk::MemoryUsage::Upload);
+    std::memcpy(field.table.mapped(), &table, sizeof(OrganTable));
+    if (!field.field) {
+        field.field = vk::Buffer(context_, sizeof(float), vk::MemoryUsage::Upload);
+        const float spacing = 1.0f;
+        std::memcpy(field.field.mapped(), &spacing, sizeof spacing);
+    }
     if (!part.held) part.held = vk::Buffer(context_, sizeof(OrganInstance), vk::MemoryUsage::DeviceLocal);
     std::array<uint32_t, kOrganKinds> next;
     std::copy(std::begin(table.first), std::end(table.first), next.begin());

@@ -84,6 +84,7 @@ TEST_F(LightGridGpuTest, TheDeviceLightsAFieldAsTheReference) {
         gpu.recordClear(cmd);
         gpu.recordSplat(cmd, uploaded);
         gpu.recordPropagate(cmd);
+        gpu.turn();
         gpu.recordGather(cmd, uploaded, particles);
     });
     EXPECT_EQ(vk::downloadVector<uint32_t>(context(), gpu.occupancy(), spec.voxels()), cpu.occupancy());

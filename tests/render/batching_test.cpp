@@ -81,7 +81,8 @@ TEST_F(BatchingTest, APlantDrawsAlikeInAnyBatchesAlsoWhereNoneOfItsBatchDerives)
     EXPECT_EQ(device.plantModules(), whole.plantModules());
     EXPECT_EQ(device.save().plants.string.sym, whole.save().plants.string.sym);
     // The draws differ from plant to plant: the strings tell them apart.
-    const stream::ModuleString& string = whole.save().plants.string;
+    const field::SimulationState state = whole.save();
+    const stream::ModuleString& string = state.plants.string;
     std::vector<std::vector<uint32_t>> plants;
     for (size_t p = 0; p < 8; ++p)
         plants.emplace_back(string.sym.begin() + string.plantStart[p], string.sym.begin() + string.plantStart[p + 1]);

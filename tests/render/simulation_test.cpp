@@ -133,9 +133,11 @@ TEST_F(SimulationTest, EveryBatchDerivesInOneSubmissionAndIsDrawnInAnotherAsOnTh
 }
 
 // Between derivation steps every batch is drawn again in one submission, into organ buffers of its own, and the
-// host reads back only the statistics after it: the drawing takes as many submissions in four batches as in two.
-// What it draws, and counts, is what the CPU draws, tick after tick; and the field is the same in four batches as
-// in two, each plant drawing from the random stream of its place in the field.
+// host reads back only the statistics after it: the tick's growth, the drawing and the light's propagation are that
+// one submission, in four batches as in two, where every batch's string fit its room, and the batches' organs are
+// merged in another. What it draws, and counts, is
+// what the CPU draws, tick after tick; and the field is the same in four batches as in two, each plant drawing from
+// the random stream of its place in the field.
 TEST_F(SimulationTest, BetweenStepsEveryBatchIsDrawnInOneSubmissionAsOnTheCpu) {
     field::SimulationOptions inTwo = garden(field::Backend::Gpu);
     inTwo.plantsPerBatch = 6;
@@ -143,9 +145,11 @@ TEST_F(SimulationTest, BetweenStepsEveryBatchIsDrawnInOneSubmissionAsOnTheCpu) {
     field::Simulation cpu(garden(field::Backend::Cpu), &context());
     ASSERT_EQ(four.batches(), 4u);
     ASSERT_EQ(two.batches(), 2u);
-    int between = 0;
+    int between = 0, inOne = 0;
     for (int tick = 0; tick < 12; ++tick) {
+        const uint64_t before = context().submissions();
         const field::TickReport report = four.tick();
+        const uint64_t tickSubmissions = context().submissions() - before;
         two.tick();
         cpu.tick();
         const Drawings drawn = drawEach(context(), four, two, cpu);
@@ -167,9 +171,14 @@ TEST_F(SimulationTest, BetweenStepsEveryBatchIsDrawnInOneSubmissionAsOnTheCpu) {
         EXPECT_EQ(four.plantModules(), two.plantModules()) << tick;
         if (report.derived > 0) continue;
         ++between;
+        EXPECT_EQ(tickSubmissions, 0u) << tick; // its growth waits for the drawing's submission
         EXPECT_EQ(drawn.fourSubmissions, drawn.twoSubmissions) << tick;
+        if (four.reinterpretedBatches() > 0) continue;
+        ++inOne;
+        EXPECT_EQ(drawn.fourSubmissions, 2u) << tick; // and the merge of the batches' organs
     }
     EXPECT_GE(between, 3);
+    EXPECT_GE(inOne, 3);
 }
 
 // A tick longer than the plants' DeriveTime (a time-lapse of few frames) derives every step due within it: two

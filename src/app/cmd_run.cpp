@@ -270,8 +270,8 @@ void runRun(RunArgs args) {
                      s.derive, s.grow, s.interpret, s.light, s.statistics, drawSeconds);
         const double counted = double(std::max<uint64_t>(ticks - firstTick, 1));
         std::fprintf(stderr,
-                     "submissions waited for a tick: %.2f to derive and grow, %.2f to draw (%u batches); batches done "
-                     "again with readbacks: %llu steps, %llu drawings\n",
+                     "submissions waited for a tick: %.2f to derive (and grow, after a step), %.2f to draw (and grow, "
+                     "between steps; %u batches); batches done again with readbacks: %llu steps, %llu drawings\n",
                      double(tickSubmissions) / counted, double(drawingSubmissions) / counted, simulation.batches(),
                      static_cast<unsigned long long>(rederived), static_cast<unsigned long long>(reinterpreted));
         std::fputs(context.kernelProfile()->table().c_str(), stderr);

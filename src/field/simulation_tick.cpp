@@ -82,18 +82,18 @@ uint32_t Simulation::Impl::deriveDue(const std::vector<uint8_t>& due) {
 }
 
 void Simulation::Impl::growEveryParticle() {
-    const Clock::time_point start = Clock::now();
     if (options.backend == Backend::Gpu) {
         submitGrowthWaiting(); // the tick before, not drawn
         for (Batch& b : batches) {
             growthToRecord.push_back(settings(b, ticks));
             b.modules = b.deriver->current().count;
         }
-    } else {
-        for (Batch& b : batches) {
-            grow::tickCpu(settings(b, ticks), b.reference->current());
-            b.modules = b.reference->current().size();
-        }
+        return;
+    }
+    const Clock::time_point start = Clock::now();
+    for (Batch& b : batches) {
+        grow::tickCpu(settings(b, ticks), b.reference->current());
+        b.modules = b.reference->current().size();
     }
     seconds.grow += secondsSince(start);
 }

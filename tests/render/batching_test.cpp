@@ -39,7 +39,8 @@ field::SimulationOptions herbs(uint32_t plantsPerBatch, field::Backend backend) 
     return o;
 }
 
-// The first particle slot in which two strings' particles differ, or "".
+// The first particle slot in which two strings' particles differ, or "": by their bytes, since a slot that holds a
+// uint's bits (a particle's identity) may read as a NaN.
 std::string particleDifference(const std::vector<shared::ParticleState>& a,
                                const std::vector<shared::ParticleState>& b) {
     if (a.size() != b.size()) return fmt::format("{} particles against {}", a.size(), b.size());
@@ -49,6 +50,7 @@ std::string particleDifference(const std::vector<shared::ParticleState>& a,
                 return fmt::format("particle {} slot {}: {} against {}", k, slot, a[k].value[slot], b[k].value[slot]);
     return "";
 }
+
 void expectSamePlants(const field::SimulationState& a, const field::SimulationState& b) {
     EXPECT_EQ(a.ticks, b.ticks);
     EXPECT_EQ(a.nextStep, b.nextStep);

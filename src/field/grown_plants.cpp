@@ -1,6 +1,7 @@
 #include "field/grown_plants.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "compute/shared/growth_layout.h"
 #include "cpu/derive.h"
@@ -37,20 +38,30 @@ GrownPlants growOneOfEach(const grow::GrowingSpecies& g, const grow::GrowthTable
     std::vector<float> next = times;
     grow::TickSettings ts{&tables, one.plants, std::max(0.25f, *std::min_element(times.begin(), times.end()) / 2), 0,
                           seed, g.relativeGravity()};
+    auto modulesOf = [](const stream::ModuleString& s, uint32_t p) { return s.plantStart[p + 1] - s.plantStart[p]; };
+    std::vector<uint64_t> firstSteps(one.plants);
+    std::vector<size_t> steps(one.plants, 0);
+    for (uint32_t p = 0; p < one.plants; ++p) firstSteps[p] = modulesOf(plants.current(), p);
     for (double t = 0; t < until + ts.dt; t += ts.dt, ++ts.tick) {
         std::vector<uint8_t> due(one.plants, 0);
         bool any = false;
         for (uint32_t p = 0; p < one.plants; ++p)
             if (t + ts.dt >= next[p]) due[p] = 1, next[p] += times[p], any = true;
         if (any) plants.advance(due); // the random streams step with the steps, as the field's do
+        for (uint32_t p = 0; p < one.plants; ++p)
+            if (due[p] && ++steps[p] <= kFirstSteps) firstSteps[p] = modulesOf(plants.current(), p);
         grow::tickCpu(ts, plants.current());
     }
     stream::ModuleString drawn = plants.drawn();
     if (tables.drawsGrowth() || tables.growsSegments()) grow::growSizesCpu(ts, times, drawn);
     GrownPlants grown;
     grown.bounds.resize(one.plants);
-    for (uint32_t p = 0; p < one.plants; ++p)
-        grown.drawnModules.push_back(drawn.plantStart[p + 1] - drawn.plantStart[p]);
+    for (uint32_t p = 0; p < one.plants; ++p) {
+        grown.drawnModules.push_back(modulesOf(drawn, p));
+        const double drawnToDerived =
+            std::max(1.0, double(modulesOf(drawn, p)) / double(std::max<uint64_t>(modulesOf(plants.current(), p), 1)));
+        grown.firstStepsModules.push_back(uint64_t(std::ceil(double(firstSteps[p]) * drawnToDerived)));
+    }
     const turtle::Interpretation organs = turtle::interpretCpu(drawn, commands, turtles, {});
     for (const shared::OrganInstance& o : organs.organs) {
         const turtle::Bounds box = turtle::organBounds(o);

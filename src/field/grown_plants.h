@@ -15,9 +15,15 @@
 
 namespace simeco::field {
 
+// The steps of a field's plants that its derivation makes room for from the start (firstStepsModules).
+inline constexpr size_t kFirstSteps = 4;
+
 struct GrownPlants {
     std::vector<turtle::Bounds> bounds; // per species, in the plant's own frame (its base at the origin)
     std::vector<uint64_t> drawnModules; // per species: the modules of its drawn string
+    // Per species: the modules of its derived string after its first kFirstSteps steps (all it derives where
+    // fewer), or of its drawn string where that grows larger, as the grown plant's drawn string is to its derived.
+    std::vector<uint64_t> firstStepsModules;
 };
 
 // The plants derive as `derive` says (its plant count is replaced by one of each species) with the given

@@ -4,6 +4,13 @@
 
 namespace simeco::field {
 
+uint64_t Simulation::Impl::firstStepsRoom(const Batch& b) const {
+    uint64_t room = 0;
+    for (uint32_t p = b.first; p < b.first + b.count; ++p)
+        if (absent.empty() || !absent[p]) room += grown.firstStepsModules[ir::speciesOfPlant(p, g.species.size())];
+    return room;
+}
+
 void Simulation::Impl::makeBatches(uint32_t plantsPerBatch) {
     const uint32_t species = uint32_t(g.species.size());
     if (plantsPerBatch == 0) {
@@ -32,7 +39,7 @@ void Simulation::Impl::makeBatches(uint32_t plantsPerBatch) {
         b.deriverOptions = batch;
         if (options.backend == Backend::Gpu) {
             b.deriver = std::make_unique<gpu::GpuDeriver>(*context, g.species, gpu::GpuStrategy::Parallel);
-            b.deriver->begin(batch);
+            b.deriver->begin(batch, firstStepsRoom(b));
             b.growth = std::make_unique<grow::GpuGrowth>(*context, tables, b.deriveTimes, b.vigour, b.field.placements);
             b.modules = b.deriver->current().count;
         } else {

@@ -162,6 +162,10 @@ struct Simulation::Impl {
         return bases;
     }
     void makeBatches(uint32_t plantsPerBatch);
+    // The modules batch b's streams hold from the start: its plants' first kFirstSteps steps as the grown plants
+    // took them, so that the first steps fit, where they would outgrow streams of the seeds' size and be derived
+    // again.
+    uint64_t firstStepsRoom(const Batch& b) const;
     // The plants whose step falls due by the clock, flagged in `due`, their next steps a DeriveTime on; whether any.
     bool takeDue(std::vector<uint8_t>& due);
     bool anyDue() const;

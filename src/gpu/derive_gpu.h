@@ -108,8 +108,10 @@ public:
     // homomorphism (the globals as the Start block sets them), written into another stream and valid until the
     // next advance() or drawn(), or current() where no species has a homomorphism. A plant's random draws in a
     // step are keyed by the count of advance() calls, not by its own steps, on both engines
-    // (cpu::SteppedDerivation). Needs recordsSteps(); derive() and record() end the stepped derivation.
-    void begin(const stream::DeriveOptions& options);
+    // (cpu::SteppedDerivation). Needs recordsSteps(); derive() and record() end the stepped derivation. `room`: the
+    // modules the streams hold from the start, within the module budget (a field's estimate of its first steps, so
+    // that they need not be derived again for want of room); 0: the axioms'.
+    void begin(const stream::DeriveOptions& options, uint64_t room = 0);
     uint32_t advance(const std::vector<uint8_t>& due);
     // advance() recorded into `cmd` for the caller to submit, with no wait, within the streams' room (no buffer
     // grows), and the homomorphism of the string it derives after it: returns how many plants derive (0: nothing is

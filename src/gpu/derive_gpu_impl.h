@@ -478,7 +478,7 @@ struct GpuDeriver::Impl {
     // step into `batch`.
     uint32_t planAdvance(const std::vector<uint8_t>& due, std::vector<RecordedStep>& batch);
     // begin() and resume(): from the axioms, or from a saved state.
-    void beginStepped(const stream::DeriveOptions& options, const stream::SteppedState* from);
+    void beginStepped(const stream::DeriveOptions& options, const stream::SteppedState* from, uint64_t room = 0);
     // Runs `batch` from the stepped string's stream; returns the stream it ends in.
     int runSteppedBatch(std::vector<RecordedStep>& batch, int stepsAfterBatch);
 

@@ -1,6 +1,7 @@
 // Derivation step by step over simulated time: the growth simulation derives a plant whenever its DeriveTime is
 // due, so the string stays on the device between steps, its particle state updated in place, and the
 // homomorphism is drawn from it without ending the derivation.
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -50,7 +51,8 @@ int GpuDeriver::Impl::runSteppedBatch(std::vector<RecordedStep>& batch, int step
     return cur;
 }
 
-void GpuDeriver::Impl::beginStepped(const stream::DeriveOptions& asked, const stream::SteppedState* from) {
+void GpuDeriver::Impl::beginStepped(const stream::DeriveOptions& asked, const stream::SteppedState* from,
+                                    uint64_t room) {
     if (!recordsSteps()) throw std::logic_error("GpuDeriver::begin: stepping needs the parallel strategy");
     if (!recordings.empty())
         throw std::logic_error("GpuDeriver::begin: a recorded derivation is not read yet (recorded())");
@@ -72,14 +74,14 @@ void GpuDeriver::Impl::beginStepped(const stream::DeriveOptions& asked, const st
     stepped =
         std::make_unique<Stepped>(Stepped{std::move(control), options, seed, budget, fieldStep, 0, false, {}, false});
     prepareRecorded(false);
-    makeRoom(0, streams[0].count);
+    makeRoom(0, std::max<uint64_t>(streams[0].count, std::min(room, budget)));
     SubmissionEnd submission{*this};
     ctx.submitAndWait([&](VkCommandBuffer cmd) { recordPendingCopies(cmd); });
     lastStream = 0;
 }
 
-void GpuDeriver::begin(const stream::DeriveOptions& options) {
-    impl_->beginStepped(options, nullptr);
+void GpuDeriver::begin(const stream::DeriveOptions& options, uint64_t room) {
+    impl_->beginStepped(options, nullptr, room);
 }
 
 void GpuDeriver::resume(const stream::DeriveOptions& options, const stream::SteppedState& state) {

@@ -89,7 +89,7 @@ TEST_F(SimulationTest, AFieldInBatchesGrowsOnTheDeviceAsOnTheCpu) {
 
 // A tick derives the due plants of every batch and grows every particle in one submission, which the host waits for
 // once: as many submissions in four batches as in two, where no batch's step outgrew its streams. A step that did
-// (the first ones do: the streams start at the seeds' size) is derived again, waiting. The drawing after a step
+// is derived again, waiting. The drawing after a step
 // records every batch in one submission too, within rooms grown as the strings grew: as many submissions in four
 // batches as in two where none outgrew its room. What is derived, grown and drawn is the CPU's all the same.
 TEST_F(SimulationTest, EveryBatchDerivesInOneSubmissionAndIsDrawnInAnotherAsOnTheCpu) {
@@ -130,6 +130,25 @@ TEST_F(SimulationTest, EveryBatchDerivesInOneSubmissionAndIsDrawnInAnotherAsOnTh
     EXPECT_GE(fit, 2);
     EXPECT_GE(rederived, 1);
     EXPECT_GE(drawnInOne, 2); // drawings after a step, every batch recorded
+}
+
+// A batch's streams start with room for its plants' first steps as the grown plants took them: 300 seedlings, whose
+// first step would outgrow the seeds' room, derive and grow their first steps in one submission each, none again.
+TEST_F(SimulationTest, AFieldsFirstStepsFitTheRoomItsGrownPlantsTook) {
+    field::SimulationOptions o = garden(field::Backend::Gpu);
+    o.plants = 300;
+    o.plantsPerBatch = 0;
+    o.dt = 3.0f; // a step every tick
+    field::Simulation seedlings(o, &context());
+    ASSERT_EQ(seedlings.batches(), 1u);
+    for (int tick = 0; tick < 3; ++tick) {
+        const uint64_t before = context().submissions();
+        const field::TickReport report = seedlings.tick();
+        EXPECT_EQ(report.derived, 300u) << tick;
+        EXPECT_EQ(report.rederived, 0u) << tick;
+        EXPECT_EQ(context().submissions() - before, 1u) << tick;
+    }
+    EXPECT_GT(seedlings.modules(), 10u * 300u); // ten times the seeds
 }
 
 // Between derivation steps every batch is drawn again in one submission, into organ buffers of its own, and the

@@ -30,7 +30,8 @@ public:
     // One tick of `derived`'s particles (which it must carry), in place: the next states are written beside them
     // and copied back. `settings.tables` is not read (the device's copy is). A string counted only on the device
     // (`countOnDevice`: a derivation step recorded before in `cmd` writes it) is ticked as far as its plant table
-    // counts, `count` bounding it.
+    // counts, `count` bounding it. The buffer of next states grows to `derived`'s count here, replacing the one a
+    // tick recorded before may still use: one tick of this growth in a submission.
     void recordTick(VkCommandBuffer cmd, const stream::DeviceModules& derived, const TickSettings& settings);
     // The drawn string's kGrownValue codes replaced with its particles' values, in place.
     void recordSizes(VkCommandBuffer cmd, const stream::DeviceModules& drawn, const TickSettings& settings);

@@ -27,6 +27,7 @@ struct BenchArgs {
     bool render = false;
     bool sim = false;
     std::string size = "640x480";
+    std::uint32_t msaa = 0; // --sim: samples a pixel; 0: as the viewer draws them
     std::vector<std::uint32_t> fields; // --sim: the fields' plants
 };
 
@@ -47,6 +48,7 @@ void runSimBench(const BenchArgs& args) {
     o.device = args.options.device;
     if (!args.fields.empty()) o.fields = args.fields;
     frameSize(args.size, o.width, o.height);
+    o.samples = args.msaa;
     bench::SimBenchReport report =
         bench::runSimBenchmark(o, [](const std::string& line) { std::fprintf(stderr, "bench: %s\n", line.c_str()); });
     if (!args.json.empty()) bench::writeJsonAtomically(args.json, bench::simReportJson(report));
@@ -119,6 +121,10 @@ void registerBenchCommand(CLI::App& app, CommandContext& ctx) {
                   "benchmark the growing field (derive, grow, interpret, statistics and a frame per tick) of the "
                   "garden at 100, 1,000 and 10,000 plants instead of derivation");
     cmd->add_option("--size", args->size, "--render, --sim: frame size WIDTHxHEIGHT (default 640x480)");
+    cmd->add_option("--msaa", args->msaa,
+                    "--sim: samples a pixel of the frames (default: as the viewer draws them, 1 on a CPU device, "
+                    "else 4)")
+        ->check(CLI::IsMember({1u, 2u, 4u, 8u, 16u}));
     cmd->add_option("--fields", args->fields,
                     "--sim: the fields' plants, comma-separated (default 100,1000,10000; --quick 10,100), e.g. "
                     "10000,1000000 on a large GPU")

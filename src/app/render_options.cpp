@@ -20,6 +20,11 @@ void addPictureOptions(CLI::App& cmd, PictureOptions& options, const std::string
                    "samples along each side of a pixel: the frame drawn N times larger and each pixel averaged "
                    "(default 1: none)")
         ->check(CLI::Range(1u, 4u));
+    cmd.add_option("--msaa", options.msaa,
+                   "samples a pixel, multisampled: edges, thin stems and shadows drawn by the share of the pixel "
+                   "they cover (1: none; 2, 4, 8 or 16 as the device has them; default 4 where it has them, else "
+                   "1, and in the viewer 1 on a CPU device, where each sample costs as much as a pixel)")
+        ->check(CLI::IsMember({1u, 2u, 4u, 8u, 16u}));
     cmd.add_option("--camera", options.camera,
                    fmt::format("azimuth,elevation[,distance] in degrees (default: framed on the {})", framed));
     cmd.add_option("--projection", options.projection,
@@ -87,6 +92,7 @@ draw::RenderSettings renderSettings(const PictureOptions& options, const ir::Vie
     draw::RenderSettings s;
     std::tie(s.width, s.height) = imageSize(options.size);
     s.antialias = options.antialias;
+    s.samples = options.msaa;
     if (!options.camera.empty()) {
         draw::Camera c;
         int read = std::sscanf(options.camera.c_str(), "%f,%f,%f", &c.azimuthDegrees, &c.elevationDegrees,

@@ -20,6 +20,7 @@ namespace simeco::app {
 struct PictureOptions {
     std::string size = "960x720";
     std::uint32_t antialias = 1;
+    std::uint32_t msaa = 0; // 0: the device's default (draw::defaultSamples)
     std::string camera;
     std::string projection;
     std::string style;
@@ -28,8 +29,8 @@ struct PictureOptions {
     std::string background;
 };
 
-// --size, --antialias, --camera, --projection, --style, --shadows, --ground and --background; `framed` says what the default
-// camera frames.
+// --size, --antialias, --msaa, --camera, --projection, --style, --shadows, --ground and --background; `framed` says
+// what the default camera frames.
 void addPictureOptions(CLI::App& cmd, PictureOptions& options, const std::string& framed);
 
 // WIDTHxHEIGHT; throws CommandLineError for another form or a side outside 1 to 16384.

@@ -50,7 +50,7 @@ Timed ticksInFlight(const RenderBenchOptions& o, std::uint64_t organs, const vk:
     const turtle::TurtleRoom room = gpuTurtle.lastRoom();
     std::vector<std::unique_ptr<draw::RenderTarget>> targets;
     for (std::uint64_t k = 0; k < draw::kFramesInFlight; ++k)
-        targets.push_back(renderer.makeTarget(setup.settings.width, setup.settings.height));
+        targets.push_back(renderer.makeTarget(setup.settings.width, setup.settings.height, setup.settings.samples));
     Timed t;
     t.runSeconds = repeatRuns(o.warmUp, o.repeat, [&] {
         Clock::time_point start = Clock::now();

@@ -38,6 +38,7 @@ SimEntry measure(const SimBenchOptions& o, const std::string& scene, std::uint32
     draw::RenderSettings settings;
     settings.width = o.width;
     settings.height = o.height;
+    settings.samples = o.samples;
     const draw::Bounds framed = simulation.grownBounds();
     std::vector<double> derive, grow, interpret, light, statistics, draw;
     auto tick = [&] {
@@ -124,6 +125,8 @@ SimBenchReport runSimBenchmark(const SimBenchOptions& options, const std::functi
     progress("copy bandwidth");
     report.copy = measureCopyBandwidth(context, options.warmUp, options.repeat);
     draw::Renderer renderer(context);
+    if (report.options.samples == 0) report.options.samples = draw::interactiveSamples(context);
+    draw::checkSamples(context, report.options.samples);
     const std::string scene = (std::filesystem::path(options.root) / kSimScene).string();
     const std::vector<std::uint32_t> fields = !options.fields.empty() ? options.fields
                                               : options.quick         ? std::vector<std::uint32_t>{10, 100}
@@ -131,7 +134,7 @@ SimBenchReport runSimBenchmark(const SimBenchOptions& options, const std::functi
     for (std::uint32_t plants : fields) {
         progress(fmt::format("{} plants", plants));
         try {
-            SimEntry e = measure(options, scene, plants, context, renderer);
+            SimEntry e = measure(report.options, scene, plants, context, renderer);
             if (report.copy && report.copy->bytesPerSecond > 0)
                 e.copyFraction = e.growBytesPerSecond / report.copy->bytesPerSecond;
             report.entries.push_back(std::move(e));

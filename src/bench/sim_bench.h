@@ -27,6 +27,7 @@ struct SimBenchOptions {
     int warmUp = 1;
     std::uint32_t width = 640;
     std::uint32_t height = 480;
+    std::uint32_t samples = 0; // a pixel; 0: as the viewer draws them (draw::interactiveSamples)
     std::string device;
 };
 

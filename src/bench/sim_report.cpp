@@ -9,9 +9,15 @@ nlohmann::json simReportJson(const SimBenchReport& report) {
     const SimBenchOptions& o = report.options;
     nlohmann::json j;
     j["tool"] = "simeco bench --sim";
-    j["settings"] = {{"quick", o.quick},         {"repeat", o.repeat}, {"warm_up", o.warmUp},
-                     {"width", o.width},         {"height", o.height}, {"scene", report.scene},
-                     {"statistic", "median"},    {"timer", "host wall clock around each blocking stage"}};
+    j["settings"] = {{"quick", o.quick},
+                     {"repeat", o.repeat},
+                     {"warm_up", o.warmUp},
+                     {"width", o.width},
+                     {"height", o.height},
+                     {"samples", o.samples},
+                     {"scene", report.scene},
+                     {"statistic", "median"},
+                     {"timer", "host wall clock around each blocking stage"}};
     j["device"] = {{"name", report.deviceName}, {"type", report.deviceType}, {"driver", report.driver}};
     if (report.copy)
         j["copy_bandwidth"] = copyBandwidthSummary(*report.copy);
@@ -66,6 +72,8 @@ std::string formatSimTable(const SimBenchReport& report) {
     std::string out = fmt::format("simeco bench --sim: {} on {} ({}); {} bytes of state per particle\n", report.scene,
                                   report.deviceName, report.deviceType, report.bytesPerParticle);
     if (report.copy) out += fmt::format("copy bandwidth: {:.2f} GB/s\n", report.copy->bytesPerSecond * 1e-9);
+    out += fmt::format("frames {} x {}, {} sample(s) a pixel\n", report.options.width, report.options.height,
+                       report.options.samples);
     out += fmt::format("{:>7} {:>7} {:>10} {:>9} {:>12} {:>9} {:>9} {:>10} {:>10} {:>9} {:>9} {:>8}\n", "plants",
                        "batches", "particles", "ticks/s", "particles/s", "copy", "derive", "grow", "interpret", "light",
                        "stats", "draw");

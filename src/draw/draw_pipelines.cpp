@@ -16,7 +16,7 @@
 namespace simeco::draw {
 namespace {
 
-enum class PassKind { Base, Volume, Sunlit };
+enum class PassKind { Base, Volume, Sunlit, Resolve };
 
 vk::UniqueShaderModule shaderModule(VkDevice device, std::string_view name) {
     std::span<const std::uint32_t> words = shaders::spirv(name);
@@ -34,7 +34,7 @@ vk::UniqueShaderModule shaderModule(VkDevice device, std::string_view name) {
 VkPipelineDepthStencilStateCreateInfo depthStencilState(PassKind pass) {
     VkPipelineDepthStencilStateCreateInfo depth{};
     depth.sType = VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO;
-    depth.depthTestEnable = pass == PassKind::Sunlit ? VK_FALSE : VK_TRUE;
+    depth.depthTestEnable = pass == PassKind::Base || pass == PassKind::Volume ? VK_TRUE : VK_FALSE;
     depth.depthWriteEnable = pass == PassKind::Base ? VK_TRUE : VK_FALSE;
     depth.depthCompareOp = VK_COMPARE_OP_LESS;
     if (pass == PassKind::Volume) {
@@ -62,14 +62,16 @@ VkPipelineDepthStencilStateCreateInfo depthStencilState(PassKind pass) {
     return depth;
 }
 
-// The base pass writes its four colour attachments (colour, ids, the sun's light); volumes write none; the sunlit
-// pass, in the next subpass, adds the sun's light to the colour, its only attachment.
-std::vector<VkPipelineColorBlendAttachmentState> colorBlendAttachments(PassKind pass) {
+// The base pass writes its colour attachments (colour, ids, the sun's light: four, or three with several samples,
+// whose ids are one attachment); volumes write none; the sunlit pass, in the next subpass, adds the sun's light
+// to the colour, its only attachment; the resolve writes its four (colour, plant, organ, depth).
+std::vector<VkPipelineColorBlendAttachmentState> colorBlendAttachments(PassKind pass, std::uint32_t samples) {
     const VkColorComponentFlags all =
         VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
-    std::vector<VkPipelineColorBlendAttachmentState> blend(pass == PassKind::Sunlit ? 1 : 4);
+    const size_t count = pass == PassKind::Sunlit ? 1 : pass == PassKind::Resolve || samples == 1 ? 4 : 3;
+    std::vector<VkPipelineColorBlendAttachmentState> blend(count);
     for (VkPipelineColorBlendAttachmentState& b : blend) {
-        b.colorWriteMask = pass == PassKind::Base ? all : 0;
+        b.colorWriteMask = pass == PassKind::Base || pass == PassKind::Resolve ? all : 0;
     }
     if (pass == PassKind::Sunlit) {
         VkPipelineColorBlendAttachmentState& add = blend[0];
@@ -85,24 +87,41 @@ std::vector<VkPipelineColorBlendAttachmentState> colorBlendAttachments(PassKind 
     return blend;
 }
 
+// The fragment shader of a pass; none for volumes, which only touch the stencil.
+const char* fragmentShader(PassKind pass, std::uint32_t samples) {
+    switch (pass) {
+    case PassKind::Base: return samples == 1 ? "organs/organ.frag" : "organs/organ_samples.frag";
+    case PassKind::Sunlit: return samples == 1 ? "shadows/sunlit.frag" : "shadows/sunlit_samples.frag";
+    case PassKind::Resolve: return "samples/resolve_samples.frag";
+    case PassKind::Volume: break;
+    }
+    return nullptr;
+}
+
 vk::UniquePipeline createPipeline(VkDevice device, VkPipelineLayout layout, VkRenderPass renderPass, PassKind pass,
-                                  Culling culling) {
+                                  Culling culling, std::uint32_t samples) {
     bool volume = pass == PassKind::Volume;
-    bool sunlit = pass == PassKind::Sunlit;
-    vk::UniqueShaderModule vertex = shaderModule(device, volume   ? "shadows/shadow_volume.vert"
-                                                         : sunlit ? "shadows/sunlit.vert"
-                                                                  : "organs/organ.vert");
+    // The sunlit pass and the resolve draw one full-frame triangle.
+    bool fullFrame = pass == PassKind::Sunlit || pass == PassKind::Resolve;
+    vk::UniqueShaderModule vertex = shaderModule(device, volume      ? "shadows/shadow_volume.vert"
+                                                         : fullFrame ? "shadows/sunlit.vert"
+                                                                     : "organs/organ.vert");
     vk::UniqueShaderModule fragment;
     std::vector<VkPipelineShaderStageCreateInfo> stages(1);
     stages[0].sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
     stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
     stages[0].module = vertex.get();
     stages[0].pName = "main";
-    if (!volume) { // volumes only touch the stencil
-        fragment = shaderModule(device, sunlit ? "shadows/sunlit.frag" : "organs/organ.frag");
+    // The resolve's loop over a pixel's samples.
+    const VkSpecializationMapEntry sampleCountEntry{0, 0, sizeof(std::int32_t)};
+    const std::int32_t sampleCount = static_cast<std::int32_t>(samples);
+    const VkSpecializationInfo sampleCountInfo{1, &sampleCountEntry, sizeof(sampleCount), &sampleCount};
+    if (const char* name = fragmentShader(pass, samples)) {
+        fragment = shaderModule(device, name);
         VkPipelineShaderStageCreateInfo stage = stages[0];
         stage.stage = VK_SHADER_STAGE_FRAGMENT_BIT;
         stage.module = fragment.get();
+        if (pass == PassKind::Resolve) stage.pSpecializationInfo = &sampleCountInfo;
         stages.push_back(stage);
     }
 
@@ -117,10 +136,10 @@ vk::UniquePipeline createPipeline(VkDevice device, VkPipelineLayout layout, VkRe
         attributes[k] = {k, 0, VK_FORMAT_R32G32B32A32_SFLOAT, 16 * k};
     VkPipelineVertexInputStateCreateInfo vertexInput{};
     vertexInput.sType = VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO;
-    // The sunlit pass's triangle comes from its vertex indices alone.
-    vertexInput.vertexBindingDescriptionCount = sunlit ? 0u : 1u;
+    // A full-frame triangle comes from its vertex indices alone.
+    vertexInput.vertexBindingDescriptionCount = fullFrame ? 0u : 1u;
     vertexInput.pVertexBindingDescriptions = &binding;
-    vertexInput.vertexAttributeDescriptionCount = sunlit ? 0u : (volume ? shared::kVolumeVerticesPerTriangle : 2u);
+    vertexInput.vertexAttributeDescriptionCount = fullFrame ? 0u : (volume ? shared::kVolumeVerticesPerTriangle : 2u);
     vertexInput.pVertexAttributeDescriptions = attributes.data();
 
     VkPipelineInputAssemblyStateCreateInfo assembly{};
@@ -145,10 +164,14 @@ vk::UniquePipeline createPipeline(VkDevice device, VkPipelineLayout layout, VkRe
 
     VkPipelineMultisampleStateCreateInfo multisample{};
     multisample.sType = VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO;
-    multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
+    // The resolve writes the pixels, one sample each; the sunlit pass runs for every sample.
+    multisample.rasterizationSamples =
+        static_cast<VkSampleCountFlagBits>(pass == PassKind::Resolve ? 1u : samples);
+    multisample.sampleShadingEnable = pass == PassKind::Sunlit && samples > 1 ? VK_TRUE : VK_FALSE;
+    multisample.minSampleShading = 1.0f;
 
     VkPipelineDepthStencilStateCreateInfo depth = depthStencilState(pass);
-    std::vector<VkPipelineColorBlendAttachmentState> blend = colorBlendAttachments(pass);
+    std::vector<VkPipelineColorBlendAttachmentState> blend = colorBlendAttachments(pass, samples);
     VkPipelineColorBlendStateCreateInfo colorBlend{};
     colorBlend.sType = VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO;
     colorBlend.attachmentCount = static_cast<std::uint32_t>(blend.size());
@@ -174,7 +197,9 @@ vk::UniquePipeline createPipeline(VkDevice device, VkPipelineLayout layout, VkRe
     info.pDynamicState = &dynamic;
     info.layout = layout;
     info.renderPass = renderPass;
-    info.subpass = sunlit ? kSunlitSubpass : kOrganSubpass;
+    info.subpass = pass == PassKind::Sunlit    ? kSunlitSubpass
+                   : pass == PassKind::Resolve ? kResolveSubpass
+                                               : kOrganSubpass;
     VkPipeline pipeline = VK_NULL_HANDLE;
     VK_CHECK(vkCreateGraphicsPipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline));
     return vk::UniquePipeline(device, pipeline);
@@ -182,15 +207,17 @@ vk::UniquePipeline createPipeline(VkDevice device, VkPipelineLayout layout, VkRe
 
 } // namespace
 
-DrawPipelines::DrawPipelines(const vk::Context& context, VkRenderPass renderPass)
+DrawPipelines::DrawPipelines(const vk::Context& context, VkRenderPass renderPass, std::uint32_t samples)
     : cmdPushDescriptorSet_(context.cmdPushDescriptorSet()) {
     VkDevice device = context.device();
-    std::array<VkDescriptorSetLayoutBinding, 5> bindings{{
+    std::array<VkDescriptorSetLayoutBinding, 7> bindings{{
         {0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr},
         {1, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
         {2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
         {3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr},
         {4, VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
+        {5, VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
+        {6, VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
     }};
     setLayout_ = vk::createPushDescriptorSetLayout(device, bindings);
     layout_ = vk::createPipelineLayout(device, setLayout_.get(),
@@ -198,10 +225,11 @@ DrawPipelines::DrawPipelines(const vk::Context& context, VkRenderPass renderPass
                                                            0, sizeof(shared::DrawPush)});
     VkPipelineLayout layout = layout_.get();
 
-    base_ = createPipeline(device, layout, renderPass, PassKind::Base, Culling::None);
-    baseCulled_ = createPipeline(device, layout, renderPass, PassKind::Base, Culling::Back);
-    sunlit_ = createPipeline(device, layout, renderPass, PassKind::Sunlit, Culling::None);
-    volume_ = createPipeline(device, layout, renderPass, PassKind::Volume, Culling::None);
+    base_ = createPipeline(device, layout, renderPass, PassKind::Base, Culling::None, samples);
+    baseCulled_ = createPipeline(device, layout, renderPass, PassKind::Base, Culling::Back, samples);
+    sunlit_ = createPipeline(device, layout, renderPass, PassKind::Sunlit, Culling::None, samples);
+    volume_ = createPipeline(device, layout, renderPass, PassKind::Volume, Culling::None, samples);
+    if (samples > 1) resolve_ = createPipeline(device, layout, renderPass, PassKind::Resolve, Culling::None, samples);
 }
 
 void DrawPipelines::pushDescriptors(VkCommandBuffer cmd, const vk::Buffer& instances,
@@ -228,15 +256,29 @@ void DrawPipelines::pushDescriptors(VkCommandBuffer cmd, const vk::Buffer& insta
                           static_cast<std::uint32_t>(writes.size()), writes.data());
 }
 
-void DrawPipelines::pushSunLight(VkCommandBuffer cmd, VkImageView sunLight) const {
-    VkDescriptorImageInfo image{VK_NULL_HANDLE, sunLight, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-    VkWriteDescriptorSet write{};
-    write.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
-    write.dstBinding = 4;
-    write.descriptorCount = 1;
-    write.descriptorType = VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT;
-    write.pImageInfo = &image;
-    cmdPushDescriptorSet_(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.get(), 0, 1, &write);
+void DrawPipelines::pushInputs(VkCommandBuffer cmd, std::span<const VkImageView> inputs) const {
+    std::vector<VkDescriptorImageInfo> images(inputs.size());
+    std::vector<VkWriteDescriptorSet> writes(inputs.size());
+    for (size_t i = 0; i < inputs.size(); ++i) {
+        images[i] = {VK_NULL_HANDLE, inputs[i], VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+        writes[i].sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
+        writes[i].dstBinding = kFirstInputBinding + static_cast<std::uint32_t>(i);
+        writes[i].descriptorCount = 1;
+        writes[i].descriptorType = VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT;
+        writes[i].pImageInfo = &images[i];
+    }
+    cmdPushDescriptorSet_(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.get(), 0,
+                          static_cast<std::uint32_t>(writes.size()), writes.data());
+}
+
+void DrawPipelines::pushSunLight(VkCommandBuffer cmd, const RenderTarget& target) const {
+    const std::array<VkImageView, 1> inputs{target.sunLight()};
+    pushInputs(cmd, inputs);
+}
+
+void DrawPipelines::pushSamples(VkCommandBuffer cmd, const RenderTarget& target) const {
+    const std::array<VkImageView, 3> inputs{target.sunLight(), target.colorSamples(), target.idSamples()};
+    pushInputs(cmd, inputs);
 }
 
 } // namespace simeco::draw

@@ -41,6 +41,11 @@ struct RenderSettings {
     // size and averages each pixel's samples, so thin stems and leaf edges are smooth rather than stepped or broken.
     // Pixel lines and outlines keep their widths in the frame's own pixels.
     std::uint32_t antialias = 1;
+    // Samples a pixel (multisampling, draw::checkSamples says which the device has): each organ covers the samples
+    // within it, each pixel is their mean, so edges and thin stems are smooth at the cost of drawing the samples,
+    // not of shading them (shadows' edges are shaded per sample). 1: none; 0: draw::defaultSamples. With
+    // `antialias`, of each supersample.
+    std::uint32_t samples = 1;
     // Empty: the default view angles, framed automatically on the bounds.
     std::optional<Camera> camera;
     Style style = Style::Lit;

@@ -1,53 +1,37 @@
-// The offscreen frame: colour (RGBA32F), plant and organ ids (R32_UINT, cleared to 0xFFFFFFFF), depth and
-// stencil (the stencil counts shadow volumes), the sun's light on the visible surfaces (RGBA32F, within the render
-// pass only), the render pass that draws into them, and the host-visible buffers they are copied to for reading
-// back. The render pass has two subpasses: the organs and the shadow volumes, then the sunlit pass, which adds the
-// sun's light where the stencil is clear.
+// The offscreen frame: colour (RGBA32F), plant and organ ids (R32_UINT, cleared to 0xFFFFFFFF), depth, and
+// their host-visible copies for reading back; with one sample a pixel or several (draw/render_pass.h): a
+// multisampled target draws into images of samples within the render pass, and its pixels are the resolved ones.
 #pragma once
 
 #include <cstdint>
 
 #include <vulkan/vulkan.h>
 
+#include "draw/render_pass.h"
 #include "draw/vk_objects.h"
 #include "vk/buffer.h"
 
 namespace simeco::draw {
 
-inline constexpr VkFormat kColorFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
-inline constexpr VkFormat kIdFormat = VK_FORMAT_R32_UINT;
-// A float depth, so the copy out is the value the outline kernel and the host read, with an 8-bit stencil.
-inline constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT_S8_UINT;
-
-// Attachment order in the render pass and in the fragment shader's outputs.
-enum AttachmentIndex : std::uint32_t {
-    kColorAttachment = 0,
-    kPlantAttachment,
-    kOrganAttachment,
-    kDepthAttachment,
-    kSunAttachment,
-    kAttachments
-};
-// The subpasses of the render pass.
-enum SubpassIndex : std::uint32_t { kOrganSubpass = 0, kSunlitSubpass };
-
-// Throws VulkanError when the device cannot render into the formats above.
-void checkRenderFormats(const vk::Context& context);
-
-UniqueRenderPass createRenderPass(const vk::Context& context);
-
 class RenderTarget {
 public:
-    RenderTarget(const vk::Context& context, VkRenderPass renderPass, std::uint32_t width, std::uint32_t height);
+    // `renderPass` is createRenderPass(context, samples)'s.
+    RenderTarget(const vk::Context& context, VkRenderPass renderPass, std::uint32_t width, std::uint32_t height,
+                 std::uint32_t samples = 1);
 
     std::uint32_t width() const { return width_; }
     std::uint32_t height() const { return height_; }
+    std::uint32_t samples() const { return samples_; }
     VkFramebuffer framebuffer() const { return framebuffer_.get(); }
-    // The sun's light attachment, which the sunlit subpass reads.
+    // The sun's light attachment (its samples, with their depth in alpha, in a multisampled target), which the
+    // sunlit subpass reads, and the resolve subpass too.
     VkImageView sunLight() const { return sun_.view.get(); }
+    // A multisampled target's colour and id samples, which the resolve subpass reads.
+    VkImageView colorSamples() const { return colorSamples_.view.get(); }
+    VkImageView idSamples() const { return idSamples_.view.get(); }
 
-    // Copies every attachment into its buffer; the images must be in TRANSFER_SRC_OPTIMAL (the render pass's
-    // final layout). The caller orders the host or kernels reading the buffers after it.
+    // Copies every pixel attachment into its buffer; the images must be in TRANSFER_SRC_OPTIMAL (the render
+    // pass's final layout). The caller orders the host or kernels reading the buffers after it.
     void cmdCopyToBuffers(VkCommandBuffer cmd) const;
 
     const vk::Buffer& color() const { return colorCopy_; }
@@ -59,11 +43,16 @@ public:
 private:
     std::uint32_t width_ = 0;
     std::uint32_t height_ = 0;
+    std::uint32_t samples_ = 1;
+    // The pixels: drawn into with one sample, resolved into with several (then depth_ is kResolvedDepthFormat).
     Attachment color_;
     Attachment plant_;
     Attachment organ_;
     Attachment depth_;
     Attachment sun_;
+    Attachment colorSamples_;
+    Attachment idSamples_;
+    Attachment depthSamples_;
     UniqueFramebuffer framebuffer_;
     vk::Buffer colorCopy_;
     vk::Buffer depthCopy_;

@@ -7,6 +7,7 @@
 #include <cstring>
 #include <deque>
 #include <limits>
+#include <map>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -105,7 +106,7 @@ void requireFeatures(const vk::Context& context) {
 
 struct Renderer::Resources {
     Resources(const vk::Context& context, const ir::DrawAssets& assets)
-        : meshes(context, assets.models), textures(context, assets.textures), renderPass(createRenderPass(context)), pipelines(context, renderPass.get()),
+        : meshes(context, assets.models), textures(context, assets.textures),
           drawArgs(kernel(context, "organs/draw_args")), drawLists(kernel(context, "organs/draw_lists")),
           shadowVolumes(kernel(context, "shadows/shadow_volumes")),
           toonOutline(kernel(context, "styles/toon_outline")),
@@ -115,12 +116,26 @@ struct Renderer::Resources {
                      VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT),
           volumeFaces(context, sizeof(kVolumeFaces), vk::MemoryUsage::DeviceLocal, VK_BUFFER_USAGE_INDEX_BUFFER_BIT) {
         vk::uploadSpan(context, volumeFaces, std::span<const std::uint32_t>(kVolumeFaces));
+        passFor(context, 1);
+    }
+
+    // A render pass and its pipelines, for frames of a number of samples a pixel.
+    struct SampledPass {
+        SampledPass(const vk::Context& context, std::uint32_t samples)
+            : renderPass(createRenderPass(context, samples)), pipelines(context, renderPass.get(), samples) {}
+        UniqueRenderPass renderPass;
+        DrawPipelines pipelines;
+    };
+    // Made as frames of another number of samples first need them.
+    const SampledPass& passFor(const vk::Context& context, std::uint32_t samples) {
+        std::unique_ptr<SampledPass>& pass = passes[samples];
+        if (!pass) pass = std::make_unique<SampledPass>(context, samples);
+        return *pass;
     }
 
     OrganMeshes meshes;
     TextureArray textures;
-    UniqueRenderPass renderPass;
-    DrawPipelines pipelines;
+    std::map<std::uint32_t, std::unique_ptr<SampledPass>> passes;
     vk::ComputePipeline drawArgs;
     vk::ComputePipeline drawLists;
     vk::ComputePipeline shadowVolumes;
@@ -151,7 +166,7 @@ struct Renderer::Resources {
     // the toon style's outlines over the copied target.
     void recordDrawInputs(VkCommandBuffer cmd, const std::vector<OrganPart>& parts, const FrameSetup& setup);
     void recordScene(VkCommandBuffer cmd, const RenderTarget& target, const std::vector<OrganPart>& parts,
-                     const FrameSetup& setup);
+                     const FrameSetup& setup, const SampledPass& pass);
     void recordOutlines(VkCommandBuffer cmd, const RenderTarget& target, const FrameSetup& setup);
 
     // Room for the shadow volumes of `triangles` casting triangles (at most settings.maxShadowVolumeBytes, in
@@ -211,15 +226,18 @@ std::uint32_t Renderer::Resources::volumeVerticesFor(const vk::Context& context,
     return volumeCapacity;
 }
 
-std::unique_ptr<RenderTarget> Renderer::makeTarget(std::uint32_t width, std::uint32_t height) const {
-    return std::make_unique<RenderTarget>(context_, resources_->renderPass.get(), width, height);
+std::unique_ptr<RenderTarget> Renderer::makeTarget(std::uint32_t width, std::uint32_t height,
+                                                   std::uint32_t samples) {
+    checkSamples(context_, samples);
+    return std::make_unique<RenderTarget>(context_, resources_->passFor(context_, samples).renderPass.get(), width,
+                                          height, samples);
 }
 
-RenderTarget& Renderer::offscreenTarget(std::uint32_t width, std::uint32_t height) {
+RenderTarget& Renderer::offscreenTarget(std::uint32_t width, std::uint32_t height, std::uint32_t samples) {
     Resources& r = *resources_;
-    if (!r.target || r.target->width() != width || r.target->height() != height) {
+    if (!r.target || r.target->width() != width || r.target->height() != height || r.target->samples() != samples) {
         r.target.reset();
-        r.target = std::make_unique<RenderTarget>(context_, r.renderPass.get(), width, height);
+        r.target = makeTarget(width, height, samples);
     }
     return *r.target;
 }
@@ -260,6 +278,8 @@ FrameSetup Renderer::prepareWithin(std::uint32_t organs, const Bounds& bounds, c
 }
 
 FrameSetup Renderer::prepareView(const Bounds& bounds, const RenderSettings& settings) {
+    const std::uint32_t pixelSamples = settings.samples == 0 ? defaultSamples(context_) : settings.samples;
+    checkSamples(context_, pixelSamples);
     const VkPhysicalDeviceLimits& limits = context_.limits();
     const std::uint64_t samples = std::max(settings.antialias, 1u);
     if (settings.width == 0 || settings.height == 0 || settings.width * samples > limits.maxFramebufferWidth ||
@@ -275,6 +295,7 @@ FrameSetup Renderer::prepareView(const Bounds& bounds, const RenderSettings& set
     Resources& r = *resources_;
     FrameSetup setup;
     setup.settings = settings;
+    setup.settings.samples = pixelSamples;
     // A paper cut has no shadows: what the sun does not reach is cut out already.
     if (settings.style == Style::PaperCut) setup.settings.shadows = Shadows::None;
     setup.towardsSun = settings.sunDirection / sunLength;
@@ -433,19 +454,30 @@ void Renderer::Resources::recordDrawInputs(VkCommandBuffer cmd, const std::vecto
 }
 
 void Renderer::Resources::recordScene(VkCommandBuffer cmd, const RenderTarget& into,
-                                      const std::vector<OrganPart>& parts, const FrameSetup& setup) {
+                                      const std::vector<OrganPart>& parts, const FrameSetup& setup,
+                                      const SampledPass& pass) {
     Resources& r = *this;
     const OrganMeshData& mesh = r.meshes.data();
+    const DrawPipelines& pipelines = pass.pipelines;
     const RenderSettings& settings = setup.settings;
     bool shadows = settings.shadows == Shadows::Volume;
-    std::array<VkClearValue, kAttachments> clears{};
-    clears[kColorAttachment].color = {{settings.background.r, settings.background.g, settings.background.b, 0}};
-    clears[kPlantAttachment].color.uint32[0] = Frame::kNoId;
-    clears[kOrganAttachment].color.uint32[0] = Frame::kNoId;
-    clears[kDepthAttachment].depthStencil = {1.0f, 0};
+    const bool multisampled = into.samples() > 1;
+    const VkClearColorValue background{{settings.background.r, settings.background.g, settings.background.b, 0}};
+    std::vector<VkClearValue> clears(multisampled ? std::uint32_t{kSampledAttachments} : std::uint32_t{kAttachments});
+    if (multisampled) {
+        clears[kColorSamples].color = background;
+        clears[kIdSamples].color = {{65535.0f, 65535.0f, 65535.0f, 65535.0f}}; // kNoId's halves
+        clears[kSunSamples].color = {{0.0f, 0.0f, 0.0f, 1.0f}};                 // the far plane's depth
+        clears[kDepthSamples].depthStencil = {1.0f, 0};
+    } else {
+        clears[kColorAttachment].color = background;
+        clears[kPlantAttachment].color.uint32[0] = Frame::kNoId;
+        clears[kOrganAttachment].color.uint32[0] = Frame::kNoId;
+        clears[kDepthAttachment].depthStencil = {1.0f, 0};
+    }
     VkRenderPassBeginInfo begin{};
     begin.sType = VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO;
-    begin.renderPass = r.renderPass.get();
+    begin.renderPass = pass.renderPass.get();
     begin.framebuffer = into.framebuffer();
     begin.renderArea = {{0, 0}, {into.width(), into.height()}};
     begin.clearValueCount = static_cast<std::uint32_t>(clears.size());
@@ -455,14 +487,14 @@ void Renderer::Resources::recordScene(VkCommandBuffer cmd, const RenderTarget& i
     VkRect2D scissor{{0, 0}, {into.width(), into.height()}};
     vkCmdSetViewport(cmd, 0, 1, &viewport);
     vkCmdSetScissor(cmd, 0, 1, &scissor);
-    auto drawScene = [&](std::uint32_t pass) {
+    auto drawScene = [&](std::uint32_t lighting) {
         VkDeviceSize zero = 0;
         VkBuffer meshVertices = r.meshes.vertices().handle();
         vkCmdBindVertexBuffers(cmd, 0, 1, &meshVertices, &zero);
         vkCmdBindIndexBuffer(cmd, r.meshes.indices().handle(), 0, VK_INDEX_TYPE_UINT32);
         auto push = [&](std::uint32_t kind) {
-            shared::DrawPush constants{kind, pass};
-            vkCmdPushConstants(cmd, r.pipelines.layout(), VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
+            shared::DrawPush constants{kind, lighting};
+            vkCmdPushConstants(cmd, pipelines.layout(), VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
                                sizeof(constants), &constants);
         };
         const auto shapes = static_cast<std::uint32_t>(mesh.leafShapeTriangles.size());
@@ -478,9 +510,9 @@ void Renderer::Resources::recordScene(VkCommandBuffer cmd, const RenderTarget& i
                                              static_cast<std::uint32_t>(kDrawCommandSize));
         };
         for (Culling culling : {Culling::Back, Culling::None}) {
-            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, r.pipelines.base(culling));
+            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines.base(culling));
             for (size_t part = 0; part < parts.size(); ++part) {
-                r.pipelines.pushDescriptors(cmd, *parts[part].instances, r.frameConstants,
+                pipelines.pushDescriptors(cmd, *parts[part].instances, r.frameConstants,
                                             r.textures.descriptor(), r.drawOrders[part]);
                 for (std::uint32_t kind = 0; kind < kOrganKinds; ++kind) {
                     if (mesh.closedHull[kind] == (culling == Culling::Back)) {
@@ -496,7 +528,7 @@ void Renderer::Resources::recordScene(VkCommandBuffer cmd, const RenderTarget& i
     };
     if (shadows) {
         drawScene(shared::kPassAmbient);
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, r.pipelines.volume());
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines.volume());
         VkDeviceSize zero = 0;
         VkBuffer volumes = r.volumeVertices.handle();
         vkCmdBindVertexBuffers(cmd, 0, 1, &volumes, &zero);
@@ -508,8 +540,14 @@ void Renderer::Resources::recordScene(VkCommandBuffer cmd, const RenderTarget& i
     }
     vkCmdNextSubpass(cmd, VK_SUBPASS_CONTENTS_INLINE);
     if (shadows) {
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, r.pipelines.sunlit());
-        r.pipelines.pushSunLight(cmd, into.sunLight());
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines.sunlit());
+        pipelines.pushSunLight(cmd, into);
+        vkCmdDraw(cmd, 3, 1, 0, 0);
+    }
+    if (multisampled) {
+        vkCmdNextSubpass(cmd, VK_SUBPASS_CONTENTS_INLINE);
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines.resolve());
+        pipelines.pushSamples(cmd, into);
         vkCmdDraw(cmd, 3, 1, 0, 0);
     }
     vkCmdEndRenderPass(cmd);
@@ -563,7 +601,7 @@ void Renderer::record(VkCommandBuffer cmd, const RenderTarget& target, const std
         r.drawOrders[p] = vk::Buffer(context_, bytes, vk::MemoryUsage::DeviceLocal);
     }
     r.recordDrawInputs(cmd, parts, setup);
-    r.recordScene(cmd, target, parts, setup);
+    r.recordScene(cmd, target, parts, setup, r.passFor(context_, target.samples()));
     target.cmdCopyToBuffers(cmd);
     memoryDependency(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
                      VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_HOST_BIT,
@@ -624,7 +662,8 @@ Frame Renderer::render(const vk::Buffer& instances, const vk::Buffer& table, con
 Frame Renderer::render(const std::vector<OrganPart>& parts, const Bounds& bounds, const RenderSettings& settings) {
     const std::uint32_t samples = std::max(settings.antialias, 1u);
     FrameSetup setup = prepare(parts, bounds, settings);
-    const RenderTarget& target = offscreenTarget(settings.width * samples, settings.height * samples);
+    const RenderTarget& target =
+        offscreenTarget(settings.width * samples, settings.height * samples, setup.settings.samples);
     context_.submitAndWait([&](VkCommandBuffer cmd) { record(cmd, target, parts, setup); });
     return samples > 1 ? downsample(readBack(target, setup), samples) : readBack(target, setup);
 }

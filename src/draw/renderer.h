@@ -4,8 +4,9 @@
 // host (see frame.h) for the image writers.
 //
 // A frame, in order: [shadow volumes kernel] -> draw arguments kernel -> render pass { ground and organs with
-// ambient light (or all light) -> [volumes into the stencil -> organs and ground again adding the sun where the
-// stencil is 0] } -> copies to host-visible buffers -> [toon outlines kernel].
+// ambient light (or all light) -> [volumes into the stencil -> the sun's light added where the stencil is 0] ->
+// [with several samples a pixel, the pixels resolved from their samples] } -> copies to host-visible buffers ->
+// [toon outlines kernel].
 // Frames may be in flight (kFramesInFlight): nothing the host writes for a frame is shared with the next.
 #pragma once
 
@@ -109,10 +110,11 @@ public:
     Frame readBack(const RenderTarget& target, const FrameSetup& setup) const;
     // What the last frame recorded drew of part `part`, once its submission has completed (reads the device).
     DrawnOrgans drawnOrgans(size_t part = 0) const;
-    // The offscreen target of the given size, made on first use and kept while the size stays.
-    RenderTarget& offscreenTarget(std::uint32_t width, std::uint32_t height);
+    // The offscreen target of the given size and samples a pixel, made on first use and kept while they stay.
+    // Throws std::invalid_argument where the device cannot draw that many samples (draw::checkSamples).
+    RenderTarget& offscreenTarget(std::uint32_t width, std::uint32_t height, std::uint32_t samples = 1);
     // Another offscreen target, for a frame in flight beside the one drawing into the first.
-    std::unique_ptr<RenderTarget> makeTarget(std::uint32_t width, std::uint32_t height) const;
+    std::unique_ptr<RenderTarget> makeTarget(std::uint32_t width, std::uint32_t height, std::uint32_t samples = 1);
 
 private:
     // The camera and constants, after checking the size and the sun.

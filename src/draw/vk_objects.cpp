@@ -8,7 +8,7 @@ namespace simeco::draw {
 
 DeviceImage::DeviceImage(const vk::Context& context, VkFormat format, VkImageAspectFlags aspect,
                          VkImageUsageFlags usage, VkExtent2D extent, std::uint32_t levels, std::uint32_t layers,
-                         VkImageViewType viewType) {
+                         VkImageViewType viewType, std::uint32_t samples) {
     VkDevice device = context.device();
     VkImageCreateInfo info{};
     info.sType = VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO;
@@ -17,7 +17,7 @@ DeviceImage::DeviceImage(const vk::Context& context, VkFormat format, VkImageAsp
     info.extent = {extent.width, extent.height, 1};
     info.mipLevels = levels;
     info.arrayLayers = layers;
-    info.samples = VK_SAMPLE_COUNT_1_BIT;
+    info.samples = static_cast<VkSampleCountFlagBits>(samples);
     info.tiling = VK_IMAGE_TILING_OPTIMAL;
     info.usage = usage;
     info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
@@ -50,8 +50,9 @@ DeviceImage::DeviceImage(const vk::Context& context, VkFormat format, VkImageAsp
 }
 
 Attachment::Attachment(const vk::Context& context, VkFormat imageFormat, VkImageAspectFlags aspect,
-                       VkImageUsageFlags usage, std::uint32_t width, std::uint32_t height)
-    : DeviceImage(context, imageFormat, aspect, usage, {width, height}, 1, 1), format(imageFormat) {}
+                       VkImageUsageFlags usage, std::uint32_t width, std::uint32_t height, std::uint32_t samples)
+    : DeviceImage(context, imageFormat, aspect, usage, {width, height}, 1, 1, VK_IMAGE_VIEW_TYPE_2D, samples),
+      format(imageFormat) {}
 
 void imageTransition(VkCommandBuffer cmd, VkImage image, std::uint32_t levels, std::uint32_t layers, VkImageLayout from,
                      VkImageLayout to, VkPipelineStageFlags srcStage, VkAccessFlags srcAccess,

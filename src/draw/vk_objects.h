@@ -19,23 +19,23 @@ using UniqueRenderPass = vk::DeviceHandle<VkRenderPass, vkDestroyRenderPass>;
 using UniqueFramebuffer = vk::DeviceHandle<VkFramebuffer, vkDestroyFramebuffer>;
 
 // A 2D image in device-local memory with `levels` mip levels and `layers` layers, and a view of all of them of the
-// given aspect and type.
+// given aspect and type; `samples` a pixel (a multisampled image has one level).
 struct DeviceImage {
     DeviceImage() = default;
     DeviceImage(const vk::Context& context, VkFormat format, VkImageAspectFlags aspect, VkImageUsageFlags usage,
                 VkExtent2D extent, std::uint32_t levels, std::uint32_t layers,
-                VkImageViewType viewType = VK_IMAGE_VIEW_TYPE_2D);
+                VkImageViewType viewType = VK_IMAGE_VIEW_TYPE_2D, std::uint32_t samples = 1);
 
     vk::UniqueMemory memory; // declared first so the image and view go before their memory
     UniqueImage image;
     UniqueImageView view;
 };
 
-// A render target's image: one level, one layer.
+// A render target's image: one level, one layer, `samples` a pixel.
 struct Attachment : DeviceImage {
     Attachment() = default;
     Attachment(const vk::Context& context, VkFormat format, VkImageAspectFlags aspect, VkImageUsageFlags usage,
-               std::uint32_t width, std::uint32_t height);
+               std::uint32_t width, std::uint32_t height, std::uint32_t samples = 1);
 
     VkFormat format = VK_FORMAT_UNDEFINED;
 };

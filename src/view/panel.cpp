@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include <fmt/format.h>
 #include <imgui.h>
 
 namespace simeco::view {
@@ -55,13 +56,21 @@ void simulation(ViewControls& c, PanelActions& actions) {
                        ImGuiSliderFlags_Logarithmic);
 }
 
-void look(ViewControls& c, PanelActions& actions) {
+void look(ViewControls& c, const PanelFigures& f, PanelActions& actions) {
     if (!ImGui::CollapsingHeader("Look", ImGuiTreeNodeFlags_DefaultOpen)) return;
     ImGui::Checkbox("shadows", &c.shadows);
     const char* styles[] = {"lit", "toon", "outline", "paper-cut"};
     int style = int(c.style);
     if (ImGui::Combo("style", &style, styles, 4)) c.style = draw::Style(style);
     ImGui::SliderFloat("resolution x", &c.renderScale, 0.25f, 2.0f, "%.2f");
+    // Multisampling: the counts the device draws.
+    if (ImGui::BeginCombo("msaa", fmt::format("{} a pixel", c.samples).c_str())) {
+        for (std::uint32_t count = 1; count <= 64; count *= 2) {
+            if ((f.drawableSamples & count) == 0) continue;
+            if (ImGui::Selectable(fmt::format("{} a pixel", count).c_str(), c.samples == count)) c.samples = count;
+        }
+        ImGui::EndCombo();
+    }
     actions.screenshot = ImGui::Button("screenshot");
 }
 
@@ -108,7 +117,7 @@ PanelActions drawPanel(ViewControls& controls, const PanelFigures& f) {
     environment(controls, actions);
     species(controls, actions);
     simulation(controls, actions);
-    look(controls, actions);
+    look(controls, f, actions);
     ImGui::End();
     return actions;
 }

@@ -36,6 +36,7 @@ struct PanelFigures {
     std::vector<SpeciesHistory> history;
     std::optional<PickedPlant> picked;
     std::string error; // of the last reload, empty when it loaded
+    std::uint32_t drawableSamples = 1; // the counts of samples a pixel the device draws, a bit each
 };
 
 // What the user asked for besides changed controls.

@@ -59,7 +59,7 @@ SpeciesControls& speciesOf(ViewControls& controls, std::string_view name, std::s
 
 std::string settingNames() {
     return "sun.azimuth, sun.elevation, sun.intensity, sky, daylight, rain, soil_ph, gravity, time_scale, paused, "
-           "seed, plants, density, shadows, style, render_scale, species.K.grow_rate, species.K.geotropism, "
+           "seed, plants, density, shadows, style, render_scale, msaa, species.K.grow_rate, species.K.geotropism, "
            "species.K.strength";
 }
 
@@ -84,6 +84,7 @@ void applySetting(ViewControls& c, std::string_view assignment) {
     else if (name == "density") c.density = number(name, value, 0.01f, 100.0f);
     else if (name == "shadows") c.shadows = onOff(name, value);
     else if (name == "render_scale") c.renderScale = number(name, value, 0.25f, 2.0f);
+    else if (name == "msaa") c.samples = count(name, value, 64); // the device's counts are checked as it draws
     else if (name == "style") {
         const std::optional<draw::Style> style = ir::pictureStyleNamed(std::string(value));
         if (!style)
@@ -132,6 +133,7 @@ ViewControls controlsFor(const field::LiveEnvironment& environment, const draw::
     c.shadows = settings.shadows == draw::Shadows::Volume;
     c.style = settings.style;
     c.renderScale = float(settings.antialias);
+    c.samples = settings.samples;
     for (size_t s = 0; s < environment.species.size(); ++s)
         c.species.push_back({s < speciesNames.size() ? speciesNames[s] : fmt::format("{}", s),
                              environment.species[s]});

@@ -40,6 +40,7 @@ struct ViewControls {
     // The frame's size relative to the window's: below 1 a faster, coarser picture; 2 draws four samples a pixel,
     // averaged as the frame is scaled into the window (supersampling).
     float renderScale = 1.0f;
+    std::uint32_t samples = 1; // a pixel, multisampled (draw::RenderSettings::samples)
     std::vector<SpeciesControls> species;
 };
 
@@ -50,9 +51,9 @@ public:
 };
 
 // Applies `name=value`: sun.azimuth, sun.elevation, sun.intensity, sky, daylight, rain, soil_ph, gravity,
-// time_scale, paused, seed, plants, density, shadows (on/off), style (lit/toon/outline/paper-cut), render_scale, and
-// per species species.K.grow_rate, species.K.geotropism, species.K.strength with K a species' number (from 0) or
-// name.
+// time_scale, paused, seed, plants, density, shadows (on/off), style (lit/toon/outline/paper-cut), render_scale,
+// msaa (samples a pixel), and per species species.K.grow_rate, species.K.geotropism, species.K.strength with K a
+// species' number (from 0) or name.
 void applySetting(ViewControls& controls, std::string_view assignment);
 // Every name applySetting takes, for the help and the error messages.
 std::string settingNames();

@@ -181,6 +181,7 @@ ViewControls keptControls(ViewControls scene, const ViewControls& user) {
     scene.plants = user.plants;
     scene.density = user.density;
     scene.renderScale = user.renderScale;
+    scene.samples = user.samples;
     return scene;
 }
 
@@ -238,7 +239,10 @@ void runViewer(const ViewOptions& options) {
     controls.seed = simulationOptions.seed >= 0 ? std::uint32_t(simulationOptions.seed) : 0;
     controls.plants = simulationOptions.plants;
     controls.density = simulationOptions.density;
+    if (controls.samples == 0) controls.samples = draw::interactiveSamples(context);
     for (const std::string& s : options.settings) applySetting(controls, s);
+    draw::checkSamples(context, controls.samples);
+    const std::uint32_t drawableSamples = draw::drawableSampleCounts(context);
     live.simulation->setEnvironment(environmentOf(controls, live.simulation->environment()));
     const auto ticksBefore = std::uint32_t(std::ceil(options.startTime / simulationOptions.dt - 1e-9));
     if (ticksBefore > 0)
@@ -303,6 +307,7 @@ void runViewer(const ViewOptions& options) {
         for (const shared::PlantStatistics& s : live.statistics) figures.instances += s.organs;
         figures.history = live.history;
         figures.error = error;
+        figures.drawableSamples = drawableSamples;
         if (pickedPlant && *pickedPlant < live.statistics.size()) {
             const shared::PlantStatistics& s = live.statistics[*pickedPlant];
             if (live.plantModules.empty()) live.plantModules = live.simulation->plantModules();
@@ -364,14 +369,16 @@ void runViewer(const ViewOptions& options) {
         draw::RenderSettings settings = live.settings;
         settings.width = std::max(1u, std::uint32_t(std::lround(float(extent.width) * controls.renderScale)));
         settings.height = std::max(1u, std::uint32_t(std::lround(float(extent.height) * controls.renderScale)));
-        settings.antialias = 1; // the render scale samples, the presenter's scaling averages
+        settings.antialias = 1; // the render scale supersamples, the presenter's scaling averages
+        settings.samples = controls.samples;
         settings.camera = orbit.camera();
         settings.shadows = controls.shadows ? draw::Shadows::Volume : draw::Shadows::None;
         settings.style = controls.style;
         settings.sunDirection = sunDirection(controls.sunAzimuth, controls.sunElevation);
         settings.sunColor = live.settings.sunColor * controls.sunIntensity;
-        if (!slot.target || slot.target->width() != settings.width || slot.target->height() != settings.height)
-            slot.target = live.renderer->makeTarget(settings.width, settings.height);
+        if (!slot.target || slot.target->width() != settings.width || slot.target->height() != settings.height ||
+            slot.target->samples() != settings.samples)
+            slot.target = live.renderer->makeTarget(settings.width, settings.height, settings.samples);
         const std::vector<draw::OrganPart> parts = field::organParts(live.organs);
         slot.setup = live.renderer->prepare(parts, live.framed, settings);
 

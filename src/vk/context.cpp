@@ -85,10 +85,12 @@ Context::Context(const ContextOptions& options)
     enabled.features.shaderInt16 = supported.features.shaderInt16;
     enabled.features.shaderFloat64 = supported.features.shaderFloat64;
     // The renderer: draws whose firstInstance selects a kind's instances, per-attachment blending (colour
-    // blends, ids do not), and depth clamp for shadow volumes reaching infinity.
+    // blends, ids do not), depth clamp for shadow volumes reaching infinity, and a multisampled frame's sunlit
+    // pass run per sample.
     enabled.features.drawIndirectFirstInstance = supported.features.drawIndirectFirstInstance;
     enabled.features.independentBlend = supported.features.independentBlend;
     enabled.features.depthClamp = supported.features.depthClamp;
+    enabled.features.sampleRateShading = supported.features.sampleRateShading;
 
     float priority = 1.0f;
     VkDeviceQueueCreateInfo queueInfo{};

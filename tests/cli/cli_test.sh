@@ -185,6 +185,27 @@ code=$?
 [ $code -ne 0 ] && [ ! -e "$work/bad.png" ] && [ -z "$(ls "$work" | grep -i 'bad.*tmp')" ]
 check "render refuses a bad size and writes nothing (code $code)" $?
 
+# Multisampled unless told otherwise: a paper cut's flat colours blend along their edges; one sample a pixel keeps
+# them flat. A count of samples the device lacks is refused by name, and nothing is written.
+for msaa in default 1; do
+  option=""; [ $msaa = 1 ] && option="--msaa 1"
+  "$simeco" render "$source_dir/grammars/abop/fig1.24d.l" -n 4 --size 96x72 --style paper-cut $option \
+    -o "$work/ms-$msaa.png" >"$work/ms-$msaa.txt" 2>&1
+done
+PYTHONPATH="$(dirname "$0")" python3 -c "
+import sys
+from png_pixels import read_png
+colours = [len({p for row in read_png(name)[2] for p in row}) for name in sys.argv[1:]]
+assert colours[1] < 8 and colours[0] > colours[1] + 4, colours  # edges: a quarter, a half, three quarters
+" "$work/ms-default.png" "$work/ms-1.png"
+check "render multisamples by default, and --msaa 1 draws a pixel from one sample ($(cat "$work/ms-default.txt"))" $?
+"$simeco" render "$source_dir/grammars/abop/fig1.24d.l" -n 2 --size 48x36 --msaa 16 -o "$work/ms16.png" \
+  >"$work/ms16.txt" 2>&1
+code=$?
+if [ $code -eq 0 ]; then [ -s "$work/ms16.png" ]; else
+  [ ! -e "$work/ms16.png" ] && grep -q "cannot draw 16 samples a pixel: the device .* draws 1" "$work/ms16.txt"; fi
+check "render draws 16 samples a pixel where the device has them, else says which it has ($(cat "$work/ms16.txt"))" $?
+
 "$simeco" render "$source_dir/grammars/abop/fig1.24d.l" --size 20x -o "$work/bad.png" >/dev/null 2>&1
 code=$?
 [ $code -eq 2 ]

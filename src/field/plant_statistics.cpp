@@ -1,6 +1,7 @@
 #include "field/plant_statistics.h"
 
 #include <algorithm>
+#include <cstring>
 #include <span>
 
 #include <glm/geometric.hpp>
@@ -74,11 +75,23 @@ std::vector<shared::PlantStatistics> plantStatisticsCpu(const turtle::Interpreta
     return stats;
 }
 
+namespace {
+
+// A small buffer the host writes through its mapping, without a submission: a field has a statistics counter for
+// each of its batches, and the drawing that records them is one submission.
+vk::Buffer mappedBufferWith(const vk::Context& context, std::span<const float> values) {
+    vk::Buffer buffer(context, std::max<VkDeviceSize>(values.size_bytes(), sizeof(float)), vk::MemoryUsage::Upload);
+    if (!values.empty()) std::memcpy(buffer.mapped(), values.data(), values.size_bytes());
+    return buffer;
+}
+
+} // namespace
+
 GpuPlantStatistics::GpuPlantStatistics(const vk::Context& context, const std::vector<float>& shapeAreas)
     : context_(context), kernel_(vk::ComputePipeline::embedded(context, "grow/plant_statistics")) {
-    shapeAreas_ = vk::deviceBufferWith(context, std::span<const float>(shapeAreas));
+    shapeAreas_ = mappedBufferWith(context, std::span<const float>(shapeAreas));
     const float none = 0.0f;
-    noParticles_ = vk::deviceBufferWith(context, std::span<const float>(&none, 1));
+    noParticles_ = mappedBufferWith(context, std::span<const float>(&none, 1));
     tableReadback_ = vk::Buffer(context, sizeof(shared::OrganTable), vk::MemoryUsage::Readback);
 }
 
@@ -92,7 +105,7 @@ void GpuPlantStatistics::record(VkCommandBuffer cmd, const turtle::DeviceOrgans&
         readback_ = vk::Buffer(context_, bytes, vk::MemoryUsage::Readback);
     }
     if (!bases_ || baseHeights != uploadedBases_) {
-        bases_ = vk::deviceBufferWith(context_, std::span<const float>(baseHeights));
+        bases_ = mappedBufferWith(context_, std::span<const float>(baseHeights));
         uploadedBases_ = baseHeights;
     }
     const shared::PlantStatisticsPush push{plants_, drawnParticles ? 1u : 0u, 0, 0};

@@ -40,6 +40,10 @@ void Simulation::Impl::makeBatches(uint32_t plantsPerBatch) {
         if (options.backend == Backend::Gpu) {
             b.deriver = std::make_unique<gpu::GpuDeriver>(*context, g.species, gpu::GpuStrategy::Parallel);
             b.deriver->begin(batch, firstStepsRoom(b));
+            // The seedlings' drawn string, and a room for it (a few levels, an organ for every drawn module, every
+            // mark's searches): the field's first drawing records the turtle as later ones do.
+            b.deriver->drawn();
+            b.room = turtle::TurtleRoom{4, b.deriver->lastDrawn().count, ~0u};
             b.growth = std::make_unique<grow::GpuGrowth>(*context, tables, b.deriveTimes, b.vigour, b.field.placements);
             b.modules = b.deriver->current().count;
         } else {

@@ -53,6 +53,7 @@ std::vector<const turtle::DeviceOrgans*> Simulation::Impl::interpretOnDevice() {
         if (fit) { // the string drawn again until the next step needs no more than it found
             b.room->levels = found->levels;
             b.room->marks = found->marks;
+            b.roomGuessed = false;
         }
         // Else, or where it outgrew its room, the batch is drawn with the host reading between the turtle's passes.
         const Drawing drawing = fit ? Drawing{*drawnAgain[k], &b.target.organs} : drawInterpreting(b, drawnAgain[k]);
@@ -108,6 +109,7 @@ Simulation::Impl::Drawing Simulation::Impl::drawInterpreting(Batch& b,
     const turtle::DeviceOrgans& organs = turtle->interpret(modules, b.field);
     b.room = turtle->lastRoom();
     b.room->marks = turtle->lastMarks(); // the string this batch draws again until it derives
+    b.roomGuessed = false;
     seconds.interpret += secondsSince(start);
     start = Clock::now();
     context->submitAndWait([&](VkCommandBuffer cmd) {

@@ -80,9 +80,12 @@ struct Batch {
     std::vector<float> vigour;            // per plant (empty: 1)
     uint64_t modules = 0;
     // What the batch's last interpretation took, while its drawn string is the one interpreted then (no step derived
-    // since): the next drawing records the turtle within it, in one submission with the grown sizes, the light and
-    // the statistics of every such batch, and reads nothing back between them.
+    // since), or before the first a seedling's room: the next drawing records the turtle within it, in one submission
+    // with the grown sizes, the light and the statistics of every such batch, and reads nothing back between them.
     std::optional<turtle::TurtleRoom> room;
+    // Whether `room` is roomAfterStep()'s guess, not yet drawn in: a step after it gets none (guesses on guesses
+    // would double the levels at every step not drawn).
+    bool roomGuessed = false;
     // Where that recording leaves its organs and its status, and where an interpretation's organs are kept: the
     // batch's own, until the field's merge.
     turtle::TurtleTarget target;
@@ -195,7 +198,9 @@ struct Simulation::Impl {
     // The room batch b's drawing records the turtle in after a step derived its string anew from `modulesBefore`
     // modules (with its homomorphism, so that the drawing after the tick records it as it records a string drawn
     // again): the last drawing's organs grown as the derived string grew (the target holds half again), twice its
-    // levels and four more, and its marks (every one after a seedling). None before a first drawing.
+    // levels and four more, and its marks (every one after a seedling, whose room is empty: an organ for every drawn
+    // module, four levels). None after a step derived waiting (deriveDue), a resume, or where the room was a guess
+    // no drawing took up: that drawing interprets.
     std::optional<turtle::TurtleRoom> roomAfterStep(const Batch& b, uint64_t modulesBefore) const;
     std::vector<const turtle::DeviceOrgans*> interpretOnDevice();
     uint32_t reinterpreted = 0; // batches the last drawing interpreted with the host reading between passes

@@ -32,7 +32,7 @@ TickReport Simulation::tick() {
 }
 
 std::optional<turtle::TurtleRoom> Simulation::Impl::roomAfterStep(const Batch& b, uint64_t modulesBefore) const {
-    if (!b.room) return std::nullopt;
+    if (!b.room || b.roomGuessed) return std::nullopt;
     const uint64_t modulesAfter = b.deriver->current().count;
     const double growth = std::max(1.0, double(modulesAfter) / double(std::max<uint64_t>(modulesBefore, 1)));
     // Seedlings that drew nothing yet: an organ for every drawn module, as many as most strings draw.
@@ -153,6 +153,7 @@ uint32_t Simulation::Impl::deriveAndGrowInOneSubmission(const std::vector<uint8_
             if (outcome == gpu::GpuDeriver::Advanced::DerivedAgain) outgrown.push_back(&b);
             if (outcome != gpu::GpuDeriver::Advanced::Recorded) ++rederived;
             b.room = roomAfterStep(b, modulesBefore[k]);
+            b.roomGuessed = true;
         } catch (...) {
             b.room.reset();
             if (!failure) failure = std::current_exception();

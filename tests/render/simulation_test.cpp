@@ -134,7 +134,7 @@ TEST_F(SimulationTest, EveryBatchDerivesInOneSubmissionAndIsDrawnInAnotherAsOnTh
 
 // A batch's streams start with room for its plants' first steps as the grown plants took them: 300 seedlings, whose
 // first step would outgrow the seeds' room, derive and grow their first steps in one submission each, none again.
-TEST_F(SimulationTest, AFieldsFirstStepsFitTheRoomItsGrownPlantsTook) {
+TEST_F(SimulationTest, AFieldsFirstStepsFitTheRoomItsGrownPlantsTookAndAreDrawnAsRecorded) {
     field::SimulationOptions o = garden(field::Backend::Gpu);
     o.plants = 300;
     o.plantsPerBatch = 0;
@@ -142,13 +142,26 @@ TEST_F(SimulationTest, AFieldsFirstStepsFitTheRoomItsGrownPlantsTook) {
     field::Simulation seedlings(o, &context());
     ASSERT_EQ(seedlings.batches(), 1u);
     for (int tick = 0; tick < 3; ++tick) {
-        const uint64_t before = context().submissions();
+        uint64_t before = context().submissions();
         const field::TickReport report = seedlings.tick();
         EXPECT_EQ(report.derived, 300u) << tick;
         EXPECT_EQ(report.rederived, 0u) << tick;
         EXPECT_EQ(context().submissions() - before, 1u) << tick;
+        // The seedlings' first drawing too is recorded within a room, as every later one, which is one submission
+        // (the first also uploads the turtle's tables, made as the field is first drawn).
+        before = context().submissions();
+        seedlings.interpretParts();
+        EXPECT_EQ(seedlings.reinterpretedBatches(), 0u) << tick;
+        if (tick > 0) {
+            EXPECT_EQ(context().submissions() - before, 1u) << tick;
+        }
     }
     EXPECT_GT(seedlings.modules(), 10u * 300u); // ten times the seeds
+    // Steps no drawing took up: the room after the first is a guess, and guesses are not grown on guesses (their
+    // levels would double at every step); the drawing after them interprets, reading between its passes.
+    for (int tick = 0; tick < 3; ++tick) EXPECT_EQ(seedlings.tick().derived, 300u);
+    seedlings.interpretParts();
+    EXPECT_EQ(seedlings.reinterpretedBatches(), 1u);
 }
 
 // Between derivation steps every batch is drawn again in one submission, into organ buffers of its own, and the

@@ -27,7 +27,7 @@ struct BenchArgs {
     bool render = false;
     bool sim = false;
     std::string size = "640x480";
-    std::uint32_t msaa = 0; // --sim: samples a pixel; 0: as the viewer draws them
+    std::uint32_t msaa = 0; // --render, --sim: samples a pixel; 0: as the viewer draws them
     std::vector<std::uint32_t> fields; // --sim: the fields' plants
 };
 
@@ -65,6 +65,7 @@ void runRenderBench(const BenchArgs& args) {
     o.device = args.options.device;
     o.runCpu = !args.noCpu;
     frameSize(args.size, o.width, o.height);
+    o.samples = args.msaa;
     bench::RenderBenchReport report = bench::runRenderBenchmark(
         o, [](const std::string& line) { std::fprintf(stderr, "bench: %s\n", line.c_str()); });
     if (!args.json.empty()) bench::writeJsonAtomically(args.json, bench::renderReportJson(report));
@@ -77,6 +78,8 @@ void runBench(BenchArgs args) {
         throw CommandLineError(fmt::format("{} measures the device: it cannot run with --no-gpu",
                                            args.render ? "--render" : "--sim"));
     if (!args.fields.empty() && !args.sim) throw CommandLineError("--fields sizes the fields of --sim only");
+    if (args.msaa != 0 && !args.render && !args.sim)
+        throw CommandLineError("--msaa sets the frames of --render and --sim only");
     if (args.render) return runRenderBench(args);
     if (args.sim) return runSimBench(args);
     if (args.options.root.empty()) {
@@ -122,8 +125,8 @@ void registerBenchCommand(CLI::App& app, CommandContext& ctx) {
                   "garden at 100, 1,000 and 10,000 plants instead of derivation");
     cmd->add_option("--size", args->size, "--render, --sim: frame size WIDTHxHEIGHT (default 640x480)");
     cmd->add_option("--msaa", args->msaa,
-                    "--sim: samples a pixel of the frames (default: as the viewer draws them, 1 on a CPU device, "
-                    "else 4)")
+                    "--render, --sim: samples a pixel of the frames (default: as the viewer draws them, 1 on a CPU "
+                    "device, else 4)")
         ->check(CLI::IsMember({1u, 2u, 4u, 8u, 16u}));
     cmd->add_option("--fields", args->fields,
                     "--sim: the fields' plants, comma-separated (default 100,1000,10000; --quick 10,100), e.g. "

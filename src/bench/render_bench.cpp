@@ -114,6 +114,8 @@ RenderBenchReport runRenderBenchmark(const RenderBenchOptions& options,
     report.driver = info.driverName;
     progress(fmt::format("device: {} ({}); measuring copy bandwidth", report.deviceName, report.deviceType));
     report.copy = measureCopyBandwidth(context, options.warmUp, options.repeat);
+    if (report.options.samples == 0) report.options.samples = draw::interactiveSamples(context);
+    draw::checkSamples(context, report.options.samples);
 
     // The turtle keeps a step per module in one buffer: the device's largest binding bounds a field.
     std::uint64_t cap = context.limits().maxStorageBufferRange / sizeof(shared::TurtleStep);
@@ -154,6 +156,7 @@ RenderBenchReport runRenderBenchmark(const RenderBenchOptions& options,
             draw::RenderSettings settings;
             settings.width = options.width;
             settings.height = options.height;
+            settings.samples = report.options.samples;
             for (draw::Shadows shadows : {draw::Shadows::Volume, draw::Shadows::None}) {
                 settings.shadows = shadows;
                 Timed t = timed(options, e.organs,
@@ -163,7 +166,8 @@ RenderBenchReport runRenderBenchmark(const RenderBenchOptions& options,
             // A growth tick: the string interpreted again and drawn in one submission, with no wait inside.
             settings.shadows = draw::Shadows::None;
             draw::FrameSetup setup = renderer.prepare(organs.table, extent.bounds, settings);
-            const draw::RenderTarget& target = renderer.offscreenTarget(settings.width, settings.height);
+            const draw::RenderTarget& target =
+                renderer.offscreenTarget(settings.width, settings.height, setup.settings.samples);
             const turtle::TurtleRoom room = gpuTurtle.lastRoom();
             e.tick = timed(options, e.organs, [&] {
                 context.submitAndWait([&](VkCommandBuffer cmd) {

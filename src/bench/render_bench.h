@@ -23,6 +23,7 @@ struct RenderBenchOptions {
     int warmUp = 1;
     std::uint32_t width = 640;
     std::uint32_t height = 480;
+    std::uint32_t samples = 0;    // a pixel; 0: as the viewer draws them (draw::interactiveSamples)
     std::uint64_t maxModules = 0; // cap on a field's string; 0: what the turtle's buffers can bind
     std::string device;
     bool runCpu = true;

@@ -22,9 +22,16 @@ nlohmann::json renderReportJson(const RenderBenchReport& report) {
     const RenderBenchOptions& o = report.options;
     nlohmann::json j;
     j["tool"] = "simeco bench --render";
-    j["settings"] = {{"quick", o.quick},   {"repeat", o.repeat},         {"warm_up", o.warmUp},
-                     {"width", o.width},   {"height", o.height},         {"max_modules", o.maxModules},
-                     {"grammar", report.grammar}, {"statistic", "median"}, {"cpu_threads", 1}};
+    j["settings"] = {{"quick", o.quick},
+                     {"repeat", o.repeat},
+                     {"warm_up", o.warmUp},
+                     {"width", o.width},
+                     {"height", o.height},
+                     {"samples", o.samples},
+                     {"max_modules", o.maxModules},
+                     {"grammar", report.grammar},
+                     {"statistic", "median"},
+                     {"cpu_threads", 1}};
     j["device"] = {{"name", report.deviceName}, {"type", report.deviceType}, {"driver", report.driver}};
     if (report.copy) {
         j["copy_bandwidth"] = copyBandwidthSummary(*report.copy);
@@ -59,9 +66,10 @@ nlohmann::json renderReportJson(const RenderBenchReport& report) {
 std::string formatRenderTable(const RenderBenchReport& report) {
     std::string out = fmt::format("device: {} ({}, {})\n", report.deviceName, report.deviceType, report.driver);
     if (report.copy) out += fmt::format("copy bandwidth: {:.2f} GB/s\n", report.copy->bytesPerSecond * 1e-9);
-    out += fmt::format("{}, {}x{} frames; medians of {} runs after {} warm-up; CPU turtle = reference, one thread\n\n",
-                       report.grammar, report.options.width, report.options.height, report.options.repeat,
-                       report.options.warmUp);
+    out += fmt::format("{}, {}x{} frames of {} sample(s) a pixel; medians of {} runs after {} warm-up; CPU turtle = "
+                       "reference, one thread\n\n",
+                       report.grammar, report.options.width, report.options.height, report.options.samples,
+                       report.options.repeat, report.options.warmUp);
     out += fmt::format("{:>6} {:>5} {:>8} {:>8} | {:>12} {:>12} {:>7} {:>7} | {:>10} {:>10} {:>8} {:>9}\n",
                        "plants", "steps", "modules", "organs", "GPU turtle/s", "CPU turtle/s", "vs CPU", "of copy",
                        "frame ms", "no shadow", "tick ms", "in flight");

@@ -20,6 +20,9 @@ report = json.load(open(sys.argv[1]))
 
 check(report.get("tool") == "simeco bench --render", "tool is not 'simeco bench --render'")
 check(report.get("settings", {}).get("width") == 160, "settings.width is not 160")
+# By default the frames' samples are the viewer's: one a pixel on a CPU device.
+samples = report.get("settings", {}).get("samples")
+check(samples == (1 if report.get("device", {}).get("type") == "CPU" else 4), f"settings.samples {samples}")
 positive(report.get("copy_bandwidth", {}), "bytes_per_second", "copy_bandwidth")
 entries = report.get("entries", [])
 check([e.get("plants") for e in entries] == [1, 10], f"plant counts {[e.get('plants') for e in entries]}")

@@ -10,8 +10,8 @@ trap 'rm -rf "$work"' EXIT
 export SIMECO_KERNEL_CACHE="$work/kernels" # generated kernels stay out of the user's cache
 
 . "$(dirname "$0")/report_checks.sh"
-run_report "simeco bench --sim --fields 10,40" "$work/sim.json" "ticks/s" \
-  "$simeco" bench --sim --fields 10,40 --repeat 2 --warm-up 1 --size 96x72 --json "$work/sim.json"
+run_report "simeco bench --sim --fields 10,40 --msaa 4" "$work/sim.json" "ticks/s" \
+  "$simeco" bench --sim --fields 10,40 --repeat 2 --warm-up 1 --size 96x72 --msaa 4 --json "$work/sim.json"
 
 PYTHONPATH="$(dirname "$0")" python3 - "$work/sim.json" <<'PY'
 import json, sys
@@ -21,6 +21,7 @@ from report_checks import check, finish, positive
 report = json.load(open(sys.argv[1]))
 
 check(report.get("tool") == "simeco bench --sim", "tool is not 'simeco bench --sim'")
+check(report.get("settings", {}).get("samples") == 4, f"settings.samples {report.get('settings', {}).get('samples')}")
 check(report.get("bytes_per_particle") == 64,  # 16 floats (compute/shared/particle_layout.h)
        f"bytes_per_particle {report.get('bytes_per_particle')}")
 positive(report.get("copy_bandwidth", {}), "bytes_per_second", "copy_bandwidth")

@@ -1,6 +1,7 @@
 #include <fmt/format.h>
 
 #include "bench/render_bench.h"
+#include "bench/report.h"
 
 namespace simeco::bench {
 namespace {
@@ -22,16 +23,10 @@ nlohmann::json renderReportJson(const RenderBenchReport& report) {
     const RenderBenchOptions& o = report.options;
     nlohmann::json j;
     j["tool"] = "simeco bench --render";
-    j["settings"] = {{"quick", o.quick},
-                     {"repeat", o.repeat},
-                     {"warm_up", o.warmUp},
-                     {"width", o.width},
-                     {"height", o.height},
-                     {"samples", o.samples},
-                     {"max_modules", o.maxModules},
-                     {"grammar", report.grammar},
-                     {"statistic", "median"},
-                     {"cpu_threads", 1}};
+    j["settings"] = frameBenchSettings(o.quick, o.repeat, o.warmUp, o.width, o.height, o.samples);
+    j["settings"]["max_modules"] = o.maxModules;
+    j["settings"]["grammar"] = report.grammar;
+    j["settings"]["cpu_threads"] = 1;
     j["device"] = {{"name", report.deviceName}, {"type", report.deviceType}, {"driver", report.driver}};
     if (report.copy) {
         j["copy_bandwidth"] = copyBandwidthSummary(*report.copy);

@@ -1,5 +1,6 @@
 #include <fmt/format.h>
 
+#include "bench/report.h"
 #include "bench/sim_bench.h"
 #include "export/organ_geometry.h"
 
@@ -9,15 +10,9 @@ nlohmann::json simReportJson(const SimBenchReport& report) {
     const SimBenchOptions& o = report.options;
     nlohmann::json j;
     j["tool"] = "simeco bench --sim";
-    j["settings"] = {{"quick", o.quick},
-                     {"repeat", o.repeat},
-                     {"warm_up", o.warmUp},
-                     {"width", o.width},
-                     {"height", o.height},
-                     {"samples", o.samples},
-                     {"scene", report.scene},
-                     {"statistic", "median"},
-                     {"timer", "host wall clock around each blocking stage"}};
+    j["settings"] = frameBenchSettings(o.quick, o.repeat, o.warmUp, o.width, o.height, o.samples);
+    j["settings"]["scene"] = report.scene;
+    j["settings"]["timer"] = "host wall clock around each blocking stage";
     j["device"] = {{"name", report.deviceName}, {"type", report.deviceType}, {"driver", report.driver}};
     if (report.copy)
         j["copy_bandwidth"] = copyBandwidthSummary(*report.copy);

@@ -53,7 +53,7 @@ std::string count(std::uint64_t n) {
 
 nlohmann::json frameBenchSettings(bool quick, int repeat, int warmUp, std::uint32_t width, std::uint32_t height,
                                   std::uint32_t samples) {
-    return {{"quick", quick},   {"repeat", repeat}, {"warm_up", warmUp},         {"width", width},
+    return {{"quick", quick},   {"repeat", repeat},   {"warm_up", warmUp},    {"width", width},
             {"height", height}, {"samples", samples}, {"statistic", "median"}};
 }
 

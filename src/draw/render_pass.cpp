@@ -273,22 +273,29 @@ VkSampleCountFlags drawableSampleCounts(const vk::Context& context) {
            VK_SAMPLE_COUNT_1_BIT;
 }
 
+std::uint32_t defaultSamples(VkSampleCountFlags drawable) {
+    return (drawable & VK_SAMPLE_COUNT_4_BIT) ? 4u : 1u;
+}
+
 std::uint32_t defaultSamples(const vk::Context& context) {
-    return (drawableSampleCounts(context) & VK_SAMPLE_COUNT_4_BIT) ? 4u : 1u;
+    return defaultSamples(drawableSampleCounts(context));
 }
 
 std::uint32_t interactiveSamples(const vk::Context& context) {
     return context.deviceInfo().type == VK_PHYSICAL_DEVICE_TYPE_CPU ? 1u : defaultSamples(context);
 }
 
-void checkSamples(const vk::Context& context, std::uint32_t samples) {
-    const VkSampleCountFlags counts = drawableSampleCounts(context);
-    if (std::has_single_bit(samples) && (counts & samples) != 0) return;
-    std::string drawable;
+void checkSamples(VkSampleCountFlags drawable, std::uint32_t samples, std::string_view device) {
+    if (std::has_single_bit(samples) && (drawable & samples) != 0) return;
+    std::string counts;
     for (std::uint32_t count = 1; count <= VK_SAMPLE_COUNT_64_BIT; count *= 2)
-        if (counts & count) drawable += fmt::format("{}{}", drawable.empty() ? "" : ", ", count);
-    throw std::invalid_argument(fmt::format("cannot draw {} samples a pixel: the device '{}' draws {}", samples,
-                                            context.deviceInfo().name, drawable));
+        if (drawable & count) counts += fmt::format("{}{}", counts.empty() ? "" : ", ", count);
+    throw std::invalid_argument(
+        fmt::format("cannot draw {} samples a pixel: the device '{}' draws {}", samples, device, counts));
+}
+
+void checkSamples(const vk::Context& context, std::uint32_t samples) {
+    checkSamples(drawableSampleCounts(context), samples, context.deviceInfo().name);
 }
 
 void checkRenderFormats(const vk::Context& context) {

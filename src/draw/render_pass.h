@@ -11,6 +11,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string_view>
 
 #include <vulkan/vulkan.h>
 
@@ -68,6 +69,10 @@ std::uint32_t defaultSamples(const vk::Context& context);
 std::uint32_t interactiveSamples(const vk::Context& context);
 // Throws std::invalid_argument, naming the counts the device has, when it cannot draw `samples` samples a pixel.
 void checkSamples(const vk::Context& context, std::uint32_t samples);
+// The same two from the counts drawableSampleCounts() gave, for a caller that asks at every frame (the device's
+// properties are queried once).
+std::uint32_t defaultSamples(VkSampleCountFlags drawable);
+void checkSamples(VkSampleCountFlags drawable, std::uint32_t samples, std::string_view device);
 
 UniqueRenderPass createRenderPass(const vk::Context& context, std::uint32_t samples = 1);
 

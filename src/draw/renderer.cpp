@@ -117,6 +117,7 @@ struct Renderer::Resources {
           volumeFaces(context, sizeof(kVolumeFaces), vk::MemoryUsage::DeviceLocal, VK_BUFFER_USAGE_INDEX_BUFFER_BIT) {
         vk::uploadSpan(context, volumeFaces, std::span<const std::uint32_t>(kVolumeFaces));
         passFor(context, 1);
+        drawableSamples = drawableSampleCounts(context);
     }
 
     // A render pass and its pipelines, for frames of a number of samples a pixel.
@@ -136,6 +137,7 @@ struct Renderer::Resources {
     OrganMeshes meshes;
     TextureArray textures;
     std::map<std::uint32_t, std::unique_ptr<SampledPass>> passes;
+    VkSampleCountFlags drawableSamples = VK_SAMPLE_COUNT_1_BIT; // drawableSampleCounts()
     vk::ComputePipeline drawArgs;
     vk::ComputePipeline drawLists;
     vk::ComputePipeline shadowVolumes;
@@ -228,7 +230,7 @@ std::uint32_t Renderer::Resources::volumeVerticesFor(const vk::Context& context,
 
 std::unique_ptr<RenderTarget> Renderer::makeTarget(std::uint32_t width, std::uint32_t height,
                                                    std::uint32_t samples) {
-    checkSamples(context_, samples);
+    checkSamples(resources_->drawableSamples, samples, context_.deviceInfo().name);
     return std::make_unique<RenderTarget>(context_, resources_->passFor(context_, samples).renderPass.get(), width,
                                           height, samples);
 }
@@ -278,8 +280,9 @@ FrameSetup Renderer::prepareWithin(std::uint32_t organs, const Bounds& bounds, c
 }
 
 FrameSetup Renderer::prepareView(const Bounds& bounds, const RenderSettings& settings) {
-    const std::uint32_t pixelSamples = settings.samples == 0 ? defaultSamples(context_) : settings.samples;
-    checkSamples(context_, pixelSamples);
+    const VkSampleCountFlags drawable = resources_->drawableSamples;
+    const std::uint32_t pixelSamples = settings.samples == 0 ? defaultSamples(drawable) : settings.samples;
+    checkSamples(drawable, pixelSamples, context_.deviceInfo().name);
     const VkPhysicalDeviceLimits& limits = context_.limits();
     const std::uint64_t samples = std::max(settings.antialias, 1u);
     if (settings.width == 0 || settings.height == 0 || settings.width * samples > limits.maxFramebufferWidth ||
